@@ -1,0 +1,21 @@
+#pragma once
+// One small parallel wrapper over oneTBB. Work is split into fixed, index-addressed chunks;
+// callers write results into preassigned slots, so results never depend on the thread count.
+#include <cstddef>
+#include <functional>
+
+namespace tessref {
+
+class Parallel {
+ public:
+  // threads <= 0: all hardware threads.
+  explicit Parallel(int threads = 0);
+  int threads() const { return threads_; }
+  // Calls fn(i) for every i in [0, n), on up to threads() threads, in no particular order.
+  void for_each(std::size_t n, const std::function<void(std::size_t)>& fn) const;
+
+ private:
+  int threads_;
+};
+
+}  // namespace tessref

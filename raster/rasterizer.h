@@ -1,0 +1,49 @@
+#pragma once
+// Clipping, perspective divide, viewport, triangle setup and rasterization by GL's rules.
+#include <cstdint>
+
+#include "common/parallel.h"
+#include "raster/framebuffer.h"
+#include "raster/vertex.h"
+
+namespace tessref {
+
+struct FragmentInput {
+  glm::vec4 frag_coord;  // gl_FragCoord: window x, y (pixel centers at .5), depth z, 1/w
+  bool front_facing;     // gl_FrontFacing (CCW in window space is front)
+  const float* varyings;  // TriangleBatch::num_varyings perspective-correct values
+};
+
+struct FragmentOutput {
+  glm::vec4 color{0.0f};
+  glm::vec4 aux{0.0f};
+};
+
+// A fragment shader: a plain struct with shade(); it runs on many threads at once, so it must not
+// mutate shared state.
+struct FragmentProgram {
+  virtual ~FragmentProgram() = default;
+  virtual FragmentOutput shade(const FragmentInput& in) const = 0;
+};
+
+struct RasterState {
+  bool cull_back_faces = false;  // CCW front faces, as glFrontFace(GL_CCW)
+  float depth_range_near = 0.0f;
+  float depth_range_far = 1.0f;
+};
+
+struct RasterStats {
+  std::uint64_t triangles_in = 0;
+  std::uint64_t triangles_clipped_away = 0;  // wholly outside the view volume
+  std::uint64_t triangles_culled = 0;        // back-facing or zero area
+  std::uint64_t triangles_rasterized = 0;    // set up and scanned (after clipping: pieces count)
+  std::uint64_t fragments_shaded = 0;        // passed the depth test and ran the fragment shader
+  RasterStats& operator+=(const RasterStats& o);
+};
+
+// Draws one batch into fb with depth test LESS. Several calls in a row behave as one draw of the
+// concatenated batches. The framebuffer bytes do not depend on parallel.threads().
+RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
+                           const FragmentProgram& fs, Framebuffer& fb, const Parallel& parallel);
+
+}  // namespace tessref

@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages tessref builds, tests and compares against. Idempotent: it asks
+# apt only for what is missing. Needs root or sudo.
+set -euo pipefail
+pkgs=(build-essential cmake pkg-config
+      libglm-dev libopenimageio-dev openimageio-tools libembree-dev libtbb-dev libassimp-dev
+      assimp-testmodels libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
+      libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri time)
+missing=()
+for p in "${pkgs[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#pkgs[@]} packages present"
+  exit 0
+fi
+echo "install-deps: installing ${missing[*]}"
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
