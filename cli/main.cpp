@@ -1,0 +1,27 @@
+// tessref: the command-line front end. Each subcommand lives in its own file.
+#include <cstdio>
+#include <exception>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.h"
+#include "common/error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"tessref: a CPU reference of the OpenGL 4.x tessellation pipeline"};
+  app.require_subcommand(1);
+  tessref::cli::add_render_command(app);
+  tessref::cli::add_tpg_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const tessref::InputError& e) {
+    std::fprintf(stderr, "tessref: error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tessref: internal error: %s\n", e.what());
+    return 3;
+  }
+  return tessref::cli::exit_code();
+}
