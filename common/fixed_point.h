@@ -1,0 +1,50 @@
+#pragma once
+// Every fixed-point format and rounding rule tessref uses, in one place, with the words of the
+// specification (or the measured implementation choice) beside each.
+#include <cmath>
+#include <cstdint>
+
+namespace tessref::fixed {
+
+// ---------------------------------------------------------------------------------------------
+// Rasterizer: window coordinates snapped to a sub-pixel grid.
+// GL 4.6 section 14.6.1 leaves the sub-pixel precision to the implementation
+// (GL_SUBPIXEL_BITS, at least 4). tessref uses 8 bits, as llvmpipe does:
+// window x, y are in 24.8 fixed point.
+inline constexpr int kSubpixelBits = 8;
+inline constexpr std::int32_t kSubpixelOne = 1 << kSubpixelBits;
+// Largest window coordinate magnitude (guard band included) that keeps edge-function products in
+// 64-bit: |x| < 2^(kGuardBits) pixels.
+inline constexpr int kGuardBits = 14;
+inline constexpr float kGuardBandPixels = float(1 << kGuardBits);
+
+// Snap a window coordinate to 24.8 with round-to-nearest (ties to even).
+inline std::int32_t snap_subpixel(float window_coord) {
+  return static_cast<std::int32_t>(std::nearbyint(window_coord * float(kSubpixelOne)));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Tessellation primitive generator: unsigned 16.16 fixed point.
+// GL 4.6 section 11.2.2: "the precision of the coordinates is implementation-dependent".
+// llvmpipe (the D3D11 reference tessellator) subdivides in 16.16 fixed point, so every generated
+// coordinate is a multiple of 2^-16 and 1 - x is exact (Appendix A.4 rule 8).
+using Fx16 = std::uint32_t;
+inline constexpr int kTessFractionBits = 16;
+inline constexpr Fx16 kTessOne = 1u << kTessFractionBits;
+inline constexpr Fx16 kTessHalf = kTessOne >> 1;
+inline constexpr Fx16 kTessFractionMask = kTessOne - 1;
+inline constexpr Fx16 kTessOneThird = 0x5555;   // floor(2^16 / 3)
+inline constexpr Fx16 kTessTwoThirds = 0xAAAA;  // floor(2^17 / 3)
+
+// Float level -> 16.16, round to nearest even (levels are already clamped to [1, 64]).
+inline Fx16 tess_from_float(float level) {
+  return static_cast<Fx16>(std::nearbyint(double(level) * double(kTessOne)));
+}
+// 16.16 -> float, exact for every value the generator produces (all are <= 1.0).
+inline float tess_to_float(Fx16 v) { return float(double(v) / double(kTessOne)); }
+inline Fx16 tess_floor(Fx16 v) { return v & ~kTessFractionMask; }
+inline Fx16 tess_ceil(Fx16 v) { return (v & kTessFractionMask) ? tess_floor(v) + kTessOne : v; }
+// Fixed-point product of two 16.16 values known to fit, rounded half up.
+inline Fx16 tess_mul_round(Fx16 a, Fx16 b) { return (a * b + kTessHalf) >> kTessFractionBits; }
+
+}  // namespace tessref::fixed
