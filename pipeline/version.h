@@ -1,0 +1,4 @@
+#pragma once
+namespace tessref {
+const char* version();
+}  // namespace tessref

@@ -1,0 +1,1 @@
+void tessref_raster_placeholder() {}
