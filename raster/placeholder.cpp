@@ -1,1 +1,0 @@
-void tessref_raster_placeholder() {}
