@@ -22,6 +22,28 @@ inline constexpr float kGuardBandPixels = float(1 << kGuardBits);
 inline std::int32_t snap_subpixel(float window_coord) {
   return static_cast<std::int32_t>(std::nearbyint(window_coord * float(kSubpixelOne)));
 }
+// Pixel (x, y) has its center at (x + 0.5, y + 0.5): in 24.8 that is x * 256 + 128.
+inline constexpr std::int32_t kSubpixelHalf = kSubpixelOne / 2;
+inline constexpr std::int64_t pixel_center(int pixel) {
+  return std::int64_t(pixel) * kSubpixelOne + kSubpixelHalf;
+}
+// The viewport may be at most this wide or high: the side clip planes of the guard band sit at
+// window x, y = W/2 +- kGuardBandPixels/2, so every snapped coordinate stays below 2^kGuardBits
+// pixels (2^22 in 24.8), edge deltas below 2^23 and edge-function products below 2^47.
+inline constexpr int kMaxViewportPixels = 1 << kGuardBits;
+static_assert(2 * (kGuardBits + 1 + kSubpixelBits) + 2 < 63, "edge functions must fit in int64");
+
+// Fill rule. GL 4.6 section 14.6.1 only asks that a pixel center on an edge shared by two
+// triangles belongs to exactly one of them. tessref uses the top-left rule stated in GL window
+// coordinates (y up). With the triangle wound counter-clockwise (interior to the left of each
+// directed edge) an edge running (dx, dy) in 24.8 units is
+//   "top":  horizontal (dy == 0) with the interior below it, i.e. running toward -x (dx < 0);
+//   "left": interior to its right, i.e. running downward (dy < 0).
+// A center exactly on a top or left edge is inside; on a right or bottom edge it is outside. The
+// two triangles sharing an edge run it in opposite directions, so exactly one of them owns it.
+inline constexpr bool is_top_left_edge(std::int64_t dx, std::int64_t dy) {
+  return dy < 0 || (dy == 0 && dx < 0);
+}
 
 // ---------------------------------------------------------------------------------------------
 // Tessellation primitive generator: unsigned 16.16 fixed point.

@@ -1,0 +1,29 @@
+#pragma once
+// Clip-space clipping of one triangle (GL 4.6 section 13.7): near and far planes always, the side
+// planes only as a guard band, so that window coordinates stay inside the 24.8 fixed-point range.
+#include <array>
+
+#include "raster/vertex.h"
+
+namespace tessref::raster {
+
+// Three vertices, each of near, far and the four guard planes can add at most one more.
+inline constexpr int kMaxClipVertices = 3 + 6;
+
+struct ClipPolygon {
+  int count = 0;
+  std::array<ClipVertex, kMaxClipVertices> v;
+};
+
+enum class ClipResult {
+  kInvalid,   // a non-finite position, or a piece that would reach w <= 0: dropped
+  kRejected,  // wholly outside one plane of the view volume
+  kKept,      // out.count >= 3 vertices, all with finite positions and w > 0
+};
+
+// guard_x, guard_y: the guard planes are x = +-guard_x * w and y = +-guard_y * w, in clip space
+// (kGuardBandPixels / viewport width or height, so >= 1).
+ClipResult clip_triangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
+                         int num_varyings, float guard_x, float guard_y, ClipPolygon& out);
+
+}  // namespace tessref::raster

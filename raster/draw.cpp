@@ -1,0 +1,140 @@
+// draw_triangles: setup in fixed chunks, binning to tiles, tiles scanned in parallel.
+//
+// Determinism: the batch is cut into chunks of kChunkTriangles (independent of the thread count);
+// each chunk clips and sets up its triangles in order and bins them per tile. A tile is then owned
+// by one task, which walks the chunks in order, so every pixel sees its triangles in submission
+// order whatever the thread count. Statistics are integer sums of per-chunk and per-tile counts.
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "common/fixed_point.h"
+#include "raster/rasterizer.h"
+#include "raster/setup.h"
+#include "raster/tile_raster.h"
+
+namespace tessref {
+
+RasterStats& RasterStats::operator+=(const RasterStats& o) {
+  triangles_in += o.triangles_in;
+  triangles_clipped_away += o.triangles_clipped_away;
+  triangles_culled += o.triangles_culled;
+  triangles_rasterized += o.triangles_rasterized;
+  fragments_shaded += o.fragments_shaded;
+  return *this;
+}
+
+namespace {
+
+using raster::SetupTriangle;
+
+constexpr int kTileSize = 64;                       // pixels
+constexpr std::size_t kChunkTriangles = 1024;       // input triangles per setup task
+constexpr std::size_t kPassTriangles = 64 * 1024;   // bounds memory: set up, then scan, per pass
+
+struct Chunk {
+  std::vector<SetupTriangle> tris;
+  std::vector<float> varyings;
+  std::vector<std::uint32_t> tile_begin;  // per tile: start in tile_tris; num_tiles + 1 entries
+  std::vector<std::uint32_t> tile_tris;   // indices into tris, grouped by tile, in order
+  RasterStats stats;
+};
+
+struct TileGrid {
+  int tiles_x, tiles_y;
+  std::size_t count() const { return std::size_t(tiles_x) * tiles_y; }
+};
+
+void setup_chunk(const TriangleBatch& batch, std::size_t first, std::size_t last,
+                 const raster::Viewport& vp, bool cull, const TileGrid& grid, Chunk& chunk) {
+  chunk.tris.clear();
+  chunk.varyings.clear();
+  chunk.stats = RasterStats{};
+  for (std::size_t i = first; i < last; ++i) {
+    int pieces = 0;
+    ++chunk.stats.triangles_in;
+    switch (raster::setup_triangle(batch, i, vp, cull, chunk.tris, chunk.varyings, pieces)) {
+      case raster::SetupOutcome::kClippedAway: ++chunk.stats.triangles_clipped_away; break;
+      case raster::SetupOutcome::kCulled: ++chunk.stats.triangles_culled; break;
+      case raster::SetupOutcome::kRasterized: chunk.stats.triangles_rasterized += pieces; break;
+    }
+  }
+
+  // Counting sort of (tile, triangle) pairs by tile; triangle order within a tile is kept.
+  chunk.tile_begin.assign(grid.count() + 1, 0);
+  auto for_tiles = [&](const SetupTriangle& t, auto&& fn) {
+    if (t.min_x > t.max_x || t.min_y > t.max_y) return;
+    for (int ty = t.min_y / kTileSize; ty <= t.max_y / kTileSize; ++ty)
+      for (int tx = t.min_x / kTileSize; tx <= t.max_x / kTileSize; ++tx)
+        fn(std::size_t(ty) * grid.tiles_x + tx);
+  };
+  for (const SetupTriangle& t : chunk.tris) for_tiles(t, [&](std::size_t tile) { ++chunk.tile_begin[tile + 1]; });
+  for (std::size_t k = 1; k < chunk.tile_begin.size(); ++k) chunk.tile_begin[k] += chunk.tile_begin[k - 1];
+  chunk.tile_tris.resize(chunk.tile_begin.back());
+  std::vector<std::uint32_t> fill(chunk.tile_begin.begin(), chunk.tile_begin.end() - 1);
+  for (std::uint32_t k = 0; k < chunk.tris.size(); ++k)
+    for_tiles(chunk.tris[k], [&](std::size_t tile) { chunk.tile_tris[fill[tile]++] = k; });
+}
+
+}  // namespace
+
+RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
+                           const FragmentProgram& fs, Framebuffer& fb, const Parallel& parallel) {
+  RasterStats total;
+  const std::size_t n = batch.triangle_count();
+  if (fb.width <= 0 || fb.height <= 0) {
+    total.triangles_in = n;
+    total.triangles_clipped_away = n;
+    return total;
+  }
+  if (fb.width > fixed::kMaxViewportPixels || fb.height > fixed::kMaxViewportPixels)
+    throw std::invalid_argument("draw_triangles: viewport larger than " +
+                                std::to_string(fixed::kMaxViewportPixels) + " pixels");
+  const std::size_t pixels = std::size_t(fb.width) * fb.height;
+  if (fb.color.size() != pixels || fb.depth.size() != pixels ||
+      (!fb.aux.empty() && fb.aux.size() != pixels))
+    throw std::invalid_argument("draw_triangles: framebuffer attachments do not match its size");
+
+  const raster::Viewport vp{fb.width, fb.height, state.depth_range_near, state.depth_range_far};
+  const TileGrid grid{(fb.width + kTileSize - 1) / kTileSize, (fb.height + kTileSize - 1) / kTileSize};
+  const int num_varyings = std::clamp(batch.num_varyings, 0, kMaxVaryings);
+
+  std::vector<Chunk> chunks;
+  std::vector<std::uint64_t> tile_fragments(grid.count());
+  for (std::size_t pass_first = 0; pass_first < n; pass_first += kPassTriangles) {
+    const std::size_t pass_last = std::min(n, pass_first + kPassTriangles);
+    const std::size_t num_chunks = (pass_last - pass_first + kChunkTriangles - 1) / kChunkTriangles;
+    if (chunks.size() < num_chunks) chunks.resize(num_chunks);
+
+    parallel.for_each(num_chunks, [&](std::size_t c) {
+      const std::size_t first = pass_first + c * kChunkTriangles;
+      setup_chunk(batch, first, std::min(pass_last, first + kChunkTriangles), vp,
+                  state.cull_back_faces, grid, chunks[c]);
+    });
+
+    std::fill(tile_fragments.begin(), tile_fragments.end(), 0);
+    parallel.for_each(grid.count(), [&](std::size_t tile) {
+      const int tx = int(tile % grid.tiles_x), ty = int(tile / grid.tiles_x);
+      const raster::PixelRect rect{tx * kTileSize, ty * kTileSize,
+                                   std::min(fb.width, (tx + 1) * kTileSize) - 1,
+                                   std::min(fb.height, (ty + 1) * kTileSize) - 1};
+      std::uint64_t shaded = 0;
+      for (std::size_t c = 0; c < num_chunks; ++c) {
+        const Chunk& chunk = chunks[c];
+        for (std::uint32_t k = chunk.tile_begin[tile]; k < chunk.tile_begin[tile + 1]; ++k) {
+          const SetupTriangle& t = chunk.tris[chunk.tile_tris[k]];
+          shaded += raster::raster_triangle(t, chunk.varyings.data() + t.varying_offset,
+                                            num_varyings, rect, fs, fb);
+        }
+      }
+      tile_fragments[tile] = shaded;
+    });
+
+    for (std::size_t c = 0; c < num_chunks; ++c) total += chunks[c].stats;
+    for (std::uint64_t f : tile_fragments) total.fragments_shaded += f;
+  }
+  return total;
+}
+
+}  // namespace tessref

@@ -1,0 +1,22 @@
+#include "raster/framebuffer.h"
+
+#include <algorithm>
+
+namespace tessref {
+
+Framebuffer::Framebuffer(int w, int h, glm::vec4 clear_color)
+    : width(w > 0 ? w : 0), height(h > 0 ? h : 0) {
+  const std::size_t n = std::size_t(width) * std::size_t(height);
+  color.resize(n);
+  depth.resize(n);
+  aux.resize(n);
+  clear(clear_color);
+}
+
+void Framebuffer::clear(glm::vec4 clear_color) {
+  std::fill(color.begin(), color.end(), clear_color);
+  std::fill(depth.begin(), depth.end(), 1.0f);
+  std::fill(aux.begin(), aux.end(), glm::vec4(0.0f));
+}
+
+}  // namespace tessref

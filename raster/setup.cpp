@@ -1,0 +1,113 @@
+#include "raster/setup.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/fixed_point.h"
+
+namespace tessref::raster {
+namespace {
+
+struct WindowVertex {
+  std::int32_t x, y;  // 24.8 fixed point
+  float z;
+  float inv_w;
+  const float* varyings;
+};
+
+// GL 4.6 section 13.8.1: x_w = (x_ndc + 1) W/2, y_w = (y_ndc + 1) H/2,
+// z_w = n + (f - n)(z_ndc + 1)/2; then x_w, y_w snap to 24.8.
+WindowVertex to_window(const ClipVertex& v, const Viewport& vp) {
+  const float inv_w = 1.0f / v.position.w;
+  const float x_ndc = v.position.x * inv_w;
+  const float y_ndc = v.position.y * inv_w;
+  const float z_ndc = v.position.z * inv_w;
+  WindowVertex r;
+  r.x = fixed::snap_subpixel((x_ndc + 1.0f) * (0.5f * float(vp.width)));
+  r.y = fixed::snap_subpixel((y_ndc + 1.0f) * (0.5f * float(vp.height)));
+  float z = vp.depth_near + (vp.depth_far - vp.depth_near) * ((z_ndc + 1.0f) * 0.5f);
+  // Clipping leaves z_ndc in [-1, 1] up to rounding; keep the rounding inside the depth range.
+  const float lo = std::min(vp.depth_near, vp.depth_far);
+  const float hi = std::max(vp.depth_near, vp.depth_far);
+  r.z = std::clamp(z, lo, hi);
+  r.inv_w = inv_w;
+  r.varyings = v.varyings.data();
+  return r;
+}
+
+// floor(a / b) for b > 0.
+std::int64_t floor_div(std::int64_t a, std::int64_t b) {
+  std::int64_t q = a / b;
+  return (a % b != 0 && a < 0) ? q - 1 : q;
+}
+
+enum class PieceResult { kCulled, kRasterized };
+
+PieceResult setup_piece(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
+                        const Viewport& vp, bool cull_back_faces, int num_varyings,
+                        std::vector<SetupTriangle>& tris, std::vector<float>& varyings) {
+  const std::int64_t area2 = std::int64_t(b.x - a.x) * (c.y - a.y) -
+                             std::int64_t(c.x - a.x) * (b.y - a.y);
+  if (area2 == 0) return PieceResult::kCulled;
+  const bool front = area2 > 0;  // counter-clockwise with y up
+  if (!front && cull_back_faces) return PieceResult::kCulled;
+  // Wind every triangle counter-clockwise so that the edge functions are positive inside.
+  const WindowVertex* v[3] = {&a, front ? &b : &c, front ? &c : &b};
+
+  SetupTriangle t;
+  for (int i = 0; i < 3; ++i) {
+    t.x[i] = v[i]->x;
+    t.y[i] = v[i]->y;
+    t.z[i] = v[i]->z;
+    t.inv_w[i] = v[i]->inv_w;
+  }
+  t.area2 = front ? area2 : -area2;
+  t.inv_area2 = 1.0 / double(t.area2);
+  t.front_facing = front;
+
+  // Pixel x is a candidate when its center x * 256 + 128 lies in [min x, max x].
+  const std::int64_t lo_x = std::min({t.x[0], t.x[1], t.x[2]});
+  const std::int64_t hi_x = std::max({t.x[0], t.x[1], t.x[2]});
+  const std::int64_t lo_y = std::min({t.y[0], t.y[1], t.y[2]});
+  const std::int64_t hi_y = std::max({t.y[0], t.y[1], t.y[2]});
+  const std::int64_t one = fixed::kSubpixelOne, half = fixed::kSubpixelHalf;
+  t.min_x = int(std::max<std::int64_t>(0, floor_div(lo_x - half + one - 1, one)));
+  t.min_y = int(std::max<std::int64_t>(0, floor_div(lo_y - half + one - 1, one)));
+  t.max_x = int(std::min<std::int64_t>(vp.width - 1, floor_div(hi_x - half, one)));
+  t.max_y = int(std::min<std::int64_t>(vp.height - 1, floor_div(hi_y - half, one)));
+
+  t.varying_offset = std::uint32_t(varyings.size());
+  for (int i = 0; i < 3; ++i)
+    varyings.insert(varyings.end(), v[i]->varyings, v[i]->varyings + num_varyings);
+  tris.push_back(t);
+  return PieceResult::kRasterized;
+}
+
+}  // namespace
+
+float Viewport::guard_x() const { return fixed::kGuardBandPixels / float(width); }
+float Viewport::guard_y() const { return fixed::kGuardBandPixels / float(height); }
+
+SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index, const Viewport& vp,
+                            bool cull_back_faces, std::vector<SetupTriangle>& tris,
+                            std::vector<float>& varyings, int& pieces_out) {
+  pieces_out = 0;
+  const ClipVertex* in = &batch.vertices[3 * index];
+  const int nv = std::clamp(batch.num_varyings, 0, kMaxVaryings);
+  ClipPolygon poly;
+  ClipResult clipped =
+      clip_triangle(in[0], in[1], in[2], nv, vp.guard_x(), vp.guard_y(), poly);
+  if (clipped != ClipResult::kKept) return SetupOutcome::kClippedAway;
+
+  WindowVertex w[kMaxClipVertices];
+  for (int k = 0; k < poly.count; ++k) w[k] = to_window(poly.v[k], vp);
+  // A planar convex polygon: fan from its first vertex.
+  for (int k = 1; k + 1 < poly.count; ++k) {
+    if (setup_piece(w[0], w[k], w[k + 1], vp, cull_back_faces, nv, tris, varyings) ==
+        PieceResult::kRasterized)
+      ++pieces_out;
+  }
+  return pieces_out > 0 ? SetupOutcome::kRasterized : SetupOutcome::kCulled;
+}
+
+}  // namespace tessref::raster

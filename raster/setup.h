@@ -1,0 +1,39 @@
+#pragma once
+// Perspective divide, viewport transform, sub-pixel snapping and triangle setup.
+#include <cstdint>
+#include <vector>
+
+#include "raster/clip.h"
+#include "raster/rasterizer.h"
+
+namespace tessref::raster {
+
+// A triangle ready to scan: wound counter-clockwise in window space (y up).
+struct SetupTriangle {
+  std::int32_t x[3], y[3];  // window coordinates, 24.8 fixed point
+  std::int64_t area2;       // twice the area, > 0, in 16.16 (units of 2^-16 pixel^2)
+  double inv_area2;         // 1 / area2: edge function -> barycentric weight
+  float z[3];               // window depth, already in the depth range
+  float inv_w[3];           // 1 / clip w, for perspective-correct varyings
+  int min_x, min_y, max_x, max_y;  // pixels whose centers may be covered, inclusive, on screen
+  bool front_facing;
+  std::uint32_t varying_offset;  // 3 * num_varyings floats in the owner's varying store
+};
+
+struct Viewport {
+  int width = 0, height = 0;
+  float depth_near = 0.0f, depth_far = 1.0f;
+  float guard_x() const;  // clip-space guard plane factors, see clip_triangle
+  float guard_y() const;
+};
+
+// What became of one input triangle.
+enum class SetupOutcome { kClippedAway, kCulled, kRasterized };
+
+// Clips triangle `index` of batch and appends its pieces (0 to 7 triangles) to tris, their
+// varyings to varyings. pieces_out receives the number of pieces appended.
+SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index, const Viewport& vp,
+                            bool cull_back_faces, std::vector<SetupTriangle>& tris,
+                            std::vector<float>& varyings, int& pieces_out);
+
+}  // namespace tessref::raster
