@@ -1,0 +1,239 @@
+#include "glref/tess_capture.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+
+#include "glref/gl_context.h"
+#include "glref/gl_error.h"
+#include "glref/shader_source.h"
+
+namespace tessref::glref {
+namespace {
+
+// One transform-feedback record, interleaved: vec3 tess_coord, int patch_id.
+struct FeedbackVertex {
+  float coord[3];
+  std::int32_t patch;
+};
+static_assert(sizeof(FeedbackVertex) == 16);
+
+int relevant_outer(TessDomain d) { return d == TessDomain::Triangles ? 3 : d == TessDomain::Quads ? 4 : 2; }
+int relevant_inner(TessDomain d) { return d == TessDomain::Triangles ? 1 : d == TessDomain::Quads ? 2 : 0; }
+
+GLenum feedback_mode(const TessLayout& layout) {
+  if (layout.point_mode) return GL_POINTS;
+  return layout.domain == TessDomain::Isolines ? GL_LINES : GL_TRIANGLES;
+}
+
+int layout_key(const TessLayout& l) {
+  return static_cast<int>(l.domain) * 64 + static_cast<int>(l.spacing) * 8 +
+         static_cast<int>(l.winding) * 2 + (l.point_mode ? 1 : 0);
+}
+
+}  // namespace
+
+int vertices_per_primitive(const TessLayout& layout) {
+  if (layout.point_mode) return 1;
+  return layout.domain == TessDomain::Isolines ? 2 : 3;
+}
+
+std::size_t domain_point_bound(const TessLayout& layout, const TessLevels& levels) {
+  const int no = relevant_outer(layout.domain), ni = relevant_inner(layout.domain);
+  for (int i = 0; i < no; ++i)
+    if (!(levels.outer[i] > 0.0f)) return 0;  // also NaN: the spec discards the patch
+  int m = 1;
+  auto widen = [&m](float v) {
+    // NaN inner levels are clamped by the driver; count them as the largest level.
+    const float c = std::isnan(v) ? 64.0f : std::clamp(v, 0.0f, 64.0f);
+    m = std::max(m, static_cast<int>(std::ceil(c)));
+  };
+  for (int i = 0; i < no; ++i) widen(levels.outer[i]);
+  for (int i = 0; i < ni; ++i) widen(levels.inner[i]);
+  m = std::min(64, m + 1);  // rounding up to an odd or even segment count
+  // Quads: sum of outer edges + inner grid <= 4m + (m-1)^2; triangles and isolines have fewer.
+  return static_cast<std::size_t>(m + 1) * static_cast<std::size_t>(m + 1);
+}
+
+std::size_t emitted_vertex_bound(const TessLayout& layout, const TessLevels& levels) {
+  const std::size_t points = domain_point_bound(layout, levels);
+  if (layout.point_mode) return points;
+  // A planar triangulation of V points has fewer than 2V triangles; isolines fewer than V segments.
+  return layout.domain == TessDomain::Isolines ? 2 * points : 6 * points;
+}
+
+std::string tes_layout_qualifier(const TessLayout& layout) {
+  std::string s = std::string("layout(") + glsl_name(layout.domain) + ", " + glsl_name(layout.spacing) +
+                  ", " + glsl_name(layout.winding);
+  if (layout.point_mode) s += ", point_mode";
+  return s + ") in;\n";
+}
+
+TessCapture::TessCapture(GlContext& context, const CaptureOptions& options)
+    : context_(context), options_(options) {
+  context_.make_current();
+  glGenVertexArrays(1, &vao_);
+  glGenBuffers(1, &level_buffer_);
+  glGenBuffers(1, &feedback_buffer_);
+  glGenQueries(1, &query_generated_);
+  glGenQueries(1, &query_written_);
+  check_gl("TessCapture: creating GL objects");
+}
+
+TessCapture::~TessCapture() {
+  glDeleteQueries(1, &query_written_);
+  glDeleteQueries(1, &query_generated_);
+  glDeleteBuffers(1, &feedback_buffer_);
+  glDeleteBuffers(1, &level_buffer_);
+  glDeleteVertexArrays(1, &vao_);
+}
+
+const Program& TessCapture::program_for(const TessLayout& layout) {
+  const int key = layout_key(layout);
+  auto it = programs_.find(key);
+  if (it != programs_.end()) return it->second;
+  std::vector<ShaderStage> stages = {
+      {GL_VERTEX_SHADER, shader_source("tpg_capture.vert"), "tpg_capture.vert"},
+      {GL_TESS_CONTROL_SHADER, shader_source("tpg_capture.tesc"), "tpg_capture.tesc"},
+      {GL_TESS_EVALUATION_SHADER,
+       inject_after_version(shader_source("tpg_capture.tese"), tes_layout_qualifier(layout)),
+       "tpg_capture.tese"},
+  };
+  Program p = link_program(stages, FeedbackVaryings{{"tess_coord", "patch_id"}, true});
+  return programs_.emplace(key, std::move(p)).first->second;
+}
+
+void TessCapture::ensure_buffer(unsigned target, unsigned buffer, std::size_t bytes, std::size_t& capacity) {
+  glBindBuffer(target, buffer);
+  if (bytes <= capacity) return;
+  capacity = std::max(bytes, capacity * 2);
+  glBufferData(target, static_cast<GLsizeiptr>(capacity), nullptr, GL_DYNAMIC_COPY);
+  check_gl("TessCapture: allocating a buffer");
+}
+
+std::vector<std::vector<glm::vec3>> TessCapture::capture(const TessLayout& layout,
+                                                         const std::vector<TessLevels>& levels) {
+  const auto t0 = std::chrono::steady_clock::now();
+  stats_ = CaptureStats{};
+  stats_.patches = levels.size();
+  std::vector<std::vector<glm::vec3>> result(levels.size());
+  if (levels.empty()) return result;
+  if (levels.size() > static_cast<std::size_t>(INT32_MAX / 2))
+    throw GlError("TessCapture: too many patches in one capture");
+
+  context_.make_current();
+  context_.bind_default_framebuffer();  // surfaceless: a draw needs a bound FBO, discard or not
+  const Program& program = program_for(layout);
+  program.use();
+  const GLint base_location = program.uniform("u_patch_base");  // one uniform, TCS and TES
+
+  // Levels: two vec4 per patch, raw bits.
+  std::vector<float> packed(levels.size() * 8, 0.0f);
+  for (std::size_t i = 0; i < levels.size(); ++i) {
+    std::memcpy(&packed[i * 8], levels[i].outer.data(), 4 * sizeof(float));
+    std::memcpy(&packed[i * 8 + 4], levels[i].inner.data(), 2 * sizeof(float));
+  }
+  ensure_buffer(GL_SHADER_STORAGE_BUFFER, level_buffer_, packed.size() * sizeof(float), level_capacity_);
+  glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(packed.size() * sizeof(float)),
+                  packed.data());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, level_buffer_);
+
+  glBindVertexArray(vao_);
+  glPatchParameteri(GL_PATCH_VERTICES, 1);
+  glEnable(GL_RASTERIZER_DISCARD);
+  check_gl("TessCapture: setting up the capture");
+
+  const GLenum mode = feedback_mode(layout);
+  const int vpp = vertices_per_primitive(layout);
+  std::vector<FeedbackVertex> records;
+
+  std::size_t first = 0;
+  try {
+    while (first < levels.size()) {
+      // Greedy split: as many patches as keep the point bound under the limit (at least one).
+      std::size_t end = first, points = 0, emitted = 0;
+      while (end < levels.size() && end - first < options_.max_patches_per_draw) {
+        const std::size_t p = domain_point_bound(layout, levels[end]);
+        if (end > first && points + p > options_.max_points_per_draw) break;
+        points += p;
+        emitted += emitted_vertex_bound(layout, levels[end]);
+        ++end;
+      }
+      const std::size_t capacity_vertices = std::max<std::size_t>(emitted, vpp);
+      ensure_buffer(GL_TRANSFORM_FEEDBACK_BUFFER, feedback_buffer_,
+                    capacity_vertices * sizeof(FeedbackVertex), feedback_capacity_);
+      glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, feedback_buffer_, 0,
+                        static_cast<GLsizeiptr>(capacity_vertices * sizeof(FeedbackVertex)));
+      glUniform1i(base_location, static_cast<GLint>(first));
+
+      glBeginQuery(GL_PRIMITIVES_GENERATED, query_generated_);
+      glBeginQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, query_written_);
+      glBeginTransformFeedback(mode);
+      glDrawArrays(GL_PATCHES, static_cast<GLint>(first), static_cast<GLsizei>(end - first));
+      glEndTransformFeedback();
+      glEndQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
+      glEndQuery(GL_PRIMITIVES_GENERATED);
+      check_gl("TessCapture: drawing patches");
+
+      GLuint64 generated = 0, written = 0;
+      glGetQueryObjectui64v(query_generated_, GL_QUERY_RESULT, &generated);
+      glGetQueryObjectui64v(query_written_, GL_QUERY_RESULT, &written);
+      if (written != generated)
+        throw GlError("TessCapture: transform feedback captured " + std::to_string(written) + " of " +
+                      std::to_string(generated) + " primitives (patches " + std::to_string(first) +
+                      ".." + std::to_string(end - 1) + "): the vertex bound is wrong");
+      const std::size_t nv = static_cast<std::size_t>(written) * vpp;
+      records.resize(nv);
+      if (nv)
+        glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0,
+                           static_cast<GLsizeiptr>(nv * sizeof(FeedbackVertex)), records.data());
+      check_gl("TessCapture: reading transform feedback");
+
+      // Every vertex must carry its own patch's id, patches in draw order, each primitive
+      // wholly inside one patch; anything else is the driver mixing up vertices.
+      std::int64_t prev = static_cast<std::int64_t>(first);
+      for (std::size_t v = 0; v < nv; ++v) {
+        const FeedbackVertex& r = records[v];
+        const std::int64_t id = r.patch;
+        const std::int64_t prim_id = records[v - v % vpp].patch;
+        if (id < static_cast<std::int64_t>(first) || id >= static_cast<std::int64_t>(end) || id < prev ||
+            id != prim_id)
+          throw GlError("TessCapture: captured vertex " + std::to_string(v) + " of a draw of patches " +
+                        std::to_string(first) + ".." + std::to_string(end - 1) + " is tagged patch " +
+                        std::to_string(id) + ": the driver mixed up patches (more than 65,535 domain " +
+                        "points in one draw?)");
+        prev = id;
+        glm::vec3 c;
+        std::memcpy(&c, r.coord, sizeof c);  // bit-exact
+        result[static_cast<std::size_t>(id)].push_back(c);
+      }
+      // Each patch's own bound must hold too (it sized the buffer).
+      for (std::size_t i = first; i < end; ++i)
+        if (result[i].size() > emitted_vertex_bound(layout, levels[i]))
+          throw GlError("TessCapture: patch " + std::to_string(i) + " emitted " +
+                        std::to_string(result[i].size()) + " vertices, above its bound");
+      stats_.vertices += nv;
+      ++stats_.draws;
+      first = end;
+    }
+  } catch (...) {
+    if (glIsEnabled(GL_RASTERIZER_DISCARD)) glDisable(GL_RASTERIZER_DISCARD);
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    throw;
+  }
+  glDisable(GL_RASTERIZER_DISCARD);
+  stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result;
+}
+
+std::vector<std::vector<glm::vec3>> capture_tess_coords(GlContext& context, const TessLayout& layout,
+                                                        const std::vector<TessLevels>& levels) {
+  TessCapture capture(context);
+  return capture.capture(layout, levels);
+}
+
+}  // namespace tessref::glref

@@ -1,0 +1,58 @@
+#include "glref/tpg_output.h"
+
+#include <cstdint>
+#include <cstring>
+
+namespace tessref::glref {
+
+bool parse(const std::string& s, CoordFormat& out) {
+  if (s == "text") return out = CoordFormat::Text, true;
+  if (s == "hex") return out = CoordFormat::Hex, true;
+  return false;
+}
+
+int printed_components(TessDomain domain) { return domain == TessDomain::Triangles ? 3 : 2; }
+
+void append_hex(std::string& out, float v) {
+  static const char digits[] = "0123456789abcdef";
+  std::uint32_t bits;
+  std::memcpy(&bits, &v, sizeof bits);
+  char buf[8];
+  for (int i = 7; i >= 0; --i, bits >>= 4) buf[i] = digits[bits & 15u];
+  out.append(buf, 8);
+}
+
+std::string format_stream(TessDomain domain, const std::vector<glm::vec3>& coords, CoordFormat format) {
+  const int n = printed_components(domain);
+  std::string out;
+  out.reserve(coords.size() * (format == CoordFormat::Hex ? 27 : 40));
+  for (const glm::vec3& c : coords) {
+    for (int k = 0; k < n; ++k) {
+      if (k) out += ' ';
+      if (format == CoordFormat::Hex) {
+        append_hex(out, c[k]);
+      } else {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(c[k]));
+        out += buf;
+      }
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+std::string format_sweep_line(TessDomain domain, std::size_t patch, const std::vector<glm::vec3>& coords) {
+  const int n = printed_components(domain);
+  std::string out = std::to_string(patch) + ' ' + std::to_string(coords.size());
+  out.reserve(out.size() + coords.size() * n * 9 + 1);
+  for (const glm::vec3& c : coords)
+    for (int k = 0; k < n; ++k) {
+      out += ' ';
+      append_hex(out, c[k]);
+    }
+  out += '\n';
+  return out;
+}
+
+}  // namespace tessref::glref
