@@ -51,7 +51,7 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
   const double dz2 = double(t.z[2]) - t.z[0];
   const bool write_aux = !fb.aux.empty();
 
-  float frag_varyings[kMaxVaryings];
+  float frag_varyings[kMaxVaryings] = {};  // slots past num_varyings read as 0
   FragmentInput in;
   in.front_facing = t.front_facing;
   in.varyings = frag_varyings;
@@ -95,11 +95,13 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
       // Perspective correction: interpolate attribute/w and 1/w linearly, then divide.
       const double p0 = b0 * t.inv_w[0], p1 = b1 * t.inv_w[1], p2 = b2 * t.inv_w[2];
       const double inv_w = p0 + p1 + p2;
-      const float w0 = float(p0 / inv_w), w1 = float(p1 / inv_w), w2 = float(p2 / inv_w);
+      const float w1 = float(p1 / inv_w), w2 = float(p2 / inv_w);
       const float* a0 = varyings;
       const float* a1 = varyings + num_varyings;
       const float* a2 = varyings + 2 * num_varyings;
-      for (int j = 0; j < num_varyings; ++j) frag_varyings[j] = w0 * a0[j] + w1 * a1[j] + w2 * a2[j];
+      // Relative to vertex 0, so that a varying equal at all three vertices stays exact.
+      for (int j = 0; j < num_varyings; ++j)
+        frag_varyings[j] = a0[j] + w1 * (a1[j] - a0[j]) + w2 * (a2[j] - a0[j]);
 
       in.frag_coord = glm::vec4(float(x) + 0.5f, fy, z, float(inv_w));
       const FragmentOutput out = fs.shade(in);
