@@ -1,0 +1,36 @@
+#pragma once
+// Framebuffer -> image files (through OpenImageIO; its headers stay in image_output.cpp).
+// Files are written top row first: the framebuffer's row 0 (GL: bottom) becomes the last row.
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "raster/framebuffer.h"
+
+namespace tessref {
+
+// 8-bit RGB, top row first (3 bytes per pixel).
+struct Rgb8Image {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> pixels;
+};
+
+// Color to 8 bits as a GL UNORM8 attachment stores it: clamp to [0, 1] (NaN as 0), then
+// round(c * 255). No sRGB encoding (the framebuffer holds what the shader wrote).
+Rgb8Image to_rgb8(const Framebuffer& fb);
+
+// True for formats written as floating point: .exr, .hdr, .pfm, .tif, .tiff.
+bool is_float_format(const std::filesystem::path& path);
+
+// The color attachment; the format follows the extension: float RGBA for float formats
+// (linear, unclamped), 8-bit RGB otherwise (to_rgb8). InputError naming the file on failure.
+void write_color_image(const Framebuffer& fb, const std::filesystem::path& path);
+// Window-space depth (one float channel "Z", 1 where nothing was drawn); float formats only.
+void write_depth_image(const Framebuffer& fb, const std::filesystem::path& path);
+// The aux attachment's xyz (the world normal the shaders write; 0 where nothing was drawn).
+void write_normals_image(const Framebuffer& fb, const std::filesystem::path& path);
+
+void write_rgb8_image(const Rgb8Image& image, const std::filesystem::path& path);
+Rgb8Image read_rgb8_image(const std::filesystem::path& path);  // InputError if unreadable
+
+}  // namespace tessref

@@ -1,0 +1,201 @@
+#include "pipeline/json_reader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "common/error.h"
+
+namespace tessref {
+namespace {
+
+using nlohmann::json;
+
+bool starts_with_path(const std::string& path, const std::string& prefix) {
+  return path.size() > prefix.size() && path.compare(0, prefix.size(), prefix) == 0 &&
+         path[prefix.size()] == '.';
+}
+
+std::string format_number(double v) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  return json(v).dump();
+}
+
+}  // namespace
+
+void JsonSource::fail(const std::string& key_path, const std::string& what) const {
+  std::string where = name + ": ";
+  if (!key_path.empty()) where += key_path + ": ";
+  std::string from;
+  for (const std::string& k : overridden)
+    if (key_path == k || starts_with_path(key_path, k) || starts_with_path(k, key_path))
+      from = " (from --set " + k + ")";
+  throw InputError(where + what + from);
+}
+
+std::string describe_json(const json& j) {
+  switch (j.type()) {
+    case json::value_t::null: return "null";
+    case json::value_t::boolean: return std::string("a boolean (") + (j.get<bool>() ? "true" : "false") + ")";
+    case json::value_t::string: {
+      std::string s = j.get<std::string>();
+      if (s.size() > 40) s = s.substr(0, 37) + "...";
+      return "a string (\"" + s + "\")";
+    }
+    case json::value_t::number_integer:
+    case json::value_t::number_unsigned:
+    case json::value_t::number_float: return "a number (" + format_number(j.get<double>()) + ")";
+    case json::value_t::array: return "an array of " + std::to_string(j.size());
+    case json::value_t::object: return "an object";
+    default: return "an unsupported value";
+  }
+}
+
+JsonObject::JsonObject(const json& j, std::string path, const JsonSource& source)
+    : j_(j), path_(std::move(path)), source_(source) {
+  if (!j_.is_object()) source_.fail(path_, "expected an object, got " + describe_json(j_));
+}
+
+void JsonObject::mark(const std::string& key) {
+  if (std::find(known_.begin(), known_.end(), key) == known_.end()) known_.push_back(key);
+}
+
+bool JsonObject::has(const std::string& key) {
+  mark(key);
+  return j_.contains(key);
+}
+
+std::string JsonObject::path_of(const std::string& key) const {
+  return path_.empty() ? key : path_ + "." + key;
+}
+
+void JsonObject::fail(const std::string& key, const std::string& what) const {
+  source_.fail(path_of(key), what);
+}
+
+const json& JsonObject::value(const std::string& key) {
+  auto it = j_.find(key);
+  mark(key);
+  if (it == j_.end()) fail(key, "missing");
+  return *it;
+}
+
+JsonObject JsonObject::object(const std::string& key) {
+  return JsonObject(value(key), path_of(key), source_);
+}
+
+bool JsonObject::boolean(const std::string& key) {
+  const json& v = value(key);
+  if (!v.is_boolean()) fail(key, "expected true or false, got " + describe_json(v));
+  return v.get<bool>();
+}
+
+std::string JsonObject::string(const std::string& key) {
+  const json& v = value(key);
+  if (!v.is_string()) fail(key, "expected a string, got " + describe_json(v));
+  return v.get<std::string>();
+}
+
+float JsonObject::number(const std::string& key) {
+  const json& v = value(key);
+  if (!v.is_number()) fail(key, "expected a number, got " + describe_json(v));
+  double d = v.get<double>();
+  if (!std::isfinite(d) || std::abs(d) > std::numeric_limits<float>::max())
+    fail(key, "expected a finite number, got " + format_number(d));
+  return static_cast<float>(d);
+}
+
+float JsonObject::number_in(const std::string& key, float lo, float hi, bool lo_open,
+                            bool hi_open) {
+  float f = number(key);
+  bool ok = (lo_open ? f > lo : f >= lo) && (hi_open ? f < hi : f <= hi);
+  if (!ok) {
+    std::string range = std::string(lo_open ? "(" : "[") + format_number(lo) + ", " +
+                        (std::isinf(hi) ? std::string("inf") : format_number(hi)) +
+                        (hi_open ? ")" : "]");
+    fail(key, "expected a number in " + range + ", got " + format_number(f));
+  }
+  return f;
+}
+
+int JsonObject::integer(const std::string& key, int lo, int hi) {
+  const json& v = value(key);
+  double d = v.is_number() ? v.get<double>() : 0.0;
+  if (!v.is_number() || !std::isfinite(d) || d != std::floor(d) || d < lo || d > hi)
+    fail(key, "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                  "], got " + describe_json(v));
+  return static_cast<int>(d);
+}
+
+namespace {
+// Reads an array of n finite numbers (n in [min_n, max_n]) into out.
+template <typename Fail>
+void finite_numbers(const json& v, std::size_t min_n, std::size_t max_n, float* out, Fail&& fail) {
+  std::string expected = "expected an array of " + std::to_string(min_n) +
+                         (max_n > min_n ? " or " + std::to_string(max_n) : std::string()) +
+                         " numbers";
+  if (!v.is_array() || v.size() < min_n || v.size() > max_n)
+    fail(expected + ", got " + describe_json(v));
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (!v[i].is_number())
+      fail(expected + ", got " + describe_json(v[i]) + " at index " + std::to_string(i));
+    double d = v[i].get<double>();
+    if (!std::isfinite(d) || std::abs(d) > std::numeric_limits<float>::max())
+      fail("expected finite numbers, got " + format_number(d) + " at index " + std::to_string(i));
+    out[i] = static_cast<float>(d);
+  }
+}
+}  // namespace
+
+glm::vec3 JsonObject::vec3(const std::string& key) {
+  glm::vec3 r;
+  finite_numbers(value(key), 3, 3, &r.x, [&](const std::string& w) { fail(key, w); });
+  return r;
+}
+
+glm::vec3 JsonObject::vec3_or_scalar(const std::string& key) {
+  if (value(key).is_number()) return glm::vec3(number(key));
+  return vec3(key);
+}
+
+glm::vec4 JsonObject::rgba(const std::string& key) {
+  glm::vec4 r(0.0f, 0.0f, 0.0f, 1.0f);
+  finite_numbers(value(key), 3, 4, &r.x, [&](const std::string& w) { fail(key, w); });
+  return r;
+}
+
+std::vector<float> JsonObject::levels(const std::string& key, std::size_t min_count,
+                                      std::size_t max_count) {
+  const json& v = value(key);
+  auto one = [&](const json& e, const std::string& where) -> float {
+    if (e.is_number()) return static_cast<float>(e.get<double>());
+    if (e.is_string()) {
+      const std::string s = e.get<std::string>();
+      if (s == "nan") return std::numeric_limits<float>::quiet_NaN();
+      if (s == "inf") return std::numeric_limits<float>::infinity();
+      if (s == "-inf") return -std::numeric_limits<float>::infinity();
+    }
+    fail(key, "expected a tessellation level (a number, \"nan\", \"inf\" or \"-inf\"), got " +
+                  describe_json(e) + where);
+  };
+  if (!v.is_array()) return std::vector<float>(max_count, one(v, ""));
+  if (v.size() < min_count || v.size() > max_count)
+    fail(key, "expected a level or an array of " + std::to_string(min_count) + " to " +
+                  std::to_string(max_count) + " levels, got " + describe_json(v));
+  std::vector<float> out;
+  for (std::size_t i = 0; i < v.size(); ++i)
+    out.push_back(one(v[i], " at index " + std::to_string(i)));
+  return out;
+}
+
+void JsonObject::finish() const {
+  for (auto it = j_.begin(); it != j_.end(); ++it) {
+    if (std::find(known_.begin(), known_.end(), it.key()) != known_.end()) continue;
+    std::string known;
+    for (const std::string& k : known_) known += (known.empty() ? "" : ", ") + k;
+    fail(it.key(), "unknown key" + (known.empty() ? std::string() : " (expected one of: " + known + ")"));
+  }
+}
+
+}  // namespace tessref

@@ -1,0 +1,117 @@
+#include "pipeline/mesh_loader.h"
+
+#include <exception>
+#include <system_error>
+
+#include <assimp/Importer.hpp>
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include "common/error.h"
+
+namespace tessref {
+namespace {
+
+// Raw vertices of all meshes, before welding.
+struct Soup {
+  std::vector<glm::vec3> positions, normals;
+  std::vector<std::uint32_t> indices;
+  std::size_t skipped_faces = 0;
+};
+
+glm::mat4 to_glm(const aiMatrix4x4& m) {
+  // aiMatrix4x4 is row-major (a1..a4 is the first row); glm is column-major.
+  return glm::mat4(m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4,
+                   m.b4, m.c4, m.d4);
+}
+
+void append_mesh(const aiMesh& mesh, const glm::mat4& transform, Soup& soup,
+                 const std::string& name) {
+  const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(transform)));
+  const auto base = static_cast<std::uint32_t>(soup.positions.size());
+  for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+    const aiVector3D& p = mesh.mVertices[v];
+    soup.positions.push_back(glm::vec3(transform * glm::vec4(p.x, p.y, p.z, 1.0f)));
+    if (mesh.HasNormals()) {
+      const aiVector3D& n = mesh.mNormals[v];
+      soup.normals.push_back(normal_matrix * glm::vec3(n.x, n.y, n.z));
+    } else {
+      soup.normals.push_back(glm::vec3(0.0f));  // welding fills it in from the faces
+    }
+  }
+  for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+    const aiFace& face = mesh.mFaces[f];
+    if (face.mNumIndices != 3) {
+      ++soup.skipped_faces;
+      continue;
+    }
+    for (int k = 0; k < 3; ++k) {
+      std::uint32_t i = face.mIndices[k];
+      if (i >= mesh.mNumVertices)
+        throw InputError(name + ": face " + std::to_string(f) + " of mesh '" + mesh.mName.C_Str() +
+                         "' uses vertex " + std::to_string(i) + ", but that mesh has " +
+                         std::to_string(mesh.mNumVertices) + " vertices");
+      soup.indices.push_back(base + i);
+    }
+  }
+}
+
+void append_node(const aiScene& scene, const aiNode& node, const glm::mat4& parent, Soup& soup,
+                 std::vector<bool>& used, const std::string& name) {
+  const glm::mat4 transform = parent * to_glm(node.mTransformation);
+  for (unsigned k = 0; k < node.mNumMeshes; ++k) {
+    unsigned m = node.mMeshes[k];
+    if (m >= scene.mNumMeshes || !scene.mMeshes[m]) continue;
+    append_mesh(*scene.mMeshes[m], transform, soup, name);
+    used[m] = true;
+  }
+  for (unsigned c = 0; c < node.mNumChildren; ++c)
+    if (node.mChildren[c]) append_node(scene, *node.mChildren[c], transform, soup, used, name);
+}
+
+}  // namespace
+
+Mesh load_mesh_file(const std::filesystem::path& path, std::vector<std::string>& warnings) {
+  const std::string name = path.string();
+  auto fail = [&](const std::string& what) { throw InputError(name + ": " + what); };
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) fail("no such file");
+  if (std::filesystem::is_directory(path, ec)) fail("is a directory, not a mesh file");
+
+  Assimp::Importer importer;
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                         aiProcess_SortByPType | aiProcess_ValidateDataStructure;
+  const aiScene* scene = nullptr;
+  try {
+    scene = importer.ReadFile(name, flags);
+  } catch (const std::exception& e) {
+    fail(std::string("cannot be read: ") + e.what());
+  }
+  if (!scene) fail(std::string("cannot be read: ") + importer.GetErrorString());
+  if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || scene->mNumMeshes == 0)
+    fail("contains no triangle mesh");
+
+  Soup soup;
+  std::vector<bool> used(scene->mNumMeshes, false);
+  if (scene->mRootNode) append_node(*scene, *scene->mRootNode, glm::mat4(1.0f), soup, used, name);
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m)  // meshes no node refers to: as they are
+    if (!used[m] && scene->mMeshes[m]) append_mesh(*scene->mMeshes[m], glm::mat4(1.0f), soup, name);
+  if (soup.skipped_faces)
+    warnings.push_back(name + ": skipped " + std::to_string(soup.skipped_faces) +
+                       " point and line primitives");
+
+  if (soup.indices.empty()) fail("the mesh is empty (no triangles)");
+  Mesh mesh = weld_by_position(soup.positions, soup.normals, soup.indices);
+  MeshRepairs repairs = validate_mesh(mesh, name);
+  if (repairs.degenerate_triangles_dropped)
+    warnings.push_back(name + ": dropped " + std::to_string(repairs.degenerate_triangles_dropped) +
+                       " degenerate triangles");
+  if (repairs.normals_recomputed)
+    warnings.push_back(name + ": recomputed " + std::to_string(repairs.normals_recomputed) +
+                       " zero-length normals from the faces");
+  return mesh;
+}
+
+}  // namespace tessref

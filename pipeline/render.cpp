@@ -1,0 +1,47 @@
+#include "pipeline/render.h"
+
+#include "pipeline/camera.h"
+#include "stages/programs/normals.h"
+#include "stages/programs/phong.h"
+
+namespace tessref {
+namespace {
+
+programs::PhongShader phong_shader(const Scene& scene) {
+  programs::PhongShader fs;
+  fs.u_eye = scene.camera.eye;
+  fs.u_num_lights = static_cast<int>(scene.lights.size());
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    fs.u_light_position[i] = scene.lights[i].position;
+    fs.u_light_intensity[i] = scene.lights[i].intensity;
+  }
+  fs.u_ka = scene.material.ka;
+  fs.u_kd = scene.material.kd;
+  fs.u_ks = scene.material.ks;
+  fs.u_shininess = scene.material.shininess;
+  fs.u_color = scene.material.color;
+  return fs;
+}
+
+}  // namespace
+
+RenderResult render_scene(const Scene& scene, const Mesh& mesh, const Parallel& parallel,
+                          const DrawOptions& options) {
+  const glm::mat4 view_projection =
+      projection_matrix(scene.camera, scene.width, scene.height) * view_matrix(scene.camera);
+  const auto vs = programs::TransformVertexShader::from(model_matrix(scene.transform), view_projection);
+  RasterState state;
+  state.cull_back_faces = scene.cull_back_faces;
+
+  const programs::PhongShader phong = phong_shader(scene);
+  const programs::NormalsShader normals;
+  const FragmentProgram& fs =
+      scene.shading == Shading::Phong ? static_cast<const FragmentProgram&>(phong) : normals;
+
+  RenderResult result{Framebuffer(scene.width, scene.height, scene.background), {}};
+  result.stats = draw_mesh(mesh, vs, scene.tessellation, state, fs, result.framebuffer, parallel,
+                           options);
+  return result;
+}
+
+}  // namespace tessref

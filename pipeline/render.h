@@ -1,0 +1,19 @@
+#pragma once
+// One scene, one image: the scene's programs and matrices set up around the draw call.
+#include "common/parallel.h"
+#include "pipeline/draw.h"
+#include "pipeline/mesh.h"
+#include "pipeline/scene.h"
+#include "raster/framebuffer.h"
+
+namespace tessref {
+
+struct RenderResult {
+  Framebuffer framebuffer;
+  DrawStats stats;
+};
+
+RenderResult render_scene(const Scene& scene, const Mesh& mesh, const Parallel& parallel,
+                          const DrawOptions& options = {});
+
+}  // namespace tessref

@@ -1,0 +1,76 @@
+#pragma once
+// A scene as read from JSON (scenes/*.json; format in README.md): what to draw and how.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "pipeline/tessellation_settings.h"
+#include "stages/programs/phong.h"
+
+namespace tessref {
+
+enum class MeshType { Icosphere, Torus, Cube, File };
+
+struct MeshSettings {
+  MeshType type = MeshType::Icosphere;
+  std::filesystem::path path;  // type file: resolved against the scene file's folder
+  int icosphere_refinements = 1;
+  float icosphere_radius = 1.0f;
+  float torus_major_radius = 1.0f;
+  float torus_minor_radius = 0.4f;
+  int torus_major_segments = 16;
+  int torus_minor_segments = 8;
+  float cube_size = 1.0f;
+};
+
+// model = translate * rotate_z * rotate_y * rotate_x * scale (rotations in degrees).
+struct Transform {
+  glm::vec3 translate{0.0f};
+  glm::vec3 rotate_deg{0.0f};
+  glm::vec3 scale{1.0f};
+};
+
+struct Camera {
+  glm::vec3 eye{0.0f, 0.0f, 5.0f};
+  glm::vec3 target{0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float fov_y_deg = 45.0f;
+  float near = 0.1f;
+  float far = 100.0f;
+};
+
+// A point light; its intensity is used as I_a, I_d and I_s alike.
+struct Light {
+  glm::vec3 position{0.0f};
+  glm::vec3 intensity{1.0f};
+};
+
+struct Material {
+  float ka = 0.4f, kd = 0.5f, ks = 0.3f;
+  float shininess = 150.0f;
+  glm::vec3 color{0.988f, 0.0f, 0.427f};
+};
+
+enum class Shading { Phong, Normals };
+
+struct Scene {
+  std::string source;  // the scene file, or "<default scene>": prefixes error messages
+  MeshSettings mesh;
+  Transform transform;
+  Camera camera;
+  std::vector<Light> lights;
+  Material material;
+  int width = 1024, height = 1024;
+  glm::vec4 background{0.0f, 0.0f, 0.0f, 1.0f};
+  Shading shading = Shading::Phong;
+  bool cull_back_faces = true;
+  TessellationSettings tessellation;
+};
+
+inline constexpr int kMaxLights = programs::kMaxLights;  // phong.frag's arrays
+inline constexpr int kMaxImageSide = 16384;  // fixed::kMaxViewportPixels
+inline constexpr long long kMaxImagePixels = 1ll << 26;  // 8192 x 8192: about 2.4 GB of buffers
+
+}  // namespace tessref

@@ -1,0 +1,88 @@
+#include "pipeline/scene_loader.h"
+
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "common/error.h"
+#include "pipeline/json_reader.h"
+#include "pipeline/scene_overrides.h"
+#include "pipeline/scene_schema.h"
+
+namespace tessref {
+namespace {
+
+using nlohmann::json;
+
+// "[json.exception.parse_error.101] parse error at line 2, column 3: syntax error ..." ->
+// "syntax error ...": the location is given separately.
+std::string json_reason(const std::string& what) {
+  std::size_t pos = what.find("]");
+  std::string s = pos == std::string::npos ? what : what.substr(pos + 2);
+  std::size_t colon = s.find(": ");
+  if (s.rfind("parse error", 0) == 0 && colon != std::string::npos) s = s.substr(colon + 2);
+  return s;
+}
+
+json parse_json(const std::string& text, const std::string& name) {
+  try {
+    return json::parse(text, nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
+  } catch (const json::parse_error& e) {
+    // e.byte is 1-based, the byte after the last one read.
+    std::size_t end = std::min<std::size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());
+    std::size_t line = 1, column = 1;
+    for (std::size_t i = 0; i < end; ++i) {
+      if (text[i] == '\n') line++, column = 1;
+      else column++;
+    }
+    throw InputError(name + ": line " + std::to_string(line) + ", column " +
+                     std::to_string(column) + ": JSON syntax error: " + json_reason(e.what()));
+  } catch (const json::exception& e) {
+    throw InputError(name + ": invalid JSON: " + json_reason(e.what()));
+  }
+}
+
+// Objects merge key by key; anything else in `over` replaces what `base` has.
+void merge_into(json& base, const json& over) {
+  if (!base.is_object() || !over.is_object()) {
+    base = over;
+    return;
+  }
+  for (auto it = over.begin(); it != over.end(); ++it) merge_into(base[it.key()], it.value());
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& name,
+                  const std::filesystem::path& base_dir,
+                  const std::vector<std::string>& overrides) {
+  json merged = parse_json(default_scene_json(), "<default scene>");
+  merge_into(merged, parse_json(text, name));
+  JsonSource source{name, {}};
+  std::filesystem::path mesh_base = base_dir;
+  for (const std::string& text_override : overrides) {
+    SceneOverride o = parse_override(text_override);
+    apply_override(merged, o);
+    source.overridden.push_back(o.key);
+    if (o.key == "mesh" || o.key == "mesh.path") mesh_base = std::filesystem::current_path();
+  }
+  return scene_from_json(merged, source, mesh_base);
+}
+
+Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  if (file.empty())
+    return parse_scene("{}", "<default scene>", std::filesystem::current_path(), overrides);
+  const std::string name = file.string();
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) throw InputError(name + ": no such scene file");
+  if (std::filesystem::is_directory(file, ec))
+    throw InputError(name + ": is a directory, not a scene file");
+  std::ifstream in(file, std::ios::binary);
+  if (!in.is_open()) throw InputError(name + ": cannot open the scene file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_scene(text.str(), name, file.parent_path(), overrides);
+}
+
+}  // namespace tessref

@@ -1,0 +1,95 @@
+#include "pipeline/scene_overrides.h"
+
+#include <cerrno>
+#include <cstdlib>
+#include <sstream>
+#include <vector>
+
+#include "common/error.h"
+#include "pipeline/json_reader.h"
+
+namespace tessref {
+namespace {
+
+using nlohmann::json;
+
+std::string trim(const std::string& s) {
+  std::size_t b = s.find_first_not_of(" \t"), e = s.find_last_not_of(" \t");
+  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
+
+// strtod over the whole piece; false if anything is left over.
+bool parse_double(const std::string& piece, double& out) {
+  std::string s = trim(piece);
+  if (s.empty()) return false;
+  char* end = nullptr;
+  errno = 0;
+  out = std::strtod(s.c_str(), &end);  // ERANGE overflow gives +-inf: validation rejects it
+  return end == s.c_str() + s.size();
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream in(s);
+  while (std::getline(in, part, sep)) parts.push_back(part);
+  if (!s.empty() && s.back() == sep) parts.push_back("");
+  return parts;
+}
+
+bool is_index(const std::string& s) {
+  return !s.empty() && s.size() < 9 && s.find_first_not_of("0123456789") == std::string::npos;
+}
+
+}  // namespace
+
+json parse_override_value(const std::string& text) {
+  json j = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (!j.is_discarded()) return j;
+  std::vector<std::string> pieces = split(text, ',');
+  json numbers = json::array();
+  for (const std::string& p : pieces) {
+    double d;
+    if (!parse_double(p, d)) return json(text);
+    numbers.push_back(d);
+  }
+  if (numbers.size() == 1) return numbers[0];
+  return numbers;
+}
+
+SceneOverride parse_override(const std::string& text) {
+  std::size_t eq = text.find('=');
+  if (eq == std::string::npos)
+    throw InputError("--set " + text + ": expected KEY=VALUE (e.g. camera.eye=2,5,-10)");
+  SceneOverride o{trim(text.substr(0, eq)), parse_override_value(text.substr(eq + 1))};
+  for (const std::string& seg : split(o.key, '.'))
+    if (seg.empty()) throw InputError("--set " + text + ": empty key segment in '" + o.key + "'");
+  if (o.key.empty()) throw InputError("--set " + text + ": empty key");
+  return o;
+}
+
+void apply_override(json& root, const SceneOverride& o) {
+  json* node = &root;
+  std::string path;
+  for (const std::string& seg : split(o.key, '.')) {
+    if (node->is_array()) {
+      if (!is_index(seg))
+        throw InputError("--set " + o.key + ": " + path + " is an array: expected an index, got '" + seg + "'");
+      std::size_t i = std::stoul(seg);
+      if (i > node->size())
+        throw InputError("--set " + o.key + ": " + path + " has " + std::to_string(node->size()) +
+                         " elements: index " + seg + " is past its end");
+      if (i == node->size()) node->push_back(json::object());
+      node = &(*node)[i];
+    } else if (node->is_object() || node->is_null()) {
+      node = &(*node)[seg];
+    } else {
+      throw InputError("--set " + o.key + ": " + path + " is " + describe_json(*node) +
+                       ", not an object");
+    }
+    path += (path.empty() ? "" : ".") + seg;
+  }
+  *node = o.value;
+}
+
+}  // namespace tessref

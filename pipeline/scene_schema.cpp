@@ -1,0 +1,179 @@
+#include "pipeline/scene_schema.h"
+
+#include <cmath>
+#include <limits>
+
+namespace tessref {
+namespace {
+
+using nlohmann::json;
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+bool parse(const std::string& s, MeshType& out) {
+  static const std::pair<const char*, MeshType> kNames[] = {{"icosphere", MeshType::Icosphere},
+                                                            {"torus", MeshType::Torus},
+                                                            {"cube", MeshType::Cube},
+                                                            {"file", MeshType::File}};
+  for (const auto& [name, type] : kNames)
+    if (s == name) return out = type, true;
+  return false;
+}
+
+bool parse(const std::string& s, Shading& out) {
+  if (s == "phong") return out = Shading::Phong, true;
+  if (s == "normals") return out = Shading::Normals, true;
+  return false;
+}
+
+template <typename Enum>
+Enum enum_value(JsonObject& o, const std::string& key, const char* choices) {
+  std::string s = o.string(key);
+  Enum e{};
+  if (!parse(s, e)) o.fail(key, "expected one of " + std::string(choices) + ", got \"" + s + "\"");
+  return e;
+}
+
+MeshSettings read_mesh(JsonObject o, const std::filesystem::path& base_dir) {
+  MeshSettings m;
+  m.type = enum_value<MeshType>(o, "type", "icosphere, torus, cube, file");
+  if (o.has("path")) {
+    std::filesystem::path p = o.string("path");
+    m.path = p.is_relative() ? base_dir / p : p;
+  }
+  if (m.type == MeshType::File && m.path.empty())
+    o.fail("path", "required when mesh.type is \"file\" (a path relative to the scene file)");
+  JsonObject ico = o.object("icosphere");
+  m.icosphere_refinements = ico.integer("refinements", 0, 8);
+  m.icosphere_radius = ico.number_in("radius", 0.0f, kInf, true, true);
+  ico.finish();
+  JsonObject torus = o.object("torus");
+  m.torus_major_radius = torus.number_in("major_radius", 0.0f, kInf, true, true);
+  m.torus_minor_radius = torus.number_in("minor_radius", 0.0f, m.torus_major_radius, true, true);
+  m.torus_major_segments = torus.integer("major_segments", 3, 4096);
+  m.torus_minor_segments = torus.integer("minor_segments", 3, 4096);
+  torus.finish();
+  JsonObject cube = o.object("cube");
+  m.cube_size = cube.number_in("size", 0.0f, kInf, true, true);
+  cube.finish();
+  o.finish();
+  return m;
+}
+
+Transform read_transform(JsonObject o) {
+  Transform t;
+  t.translate = o.vec3("translate");
+  t.rotate_deg = o.vec3("rotate_deg");
+  t.scale = o.vec3_or_scalar("scale");
+  if (t.scale.x == 0.0f || t.scale.y == 0.0f || t.scale.z == 0.0f)
+    o.fail("scale", "must not be zero (the model would be flat and its normals undefined)");
+  o.finish();
+  return t;
+}
+
+Camera read_camera(JsonObject o) {
+  Camera c;
+  c.eye = o.vec3("eye");
+  c.target = o.vec3("target");
+  c.up = o.vec3("up");
+  c.fov_y_deg = o.number_in("fov_y_deg", 0.0f, 180.0f, true, true);
+  c.near = o.number_in("near", 0.0f, kInf, true, true);
+  c.far = o.number_in("far", c.near, kInf, true, true);
+  glm::vec3 forward = c.target - c.eye;
+  if (glm::dot(forward, forward) == 0.0f) o.fail("target", "must differ from camera.eye");
+  glm::vec3 side = glm::cross(forward, c.up);
+  if (!(glm::dot(side, side) > 1e-12f * glm::dot(forward, forward) * glm::dot(c.up, c.up)))
+    o.fail("up", "must not be zero or parallel to the view direction (target - eye)");
+  o.finish();
+  return c;
+}
+
+std::vector<Light> read_lights(JsonObject& root, const JsonSource& source) {
+  const json& arr = root.value("lights");
+  if (!arr.is_array() || arr.size() > kMaxLights)
+    root.fail("lights", "expected an array of at most " + std::to_string(kMaxLights) +
+                            " lights, got " + describe_json(arr));
+  std::vector<Light> lights;
+  for (std::size_t i = 0; i < arr.size(); ++i) {
+    JsonObject o(arr[i], "lights." + std::to_string(i), source);
+    Light l;
+    l.position = o.vec3("position");
+    if (o.has("intensity")) l.intensity = o.vec3("intensity");
+    if (l.intensity.x < 0.0f || l.intensity.y < 0.0f || l.intensity.z < 0.0f)
+      o.fail("intensity", "must not be negative");
+    o.finish();
+    lights.push_back(l);
+  }
+  return lights;
+}
+
+Material read_material(JsonObject o) {
+  Material m;
+  m.ka = o.number_in("ka", 0.0f, kInf, false, true);
+  m.kd = o.number_in("kd", 0.0f, kInf, false, true);
+  m.ks = o.number_in("ks", 0.0f, kInf, false, true);
+  // > 0: GLSL leaves pow(0, 0) undefined.
+  m.shininess = o.number_in("shininess", 0.0f, kInf, true, true);
+  m.color = o.vec3("color");
+  o.finish();
+  return m;
+}
+
+TessellationSettings read_tessellation(JsonObject o) {
+  TessellationSettings t;
+  t.enabled = o.boolean("enabled");
+  t.scheme = enum_value<SurfaceScheme>(o, "scheme", "flat, pn");
+  t.normal_mode =
+      enum_value<NormalMode>(o, "normal_mode", "linear, quadratic, quadratic_corrected, analytic");
+  t.spacing = enum_value<TessSpacing>(o, "spacing", "equal, fractional_odd, fractional_even");
+  t.winding = enum_value<TessWinding>(o, "winding", "ccw, cw");
+  // The GL spec defines every outer level (NaN or <= 0 discards the patch, large values clamp)
+  // and every inner level but NaN (negative and large values clamp).
+  std::vector<float> inner = o.levels("inner", 1, 2);
+  for (std::size_t i = 0; i < inner.size(); ++i) {
+    if (std::isnan(inner[i]))
+      o.fail("inner", "NaN inner levels are not allowed: the GL spec defines no clamping of NaN "
+                      "(NaN outer levels are, and discard the patch)");
+    t.levels.inner[i] = inner[i];
+  }
+  if (inner.size() == 1) t.levels.inner[1] = inner[0];
+  std::vector<float> outer = o.levels("outer", 3, 4);
+  for (std::size_t i = 0; i < outer.size(); ++i) t.levels.outer[i] = outer[i];
+  if (outer.size() == 3) t.levels.outer[3] = outer[2];
+  JsonObject a = o.object("adaptive");
+  t.adaptive.enabled = a.boolean("enabled");
+  t.adaptive.pixels_per_segment = a.number_in("pixels_per_segment", 0.0f, kInf, true, true);
+  a.finish();
+  o.finish();
+  return t;
+}
+
+}  // namespace
+
+Scene scene_from_json(const json& root_json, const JsonSource& source,
+                      const std::filesystem::path& mesh_base_dir) {
+  JsonObject root(root_json, "", source);
+  Scene s;
+  s.source = source.name;
+  if (root.has("description")) root.string("description");
+  s.mesh = read_mesh(root.object("mesh"), mesh_base_dir);
+  s.transform = read_transform(root.object("transform"));
+  s.camera = read_camera(root.object("camera"));
+  s.lights = read_lights(root, source);
+  s.material = read_material(root.object("material"));
+  JsonObject image = root.object("image");
+  s.width = image.integer("width", 1, kMaxImageSide);
+  s.height = image.integer("height", 1, kMaxImageSide);
+  if (static_cast<long long>(s.width) * s.height > kMaxImagePixels)
+    image.fail("height", std::to_string(s.width) + " x " + std::to_string(s.height) +
+                             " pixels is more than the limit of " +
+                             std::to_string(kMaxImagePixels) + " (8192 x 8192)");
+  image.finish();
+  s.background = root.rgba("background");
+  s.shading = enum_value<Shading>(root, "shading", "phong, normals");
+  s.cull_back_faces = root.boolean("cull_back_faces");
+  s.tessellation = read_tessellation(root.object("tessellation"));
+  root.finish();
+  return s;
+}
+
+}  // namespace tessref

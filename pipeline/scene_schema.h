@@ -1,0 +1,17 @@
+#pragma once
+// The scene format: JSON -> Scene, every key checked (README.md, "Scene format").
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "pipeline/json_reader.h"
+#include "pipeline/scene.h"
+
+namespace tessref {
+
+// Reads a complete scene (the default scene merged with the file and the overrides). Relative
+// mesh paths resolve against mesh_base_dir. InputError "<source>: <key.path>: <what>".
+Scene scene_from_json(const nlohmann::json& root, const JsonSource& source,
+                      const std::filesystem::path& mesh_base_dir);
+
+}  // namespace tessref

@@ -1,0 +1,34 @@
+#pragma once
+// The scene's tessellation block: what the tessellation stages (stages/) will be asked to do.
+#include "stages/tpg.h"
+
+namespace tessref {
+
+// How a triangle becomes a curved patch.
+enum class SurfaceScheme { Flat, PN };
+// How the normal is evaluated across a PN patch (see /work/shared/notes/formulas.md):
+// linear (interpolated corner normals), quadratic (Vlachos et al.), quadratic_corrected
+// (the corrected mid-edge coefficient), analytic (cross product of the patch's tangents).
+enum class NormalMode { Linear, Quadratic, QuadraticCorrected, Analytic };
+
+struct AdaptiveTessellation {
+  bool enabled = false;
+  float pixels_per_segment = 8.0f;  // target edge segment length on screen
+};
+
+struct TessellationSettings {
+  bool enabled = false;
+  SurfaceScheme scheme = SurfaceScheme::PN;
+  NormalMode normal_mode = NormalMode::Quadratic;
+  TessSpacing spacing = TessSpacing::FractionalOdd;
+  TessWinding winding = TessWinding::Ccw;
+  TessLevels levels;  // used as is when adaptive is off (triangles: outer[0..2], inner[0])
+  AdaptiveTessellation adaptive;
+};
+
+const char* to_string(SurfaceScheme s);  // "flat" | "pn"
+const char* to_string(NormalMode m);     // "linear" | "quadratic" | ...
+bool parse(const std::string& s, SurfaceScheme& out);
+bool parse(const std::string& s, NormalMode& out);
+
+}  // namespace tessref

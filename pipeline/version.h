@@ -1,4 +1,0 @@
-#pragma once
-namespace tessref {
-const char* version();
-}  // namespace tessref
