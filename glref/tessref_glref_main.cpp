@@ -117,7 +117,7 @@ int main(int argc, char** argv) {
   LayoutArgs sweep_layout;
   sweep_layout.add_to(sweep);
   std::string levels_path;
-  std::size_t batch = 8192;
+  std::size_t batch = 1024;
   bool show_stats = false;
   sweep->add_option("--levels", levels_path,
                     "file with 'outer0 outer1 outer2 outer3 inner0 inner1' per line ('-' = stdin)")->required();
@@ -138,8 +138,11 @@ int main(int argc, char** argv) {
       draws += capture.last_stats().draws;
       vertices += capture.last_stats().vertices;
       seconds += capture.last_stats().seconds;
-      std::string out;
-      for (std::size_t i = 0; i < coords.size(); ++i) out += format_sweep_line(layout.domain, start + i, coords[i]);
+      std::string out;  // flushed every ~1 MB: a level-64 batch formats to gigabytes
+      for (std::size_t i = 0; i < coords.size(); ++i) {
+        append_sweep_line(out, layout.domain, start + i, coords[i]);
+        if (out.size() > (1u << 20)) write_all(out), out.clear();
+      }
       write_all(out);
     }
     if (show_stats)

@@ -42,9 +42,11 @@ std::string format_stream(TessDomain domain, const std::vector<glm::vec3>& coord
   return out;
 }
 
-std::string format_sweep_line(TessDomain domain, std::size_t patch, const std::vector<glm::vec3>& coords) {
+void append_sweep_line(std::string& out, TessDomain domain, std::size_t patch, const std::vector<glm::vec3>& coords) {
   const int n = printed_components(domain);
-  std::string out = std::to_string(patch) + ' ' + std::to_string(coords.size());
+  out += std::to_string(patch);
+  out += ' ';
+  out += std::to_string(coords.size());
   out.reserve(out.size() + coords.size() * n * 9 + 1);
   for (const glm::vec3& c : coords)
     for (int k = 0; k < n; ++k) {
@@ -52,6 +54,11 @@ std::string format_sweep_line(TessDomain domain, std::size_t patch, const std::v
       append_hex(out, c[k]);
     }
   out += '\n';
+}
+
+std::string format_sweep_line(TessDomain domain, std::size_t patch, const std::vector<glm::vec3>& coords) {
+  std::string out;
+  append_sweep_line(out, domain, patch, coords);
   return out;
 }
 

@@ -23,6 +23,7 @@ std::string format_stream(TessDomain domain, const std::vector<glm::vec3>& coord
 // A dataset line: "<patch index> <vertex count>" then every printed component in hex, all
 // separated by single spaces, ending in a newline.
 std::string format_sweep_line(TessDomain domain, std::size_t patch, const std::vector<glm::vec3>& coords);
+void append_sweep_line(std::string& out, TessDomain domain, std::size_t patch, const std::vector<glm::vec3>& coords);
 
 // The float's bits as 8 lowercase hex digits.
 void append_hex(std::string& out, float v);
