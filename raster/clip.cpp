@@ -82,6 +82,18 @@ int clip_against(const Planes& planes, int i, const ClipVertex* src, int n, Clip
 
 }  // namespace
 
+ClipTest classify_triangle(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c,
+                           float guard_x, float guard_y) {
+  if (!finite(a) || !finite(b) || !finite(c)) return ClipTest::kInvalid;
+  const Planes planes{guard_x, guard_y};
+  const std::uint32_t ca = planes.outcode(a), cb = planes.outcode(b), cc = planes.outcode(c);
+  if (ca & cb & cc) return ClipTest::kRejected;
+  if ((ca | cb | cc) & ((1u << kClipPlaneCount) - 1)) return ClipTest::kNeedsClip;
+  // Inside near and far means w >= 0; w == 0 (the eye point) must not be divided by.
+  if (!(a.w > 0.0f && b.w > 0.0f && c.w > 0.0f)) return ClipTest::kInvalid;
+  return ClipTest::kInside;
+}
+
 ClipResult clip_triangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
                          int num_varyings, float guard_x, float guard_y, ClipPolygon& out) {
   if (!finite(a.position) || !finite(b.position) || !finite(c.position)) return ClipResult::kInvalid;

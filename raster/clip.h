@@ -21,6 +21,17 @@ enum class ClipResult {
   kKept,      // out.count >= 3 vertices, all with finite positions and w > 0
 };
 
+enum class ClipTest {
+  kInvalid,     // a non-finite position, or w <= 0 with nothing to clip
+  kRejected,    // wholly outside one plane of the view volume
+  kInside,      // inside near, far and the guard band: no clipping needed, all w > 0
+  kNeedsClip,   // crosses near, far or a guard plane
+};
+
+// The outcode test alone (cheap; most triangles need no clipping).
+ClipTest classify_triangle(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c,
+                           float guard_x, float guard_y);
+
 // guard_x, guard_y: the guard planes are x = +-guard_x * w and y = +-guard_y * w, in clip space
 // (kGuardBandPixels / viewport width or height, so >= 1).
 ClipResult clip_triangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,

@@ -31,7 +31,9 @@ using raster::SetupTriangle;
 
 constexpr int kTileSize = 64;                       // pixels
 constexpr std::size_t kChunkTriangles = 1024;       // input triangles per setup task
-constexpr std::size_t kPassTriangles = 64 * 1024;   // bounds memory: set up, then scan, per pass
+// Bounds memory (about 100 bytes + 12 * num_varyings per triangle are held per pass); each pass
+// streams the framebuffer once more, so it should not be too small either.
+constexpr std::size_t kPassTriangles = 256 * 1024;
 
 struct Chunk {
   std::vector<SetupTriangle> tris;
@@ -50,6 +52,8 @@ void setup_chunk(const TriangleBatch& batch, std::size_t first, std::size_t last
                  const raster::Viewport& vp, bool cull, const TileGrid& grid, Chunk& chunk) {
   chunk.tris.clear();
   chunk.varyings.clear();
+  chunk.tris.reserve(last - first);
+  chunk.varyings.reserve((last - first) * 3 * std::size_t(std::clamp(batch.num_varyings, 0, kMaxVaryings)));
   chunk.stats = RasterStats{};
   for (std::size_t i = first; i < last; ++i) {
     int pieces = 0;
@@ -100,7 +104,9 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
   const TileGrid grid{(fb.width + kTileSize - 1) / kTileSize, (fb.height + kTileSize - 1) / kTileSize};
   const int num_varyings = std::clamp(batch.num_varyings, 0, kMaxVaryings);
 
-  std::vector<Chunk> chunks;
+  // Scratch kept per calling thread: reallocating (and page-faulting) tens of megabytes on every
+  // draw would cost more than small draws themselves.
+  thread_local std::vector<Chunk> chunks;
   std::vector<std::uint64_t> tile_fragments(grid.count());
   for (std::size_t pass_first = 0; pass_first < n; pass_first += kPassTriangles) {
     const std::size_t pass_last = std::min(n, pass_first + kPassTriangles);

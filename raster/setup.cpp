@@ -76,9 +76,11 @@ PieceResult setup_piece(const WindowVertex& a, const WindowVertex& b, const Wind
   t.max_x = int(std::min<std::int64_t>(vp.width - 1, floor_div(hi_x - half, one)));
   t.max_y = int(std::min<std::int64_t>(vp.height - 1, floor_div(hi_y - half, one)));
 
+  // Stored as a0, a1 - a0, a2 - a0 (see SetupTriangle::varying_offset).
   t.varying_offset = std::uint32_t(varyings.size());
-  for (int i = 0; i < 3; ++i)
-    varyings.insert(varyings.end(), v[i]->varyings, v[i]->varyings + num_varyings);
+  varyings.insert(varyings.end(), v[0]->varyings, v[0]->varyings + num_varyings);
+  for (int i = 1; i < 3; ++i)
+    for (int j = 0; j < num_varyings; ++j) varyings.push_back(v[i]->varyings[j] - v[0]->varyings[j]);
   tris.push_back(t);
   return PieceResult::kRasterized;
 }
@@ -94,6 +96,20 @@ SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index, const
   pieces_out = 0;
   const ClipVertex* in = &batch.vertices[3 * index];
   const int nv = std::clamp(batch.num_varyings, 0, kMaxVaryings);
+  switch (classify_triangle(in[0].position, in[1].position, in[2].position, vp.guard_x(),
+                            vp.guard_y())) {
+    case ClipTest::kInvalid:
+    case ClipTest::kRejected: return SetupOutcome::kClippedAway;
+    case ClipTest::kInside: {
+      const WindowVertex a = to_window(in[0], vp), b = to_window(in[1], vp), c = to_window(in[2], vp);
+      if (setup_piece(a, b, c, vp, cull_back_faces, nv, tris, varyings) == PieceResult::kCulled)
+        return SetupOutcome::kCulled;
+      pieces_out = 1;
+      return SetupOutcome::kRasterized;
+    }
+    case ClipTest::kNeedsClip: break;
+  }
+
   ClipPolygon poly;
   ClipResult clipped =
       clip_triangle(in[0], in[1], in[2], nv, vp.guard_x(), vp.guard_y(), poly);

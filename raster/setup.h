@@ -17,7 +17,9 @@ struct SetupTriangle {
   float inv_w[3];           // 1 / clip w, for perspective-correct varyings
   int min_x, min_y, max_x, max_y;  // pixels whose centers may be covered, inclusive, on screen
   bool front_facing;
-  std::uint32_t varying_offset;  // 3 * num_varyings floats in the owner's varying store
+  // 3 * num_varyings floats in the owner's varying store: vertex 0's values, then the
+  // differences a1 - a0 and a2 - a0 (a constant varying then interpolates exactly).
+  std::uint32_t varying_offset;
 };
 
 struct Viewport {

@@ -16,13 +16,13 @@ constexpr int kW = 300, kH = 200;  // not a multiple of the tile size
 
 // A mixed batch: small and large triangles, some off screen, some crossing near or far, some
 // behind the eye, a few with NaN positions; 4 random varyings each.
-TriangleBatch random_batch(std::size_t count, std::uint32_t seed) {
+TriangleBatch random_batch(std::size_t count, std::uint32_t seed, float size_scale = 1.0f) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   TriangleBatch b;
   b.num_varyings = 4;
   for (std::size_t t = 0; t < count; ++t) {
-    const float size = std::exp(u(rng) * std::log(u(rng) < 0.05f ? 3.0f : 0.6f));  // NDC units
+    const float size = size_scale * std::exp(u(rng) * std::log(u(rng) < 0.05f ? 3.0f : 0.6f));  // NDC units
     const glm::vec3 c(u(rng) * 2.6f - 1.3f, u(rng) * 2.6f - 1.3f, u(rng) * 2.4f - 1.2f);
     for (int k = 0; k < 3; ++k) {
       ClipVertex v;
@@ -81,10 +81,10 @@ TEST(RasterDeterminism, ThreadCountDoesNotChangeTheResult) {
 }
 
 TEST(RasterDeterminism, LargeBatchOverSeveralPasses) {
-  // More triangles than one setup pass holds (64 Ki), so passes and chunks both split it.
-  const TriangleBatch b = random_batch(150000, 9u);
+  // More triangles than one setup pass holds (256 Ki), so passes and chunks both split it.
+  const TriangleBatch b = random_batch(300000, 9u, 0.1f);
   const Result one = render(b, 1, false);
-  EXPECT_EQ(one.stats.triangles_in, 150000u);
+  EXPECT_EQ(one.stats.triangles_in, 300000u);
   expect_identical(one, render(b, 2, false), "2 threads");
   expect_identical(one, render(b, 8, false), "8 threads");
 }
