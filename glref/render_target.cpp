@@ -1,0 +1,136 @@
+#include "glref/render_target.h"
+
+#include <epoxy/gl.h>
+
+#include "glref/gl_context.h"
+#include "glref/gl_error.h"
+
+#include <cstdio>
+
+namespace tessref::glref {
+
+RenderTarget::RenderTarget(GlContext& context, const RenderTargetDesc& desc)
+    : context_(context), desc_(desc) {
+  context_.make_current();
+  GLint max_size = 0, max_colors = 0;
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
+  glGetIntegerv(GL_MAX_COLOR_ATTACHMENTS, &max_colors);
+  if (desc.width <= 0 || desc.height <= 0 || desc.width > max_size || desc.height > max_size)
+    throw GlError("RenderTarget: size " + std::to_string(desc.width) + "x" + std::to_string(desc.height) +
+                  " outside 1.." + std::to_string(max_size));
+  if (desc.colors.empty() || static_cast<GLint>(desc.colors.size()) > max_colors)
+    throw GlError("RenderTarget: " + std::to_string(desc.colors.size()) + " color attachments, 1.." +
+                  std::to_string(max_colors) + " supported");
+
+  glGenFramebuffers(1, &fbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  color_textures_.resize(desc.colors.size());
+  glGenTextures(static_cast<GLsizei>(color_textures_.size()), color_textures_.data());
+  std::vector<GLenum> draw_buffers;
+  for (std::size_t i = 0; i < desc.colors.size(); ++i) {
+    glBindTexture(GL_TEXTURE_2D, color_textures_[i]);
+    glTexStorage2D(GL_TEXTURE_2D, 1, desc.colors[i] == ColorFormat::Rgba8 ? GL_RGBA8 : GL_RGBA32F,
+                   desc.width, desc.height);
+    const GLenum attachment = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, color_textures_[i], 0);
+    draw_buffers.push_back(attachment);
+  }
+  glDrawBuffers(static_cast<GLsizei>(draw_buffers.size()), draw_buffers.data());
+  if (desc.depth) {
+    glGenTextures(1, &depth_texture_);
+    glBindTexture(GL_TEXTURE_2D, depth_texture_);
+    glTexStorage2D(GL_TEXTURE_2D, 1, GL_DEPTH_COMPONENT32F, desc.width, desc.height);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_texture_, 0);
+  }
+  glBindTexture(GL_TEXTURE_2D, 0);
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "0x%x", status);
+    release();
+    throw GlError(std::string("RenderTarget: framebuffer incomplete, status ") + buf);
+  }
+  check_gl("RenderTarget: creating the framebuffer");
+}
+
+RenderTarget::~RenderTarget() { release(); }
+
+void RenderTarget::release() noexcept {
+  if (!fbo_) return;
+  GLint bound = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+  const bool was_bound = static_cast<unsigned>(bound) == fbo_;
+  glDeleteFramebuffers(1, &fbo_);
+  if (!color_textures_.empty())
+    glDeleteTextures(static_cast<GLsizei>(color_textures_.size()), color_textures_.data());
+  if (depth_texture_) glDeleteTextures(1, &depth_texture_);
+  fbo_ = depth_texture_ = 0;
+  color_textures_.clear();
+  // Surfaceless: never leave the context without a framebuffer.
+  if (was_bound) context_.bind_default_framebuffer();
+}
+
+void RenderTarget::bind() {
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glViewport(0, 0, desc_.width, desc_.height);
+}
+
+void RenderTarget::clear(const glm::vec4& color, float depth) {
+  bind();
+  for (std::size_t i = 0; i < color_textures_.size(); ++i)
+    glClearBufferfv(GL_COLOR, static_cast<GLint>(i), &color[0]);
+  if (desc_.depth) glClearBufferfv(GL_DEPTH, 0, &depth);
+  check_gl("RenderTarget::clear");
+}
+
+void RenderTarget::check_attachment(int attachment) const {
+  if (attachment < 0 || attachment >= static_cast<int>(color_textures_.size()))
+    throw GlError("RenderTarget: no color attachment " + std::to_string(attachment));
+}
+
+std::vector<glm::u8vec4> RenderTarget::read_rgba8(int attachment) {
+  check_attachment(attachment);
+  bind();
+  std::vector<glm::u8vec4> out(static_cast<std::size_t>(desc_.width) * desc_.height);
+  glReadBuffer(GL_COLOR_ATTACHMENT0 + attachment);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, desc_.width, desc_.height, GL_RGBA, GL_UNSIGNED_BYTE, out.data());
+  check_gl("RenderTarget::read_rgba8");
+  return out;
+}
+
+std::vector<glm::vec4> RenderTarget::read_rgba_float(int attachment) {
+  check_attachment(attachment);
+  bind();
+  std::vector<glm::vec4> out(static_cast<std::size_t>(desc_.width) * desc_.height);
+  glReadBuffer(GL_COLOR_ATTACHMENT0 + attachment);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, desc_.width, desc_.height, GL_RGBA, GL_FLOAT, out.data());
+  check_gl("RenderTarget::read_rgba_float");
+  return out;
+}
+
+std::vector<float> RenderTarget::read_depth() {
+  if (!desc_.depth) throw GlError("RenderTarget: no depth attachment");
+  bind();
+  std::vector<float> out(static_cast<std::size_t>(desc_.width) * desc_.height);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, desc_.width, desc_.height, GL_DEPTH_COMPONENT, GL_FLOAT, out.data());
+  check_gl("RenderTarget::read_depth");
+  return out;
+}
+
+Framebuffer RenderTarget::to_framebuffer() {
+  Framebuffer fb;
+  fb.width = desc_.width;
+  fb.height = desc_.height;
+  fb.color = read_rgba_float(0);
+  fb.depth = desc_.depth ? read_depth()
+                         : std::vector<float>(static_cast<std::size_t>(desc_.width) * desc_.height, 1.0f);
+  fb.aux = color_textures_.size() > 1
+               ? read_rgba_float(1)
+               : std::vector<glm::vec4>(static_cast<std::size_t>(desc_.width) * desc_.height, glm::vec4(0.0f));
+  return fb;
+}
+
+}  // namespace tessref::glref

@@ -1,0 +1,61 @@
+#pragma once
+// An offscreen framebuffer object for the GL runner: color attachments plus a 32-bit float depth
+// buffer, read back in tessref's convention (row 0 is the bottom row, as in GL window space).
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "raster/framebuffer.h"
+
+namespace tessref::glref {
+
+class GlContext;
+
+enum class ColorFormat { Rgba8, Rgba32F };
+
+struct RenderTargetDesc {
+  int width = 0;
+  int height = 0;
+  // One entry per color attachment (fragment output location i -> attachment i).
+  std::vector<ColorFormat> colors = {ColorFormat::Rgba8};
+  bool depth = true;  // GL_DEPTH_COMPONENT32F
+};
+
+class RenderTarget {
+ public:
+  // Throws GlError if the size exceeds GL_MAX_RENDERBUFFER_SIZE or the FBO is incomplete.
+  RenderTarget(GlContext& context, const RenderTargetDesc& desc);
+  ~RenderTarget();  // rebinds the context's default FBO if this one is bound
+  RenderTarget(const RenderTarget&) = delete;
+  RenderTarget& operator=(const RenderTarget&) = delete;
+
+  // Binds the FBO for drawing and reading and sets the viewport to the whole target.
+  void bind();
+  // Clears every color attachment to `color` and depth to `depth`.
+  void clear(const glm::vec4& color, float depth = 1.0f);
+
+  int width() const { return desc_.width; }
+  int height() const { return desc_.height; }
+  const RenderTargetDesc& desc() const { return desc_; }
+
+  // Readback, width * height values, row 0 at the bottom.
+  std::vector<glm::u8vec4> read_rgba8(int attachment = 0);
+  std::vector<glm::vec4> read_rgba_float(int attachment = 0);  // Rgba8 comes back as c / 255
+  std::vector<float> read_depth();
+  // Attachment 0 -> color, depth -> depth, attachment 1 (if any) -> aux: for comparing with
+  // tessref's own framebuffer.
+  Framebuffer to_framebuffer();
+
+ private:
+  void check_attachment(int attachment) const;
+  void release() noexcept;
+
+  GlContext& context_;
+  RenderTargetDesc desc_;
+  unsigned fbo_ = 0;
+  std::vector<unsigned> color_textures_;
+  unsigned depth_texture_ = 0;
+};
+
+}  // namespace tessref::glref
