@@ -1,0 +1,118 @@
+// Domain points generated per second by tessref's primitive generator at levels 8, 16 and 64,
+// beside Mesa llvmpipe generating the same patches (transform feedback capture of gl_TessCoord
+// with rasterizer discard), measured in the same process. The closing table gives the ratios.
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "stages/tpg.h"
+#ifdef TESSREF_HAVE_GLREF
+#include "glref/gl_context.h"
+#include "glref/tess_capture.h"
+#endif
+
+namespace {
+
+using namespace tessref;
+
+constexpr TessLayout kLayout{TessDomain::Triangles, TessSpacing::FractionalOdd, TessWinding::Ccw,
+                             false};
+
+TessLevels uniform_levels(float level) {
+  TessLevels l;
+  l.outer = {level, level, level, level};
+  l.inner = {level, level};
+  return l;
+}
+
+void BM_TessrefTpg(benchmark::State& state) {
+  const TessLevels levels = uniform_levels(float(state.range(0)));
+  TessDomainPoints out;
+  std::size_t points = 0;
+  for (auto _ : state) {
+    generate_tessellation(kLayout, levels, TessProfile::llvmpipe(), out);
+    benchmark::DoNotOptimize(out.coords.data());
+    points += out.coords.size();
+  }
+  state.counters["points_per_s"] = benchmark::Counter(double(points), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_TessrefTpg)->Arg(8)->Arg(16)->Arg(64)->Unit(benchmark::kMicrosecond);
+
+#ifdef TESSREF_HAVE_GLREF
+glref::GlContext* context() {
+  static std::unique_ptr<glref::GlContext> ctx = [] {
+    try {
+      return std::make_unique<glref::GlContext>();
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "llvmpipe baseline unavailable: %s\n", e.what());
+      return std::unique_ptr<glref::GlContext>();
+    }
+  }();
+  return ctx.get();
+}
+
+void BM_LlvmpipeTpg(benchmark::State& state) {
+  glref::GlContext* ctx = context();
+  if (!ctx) {
+    state.SkipWithError("no GL context");
+    return;
+  }
+  const TessLevels levels = uniform_levels(float(state.range(0)));
+  // One draw's worth of patches (kept under the 65,535-vertex chunk limit by TessCapture).
+  const std::size_t per_patch = generate_tessellation(kLayout, levels).coords.size();
+  const std::vector<TessLevels> batch(std::max<std::size_t>(1, 50000 / per_patch), levels);
+  glref::TessCapture capture(*ctx);
+  std::size_t points = 0;
+  for (auto _ : state) {
+    auto result = capture.capture(kLayout, batch);
+    benchmark::DoNotOptimize(result.data());
+    points += batch.size() * per_patch;
+  }
+  state.counters["points_per_s"] = benchmark::Counter(double(points), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_LlvmpipeTpg)->Arg(8)->Arg(16)->Arg(64)->Unit(benchmark::kMillisecond);
+#endif
+
+// Collects points_per_s per (implementation, level) to print the ratios at the end.
+class RatioReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& r : runs) {
+      if (r.error_occurred) continue;
+      const auto it = r.counters.find("points_per_s");
+      if (it != r.counters.end()) rates_[r.benchmark_name()] = it->second.value;
+    }
+  }
+  void print_ratios() const {
+    std::printf("\nlevel  tessref Mpoints/s  llvmpipe Mpoints/s  ratio\n");
+    for (int level : {8, 16, 64}) {
+      const auto t = rates_.find("BM_TessrefTpg/" + std::to_string(level));
+      const auto l = rates_.find("BM_LlvmpipeTpg/" + std::to_string(level));
+      if (t == rates_.end()) continue;
+      if (l == rates_.end()) {
+        std::printf("%5d  %17.1f  %18s  %5s\n", level, t->second / 1e6, "n/a", "n/a");
+        continue;
+      }
+      std::printf("%5d  %17.1f  %18.1f  %5.1fx\n", level, t->second / 1e6, l->second / 1e6,
+                  t->second / l->second);
+    }
+  }
+
+ private:
+  std::map<std::string, double> rates_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  RatioReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  reporter.print_ratios();
+  benchmark::Shutdown();
+  return 0;
+}
