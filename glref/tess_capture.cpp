@@ -150,18 +150,15 @@ std::vector<std::vector<glm::vec3>> TessCapture::capture(const TessLayout& layou
   const int vpp = vertices_per_primitive(layout);
   std::vector<FeedbackVertex> records;
 
-  std::size_t first = 0;
+  std::vector<std::size_t> point_bounds(levels.size());
+  for (std::size_t i = 0; i < levels.size(); ++i) point_bounds[i] = domain_point_bound(layout, levels[i]);
+  const std::vector<DrawRange> draws =
+      split_draws(point_bounds, options_.max_points_per_draw, options_.max_patches_per_draw);
   try {
-    while (first < levels.size()) {
-      // Greedy split: as many patches as keep the point bound under the limit (at least one).
-      std::size_t end = first, points = 0, emitted = 0;
-      while (end < levels.size() && end - first < options_.max_patches_per_draw) {
-        const std::size_t p = domain_point_bound(layout, levels[end]);
-        if (end > first && points + p > options_.max_points_per_draw) break;
-        points += p;
-        emitted += emitted_vertex_bound(layout, levels[end]);
-        ++end;
-      }
+    for (const DrawRange& draw : draws) {
+      const std::size_t first = draw.first, end = draw.first + draw.count;
+      std::size_t emitted = 0;
+      for (std::size_t i = first; i < end; ++i) emitted += emitted_vertex_bound(layout, levels[i]);
       const std::size_t capacity_vertices = std::max<std::size_t>(emitted, vpp);
       ensure_buffer(GL_TRANSFORM_FEEDBACK_BUFFER, feedback_buffer_,
                     capacity_vertices * sizeof(FeedbackVertex), feedback_capacity_);
@@ -217,7 +214,6 @@ std::vector<std::vector<glm::vec3>> TessCapture::capture(const TessLayout& layou
                         std::to_string(result[i].size()) + " vertices, above its bound");
       stats_.vertices += nv;
       ++stats_.draws;
-      first = end;
     }
   } catch (...) {
     if (glIsEnabled(GL_RASTERIZER_DISCARD)) glDisable(GL_RASTERIZER_DISCARD);

@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include "glref/draw_split.h"
 #include "glref/gl_program.h"
 #include "stages/tpg.h"
 
@@ -16,9 +17,9 @@ namespace tessref::glref {
 class GlContext;
 
 struct CaptureOptions {
-  // Mesa's draw module keeps TES vertex indices in 16 bits and silently mixes up patches once one
-  // draw generates more than 65,535 domain points: draws are split below this many (upper bound).
-  std::size_t max_points_per_draw = 60000;
+  // Draws are split so that each generates at most this many domain points (upper bound): see
+  // draw_split.h for the llvmpipe trap this avoids.
+  std::size_t max_points_per_draw = kSafePointsPerDraw;
   std::size_t max_patches_per_draw = 16384;
 };
 
