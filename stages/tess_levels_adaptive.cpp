@@ -43,12 +43,8 @@ float adaptive_edge_level(const glm::vec3& a_in, const glm::vec3& b_in,
 
 TessLevels triangle_levels(const TessLevelSettings& s, const glm::vec3& p0, const glm::vec3& p1,
                            const glm::vec3& p2) {
+  if (!s.adaptive) return s.constant;
   TessLevels l;
-  if (!s.adaptive) {
-    l.outer = {s.outer, s.outer, s.outer, s.outer};
-    l.inner = {s.inner, s.inner};
-    return l;
-  }
   l.outer[0] = adaptive_edge_level(p1, p2, s.screen);
   l.outer[1] = adaptive_edge_level(p2, p0, s.screen);
   l.outer[2] = adaptive_edge_level(p0, p1, s.screen);

@@ -23,9 +23,16 @@ struct AdaptiveLevelSettings {
 
 struct TessLevelSettings {
   bool adaptive = false;
-  float outer = 4.0f;  // constant mode: every outer level
-  float inner = 4.0f;  // constant mode: every inner level
+  TessLevels constant{{4.0f, 4.0f, 4.0f, 4.0f}, {4.0f, 4.0f}};  // constant mode: written as is
   AdaptiveLevelSettings screen;
+
+  // Constant mode with every outer level = outer and every inner level = inner.
+  static TessLevelSettings uniform(float outer, float inner) {
+    TessLevelSettings s;
+    s.constant.outer = {outer, outer, outer, outer};
+    s.constant.inner = {inner, inner};
+    return s;
+  }
 };
 
 // The level of the edge a-b: its projected length in pixels / pixels_per_segment, clamped to

@@ -9,7 +9,8 @@ namespace tessref {
 // layout(vertices = N): gl_out[i] = gl_in[i] for every input vertex slot, levels from settings
 // (adaptive levels use the first three vertices' positions). N is usually GL_PATCH_VERTICES; if N
 // exceeds the input count, the extra outputs repeat the last input vertex (GL leaves reading
-// gl_in past gl_PatchVerticesIn undefined).
+// gl_in past gl_PatchVerticesIn undefined). The GLSL twin copies the vertex shader's two outputs
+// (attr[0], attr[1]), all that transform.vert writes.
 struct PassThroughTcs : TessControlProgram {
   int vertices = 3;
   TessLevelSettings levels;

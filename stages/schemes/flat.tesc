@@ -3,12 +3,14 @@
 // The runner sets N in layout(vertices = N) (default 3) to PassThroughTcs::vertices.
 layout(vertices = 3) out;
 
-in StageVertex { vec4 attr[8]; } tcs_in[];
+// The vertex shader's outputs (stages/programs/transform.vert): attr[0], attr[1] of StageVertex.
+layout(location = 0) in vec3 v_world_position[];
+layout(location = 1) in vec3 v_world_normal[];
 out StageVertex { vec4 attr[8]; } tcs_out[];
 
 uniform bool u_adaptive;
-uniform float u_outer;
-uniform float u_inner;
+uniform vec4 u_outer;                 // constant mode: gl_TessLevelOuter as is
+uniform vec2 u_inner;                 // constant mode: gl_TessLevelInner as is
 uniform mat4 u_view_proj;
 uniform vec2 u_viewport;              // pixels
 uniform float u_pixels_per_segment;
@@ -43,15 +45,18 @@ float adaptive_edge_level(vec3 a_in, vec3 b_in) {
 
 void main() {
   int last = gl_PatchVerticesIn - 1;
-  tcs_out[gl_InvocationID].attr = tcs_in[min(gl_InvocationID, last)].attr;
+  int src = min(gl_InvocationID, last);
+  tcs_out[gl_InvocationID].attr[0] = vec4(v_world_position[src], 1.0);
+  tcs_out[gl_InvocationID].attr[1] = vec4(v_world_normal[src], 0.0);
+  for (int s = 2; s < 8; ++s) tcs_out[gl_InvocationID].attr[s] = vec4(0.0);
   if (gl_InvocationID == 0) {
     if (!u_adaptive) {
-      gl_TessLevelOuter = float[4](u_outer, u_outer, u_outer, u_outer);
-      gl_TessLevelInner = float[2](u_inner, u_inner);
+      gl_TessLevelOuter = float[4](u_outer.x, u_outer.y, u_outer.z, u_outer.w);
+      gl_TessLevelInner = float[2](u_inner.x, u_inner.y);
     } else {
-      vec3 p0 = tcs_in[0].attr[0].xyz;
-      vec3 p1 = tcs_in[min(1, last)].attr[0].xyz;
-      vec3 p2 = tcs_in[min(2, last)].attr[0].xyz;
+      vec3 p0 = v_world_position[0];
+      vec3 p1 = v_world_position[min(1, last)];
+      vec3 p2 = v_world_position[min(2, last)];
       float o0 = adaptive_edge_level(p1, p2);  // u = 0 edge
       float o1 = adaptive_edge_level(p2, p0);  // v = 0 edge
       float o2 = adaptive_edge_level(p0, p1);  // w = 0 edge

@@ -4,8 +4,8 @@
 layout(triangles, equal_spacing, ccw) in;
 
 in StageVertex { vec4 attr[8]; } tes_in[];
-layout(location = 0) out vec3 v_position;  // varyings[0..2]
-layout(location = 1) out vec3 v_normal;    // varyings[3..5]
+layout(location = 0) out vec3 v_world_position;  // varyings[0..2]
+layout(location = 1) out vec3 v_world_normal;    // varyings[3..5]
 
 uniform mat4 u_view_proj;
 
@@ -52,7 +52,7 @@ void main() {
   p += vec3(0.0);
   n += vec3(0.0);
 #endif
-  v_position = p;
-  v_normal = safe_normalize(n);
+  v_world_position = p;
+  v_world_normal = safe_normalize(n);
   gl_Position = u_view_proj * vec4(p, 1.0);
 }

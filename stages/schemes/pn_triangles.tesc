@@ -3,15 +3,17 @@
 // gl_in[0], [1], [2] are the paper's P1, P2, P3.
 layout(vertices = 3) out;
 
-in StageVertex { vec4 attr[8]; } tcs_in[];
+// The vertex shader's outputs (stages/programs/transform.vert): attr[0], attr[1] of StageVertex.
+layout(location = 0) in vec3 v_world_position[];
+layout(location = 1) in vec3 v_world_normal[];
 out StageVertex { vec4 attr[8]; } tcs_out[];
 // [0] = b111, [1] = canonical corner order (as floats); slots as kPnPatch* in pn_triangles.h.
 patch out vec4 pn_patch[16];
 
 uniform int u_normal_mode;            // 0 linear, 1 quadratic, 2 quadratic_corrected, 3 analytic
 uniform bool u_adaptive;
-uniform float u_outer;
-uniform float u_inner;
+uniform vec4 u_outer;                 // constant mode: gl_TessLevelOuter as is
+uniform vec2 u_inner;                 // constant mode: gl_TessLevelInner as is
 uniform mat4 u_view_proj;
 uniform vec2 u_viewport;              // pixels
 uniform float u_pixels_per_segment;
@@ -62,19 +64,19 @@ vec3 tangent_coefficient(vec3 pi, vec3 ni, vec3 pj) {
 void main() {
   int id = gl_InvocationID;
   int j = (id + 1) % 3, k = (id + 2) % 3;
-  vec3 pi = tcs_in[id].attr[0].xyz;
-  vec3 ni = safe_normalize(tcs_in[id].attr[1].xyz);
-  tcs_out[id].attr[0] = vec4(pi, 1.0);
-  tcs_out[id].attr[1] = vec4(ni, 0.0);
-  tcs_out[id].attr[2] = vec4(tangent_coefficient(pi, ni, tcs_in[j].attr[0].xyz), 1.0);
-  tcs_out[id].attr[3] = vec4(tangent_coefficient(pi, ni, tcs_in[k].attr[0].xyz), 1.0);
-  for (int s = 5; s < 8; ++s) tcs_out[id].attr[s] = vec4(0.0);
+  vec3 pi = v_world_position[id];
+  vec3 ni = safe_normalize(v_world_normal[id]);
+  tcs_out[gl_InvocationID].attr[0] = vec4(pi, 1.0);
+  tcs_out[gl_InvocationID].attr[1] = vec4(ni, 0.0);
+  tcs_out[gl_InvocationID].attr[2] = vec4(tangent_coefficient(pi, ni, v_world_position[j]), 1.0);
+  tcs_out[gl_InvocationID].attr[3] = vec4(tangent_coefficient(pi, ni, v_world_position[k]), 1.0);
+  for (int s = 5; s < 8; ++s) tcs_out[gl_InvocationID].attr[s] = vec4(0.0);
   if (id == 0) {
     if (!u_adaptive) {
-      gl_TessLevelOuter = float[4](u_outer, u_outer, u_outer, u_outer);
-      gl_TessLevelInner = float[2](u_inner, u_inner);
+      gl_TessLevelOuter = float[4](u_outer.x, u_outer.y, u_outer.z, u_outer.w);
+      gl_TessLevelInner = float[2](u_inner.x, u_inner.y);
     } else {
-      vec3 p0 = tcs_in[0].attr[0].xyz, p1 = tcs_in[1].attr[0].xyz, p2 = tcs_in[2].attr[0].xyz;
+      vec3 p0 = v_world_position[0], p1 = v_world_position[1], p2 = v_world_position[2];
       float o0 = adaptive_edge_level(p1, p2);  // u = 0 edge
       float o1 = adaptive_edge_level(p2, p0);  // v = 0 edge
       float o2 = adaptive_edge_level(p0, p1);  // w = 0 edge
@@ -100,7 +102,7 @@ void main() {
     vec3 h = nsum - v * d;
     mid = u_normal_mode == 2 ? h : safe_normalize(h);
   }
-  tcs_out[id].attr[4] = vec4(mid, 0.0);
+  tcs_out[gl_InvocationID].attr[4] = vec4(mid, 0.0);
   if (id == 0) {
     vec3 e = vec3(0.0), v = vec3(0.0);
     for (int c = 0; c < 3; ++c) {

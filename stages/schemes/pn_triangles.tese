@@ -5,8 +5,8 @@ layout(triangles, fractional_odd_spacing, ccw) in;
 
 in StageVertex { vec4 attr[8]; } tes_in[];
 patch in vec4 pn_patch[16];
-layout(location = 0) out vec3 v_position;  // varyings[0..2]
-layout(location = 1) out vec3 v_normal;    // varyings[3..5]
+layout(location = 0) out vec3 v_world_position;  // varyings[0..2]
+layout(location = 1) out vec3 v_world_normal;    // varyings[3..5]
 
 uniform int u_normal_mode;  // 0 linear, 1 quadratic, 2 quadratic_corrected, 3 analytic
 uniform mat4 u_view_proj;
@@ -71,7 +71,7 @@ void main() {
     if (n == vec3(0.0)) n = safe_normalize(lin);   // degenerate tangents
     else if (dot(n, lin) < 0.0) n = -n;            // orient like the input normals
   }
-  v_position = p;
-  v_normal = n + vec3(0.0);
+  v_world_position = p;
+  v_world_normal = n + vec3(0.0);
   gl_Position = u_view_proj * vec4(p, 1.0);
 }

@@ -11,9 +11,6 @@
 #include "stages/schemes/pn_triangles.h"
 #include "stages/tess_stage.h"
 
-// True when the library holds the real primitive generator (stages/tpg.cpp).
-bool real_tpg();
-
 namespace tessref::test {
 
 inline StageVertex vertex(const glm::vec3& p, const glm::vec3& n) {

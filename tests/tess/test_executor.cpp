@@ -81,7 +81,7 @@ TEST(TessExecutor, PatchSizesOtherThanThreePassThrough) {
     for (int i = 0; i < 2 * pv; ++i) idx[i] = std::uint32_t(2 * pv - 1 - i);
     PassThroughTcs tcs;
     tcs.vertices = pv;
-    tcs.levels.outer = tcs.levels.inner = 1.0f;
+    tcs.levels = TessLevelSettings::uniform(1.0f, 1.0f);
     ProbeTes tes;
     TriangleBatch out;
     const TessStats st = tessellate(TessDrawInput{vs, idx, pv}, 0, 2, tcs, tes, TessOptions{},
@@ -106,7 +106,7 @@ TEST(TessExecutor, QuadPatchOfFourInterpolatesItsCorners) {
                                        vertex({2, 1, 0}, {0, 0, 1}), vertex({0, 1, 0}, {0, 0, 1})};
   PassThroughTcs tcs;
   tcs.vertices = 4;
-  tcs.levels.outer = tcs.levels.inner = 3.0f;
+  tcs.levels = TessLevelSettings::uniform(3.0f, 3.0f);
   FlatTes tes;
   tes.tess_layout.domain = TessDomain::Quads;
   std::vector<TessDumpRecord> dump;
@@ -146,7 +146,7 @@ TEST(TessExecutor, NaNAndZeroLevelsDiscard) {
                                  vertex({0, 1, 0}, {0, 0, 1})};
   for (float level : {std::nanf(""), 0.0f, -1.0f}) {
     PnTcs tcs;
-    tcs.levels.outer = level;
+    tcs.levels = TessLevelSettings::uniform(level, level);
     PnTes tes;
     TriangleBatch out;
     const TessStats st = tessellate(TessDrawInput{vs, {}, 3}, 0, 1, tcs, tes, {}, Parallel(1), out);
@@ -188,8 +188,7 @@ TEST(TessExecutor, OutputDoesNotDependOnThreadsOrGrain) {
   octahedron(2, vs, idx);
   const TessDrawInput input{vs, idx, 3};
   PnTcs tcs;
-  tcs.levels.outer = 5.3f;
-  tcs.levels.inner = 4.6f;
+  tcs.levels = TessLevelSettings::uniform(5.3f, 4.6f);
   PnTes tes;
   tes.view_proj = glm::mat4(0.5f);
   TriangleBatch ref;
@@ -243,7 +242,6 @@ std::vector<std::tuple<glm::vec3, glm::vec3>> edge_points(const std::vector<Tess
 }
 
 TEST(TessExecutor, SharedEdgeIsBitIdenticalInBothPatches) {
-  if (!real_tpg()) GTEST_SKIP() << "needs the real primitive generator (stages/tpg.cpp)";
   // Patch 0 = (A, B, C), patch 1 = (B, A, D): the edge A-B runs in opposite directions and sits in
   // different slots; the extra patches rotate patch 1 through every slot placement.
   Lcg rng(7);
@@ -261,8 +259,7 @@ TEST(TessExecutor, SharedEdgeIsBitIdenticalInBothPatches) {
                                   PnNormalMode::QuadraticCorrected, PnNormalMode::Analytic}) {
           PnTcs tcs;
           tcs.normal_mode = mode;
-          tcs.levels.outer = level;
-          tcs.levels.inner = level + 1.0f;
+          tcs.levels = TessLevelSettings::uniform(level, level + 1.0f);
           PnTes tes;
           tes.normal_mode = mode;
           tes.spacing = spacing;
@@ -292,7 +289,6 @@ TEST(TessExecutor, SharedEdgeIsBitIdenticalInBothPatches) {
 }
 
 TEST(TessExecutor, FlatSharedEdgeIsBitIdentical) {
-  if (!real_tpg()) GTEST_SKIP() << "needs the real primitive generator (stages/tpg.cpp)";
   const std::vector<StageVertex> vs = {vertex({0.1f, 0.3f, 0.7f}, {0, 0, 1}),
                                        vertex({0.9f, -0.2f, 0.3f}, {0, 1, 1}),
                                        vertex({0.3f, 0.8f, 0.1f}, {1, 0, 1}),
@@ -300,7 +296,7 @@ TEST(TessExecutor, FlatSharedEdgeIsBitIdentical) {
   const std::vector<std::uint32_t> idx = {0, 1, 2, 1, 0, 3};
   for (TessSpacing spacing : {TessSpacing::Equal, TessSpacing::FractionalOdd, TessSpacing::FractionalEven}) {
     PassThroughTcs tcs;
-    tcs.levels.outer = 6.3f;
+    tcs.levels = TessLevelSettings::uniform(6.3f, 6.3f);
     FlatTes tes;
     tes.tess_layout.spacing = spacing;
     std::vector<TessDumpRecord> dump;
@@ -322,7 +318,7 @@ TEST(TessExecutor, FlatPnPatchThroughTheExecutorStaysOnItsPlane) {
   const glm::vec3 face = glm::normalize(glm::cross(p1 - p0, p2 - p0));
   const std::vector<StageVertex> vs = {vertex(p0, face), vertex(p1, face), vertex(p2, face)};
   PnTcs tcs;
-  tcs.levels.outer = tcs.levels.inner = 7.0f;
+  tcs.levels = TessLevelSettings::uniform(7.0f, 7.0f);
   PnTes tes;
   std::vector<TessDumpRecord> dump;
   TessOptions opt;

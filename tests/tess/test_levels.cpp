@@ -80,13 +80,16 @@ TEST(AdaptiveLevels, InnerRules) {
 }
 
 TEST(AdaptiveLevels, ConstantMode) {
-  TessLevelSettings ls;
-  ls.outer = 3.5f;
-  ls.inner = 2.25f;
-  const TessLevels l = triangle_levels(ls, {0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+  TessLevelSettings ls = TessLevelSettings::uniform(3.5f, 2.25f);
+  TessLevels l = triangle_levels(ls, {0, 0, 0}, {1, 0, 0}, {0, 1, 0});
   for (int i = 0; i < 4; ++i) EXPECT_EQ(l.outer[i], 3.5f);
   EXPECT_EQ(l.inner[0], 2.25f);
   EXPECT_EQ(l.inner[1], 2.25f);
+  // Per-edge constant levels are written as given (NaN included: the generator decides).
+  ls.constant.outer = {1.5f, 2.5f, std::nanf(""), 7.0f};
+  l = triangle_levels(ls, {0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+  EXPECT_EQ(l.outer[1], 2.5f);
+  EXPECT_TRUE(std::isnan(l.outer[2]));
 }
 
 TEST(AdaptiveLevels, NeighbouringPnPatchesWriteEqualLevels) {
