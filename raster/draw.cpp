@@ -33,7 +33,7 @@ constexpr int kTileSize = 64;                       // pixels
 constexpr std::size_t kChunkTriangles = 1024;       // input triangles per setup task
 // Bounds memory (about 100 bytes + 12 * num_varyings per triangle are held per pass); each pass
 // streams the framebuffer once more, so it should not be too small either.
-constexpr std::size_t kPassTriangles = 256 * 1024;
+constexpr std::size_t kPassTriangles = 64 * 1024;
 
 struct Chunk {
   std::vector<SetupTriangle> tris;
@@ -53,7 +53,8 @@ void setup_chunk(const TriangleBatch& batch, std::size_t first, std::size_t last
   chunk.tris.clear();
   chunk.varyings.clear();
   chunk.tris.reserve(last - first);
-  chunk.varyings.reserve((last - first) * 3 * std::size_t(std::clamp(batch.num_varyings, 0, kMaxVaryings)));
+  chunk.varyings.reserve((last - first) * 3 *
+                         std::size_t(std::clamp(batch.num_varyings, 0, kMaxVaryings)));
   chunk.stats = RasterStats{};
   for (std::size_t i = first; i < last; ++i) {
     int pieces = 0;

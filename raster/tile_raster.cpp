@@ -67,9 +67,9 @@ struct Interpolator {
     const double inv_w = p0 + p1 + p2;
     const double w = 1.0 / inv_w;
     const float w1 = float(p1 * w), w2 = float(p2 * w);
-    const float* a0 = varyings;
-    const float* d1 = varyings + num_varyings;
-    const float* d2 = varyings + 2 * num_varyings;
+    const float* __restrict a0 = varyings;
+    const float* __restrict d1 = varyings + num_varyings;
+    const float* __restrict d2 = varyings + 2 * num_varyings;
     // Relative to vertex 0, so that a varying equal at all three vertices stays exact.
     for (int j = 0; j < num_varyings; ++j) frag_varyings[j] = a0[j] + w1 * d1[j] + w2 * d2[j];
 

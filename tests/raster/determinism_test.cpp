@@ -81,7 +81,7 @@ TEST(RasterDeterminism, ThreadCountDoesNotChangeTheResult) {
 }
 
 TEST(RasterDeterminism, LargeBatchOverSeveralPasses) {
-  // More triangles than one setup pass holds (256 Ki), so passes and chunks both split it.
+  // More triangles than one setup pass holds (64 Ki), so passes and chunks both split it.
   const TriangleBatch b = random_batch(300000, 9u, 0.1f);
   const Result one = render(b, 1, false);
   EXPECT_EQ(one.stats.triangles_in, 300000u);
