@@ -12,7 +12,7 @@ struct PixelRect {
 
 // Shades the pixels of rect whose centers the triangle covers (fill rule in common/fixed_point.h)
 // and that pass the depth test LESS; returns how many were shaded. varyings: the triangle's
-// values as SetupTriangle stores them. The result for a pixel does not depend
+// 3 * num_varyings values as SetupTriangle stores them. The result for a pixel does not depend
 // on rect.
 std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int num_varyings,
                               const PixelRect& rect, const FragmentProgram& fs, Framebuffer& fb);
