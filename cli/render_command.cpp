@@ -59,6 +59,9 @@ std::string ms(double seconds) {
 
 void run_render(const RenderOptions& o) {
   const Scene scene = load_scene(o.scene, o.sets);
+  check_image_path(o.output, false, "color images");
+  if (!o.depth.empty()) check_image_path(o.depth, true, "depth images");
+  if (!o.normals.empty()) check_image_path(o.normals, true, "normal images");
 
   auto t = Clock::now();
   std::vector<std::string> warnings;

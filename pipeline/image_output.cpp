@@ -75,6 +75,12 @@ bool is_float_format(const std::filesystem::path& path) {
   return ext == ".exr" || ext == ".hdr" || ext == ".pfm" || ext == ".tif" || ext == ".tiff";
 }
 
+void check_image_path(const std::filesystem::path& path, bool float_only, const char* what) {
+  if (float_only) require_float_format(path, what);
+  if (!OIIO::ImageOutput::create(path.string()))
+    throw InputError(path.string() + ": cannot write this image format (" + OIIO::geterror() + ")");
+}
+
 void write_color_image(const Framebuffer& fb, const std::filesystem::path& path) {
   if (!is_float_format(path)) return write_rgb8_image(to_rgb8(fb), path);
   const bool rgb_only = lower_extension(path) == ".hdr" || lower_extension(path) == ".pfm";

@@ -30,6 +30,10 @@ void write_depth_image(const Framebuffer& fb, const std::filesystem::path& path)
 // The aux attachment's xyz (the world normal the shaders write; 0 where nothing was drawn).
 void write_normals_image(const Framebuffer& fb, const std::filesystem::path& path);
 
+// Fails early (InputError naming the file) when OpenImageIO has no writer for the extension, or
+// when float_only and the format is not a float format.
+void check_image_path(const std::filesystem::path& path, bool float_only, const char* what);
+
 void write_rgb8_image(const Rgb8Image& image, const std::filesystem::path& path);
 Rgb8Image read_rgb8_image(const std::filesystem::path& path);  // InputError if unreadable
 

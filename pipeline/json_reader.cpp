@@ -19,7 +19,8 @@ bool starts_with_path(const std::string& path, const std::string& prefix) {
 std::string format_number(double v) {
   if (std::isnan(v)) return "nan";
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  return json(v).dump();
+  if (v == std::floor(v) && std::abs(v) < 1e15) return std::to_string(static_cast<long long>(v));
+  return json(v).dump();  // shortest round-trip form
 }
 
 }  // namespace

@@ -1,6 +1,9 @@
 #include "pipeline/mesh_loader.h"
 
+#include <cctype>
 #include <exception>
+#include <fstream>
+#include <sstream>
 #include <system_error>
 
 #include <assimp/Importer.hpp>
@@ -70,6 +73,59 @@ void append_node(const aiScene& scene, const aiNode& node, const glm::mat4& pare
     if (node.mChildren[c]) append_node(scene, *node.mChildren[c], transform, soup, used, name);
 }
 
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// OFF and PLY headers declare element counts that assimp allocates (and zero-fills) before
+// reading a single element: the invalid test model OutOfMemory.off declares 3.5e11 vertices in
+// 309 bytes and makes assimp touch 16 GB. Every element takes at least one byte, so a count
+// larger than the file is a lie; refuse it before assimp sees it.
+void check_declared_counts(const std::filesystem::path& path, std::uintmax_t file_size) {
+  const std::string ext = lower(path.extension().string());
+  if (ext != ".off" && ext != ".ply") return;
+  std::ifstream in(path, std::ios::binary);
+  std::string head(4096, '\0');
+  in.read(head.data(), head.size());
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  std::istringstream text(head);
+  std::vector<std::pair<std::string, unsigned long long>> counts;
+  std::string line;
+  if (ext == ".ply") {
+    while (std::getline(text, line) && line.rfind("end_header", 0) != 0) {
+      std::istringstream words(line);
+      std::string keyword, element;
+      unsigned long long n = 0;
+      if (words >> keyword >> element >> n && keyword == "element") counts.push_back({element, n});
+    }
+  } else {
+    // [ST][C][N][4][n]OFF, then (with n) the dimension, then vertex, face and edge counts.
+    std::vector<std::string> tokens;
+    while (std::getline(text, line) && tokens.size() < 8) {
+      std::istringstream words(line.substr(0, line.find('#')));
+      for (std::string w; words >> w;) tokens.push_back(w);
+    }
+    std::size_t i = 0;
+    if (!tokens.empty() && tokens[0].find("OFF") != std::string::npos) {
+      i = tokens[0].size() >= 4 && tokens[0][tokens[0].size() - 4] == 'n' ? 2 : 1;
+    }
+    const char* names[2] = {"vertex", "face"};
+    for (int k = 0; k < 2 && i + k < tokens.size(); ++k) {
+      try {
+        counts.push_back({names[k], std::stoull(tokens[i + k])});
+      } catch (const std::exception&) {
+        break;  // not a number: assimp reports the bad header
+      }
+    }
+  }
+  for (const auto& [element, n] : counts)
+    if (n > file_size)
+      throw InputError(path.string() + ": the header declares " + std::to_string(n) + " " + element +
+                       " elements, more than a file of " + std::to_string(file_size) +
+                       " bytes can hold");
+}
+
 }  // namespace
 
 Mesh load_mesh_file(const std::filesystem::path& path, std::vector<std::string>& warnings) {
@@ -78,6 +134,10 @@ Mesh load_mesh_file(const std::filesystem::path& path, std::vector<std::string>&
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) fail("no such file");
   if (std::filesystem::is_directory(path, ec)) fail("is a directory, not a mesh file");
+  const std::uintmax_t file_size = std::filesystem::file_size(path, ec);
+  if (ec) fail("cannot read: " + ec.message());
+  if (file_size == 0) fail("the file is empty");
+  check_declared_counts(path, file_size);
 
   Assimp::Importer importer;
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);

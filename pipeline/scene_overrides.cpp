@@ -47,6 +47,7 @@ json parse_override_value(const std::string& text) {
   json j = json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (!j.is_discarded()) return j;
   std::vector<std::string> pieces = split(text, ',');
+  if (pieces.empty()) return json(text);
   json numbers = json::array();
   for (const std::string& p : pieces) {
     double d;
