@@ -80,6 +80,11 @@ TessCapture::TessCapture(GlContext& context, const CaptureOptions& options)
   glGenBuffers(1, &feedback_buffer_);
   glGenQueries(1, &query_generated_);
   glGenQueries(1, &query_written_);
+  GLint max_block = 0;
+  glGetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
+  max_patches_per_upload_ = std::clamp<std::size_t>(static_cast<std::size_t>(max_block) / 32, 1, 1u << 20);
+  if (options_.max_patches_per_upload)
+    max_patches_per_upload_ = std::min(max_patches_per_upload_, options_.max_patches_per_upload);
   check_gl("TessCapture: creating GL objects");
 }
 
@@ -120,10 +125,17 @@ std::vector<std::vector<glm::vec3>> TessCapture::capture(const TessLayout& layou
   stats_ = CaptureStats{};
   stats_.patches = levels.size();
   std::vector<std::vector<glm::vec3>> result(levels.size());
-  if (levels.empty()) return result;
-  if (levels.size() > static_cast<std::size_t>(INT32_MAX / 2))
-    throw GlError("TessCapture: too many patches in one capture");
+  // The level buffer is bounded by GL_MAX_SHADER_STORAGE_BLOCK_SIZE: upload in slices.
+  for (std::size_t begin = 0; begin < levels.size(); begin += max_patches_per_upload_) {
+    const std::size_t n = std::min(max_patches_per_upload_, levels.size() - begin);
+    capture_slice(layout, levels.data() + begin, n, result.data() + begin);
+  }
+  stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result;
+}
 
+void TessCapture::capture_slice(const TessLayout& layout, const TessLevels* levels, std::size_t count,
+                                std::vector<glm::vec3>* result) {
   context_.make_current();
   context_.bind_default_framebuffer();  // surfaceless: a draw needs a bound FBO, discard or not
   const Program& program = program_for(layout);
@@ -131,8 +143,8 @@ std::vector<std::vector<glm::vec3>> TessCapture::capture(const TessLayout& layou
   const GLint base_location = program.uniform("u_patch_base");  // one uniform, TCS and TES
 
   // Levels: two vec4 per patch, raw bits.
-  std::vector<float> packed(levels.size() * 8, 0.0f);
-  for (std::size_t i = 0; i < levels.size(); ++i) {
+  std::vector<float> packed(count * 8, 0.0f);
+  for (std::size_t i = 0; i < count; ++i) {
     std::memcpy(&packed[i * 8], levels[i].outer.data(), 4 * sizeof(float));
     std::memcpy(&packed[i * 8 + 4], levels[i].inner.data(), 2 * sizeof(float));
   }
@@ -150,8 +162,8 @@ std::vector<std::vector<glm::vec3>> TessCapture::capture(const TessLayout& layou
   const int vpp = vertices_per_primitive(layout);
   std::vector<FeedbackVertex> records;
 
-  std::vector<std::size_t> point_bounds(levels.size());
-  for (std::size_t i = 0; i < levels.size(); ++i) point_bounds[i] = domain_point_bound(layout, levels[i]);
+  std::vector<std::size_t> point_bounds(count);
+  for (std::size_t i = 0; i < count; ++i) point_bounds[i] = domain_point_bound(layout, levels[i]);
   const std::vector<DrawRange> draws =
       split_draws(point_bounds, options_.max_points_per_draw, options_.max_patches_per_draw);
   try {
@@ -222,8 +234,6 @@ std::vector<std::vector<glm::vec3>> TessCapture::capture(const TessLayout& layou
     throw;
   }
   glDisable(GL_RASTERIZER_DISCARD);
-  stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return result;
 }
 
 std::vector<std::vector<glm::vec3>> capture_tess_coords(GlContext& context, const TessLayout& layout,

@@ -21,6 +21,8 @@ struct CaptureOptions {
   // draw_split.h for the llvmpipe trap this avoids.
   std::size_t max_points_per_draw = kSafePointsPerDraw;
   std::size_t max_patches_per_draw = 16384;
+  // Level sets uploaded at once; 0 = as many as GL_MAX_SHADER_STORAGE_BLOCK_SIZE allows (up to 2^20).
+  std::size_t max_patches_per_upload = 0;
 };
 
 struct CaptureStats {
@@ -56,6 +58,8 @@ class TessCapture {
   const CaptureStats& last_stats() const { return stats_; }
 
  private:
+  void capture_slice(const TessLayout& layout, const TessLevels* levels, std::size_t count,
+                     std::vector<glm::vec3>* result);
   const Program& program_for(const TessLayout& layout);
   void ensure_buffer(unsigned target, unsigned buffer, std::size_t bytes, std::size_t& capacity);
 
@@ -66,6 +70,7 @@ class TessCapture {
   unsigned vao_ = 0, level_buffer_ = 0, feedback_buffer_ = 0;
   unsigned query_generated_ = 0, query_written_ = 0;
   std::size_t level_capacity_ = 0, feedback_capacity_ = 0;
+  std::size_t max_patches_per_upload_ = 1;
 };
 
 // One-shot convenience over TessCapture.

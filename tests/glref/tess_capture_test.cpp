@@ -260,6 +260,20 @@ TEST(TessCapture, DetectsMesaVertexIndexWrapWhenNotSplit) {
   for (std::size_t i = 0; i < r20.size(); ++i) ASSERT_TRUE(bit_equal(r20[i], r20[0])) << "patch " << i;
 }
 
+TEST(TessCapture, UploadSlicesGiveTheSameResult) {
+  TESSREF_REQUIRE_GL(ctx);
+  const TessLayout layout = layout_of(TessDomain::Quads, TessSpacing::FractionalEven);
+  const auto levels = random_levels(300, 7u);
+  CaptureOptions sliced;
+  sliced.max_patches_per_upload = 37;
+  TessCapture a(*ctx), b(*ctx, sliced);
+  const auto ra = a.capture(layout, levels);
+  const auto rb = b.capture(layout, levels);
+  ASSERT_EQ(ra.size(), rb.size());
+  for (std::size_t i = 0; i < ra.size(); ++i) ASSERT_TRUE(bit_equal(ra[i], rb[i])) << "patch " << i;
+  EXPECT_EQ(a.last_stats().vertices, b.last_stats().vertices);
+}
+
 TEST(TessCapture, DrawsStayUnderThePointLimit) {
   TESSREF_REQUIRE_GL(ctx);
   const std::vector<TessLevels> many(100, uniform_levels(64.0f));
