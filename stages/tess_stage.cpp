@@ -46,7 +46,10 @@ double seconds_since(Clock::time_point t0) {
 
 // What one task (a fixed batch of patches) produces; concatenated in task order afterwards.
 struct TaskResult {
-  std::vector<ClipVertex> triangles;
+  // Triangles as indices into `evaluated` (each domain point once): expanded straight into the
+  // output batch afterwards, so the large triangle stream is written once.
+  std::vector<ClipVertex> evaluated;
+  std::vector<std::uint32_t> triangles;
   std::vector<ClipVertex> lines;
   std::vector<ClipVertex> points;
   std::vector<TessDumpRecord> dump;
@@ -72,7 +75,6 @@ void run_task(const TessDrawInput& input, std::size_t first, std::size_t last,
   Patch in;
   PatchOutput tcs_out;
   TessDomainPoints domain;
-  std::vector<ClipVertex> evaluated;
   const int n_out = tcs.output_vertices();
   const int n_phases = tcs.phases();
   for (std::size_t p = first; p < last; ++p) {
@@ -92,14 +94,16 @@ void run_task(const TessDrawInput& input, std::size_t first, std::size_t last,
     t0 = Clock::now();
     generate_tessellation(layout, tcs_out.levels, options.profile, domain);
     result.stats.tpg_seconds += seconds_since(t0);
-    if (domain.discarded || domain.indices.empty()) {
+    if (domain.discarded) {
       ++result.stats.patches_discarded;
       continue;
     }
 
     // TES: once per unique domain point, in generation order.
     t0 = Clock::now();
-    evaluated.resize(domain.coords.size());
+    const std::size_t first_point = result.evaluated.size();
+    result.evaluated.resize(first_point + domain.coords.size());
+    ClipVertex* evaluated = result.evaluated.data() + first_point;
     for (std::size_t i = 0; i < domain.coords.size(); ++i)
       evaluated[i] = tes.evaluate(domain.coords[i], tcs_out, in.primitive_id);
     result.stats.tes_seconds += seconds_since(t0);
@@ -117,15 +121,26 @@ void run_task(const TessDrawInput& input, std::size_t first, std::size_t last,
 
     // Primitive assembly in the generator's emission order.
     const std::size_t prims = domain.primitive_count();
+    const std::size_t used = prims * std::size_t(domain.vertices_per_primitive);
+    if (domain.vertices_per_primitive == 3) {
+      result.stats.triangles_out += prims;
+      for (std::size_t i = 0; i < used; ++i)
+        result.triangles.push_back(std::uint32_t(first_point + domain.indices[i]));
+      continue;
+    }
     std::vector<ClipVertex>* sink = nullptr;
-    switch (domain.vertices_per_primitive) {
-      case 3: result.stats.triangles_out += prims; sink = &result.triangles; break;
-      case 2: result.stats.lines_out += prims; sink = options.lines ? &result.lines : nullptr; break;
-      default: result.stats.points_out += prims; sink = options.points ? &result.points : nullptr;
+    if (domain.vertices_per_primitive == 2) {
+      result.stats.lines_out += prims;
+      sink = options.lines ? &result.lines : nullptr;
+    } else {
+      result.stats.points_out += prims;
+      sink = options.points ? &result.points : nullptr;
     }
     if (sink) {
-      const std::size_t used = prims * std::size_t(domain.vertices_per_primitive);
-      for (std::size_t i = 0; i < used; ++i) sink->push_back(evaluated[domain.indices[i]]);
+      const std::size_t base = sink->size();
+      sink->resize(base + used);  // geometric growth; the task's buffers are reused across chunks
+      ClipVertex* dst = sink->data() + base;
+      for (std::size_t i = 0; i < used; ++i) dst[i] = evaluated[domain.indices[i]];
     }
   }
 }
@@ -152,12 +167,21 @@ void append(std::vector<T>& dst, const std::vector<T>& src) {
   dst.insert(dst.end(), src.begin(), src.end());
 }
 
-}  // namespace
+void clear(TaskResult& r) {
+  r.evaluated.clear();
+  r.triangles.clear();
+  r.lines.clear();
+  r.points.clear();
+  r.dump.clear();
+  r.stats = TessStats{};
+}
 
-TessStats tessellate(const TessDrawInput& input, std::size_t first_patch, std::size_t last_patch,
-                     const TessControlProgram& tcs, const TessEvalProgram& tes,
-                     const TessOptions& options, const Parallel& parallel, TriangleBatch& out) {
-  validate(input, tcs, tes);
+// The body of tessellate(); `slots` keeps the tasks' buffers (capacity only) between calls.
+TessStats tessellate_range(const TessDrawInput& input, std::size_t first_patch,
+                           std::size_t last_patch, const TessControlProgram& tcs,
+                           const TessEvalProgram& tes, const TessOptions& options,
+                           const Parallel& parallel, TriangleBatch& out,
+                           std::vector<TaskResult>& results) {
   out.num_varyings = tes.num_varyings();
   last_patch = std::min(last_patch, input.patch_count());
   if (first_patch >= last_patch) return TessStats{};
@@ -166,26 +190,42 @@ TessStats tessellate(const TessDrawInput& input, std::size_t first_patch, std::s
   const std::size_t grain = std::max<std::size_t>(1, options.patches_per_task);
   const std::size_t n = last_patch - first_patch;
   const std::size_t tasks = (n + grain - 1) / grain;
-  std::vector<TaskResult> results(tasks);  // one preassigned slot per task
+  if (results.size() < tasks) results.resize(tasks);  // one preassigned slot per task
+  for (std::size_t t = 0; t < tasks; ++t) clear(results[t]);
   parallel.for_each(tasks, [&](std::size_t t) {
     const std::size_t a = first_patch + t * grain;
     run_task(input, a, std::min(a + grain, last_patch), tcs, tes, layout, options, results[t]);
   });
 
-  // Concatenate in patch order; release each slot as soon as it is copied.
-  std::size_t total = 0;
-  for (const auto& r : results) total += r.triangles.size();
-  out.vertices.reserve(out.vertices.size() + total);
+  // Concatenate in patch order: each task expands its triangles into its own range of out.
+  std::vector<std::size_t> offset(tasks + 1, out.vertices.size());
+  for (std::size_t t = 0; t < tasks; ++t) offset[t + 1] = offset[t] + results[t].triangles.size();
+  out.vertices.resize(offset[tasks]);
+  parallel.for_each(tasks, [&](std::size_t t) {
+    const TaskResult& r = results[t];
+    ClipVertex* dst = out.vertices.data() + offset[t];
+    for (std::size_t i = 0; i < r.triangles.size(); ++i) dst[i] = r.evaluated[r.triangles[i]];
+  });
   TessStats stats;
-  for (auto& r : results) {
-    append(out.vertices, r.triangles);
+  for (std::size_t t = 0; t < tasks; ++t) {
+    const TaskResult& r = results[t];
     if (options.lines) append(*options.lines, r.lines);
     if (options.points) append(*options.points, r.points);
     if (options.dump) append(*options.dump, r.dump);
     stats += r.stats;
-    r = TaskResult{};
   }
   return stats;
+}
+
+}  // namespace
+
+TessStats tessellate(const TessDrawInput& input, std::size_t first_patch, std::size_t last_patch,
+                     const TessControlProgram& tcs, const TessEvalProgram& tes,
+                     const TessOptions& options, const Parallel& parallel, TriangleBatch& out) {
+  validate(input, tcs, tes);
+  std::vector<TaskResult> results;
+  return tessellate_range(input, first_patch, last_patch, tcs, tes, options, parallel, out,
+                          results);
 }
 
 TessStats tessellate_chunks(const TessDrawInput& input, std::size_t chunk_patches,
@@ -196,11 +236,12 @@ TessStats tessellate_chunks(const TessDrawInput& input, std::size_t chunk_patche
   const std::size_t total = input.patch_count();
   const std::size_t chunk = std::max<std::size_t>(1, chunk_patches);
   TessStats stats;
-  TriangleBatch batch;
+  TriangleBatch batch;                // reused: its capacity stays at about one chunk
+  std::vector<TaskResult> results;    // likewise the tasks' buffers
   for (std::size_t first = 0; first < total; first += chunk) {
     batch.vertices.clear();
-    stats += tessellate(input, first, std::min(first + chunk, total), tcs, tes, options, parallel,
-                        batch);
+    stats += tessellate_range(input, first, std::min(first + chunk, total), tcs, tes, options,
+                              parallel, batch, results);
     consume(batch);
   }
   return stats;

@@ -146,8 +146,15 @@ TessStats tessellate(const TessDrawInput& input, std::size_t first_patch, std::s
                      const TessOptions& options, const Parallel& parallel, TriangleBatch& out);
 
 // Tessellates the whole draw chunk by chunk (chunk_patches patches at a time) and hands each chunk's
-// batch to consume (e.g. draw_triangles) before producing the next, so memory is bounded by the chunk.
-// Calling draw_triangles on each chunk in order equals one draw of the whole batch.
+// batch to consume (e.g. draw_triangles) before producing the next, so memory is bounded by the chunk
+// (its buffers are reused from chunk to chunk). Calling draw_triangles on each chunk in order equals
+// one draw of the whole batch. Typical use by the pipeline:
+//
+//   PnTcs tcs;  tcs.normal_mode = ...;  tcs.levels = TessLevelSettings::uniform(outer, inner);
+//   PnTes tes;  tes.normal_mode = tcs.normal_mode;  tes.spacing = ...;  tes.view_proj = vp;
+//   std::vector<StageVertex> cp(n);  // cp[i].attr[kAttrPosition] = (world, 1), [kAttrNormal] = (n, 0)
+//   tessellate_chunks(TessDrawInput{cp, mesh.indices, 3}, 256, tcs, tes, {}, parallel,
+//                     [&](const TriangleBatch& b) { draw_triangles(b, state, fs, fb, parallel); });
 TessStats tessellate_chunks(const TessDrawInput& input, std::size_t chunk_patches,
                             const TessControlProgram& tcs, const TessEvalProgram& tes,
                             const TessOptions& options, const Parallel& parallel,

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <tuple>
@@ -254,12 +256,18 @@ TEST(TessExecutor, SharedEdgeIsBitIdenticalInBothPatches) {
     const std::vector<std::uint32_t> idx = {0, 1, 2, 1, 0, 3, 3, 1, 0, 0, 3, 1};
     const int opposite[4] = {2, 2, 0, 1};
     for (TessSpacing spacing : {TessSpacing::Equal, TessSpacing::FractionalOdd, TessSpacing::FractionalEven})
-      for (float level : {1.0f, 2.0f, 3.7f, 5.2f, 8.0f, 13.49f})
+      for (float level : {1.0f, 2.0f, 3.7f, 5.2f, 8.0f, 13.49f, -1.0f /* adaptive */})
         for (PnNormalMode mode : {PnNormalMode::Linear, PnNormalMode::Quadratic,
                                   PnNormalMode::QuadraticCorrected, PnNormalMode::Analytic}) {
           PnTcs tcs;
           tcs.normal_mode = mode;
           tcs.levels = TessLevelSettings::uniform(level, level + 1.0f);
+          if (level < 0.0f) {
+            // Screen-space levels: every edge its own level, shared edges agreeing.
+            tcs.levels.adaptive = true;
+            tcs.levels.screen.pixels_per_segment = 9.0f + float(trial);
+            tcs.levels.screen.viewport_pixels = {400, 300};
+          }
           PnTes tes;
           tes.normal_mode = mode;
           tes.spacing = spacing;
@@ -286,6 +294,61 @@ TEST(TessExecutor, SharedEdgeIsBitIdenticalInBothPatches) {
           }
         }
   }
+}
+
+TEST(TessExecutor, GarbageInputDoesNotCrash) {
+  const float inf = std::numeric_limits<float>::infinity(), nan = std::nanf("");
+  const std::vector<StageVertex> vs = {
+      vertex({0, 0, 0}, {0, 0, 1}), vertex({inf, 0, 0}, {0, 0, 1}), vertex({0, nan, 0}, {nan, 0, 1}),
+      vertex({1e30f, -1e30f, 0}, {1e30f, 0, 0}), vertex({0, 0, 0}, {0, 0, 0}), vertex({1, 1, 1}, {inf, inf, inf})};
+  std::vector<std::uint32_t> idx;
+  for (std::uint32_t a = 0; a < 6; ++a)
+    for (std::uint32_t b = 0; b < 6; ++b) idx.insert(idx.end(), {a, b, (a + b + 1) % 6});
+  for (PnNormalMode mode : {PnNormalMode::Linear, PnNormalMode::Quadratic,
+                            PnNormalMode::QuadraticCorrected, PnNormalMode::Analytic})
+    for (bool adaptive : {false, true})
+      for (float level : {1e30f, inf, nan, 3.0f}) {
+        PnTcs tcs;
+        tcs.normal_mode = mode;
+        tcs.levels = TessLevelSettings::uniform(level, level);
+        tcs.levels.adaptive = adaptive;
+        PnTes tes;
+        tes.normal_mode = mode;
+        TriangleBatch out;
+        const TessStats st = tessellate(TessDrawInput{vs, idx, 3}, 0, idx.size() / 3, tcs, tes, {},
+                                        Parallel(2), out);
+        EXPECT_EQ(st.patches_in, idx.size() / 3);
+        EXPECT_EQ(st.triangles_out, out.triangle_count());
+      }
+}
+
+TEST(TessExecutor, PointModeAndIsolinesGoToTheirOwnLists) {
+  const std::vector<StageVertex> vs = {vertex({0, 0, 0}, {0, 0, 1}), vertex({1, 0, 0}, {0, 0, 1}),
+                                       vertex({0, 1, 0}, {0, 0, 1}), vertex({1, 1, 0}, {0, 0, 1})};
+  PnTcs tcs;
+  tcs.levels = TessLevelSettings::uniform(4.0f, 4.0f);
+  PnTes tes;
+  tes.point_mode = true;
+  std::vector<ClipVertex> points, lines;
+  TessOptions opt;
+  opt.points = &points;
+  TriangleBatch out;
+  TessStats st = tessellate(TessDrawInput{vs, {}, 3}, 0, 1, tcs, tes, opt, Parallel(1), out);
+  EXPECT_TRUE(out.vertices.empty());
+  EXPECT_EQ(st.points_out, st.domain_points);
+  EXPECT_EQ(points.size(), st.domain_points);
+
+  PassThroughTcs lines_tcs;
+  lines_tcs.vertices = 4;
+  lines_tcs.levels = TessLevelSettings::uniform(3.0f, 1.0f);  // 3 lines of 3 segments
+  FlatTes lines_tes;
+  lines_tes.tess_layout.domain = TessDomain::Isolines;
+  opt.points = nullptr;
+  opt.lines = &lines;
+  st = tessellate(TessDrawInput{vs, {}, 4}, 0, 1, lines_tcs, lines_tes, opt, Parallel(1), out);
+  EXPECT_TRUE(out.vertices.empty());
+  EXPECT_EQ(st.lines_out, 9u);
+  EXPECT_EQ(lines.size(), 18u);
 }
 
 TEST(TessExecutor, FlatSharedEdgeIsBitIdentical) {
