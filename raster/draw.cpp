@@ -106,8 +106,10 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
   const int num_varyings = std::clamp(batch.num_varyings, 0, kMaxVaryings);
 
   // Scratch kept per calling thread: reallocating (and page-faulting) tens of megabytes on every
-  // draw would cost more than small draws themselves.
-  thread_local std::vector<Chunk> chunks;
+  // draw would cost more than small draws themselves. Bound to a reference here, on the calling
+  // thread: the tasks below run on other threads, whose own thread_local would be another object.
+  thread_local std::vector<Chunk> scratch;
+  std::vector<Chunk>& chunks = scratch;
   std::vector<std::uint64_t> tile_fragments(grid.count());
   for (std::size_t pass_first = 0; pass_first < n; pass_first += kPassTriangles) {
     const std::size_t pass_last = std::min(n, pass_first + kPassTriangles);
