@@ -351,6 +351,33 @@ TEST(TessExecutor, PointModeAndIsolinesGoToTheirOwnLists) {
   EXPECT_EQ(lines.size(), 18u);
 }
 
+TEST(TessExecutor, WindingFollowsTheLayoutWithGlCornerMapping) {
+  // gl_TessCoord.x weighs gl_in[0]: a CCW patch in the xy plane must give CCW triangles for
+  // layout(ccw) and CW ones for layout(cw) (GL 4.6 section 11.2.2.1).
+  const std::vector<StageVertex> vs = {vertex({0, 0, 0}, {0, 0, 1}), vertex({1, 0, 0}, {0, 0, 1}),
+                                       vertex({0.2f, 1, 0}, {0, 0, 1})};
+  for (TessWinding winding : {TessWinding::Ccw, TessWinding::Cw})
+    for (TessSpacing spacing : {TessSpacing::Equal, TessSpacing::FractionalOdd}) {
+      PnTcs tcs;
+      tcs.levels = TessLevelSettings::uniform(4.5f, 3.0f);
+      PnTes tes;
+      tes.winding = winding;
+      tes.spacing = spacing;
+      TriangleBatch out;
+      tessellate(TessDrawInput{vs, {}, 3}, 0, 1, tcs, tes, {}, Parallel(1), out);
+      ASSERT_GT(out.triangle_count(), 1u);
+      for (std::size_t t = 0; t < out.triangle_count(); ++t) {
+        const glm::vec2 a(out.vertices[3 * t].position), b(out.vertices[3 * t + 1].position),
+            c(out.vertices[3 * t + 2].position);
+        const float area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+        if (winding == TessWinding::Ccw)
+          EXPECT_GT(area, 0.0f) << t;
+        else
+          EXPECT_LT(area, 0.0f) << t;
+      }
+    }
+}
+
 TEST(TessExecutor, FlatSharedEdgeIsBitIdentical) {
   const std::vector<StageVertex> vs = {vertex({0.1f, 0.3f, 0.7f}, {0, 0, 1}),
                                        vertex({0.9f, -0.2f, 0.3f}, {0, 1, 1}),

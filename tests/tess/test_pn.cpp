@@ -59,6 +59,19 @@ struct RefPn {
     const glm::dvec3 V = (P[0] + P[1] + P[2]) / 3.0;
     b[1][1][1] = E + (E - V) / 2.0;
   }
+  // Quadratic normal field (formulas.md), k = 2 with normalized mid-edge normals (Vlachos) or
+  // k = 4 unnormalized (corrected).
+  glm::dvec3 quadratic_normal(double w, double u, double v, bool corrected) const {
+    auto mid = [&](int i, int j) {
+      const glm::dvec3 d = P[j] - P[i];
+      const double k = corrected ? 4.0 : 2.0;
+      const glm::dvec3 h = N[i] + N[j] - (k * glm::dot(d, N[i] + N[j]) / glm::dot(d, d)) * d;
+      return corrected ? h : glm::normalize(h);
+    };
+    const glm::dvec3 n = N[0] * (w * w) + N[1] * (u * u) + N[2] * (v * v) + mid(0, 1) * (w * u) +
+                         mid(1, 2) * (u * v) + mid(2, 0) * (w * v);
+    return glm::normalize(n);
+  }
   glm::dvec3 eval(double w, double u, double v) const {
     static const double fact[4] = {1, 1, 2, 6};
     glm::dvec3 s(0.0);
@@ -140,6 +153,26 @@ TEST(PnTriangles, MatchesTheReferenceFormulas) {
         const glm::dvec3 p = ref.eval(tc.x, tc.y, tc.z);
         EXPECT_LT(glm::length(glm::dvec3(pn_position(net, tc)) - p), 1e-6);
       }
+  }
+}
+
+TEST(PnTriangles, QuadraticNormalsMatchTheReferenceFormulas) {
+  Lcg rng(5);
+  for (int trial = 0; trial < 20; ++trial) {
+    const auto vs = random_triangle(rng);
+    const RefPn ref(vs);
+    for (bool corrected : {false, true}) {
+      const PnNormalMode mode = corrected ? PnNormalMode::QuadraticCorrected : PnNormalMode::Quadratic;
+      const PatchOutput net = pn_net(vs, mode);
+      for (int i = 0; i <= 8; ++i)
+        for (int j = 0; i + j <= 8; ++j) {
+          const float u = float(i) / 8, v = float(j) / 8;
+          const glm::vec3 tc((1.0f - u) - v, u, v);
+          const glm::dvec3 n(pn_normal(net, tc, mode));
+          EXPECT_LT(angle(n, ref.quadratic_normal(tc.x, tc.y, tc.z, corrected)), 1e-6)
+              << to_string(mode);
+        }
+    }
   }
 }
 
