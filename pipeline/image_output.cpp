@@ -124,4 +124,17 @@ Rgb8Image read_rgb8_image(const std::filesystem::path& path) {
   return img;
 }
 
+FloatImage read_float_image(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  auto in = OIIO::ImageInput::open(name);
+  if (!in) throw InputError(name + ": cannot read image: " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  FloatImage img{spec.width, spec.height, spec.nchannels,
+                 std::vector<float>(std::size_t(spec.width) * spec.height * spec.nchannels)};
+  bool ok = in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data());
+  in->close();
+  if (!ok) throw InputError(name + ": cannot read image: " + in->geterror());
+  return img;
+}
+
 }  // namespace tessref

@@ -34,6 +34,13 @@ void write_normals_image(const Framebuffer& fb, const std::filesystem::path& pat
 // when float_only and the format is not a float format.
 void check_image_path(const std::filesystem::path& path, bool float_only, const char* what);
 
+// Float pixels as stored, top row first (channels per pixel as in the file).
+struct FloatImage {
+  int width = 0, height = 0, channels = 0;
+  std::vector<float> pixels;
+};
+FloatImage read_float_image(const std::filesystem::path& path);  // InputError if unreadable
+
 void write_rgb8_image(const Rgb8Image& image, const std::filesystem::path& path);
 Rgb8Image read_rgb8_image(const std::filesystem::path& path);  // InputError if unreadable
 

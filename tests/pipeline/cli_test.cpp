@@ -1,0 +1,115 @@
+// The built `tessref render` binary: exit codes and messages for good and bad input.
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "pipeline/image_output.h"
+#include "test_util.h"
+
+namespace tessref {
+namespace {
+
+using ::testing::HasSubstr;
+using test::TempDir;
+
+const std::string kBinary = std::string(TESSREF_BINARY_DIR) + "/cli/tessref";
+
+struct CliRun {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr
+};
+
+CliRun run(const std::string& args) {
+  CliRun r;
+  FILE* pipe = popen((kBinary + " " + args + " 2>&1").c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buf;
+  for (std::size_t n; (n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0;) r.output.append(buf.data(), n);
+  const int status = pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return r;
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!std::filesystem::exists(kBinary)) GTEST_SKIP() << kBinary << " not built";
+  }
+};
+
+TEST_F(Cli, RendersTheDefaultScene) {
+  TempDir dir;
+  const auto out = dir.path() / "x.png";
+  const CliRun r = run("render -o " + out.string() + " --threads 2 --set image.width=200 --set image.height=100 "
+                    "--depth " + (dir.path() / "d.exr").string() + " --normals " + (dir.path() / "n.exr").string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("tessref render: <default scene> -> " + out.string() + " (200x100, 2 threads): "
+                                  "256 triangles in, "));
+  EXPECT_THAT(r.output, HasSubstr("fragments shaded; mesh "));
+  EXPECT_THAT(r.output, HasSubstr(", raster+fs "));
+  const Rgb8Image img = read_rgb8_image(out);
+  EXPECT_EQ(img.width, 200);
+  EXPECT_EQ(img.height, 100);
+  EXPECT_EQ(read_float_image(dir.path() / "d.exr").channels, 1);
+  EXPECT_EQ(read_float_image(dir.path() / "n.exr").channels, 3);
+}
+
+TEST_F(Cli, RendersTheRepositoryDefaultScene) {
+  TempDir dir;
+  const CliRun r = run("render " + std::string(TESSREF_SOURCE_DIR) + "/scenes/default.json -o " +
+                    (dir.path() / "x.png").string() + " --set image.width=64 --set image.height=64");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("scenes/default.json -> "));
+}
+
+TEST_F(Cli, BadInput) {
+  TempDir dir;
+  const std::string out = " -o " + (dir.path() / "x.png").string();
+  struct Case {
+    std::string args, message;
+  };
+  const auto bad_scene = dir.write("bad.json", "{\n  \"camera\": {\"eye\": [1, 2, 3]},\n  \"image\": {\"width\": 0}\n}\n");
+  const auto broken = dir.write("broken.json", "{\n  \"camera\": {\"eye\": [1, 2, 3]\n}\n");
+  const Case cases[] = {
+      {"render /nonexistent.json" + out, "tessref: error: /nonexistent.json: no such scene file"},
+      {"render " + bad_scene.string() + out,
+       "tessref: error: " + bad_scene.string() + ": image.width: expected an integer in [1, 16384], got a number (0)"},
+      {"render " + broken.string() + out, "tessref: error: " + broken.string() + ": line 4, column 1: JSON syntax error"},
+      {"render --set camera.eye=nan,0,0" + out,
+       "tessref: error: <default scene>: camera.eye: expected finite numbers, got nan at index 0 (from --set camera.eye)"},
+      {"render --set camera.fov=30" + out, "tessref: error: <default scene>: camera.fov: unknown key"},
+      {"render --set camera.eye" + out, "tessref: error: --set camera.eye: expected KEY=VALUE"},
+      {"render --set mesh.type=file --set mesh.path=/usr/share/assimp/models/invalid/empty.obj" + out,
+       "tessref: error: /usr/share/assimp/models/invalid/empty.obj: the file is empty"},
+      {"render --set mesh.type=file --set mesh.path=/nonexistent.obj" + out,
+       "tessref: error: /nonexistent.obj: no such file"},
+      {"render -o " + (dir.path() / "x.unknownformat").string(), "x.unknownformat: cannot write this image format"},
+      {"render -o /nonexistent/dir/x.png", "tessref: error: /nonexistent/dir/x.png: "},
+      {"render --depth " + (dir.path() / "d.png").string() + out, "d.png: depth images need a floating-point format"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.args);
+    const CliRun r = run(c.args);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_THAT(r.output, HasSubstr(c.message));
+    EXPECT_THAT(r.output, ::testing::Not(HasSubstr("internal error")));
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "x.png"));
+}
+
+TEST_F(Cli, BadOptions) {
+  for (const std::string args : {"render --threads -1", "render --frobnicate", "render a.json b.json"}) {
+    SCOPED_TRACE(args);
+    const CliRun r = run(args);
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.exit_code, 3) << r.output;  // not an internal error
+  }
+}
+
+}  // namespace
+}  // namespace tessref

@@ -1,0 +1,186 @@
+// The draw call and image output: determinism across thread counts and batch sizes, the golden
+// image of the default scene, what the depth and normal images hold.
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "pipeline/image_output.h"
+#include "pipeline/mesh_source.h"
+#include "pipeline/procedural.h"
+#include "pipeline/render.h"
+#include "pipeline/scene_loader.h"
+#include "test_util.h"
+
+namespace tessref {
+namespace {
+
+using test::TempDir;
+
+RenderResult render(const Scene& scene, int threads, std::size_t batch_triangles = 65536) {
+  std::vector<std::string> warnings;
+  const Mesh mesh = build_mesh(scene.mesh, warnings);
+  DrawOptions options;
+  options.batch_triangles = batch_triangles;
+  return render_scene(scene, mesh, Parallel(threads), options);
+}
+
+std::uint64_t fnv1a(const std::string& bytes) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
+  return h;
+}
+
+TEST(Render, DefaultScenePngIsIdenticalForAnyThreadCount) {
+  TempDir dir;
+  const Scene scene = load_scene("");
+  std::string first;
+  for (int threads : {1, 2, 8}) {
+    const auto path = dir.path() / ("default_" + std::to_string(threads) + ".png");
+    write_color_image(render(scene, threads).framebuffer, path);
+    const std::string bytes = test::read_file(path);
+    ASSERT_GT(bytes.size(), 1000u);
+    if (first.empty()) first = bytes;
+    EXPECT_EQ(fnv1a(bytes), fnv1a(first)) << threads << " threads";
+    EXPECT_TRUE(bytes == first) << threads << " threads";
+  }
+}
+
+TEST(Render, BatchSizeDoesNotChangeTheImage) {
+  const Scene scene = load_scene("", {"image.width=256", "image.height=256", "mesh.type=icosphere",
+                                      "mesh.icosphere.refinements=3"});
+  const RenderResult whole = render(scene, 2);
+  const RenderResult pieces = render(scene, 2, 7);  // 1280 triangles in 183 batches
+  EXPECT_EQ(whole.stats.triangles_in, 1280u);
+  EXPECT_EQ(pieces.stats.triangles_generated, 1280u);
+  EXPECT_EQ(whole.stats.raster.fragments_shaded, pieces.stats.raster.fragments_shaded);
+  EXPECT_TRUE(to_rgb8(whole.framebuffer).pixels == to_rgb8(pieces.framebuffer).pixels);
+  EXPECT_TRUE(whole.framebuffer.depth == pieces.framebuffer.depth);
+}
+
+TEST(Render, StatsOfTheDefaultScene) {
+  const RenderResult r = render(load_scene(""), 2);
+  EXPECT_EQ(r.stats.triangles_in, 256u);  // the 16 x 8 torus
+  EXPECT_EQ(r.stats.vertices_shaded, 128u);
+  EXPECT_EQ(r.stats.triangles_generated, 256u);
+  // Back faces culled: about half the torus faces the camera.
+  EXPECT_GT(r.stats.raster.triangles_rasterized, 100u);
+  EXPECT_LT(r.stats.raster.triangles_rasterized, 160u);
+  // Every covered pixel shaded exactly once (closed mesh, culled back faces, front faces of a
+  // torus seen from outside may overlap only at the inner rim).
+  std::size_t covered = 0;
+  for (float d : r.framebuffer.depth) covered += d < 1.0f;
+  EXPECT_GE(r.stats.raster.fragments_shaded, covered);
+  EXPECT_GT(covered, 200000u);
+}
+
+TEST(Render, UprightImageAndFigure14Colors) {
+  // A sphere pushed to the top of the image: the top rows of the file hold it.
+  const Scene scene = load_scene("", {"image.width=64", "image.height=64", "mesh.type=icosphere",
+                                      "mesh.icosphere.refinements=3", "mesh.icosphere.radius=0.5",
+                                      "transform.translate=0,1.2,0", "transform.rotate_deg=0,0,0"});
+  const RenderResult r = render(scene, 1);
+  const Rgb8Image img = to_rgb8(r.framebuffer);
+  auto covered_rows = [&](int y0, int y1) {
+    int n = 0;
+    for (int y = y0; y < y1; ++y)
+      for (int x = 0; x < 64; ++x) n += img.pixels[3 * (y * 64 + x) + 1] != 51;  // background 0.2
+    return n;
+  };
+  EXPECT_GT(covered_rows(0, 32), 100);
+  EXPECT_EQ(covered_rows(32, 64), 0);
+  // The lit surface: red well above blue (color 0.988, 0, 0.427) and green 0 but for the white
+  // specular term.
+  int brightest = 0;
+  for (std::size_t p = 0; p < img.pixels.size(); p += 3) {
+    if (img.pixels[p + 1] == 51 && img.pixels[p] == 51) continue;
+    EXPECT_GT(img.pixels[p], img.pixels[p + 2]);
+    brightest = std::max<int>(brightest, img.pixels[p]);
+  }
+  EXPECT_GT(brightest, 200);
+}
+
+TEST(Render, DepthAndNormalImages) {
+  TempDir dir;
+  const Scene scene = load_scene("", {"image.width=96", "image.height=64"});
+  const RenderResult r = render(scene, 2);
+  write_depth_image(r.framebuffer, dir.path() / "depth.exr");
+  write_normals_image(r.framebuffer, dir.path() / "normals.exr");
+  const FloatImage depth = read_float_image(dir.path() / "depth.exr");
+  const FloatImage normals = read_float_image(dir.path() / "normals.exr");
+  ASSERT_EQ(depth.width, 96);
+  ASSERT_EQ(depth.height, 64);
+  ASSERT_EQ(depth.channels, 1);
+  ASSERT_EQ(normals.channels, 3);
+  int covered = 0;
+  for (int y = 0; y < 64; ++y) {
+    for (int x = 0; x < 96; ++x) {
+      // File row y is framebuffer row 63 - y.
+      const std::size_t fb = r.framebuffer.index(x, 63 - y), file = std::size_t(y) * 96 + x;
+      EXPECT_EQ(depth.pixels[file], r.framebuffer.depth[fb]);
+      if (depth.pixels[file] < 1.0f) {
+        ++covered;
+        const glm::vec3 n(normals.pixels[3 * file], normals.pixels[3 * file + 1], normals.pixels[3 * file + 2]);
+        EXPECT_NEAR(glm::length(n), 1.0f, 1e-5f);
+      }
+    }
+  }
+  EXPECT_GT(covered, 500);
+}
+
+TEST(Render, NormalsShading) {
+  const Scene scene = load_scene("", {"image.width=64", "image.height=64", "shading=normals"});
+  const RenderResult r = render(scene, 2);
+  for (std::size_t i = 0; i < r.framebuffer.color.size(); ++i) {
+    if (r.framebuffer.depth[i] == 1.0f) continue;
+    const glm::vec3 n = glm::vec3(r.framebuffer.aux[i]);
+    const glm::vec3 c = glm::vec3(r.framebuffer.color[i]);
+    EXPECT_NEAR(glm::distance(c, n * 0.5f + 0.5f), 0.0f, 1e-6f);
+  }
+}
+
+// ---- Golden image ------------------------------------------------------------------------------
+// tests/golden/default.png is the default scene as rendered when it was last accepted. Regenerate
+// it after an intended change with:
+//   build/cli/tessref render -o tests/golden/default.png
+// Tolerance: a pixel is off when a channel differs by more than 3 (of 255); at most 0.1% of the
+// pixels may be off (coverage flips along silhouettes). On failure a difference image (|a - b| x 16)
+// is written beside the build.
+TEST(Golden, DefaultScene) {
+  const std::string golden_path = std::string(TESSREF_SOURCE_DIR) + "/tests/golden/default.png";
+  if (!std::filesystem::exists(golden_path)) GTEST_SKIP() << golden_path << " missing";
+  const Rgb8Image golden = read_rgb8_image(golden_path);
+  const Rgb8Image image = to_rgb8(render(load_scene(""), 0).framebuffer);
+  ASSERT_EQ(image.width, golden.width) << "regenerate: build/cli/tessref render -o tests/golden/default.png";
+  ASSERT_EQ(image.height, golden.height);
+  Rgb8Image diff{image.width, image.height, std::vector<std::uint8_t>(image.pixels.size())};
+  std::size_t off = 0;
+  int max_diff = 0;
+  for (std::size_t p = 0; p < image.pixels.size(); p += 3) {
+    int worst = 0;
+    for (int k = 0; k < 3; ++k) {
+      int d = std::abs(int(image.pixels[p + k]) - int(golden.pixels[p + k]));
+      worst = std::max(worst, d);
+      diff.pixels[p + k] = std::uint8_t(std::min(255, d * 16));
+    }
+    off += worst > 3;
+    max_diff = std::max(max_diff, worst);
+  }
+  const std::size_t pixels = std::size_t(image.width) * image.height;
+  const bool ok = off * 1000 <= pixels;
+  if (!ok) {
+    const std::string diff_path = std::string(TESSREF_BINARY_DIR) + "/golden_default_diff.png";
+    write_rgb8_image(diff, diff_path);
+    write_rgb8_image(image, std::string(TESSREF_BINARY_DIR) + "/golden_default_actual.png");
+    ADD_FAILURE() << off << " of " << pixels << " pixels differ by more than 3 (max " << max_diff
+                  << "); difference image: " << diff_path
+                  << "; if the change is intended: build/cli/tessref render -o tests/golden/default.png";
+  }
+  RecordProperty("pixels_off", int(off));
+  RecordProperty("max_diff", max_diff);
+}
+
+}  // namespace
+}  // namespace tessref
