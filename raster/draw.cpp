@@ -31,6 +31,7 @@ using raster::SetupTriangle;
 
 constexpr int kTileSize = 64;                       // pixels
 constexpr std::size_t kChunkTriangles = 1024;       // input triangles per setup task
+constexpr std::size_t kMinBinnedForTasks = 256;     // fewer (triangle, tile) pairs: scan inline
 // Bounds memory (about 100 bytes + 12 * num_varyings per triangle are held per pass); each pass
 // streams the framebuffer once more, so it should not be too small either.
 constexpr std::size_t kPassTriangles = 64 * 1024;
@@ -110,7 +111,8 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
   // thread: the tasks below run on other threads, whose own thread_local would be another object.
   thread_local std::vector<Chunk> scratch;
   std::vector<Chunk>& chunks = scratch;
-  std::vector<std::uint64_t> tile_fragments(grid.count());
+  std::vector<std::size_t> active;             // tiles with triangles in this pass
+  std::vector<std::uint64_t> tile_fragments;    // per active tile
   for (std::size_t pass_first = 0; pass_first < n; pass_first += kPassTriangles) {
     const std::size_t pass_last = std::min(n, pass_first + kPassTriangles);
     const std::size_t num_chunks = (pass_last - pass_first + kChunkTriangles - 1) / kChunkTriangles;
@@ -122,8 +124,19 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
                   state.cull_back_faces, grid, chunks[c]);
     });
 
-    std::fill(tile_fragments.begin(), tile_fragments.end(), 0);
-    parallel.for_each(grid.count(), [&](std::size_t tile) {
+    // Only tiles that received triangles get a task.
+    active.clear();
+    std::size_t binned = 0;
+    for (std::size_t tile = 0; tile < grid.count(); ++tile) {
+      std::size_t in_tile = 0;
+      for (std::size_t c = 0; c < num_chunks; ++c)
+        in_tile += chunks[c].tile_begin[tile + 1] - chunks[c].tile_begin[tile];
+      if (in_tile) active.push_back(tile);
+      binned += in_tile;
+    }
+    tile_fragments.assign(active.size(), 0);
+    auto scan_tile = [&](std::size_t a) {
+      const std::size_t tile = active[a];
       const int tx = int(tile % grid.tiles_x), ty = int(tile / grid.tiles_x);
       const raster::PixelRect rect{tx * kTileSize, ty * kTileSize,
                                    std::min(fb.width, (tx + 1) * kTileSize) - 1,
@@ -137,8 +150,14 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
                                             num_varyings, rect, fs, fb);
         }
       }
-      tile_fragments[tile] = shaded;
-    });
+      tile_fragments[a] = shaded;
+    };
+    // Starting tasks costs more than scanning a few hundred small triangles.
+    if (binned < kMinBinnedForTasks) {
+      for (std::size_t a = 0; a < active.size(); ++a) scan_tile(a);
+    } else {
+      parallel.for_each(active.size(), scan_tile);
+    }
 
     for (std::size_t c = 0; c < num_chunks; ++c) total += chunks[c].stats;
     for (std::uint64_t f : tile_fragments) total.fragments_shaded += f;

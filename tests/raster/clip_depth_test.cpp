@@ -1,6 +1,7 @@
 // Clipping against near and far, triangles behind the eye, invalid input, and the depth test.
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -242,6 +243,39 @@ TEST(RasterDepth, DepthRangeMapsWindowDepth) {
     ASSERT_EQ(fb.depth[i], 0.625f);
     ASSERT_EQ(fb.aux[i].x, 0.5f);  // gl_FragCoord.w = 1 / w_clip
   }
+}
+
+}  // namespace
+}  // namespace tessref
+
+namespace tessref {
+namespace {
+
+TEST(RasterInput, EmptyBatchesAndFramebuffersAndOversizedViewports) {
+  test::VaryingProgram prog;
+  Framebuffer fb(8, 8);
+  TriangleBatch empty;
+  EXPECT_EQ(draw_triangles(empty, RasterState{}, prog, fb, Parallel(2)).triangles_in, 0u);
+
+  TriangleBatch one;
+  test::add_triangle(one, test::window_vertex(0, 0, 0.5f, 8, 8), test::window_vertex(8, 0, 0.5f, 8, 8),
+                     test::window_vertex(0, 8, 0.5f, 8, 8));
+  one.num_varyings = 99;  // more than kMaxVaryings: only kMaxVaryings are read
+  // Centers with x + y < 7; the 8 on the hypotenuse (a right edge) are outside.
+  EXPECT_EQ(draw_triangles(one, RasterState{}, prog, fb, Parallel(1)).fragments_shaded, 28u);
+
+  Framebuffer none;  // 0 x 0: nothing to draw into
+  const RasterStats s = draw_triangles(one, RasterState{}, prog, none, Parallel(1));
+  EXPECT_EQ(s.triangles_in, 1u);
+  EXPECT_EQ(s.fragments_shaded, 0u);
+
+  // Wider than the 24.8 guard band allows (kMaxViewportPixels): refused rather than overflowed.
+  Framebuffer wide;
+  wide.width = 20000;
+  wide.height = 1;
+  wide.color.resize(20000);
+  wide.depth.resize(20000, 1.0f);
+  EXPECT_THROW(draw_triangles(one, RasterState{}, prog, wide, Parallel(1)), std::invalid_argument);
 }
 
 }  // namespace
