@@ -3,6 +3,7 @@
 #include <cmath>
 #include <random>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include "raster_test_util.h"
@@ -121,6 +122,59 @@ TEST(RasterWatertight, VertexExactlyOnPixelCenters) {
                        test::window_vertex(q[0], q[1], 0.5f, kW, kH));
   }
   expect_covered_once(b, 1, "fan through pixel centers");
+}
+
+}  // namespace
+}  // namespace tessref
+
+namespace tessref {
+namespace {
+
+TEST(RasterWatertight, FloorGridCutByTheNearPlane) {
+  // A jittered floor grid (y = -1) running from behind the eye to far ahead: edges shared by two
+  // triangles are cut by the near plane at the same point from both sides, so below the horizon
+  // every pixel is hit exactly once and nowhere twice.
+  const glm::mat4 proj = glm::perspective(glm::radians(60.0f), float(kW) / kH, 0.3f, 1000.0f);
+  std::mt19937 rng(77);
+  std::uniform_real_distribution<float> jitter(-0.2f, 0.2f);
+  const int n = 40;
+  const float x0 = -200.0f, z0 = 5.0f, cell = 10.0f;  // x in [-200, 200], z in [5, -395]
+  std::vector<ClipVertex> v((n + 1) * (n + 1));
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const float x = x0 + cell * (i + ((i > 0 && i < n) ? jitter(rng) : 0.0f));
+      const float z = z0 - cell * (j + ((j > 0 && j < n) ? jitter(rng) : 0.0f));
+      v[j * (n + 1) + i].position = proj * glm::vec4(x, -1.0f, z, 1.0f);
+    }
+  TriangleBatch b;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const ClipVertex &a = v[j * (n + 1) + i], &c = v[j * (n + 1) + i + 1];
+      const ClipVertex &d = v[(j + 1) * (n + 1) + i + 1], &e = v[(j + 1) * (n + 1) + i];
+      test::add_triangle(b, a, c, d);
+      test::add_triangle(b, a, d, e);
+    }
+  test::make_depth_decreasing(b);
+  Framebuffer fb(kW, kH);
+  test::CountingProgram counter(kW, kH);
+  const RasterStats s = draw_triangles(b, RasterState{}, counter, fb, Parallel(2));
+  EXPECT_GT(s.triangles_rasterized, s.triangles_in - s.triangles_clipped_away);  // cut into pieces
+  // Rows whose centers are below y_ndc = -0.01 look at floor points nearer than about 173 units,
+  // where the floor (|x| <= 200) is wider than the view: there every pixel sees the floor.
+  int holes = 0, doubles = 0, checked = 0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      const std::uint32_t c = counter.at(x, y);
+      doubles += c > 1;
+      const double y_ndc = 2.0 * (y + 0.5) / kH - 1.0;
+      if (y_ndc < -0.01) {
+        ++checked;
+        holes += c == 0;
+      }
+    }
+  EXPECT_EQ(doubles, 0);
+  EXPECT_EQ(holes, 0);
+  EXPECT_GT(checked, kW * kH / 3);
 }
 
 }  // namespace
