@@ -65,13 +65,6 @@ std::size_t emitted_vertex_bound(const TessLayout& layout, const TessLevels& lev
   return layout.domain == TessDomain::Isolines ? 2 * points : 6 * points;
 }
 
-std::string tes_layout_qualifier(const TessLayout& layout) {
-  std::string s = std::string("layout(") + glsl_name(layout.domain) + ", " + glsl_name(layout.spacing) +
-                  ", " + glsl_name(layout.winding);
-  if (layout.point_mode) s += ", point_mode";
-  return s + ") in;\n";
-}
-
 TessCapture::TessCapture(GlContext& context, const CaptureOptions& options)
     : context_(context), options_(options) {
   context_.make_current();
@@ -104,7 +97,7 @@ const Program& TessCapture::program_for(const TessLayout& layout) {
       {GL_VERTEX_SHADER, shader_source("tpg_capture.vert"), "tpg_capture.vert"},
       {GL_TESS_CONTROL_SHADER, shader_source("tpg_capture.tesc"), "tpg_capture.tesc"},
       {GL_TESS_EVALUATION_SHADER,
-       inject_after_version(shader_source("tpg_capture.tese"), tes_layout_qualifier(layout)),
+       set_tes_layout(shader_source("tpg_capture.tese"), layout),
        "tpg_capture.tese"},
   };
   Program p = link_program(stages, FeedbackVaryings{{"tess_coord", "patch_id"}, true});

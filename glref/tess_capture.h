@@ -10,6 +10,7 @@
 
 #include "glref/draw_split.h"
 #include "glref/gl_program.h"
+#include "glref/glsl_rewrite.h"  // tes_layout_qualifier
 #include "stages/tpg.h"
 
 namespace tessref::glref {
@@ -76,8 +77,5 @@ class TessCapture {
 // One-shot convenience over TessCapture.
 std::vector<std::vector<glm::vec3>> capture_tess_coords(GlContext& context, const TessLayout& layout,
                                                         const std::vector<TessLevels>& levels);
-
-// The TES input layout line: "layout(triangles, fractional_odd_spacing, ccw, point_mode) in;".
-std::string tes_layout_qualifier(const TessLayout& layout);
 
 }  // namespace tessref::glref

@@ -1,8 +1,9 @@
 #version 450 core
-// The input layout (domain, spacing, winding, point_mode) is inserted after #version at run time.
 // Captured by transform feedback, interleaved: the domain point exactly as generated, and the
 // patch it belongs to (checked on readback: llvmpipe mixes up patches when a draw wraps its
-// 16-bit TES vertex indices).
+// 16-bit TES vertex indices). The layout line is rewritten from the TessLayout at run time.
+layout(triangles, equal_spacing, ccw) in;
+
 out vec3 tess_coord;
 out int patch_id;
 uniform int u_patch_base;

@@ -314,12 +314,5 @@ TEST(TessBounds, DiscardAndClamp) {
   EXPECT_EQ(emitted_vertex_bound(iso, l), 50u);
 }
 
-TEST(TessLayoutQualifier, Names) {
-  EXPECT_EQ(tes_layout_qualifier(layout_of(TessDomain::Triangles, TessSpacing::FractionalOdd)),
-            "layout(triangles, fractional_odd_spacing, ccw) in;\n");
-  EXPECT_EQ(tes_layout_qualifier(layout_of(TessDomain::Quads, TessSpacing::Equal, TessWinding::Cw, true)),
-            "layout(quads, equal_spacing, cw, point_mode) in;\n");
-}
-
 }  // namespace
 }  // namespace tessref::glref
