@@ -96,7 +96,8 @@ ClipTest classify_triangle(const glm::vec4& a, const glm::vec4& b, const glm::ve
 
 ClipResult clip_triangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
                          int num_varyings, float guard_x, float guard_y, ClipPolygon& out) {
-  if (!finite(a.position) || !finite(b.position) || !finite(c.position)) return ClipResult::kInvalid;
+  if (!finite(a.position) || !finite(b.position) || !finite(c.position))
+    return ClipResult::kInvalid;
   const Planes planes{guard_x, guard_y};
   std::uint32_t ca = planes.outcode(a.position);
   std::uint32_t cb = planes.outcode(b.position);

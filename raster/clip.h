@@ -22,10 +22,10 @@ enum class ClipResult {
 };
 
 enum class ClipTest {
-  kInvalid,     // a non-finite position, or w <= 0 with nothing to clip
-  kRejected,    // wholly outside one plane of the view volume
-  kInside,      // inside near, far and the guard band: no clipping needed, all w > 0
-  kNeedsClip,   // crosses near, far or a guard plane
+  kInvalid,    // a non-finite position, or w <= 0 with nothing to clip
+  kRejected,   // wholly outside one plane of the view volume
+  kInside,     // inside near, far and the guard band: no clipping needed, all w > 0
+  kNeedsClip,  // crosses near, far or a guard plane
 };
 
 // The outcode test alone (cheap; most triangles need no clipping).

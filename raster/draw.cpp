@@ -29,11 +29,11 @@ namespace {
 
 using raster::SetupTriangle;
 
-constexpr int kTileSize = 64;                       // pixels
-constexpr std::size_t kChunkTriangles = 1024;       // input triangles per setup task
-constexpr std::size_t kMinBinnedForTasks = 256;     // fewer (triangle, tile) pairs: scan inline
-// Bounds memory (about 100 bytes + 12 * num_varyings per triangle are held per pass); each pass
-// streams the framebuffer once more, so it should not be too small either.
+constexpr int kTileSize = 64;                    // pixels
+constexpr std::size_t kChunkTriangles = 1024;    // input triangles per setup task
+constexpr std::size_t kMinBinnedForTasks = 256;  // fewer (triangle, tile) pairs: scan inline
+// Bounds memory: about 100 bytes + 12 * num_varyings per triangle are held per pass. Each pass
+// revisits the tiles it touches, so passes should not be too small either.
 constexpr std::size_t kPassTriangles = 64 * 1024;
 
 struct Chunk {
@@ -75,8 +75,10 @@ void setup_chunk(const TriangleBatch& batch, std::size_t first, std::size_t last
       for (int tx = t.min_x / kTileSize; tx <= t.max_x / kTileSize; ++tx)
         fn(std::size_t(ty) * grid.tiles_x + tx);
   };
-  for (const SetupTriangle& t : chunk.tris) for_tiles(t, [&](std::size_t tile) { ++chunk.tile_begin[tile + 1]; });
-  for (std::size_t k = 1; k < chunk.tile_begin.size(); ++k) chunk.tile_begin[k] += chunk.tile_begin[k - 1];
+  for (const SetupTriangle& t : chunk.tris)
+    for_tiles(t, [&](std::size_t tile) { ++chunk.tile_begin[tile + 1]; });
+  for (std::size_t k = 1; k < chunk.tile_begin.size(); ++k)
+    chunk.tile_begin[k] += chunk.tile_begin[k - 1];
   chunk.tile_tris.resize(chunk.tile_begin.back());
   std::vector<std::uint32_t> fill(chunk.tile_begin.begin(), chunk.tile_begin.end() - 1);
   for (std::uint32_t k = 0; k < chunk.tris.size(); ++k)
@@ -103,7 +105,8 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
     throw std::invalid_argument("draw_triangles: framebuffer attachments do not match its size");
 
   const raster::Viewport vp{fb.width, fb.height, state.depth_range_near, state.depth_range_far};
-  const TileGrid grid{(fb.width + kTileSize - 1) / kTileSize, (fb.height + kTileSize - 1) / kTileSize};
+  const TileGrid grid{(fb.width + kTileSize - 1) / kTileSize,
+                      (fb.height + kTileSize - 1) / kTileSize};
   const int num_varyings = std::clamp(batch.num_varyings, 0, kMaxVaryings);
 
   // Scratch kept per calling thread: reallocating (and page-faulting) tens of megabytes on every
@@ -111,8 +114,8 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
   // thread: the tasks below run on other threads, whose own thread_local would be another object.
   thread_local std::vector<Chunk> scratch;
   std::vector<Chunk>& chunks = scratch;
-  std::vector<std::size_t> active;             // tiles with triangles in this pass
-  std::vector<std::uint64_t> tile_fragments;    // per active tile
+  std::vector<std::size_t> active;            // tiles with triangles in this pass
+  std::vector<std::uint64_t> tile_fragments;  // per active tile
   for (std::size_t pass_first = 0; pass_first < n; pass_first += kPassTriangles) {
     const std::size_t pass_last = std::min(n, pass_first + kPassTriangles);
     const std::size_t num_chunks = (pass_last - pass_first + kChunkTriangles - 1) / kChunkTriangles;

@@ -46,8 +46,8 @@ enum class PieceResult { kCulled, kRasterized };
 PieceResult setup_piece(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                         const Viewport& vp, bool cull_back_faces, int num_varyings,
                         std::vector<SetupTriangle>& tris, std::vector<float>& varyings) {
-  const std::int64_t area2 = std::int64_t(b.x - a.x) * (c.y - a.y) -
-                             std::int64_t(c.x - a.x) * (b.y - a.y);
+  const std::int64_t area2 =
+      std::int64_t(b.x - a.x) * (c.y - a.y) - std::int64_t(c.x - a.x) * (b.y - a.y);
   if (area2 == 0) return PieceResult::kCulled;
   const bool front = area2 > 0;  // counter-clockwise with y up
   if (!front && cull_back_faces) return PieceResult::kCulled;
@@ -80,7 +80,8 @@ PieceResult setup_piece(const WindowVertex& a, const WindowVertex& b, const Wind
   t.varying_offset = std::uint32_t(varyings.size());
   varyings.insert(varyings.end(), v[0]->varyings, v[0]->varyings + num_varyings);
   for (int i = 1; i < 3; ++i)
-    for (int j = 0; j < num_varyings; ++j) varyings.push_back(v[i]->varyings[j] - v[0]->varyings[j]);
+    for (int j = 0; j < num_varyings; ++j)
+      varyings.push_back(v[i]->varyings[j] - v[0]->varyings[j]);
   tris.push_back(t);
   return PieceResult::kRasterized;
 }
@@ -101,7 +102,8 @@ SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index, const
     case ClipTest::kInvalid:
     case ClipTest::kRejected: return SetupOutcome::kClippedAway;
     case ClipTest::kInside: {
-      const WindowVertex a = to_window(in[0], vp), b = to_window(in[1], vp), c = to_window(in[2], vp);
+      const WindowVertex a = to_window(in[0], vp), b = to_window(in[1], vp),
+                         c = to_window(in[2], vp);
       if (setup_piece(a, b, c, vp, cull_back_faces, nv, tris, varyings) == PieceResult::kCulled)
         return SetupOutcome::kCulled;
       pieces_out = 1;
@@ -111,8 +113,7 @@ SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index, const
   }
 
   ClipPolygon poly;
-  ClipResult clipped =
-      clip_triangle(in[0], in[1], in[2], nv, vp.guard_x(), vp.guard_y(), poly);
+  ClipResult clipped = clip_triangle(in[0], in[1], in[2], nv, vp.guard_x(), vp.guard_y(), poly);
   if (clipped != ClipResult::kKept) return SetupOutcome::kClippedAway;
 
   WindowVertex w[kMaxClipVertices];

@@ -10,11 +10,11 @@ namespace tessref::raster {
 
 // A triangle ready to scan: wound counter-clockwise in window space (y up).
 struct SetupTriangle {
-  std::int32_t x[3], y[3];  // window coordinates, 24.8 fixed point
-  std::int64_t area2;       // twice the area, > 0, in 16.16 (units of 2^-16 pixel^2)
-  double inv_area2;         // 1 / area2: edge function -> barycentric weight
-  float z[3];               // window depth, already in the depth range
-  float inv_w[3];           // 1 / clip w, for perspective-correct varyings
+  std::int32_t x[3], y[3];         // window coordinates, 24.8 fixed point
+  std::int64_t area2;              // twice the area, > 0, in 16.16 (units of 2^-16 pixel^2)
+  double inv_area2;                // 1 / area2: edge function -> barycentric weight
+  float z[3];                      // window depth, already in the depth range
+  float inv_w[3];                  // 1 / clip w, for perspective-correct varyings
   int min_x, min_y, max_x, max_y;  // pixels whose centers may be covered, inclusive, on screen
   bool front_facing;
   // 3 * num_varyings floats in the owner's varying store: vertex 0's values, then the

@@ -15,7 +15,9 @@ struct Edge {
   std::int64_t ax, ay;
   std::int64_t bias;    // fill convention correction: 0 on top/left edges, -1 elsewhere
   std::int64_t step_x;  // change of E for one pixel to the right: -dy * 256
-  std::int64_t at(std::int64_t px, std::int64_t py) const { return dx * (py - ay) - dy * (px - ax); }
+  std::int64_t at(std::int64_t px, std::int64_t py) const {
+    return dx * (py - ay) - dy * (px - ax);
+  }
 };
 
 Edge make_edge(std::int32_t ax, std::int32_t ay, std::int32_t bx, std::int32_t by) {

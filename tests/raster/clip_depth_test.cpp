@@ -3,8 +3,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "raster_test_util.h"
 
@@ -115,9 +115,11 @@ TEST(RasterClip, FarPlaneCutsAlongDepth) {
   // Screen-space triangle (w = 1) whose window depth goes from 0.25 to 2: pixels past depth 1 are
   // clipped away. Depth is linear in x here: z_w(x) = 0.25 + 1.75 (x - 8) / 112.
   TriangleBatch b;
-  test::add_triangle(b, test::window_vertex(8, 8, 0.25f, kW, kH), test::window_vertex(120, 8, 2.0f, kW, kH),
+  test::add_triangle(b, test::window_vertex(8, 8, 0.25f, kW, kH),
+                     test::window_vertex(120, 8, 2.0f, kW, kH),
                      test::window_vertex(8, 88, 0.25f, kW, kH));
-  test::add_triangle(b, test::window_vertex(120, 8, 2.0f, kW, kH), test::window_vertex(120, 88, 2.0f, kW, kH),
+  test::add_triangle(b, test::window_vertex(120, 8, 2.0f, kW, kH),
+                     test::window_vertex(120, 88, 2.0f, kW, kH),
                      test::window_vertex(8, 88, 0.25f, kW, kH));
   Framebuffer fb(kW, kH);
   test::VaryingProgram prog;
@@ -148,8 +150,8 @@ TEST(RasterClip, InvalidPositionsAreDroppedWithoutHarm) {
   test::add_triangle(b, v(0, 0, 0, nan), v(1, 0, 0, 1), v(0, 1, 0, 1));
   test::add_triangle(b, v(-1, -1, 0, 1), v(inf, 0, 0, 1), v(0, 1, 0, 1));
   test::add_triangle(b, v(-1, -1, 0, 1), v(1, -1, -inf, 1), v(0, 1, 0, 1));
-  test::add_triangle(b, v(0, 0, 0, 0), v(1, 0, 0, 1), v(0, 1, 0, 1));      // a vertex at the eye
-  test::add_triangle(b, v(0, 0, 0, 0), v(0, 0, 0, 0), v(0, 0, 0, 0));      // all at the eye
+  test::add_triangle(b, v(0, 0, 0, 0), v(1, 0, 0, 1), v(0, 1, 0, 1));  // a vertex at the eye
+  test::add_triangle(b, v(0, 0, 0, 0), v(0, 0, 0, 0), v(0, 0, 0, 0));  // all at the eye
   test::add_triangle(b, v(-1e30f, -1e30f, 0, 1), v(1e30f, -1e30f, 0, 1), v(0, 1e30f, 0, 1));
   test::add_triangle(b, v(-1e-30f, 0, 0, 1e-30f), v(1, -1, 0, 1), v(1, 1, 0, 1));  // tiny w
   Framebuffer fb(kW, kH);
@@ -157,7 +159,7 @@ TEST(RasterClip, InvalidPositionsAreDroppedWithoutHarm) {
   const RasterStats s = draw_triangles(b, RasterState{}, prog, fb, Parallel(2));
   EXPECT_EQ(s.triangles_in, 8u);
   EXPECT_EQ(s.triangles_clipped_away, 6u);  // the six with a non-finite or w = 0 position
-  EXPECT_GE(s.triangles_rasterized, 2u);     // the huge one (guard band) and the tiny-w one
+  EXPECT_GE(s.triangles_rasterized, 2u);    // the huge one (guard band) and the tiny-w one
   EXPECT_GT(s.fragments_shaded, std::uint64_t(kW) * kH / 2);
   expect_all_finite(fb);
 }
@@ -220,7 +222,7 @@ TEST(RasterDepth, EqualDepthKeepsTheEarlierTriangle) {
   std::uint64_t covered = 0;
   for (float d : fb.depth) covered += d < 1.0f;
   EXPECT_EQ(covered, std::uint64_t(kW) * kH - 128 * 48 / 2);  // all but the top wedge
-  EXPECT_EQ(s.fragments_shaded, covered);  // the overlap is shaded only once
+  EXPECT_EQ(s.fragments_shaded, covered);                     // the overlap is shaded only once
 }
 
 TEST(RasterDepth, DepthRangeMapsWindowDepth) {
@@ -258,8 +260,8 @@ TEST(RasterInput, EmptyBatchesAndFramebuffersAndOversizedViewports) {
   EXPECT_EQ(draw_triangles(empty, RasterState{}, prog, fb, Parallel(2)).triangles_in, 0u);
 
   TriangleBatch one;
-  test::add_triangle(one, test::window_vertex(0, 0, 0.5f, 8, 8), test::window_vertex(8, 0, 0.5f, 8, 8),
-                     test::window_vertex(0, 8, 0.5f, 8, 8));
+  test::add_triangle(one, test::window_vertex(0, 0, 0.5f, 8, 8),
+                     test::window_vertex(8, 0, 0.5f, 8, 8), test::window_vertex(0, 8, 0.5f, 8, 8));
   one.num_varyings = 99;  // more than kMaxVaryings: only kMaxVaryings are read
   // Centers with x + y < 7; the 8 on the hypotenuse (a right edge) are outside.
   EXPECT_EQ(draw_triangles(one, RasterState{}, prog, fb, Parallel(1)).fragments_shaded, 28u);

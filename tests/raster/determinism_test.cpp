@@ -22,12 +22,14 @@ TriangleBatch random_batch(std::size_t count, std::uint32_t seed, float size_sca
   TriangleBatch b;
   b.num_varyings = 4;
   for (std::size_t t = 0; t < count; ++t) {
-    const float size = size_scale * std::exp(u(rng) * std::log(u(rng) < 0.05f ? 3.0f : 0.6f));  // NDC units
+    const float size =
+        size_scale * std::exp(u(rng) * std::log(u(rng) < 0.05f ? 3.0f : 0.6f));  // NDC units
     const glm::vec3 c(u(rng) * 2.6f - 1.3f, u(rng) * 2.6f - 1.3f, u(rng) * 2.4f - 1.2f);
     for (int k = 0; k < 3; ++k) {
       ClipVertex v;
       const float w = u(rng) < 0.02f ? -1.0f : 0.3f + 2.0f * u(rng);
-      const glm::vec3 p = c + size * glm::vec3(u(rng) - 0.5f, u(rng) - 0.5f, 0.3f * (u(rng) - 0.5f));
+      const glm::vec3 p =
+          c + size * glm::vec3(u(rng) - 0.5f, u(rng) - 0.5f, 0.3f * (u(rng) - 0.5f));
       v.position = glm::vec4(p * w, w);
       if (u(rng) < 0.002f) v.position.x = std::numeric_limits<float>::quiet_NaN();
       for (int j = 0; j < 4; ++j) v.varyings[j] = u(rng);
@@ -53,9 +55,13 @@ Result render(const TriangleBatch& b, int threads, bool cull) {
 
 void expect_identical(const Result& a, const Result& b, const char* what) {
   ASSERT_EQ(a.fb.color.size(), b.fb.color.size());
-  EXPECT_EQ(std::memcmp(a.fb.color.data(), b.fb.color.data(), a.fb.color.size() * sizeof(glm::vec4)), 0) << what;
-  EXPECT_EQ(std::memcmp(a.fb.depth.data(), b.fb.depth.data(), a.fb.depth.size() * sizeof(float)), 0) << what;
-  EXPECT_EQ(std::memcmp(a.fb.aux.data(), b.fb.aux.data(), a.fb.aux.size() * sizeof(glm::vec4)), 0) << what;
+  EXPECT_EQ(
+      std::memcmp(a.fb.color.data(), b.fb.color.data(), a.fb.color.size() * sizeof(glm::vec4)), 0)
+      << what;
+  EXPECT_EQ(std::memcmp(a.fb.depth.data(), b.fb.depth.data(), a.fb.depth.size() * sizeof(float)), 0)
+      << what;
+  EXPECT_EQ(std::memcmp(a.fb.aux.data(), b.fb.aux.data(), a.fb.aux.size() * sizeof(glm::vec4)), 0)
+      << what;
   EXPECT_EQ(a.stats.triangles_in, b.stats.triangles_in) << what;
   EXPECT_EQ(a.stats.triangles_clipped_away, b.stats.triangles_clipped_away) << what;
   EXPECT_EQ(a.stats.triangles_culled, b.stats.triangles_culled) << what;

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include <embree3/rtcore.h>
-#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "raster/setup.h"
 #include "raster_test_util.h"
@@ -22,9 +22,9 @@ constexpr double kEdgeExclusion = 1e-4;  // pixels
 // t carries float rounding of order eps * (pixel coordinates * depth slope): measured up to
 // 1.3e-5 relative on slivers, 2e-8 absolute near depth 0. So the 1e-5 relative bound is checked
 // against the exact (double) depth of the triangle Embree found, and Embree's own t more loosely.
-constexpr double kDepthTolerance = 1e-5;        // relative, against the exact plane depth
-constexpr double kRayDepthTolerance = 1e-4;     // relative, against Embree's t ...
-constexpr double kRayDepthAbsolute = 1e-7;      // ... plus this much absolute
+constexpr double kDepthTolerance = 1e-5;     // relative, against the exact plane depth
+constexpr double kRayDepthTolerance = 1e-4;  // relative, against Embree's t ...
+constexpr double kRayDepthAbsolute = 1e-7;   // ... plus this much absolute
 
 // The set-up (clipped, snapped, wound) pieces of every triangle, exactly what is scanned.
 std::vector<raster::SetupTriangle> setup_all(const TriangleBatch& batch, int w, int h) {
@@ -66,8 +66,8 @@ class EmbreeOracle {
     rtcReleaseDevice(device_);
   }
   struct Hit {
-    float t;         // +inf on a miss
-    unsigned prim;   // index of the nearest triangle
+    float t;        // +inf on a miss
+    unsigned prim;  // index of the nearest triangle
   };
   // Nearest hit along the ray from (x + 0.5, y + 0.5, 0) toward +z: t is the window depth.
   Hit intersect(int x, int y) const {
@@ -85,7 +85,8 @@ class EmbreeOracle {
     rh.ray.mask = ~0u;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene_, &ctx, &rh);
-    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return {std::numeric_limits<float>::infinity(), 0};
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID)
+      return {std::numeric_limits<float>::infinity(), 0};
     return {rh.ray.tfar, rh.hit.primID};
   }
 
@@ -157,7 +158,8 @@ OracleResult compare_with_embree(const TriangleBatch& batch, int w, int h) {
       const bool raster_hit = fb.depth[i] < 1.0f;
       if (ray_hit != raster_hit) {
         if (++r.coverage_mismatches <= 5)
-          ADD_FAILURE() << "coverage at " << x << "," << y << ": raster " << raster_hit << " ray " << ray_hit;
+          ADD_FAILURE() << "coverage at " << x << "," << y << ": raster " << raster_hit << " ray "
+                        << ray_hit;
         continue;
       }
       if (!ray_hit) continue;
@@ -211,7 +213,8 @@ TEST(RasterEmbreeOracle, RandomScreenSpaceTriangles) {
 // A UV sphere of radius 1 at the origin, seen through view and projection.
 TriangleBatch sphere(const glm::mat4& mvp, int slices, int stacks) {
   auto vertex = [&](int i, int j) {
-    const float theta = 3.14159265f * float(j) / stacks, phi = 2.0f * 3.14159265f * float(i) / slices;
+    const float theta = 3.14159265f * float(j) / stacks,
+                phi = 2.0f * 3.14159265f * float(i) / slices;
     ClipVertex v;
     v.position = mvp * glm::vec4(std::sin(theta) * std::cos(phi), std::cos(theta),
                                  std::sin(theta) * std::sin(phi), 1.0f);
@@ -220,7 +223,8 @@ TriangleBatch sphere(const glm::mat4& mvp, int slices, int stacks) {
   TriangleBatch b;
   for (int j = 0; j < stacks; ++j)
     for (int i = 0; i < slices; ++i) {
-      const ClipVertex a = vertex(i, j), c = vertex(i + 1, j), d = vertex(i + 1, j + 1), e = vertex(i, j + 1);
+      const ClipVertex a = vertex(i, j), c = vertex(i + 1, j), d = vertex(i + 1, j + 1),
+                       e = vertex(i, j + 1);
       if (j > 0) test::add_triangle(b, a, d, c);
       if (j + 1 < stacks) test::add_triangle(b, a, e, d);
     }
@@ -230,7 +234,8 @@ TriangleBatch sphere(const glm::mat4& mvp, int slices, int stacks) {
 TEST(RasterEmbreeOracle, TessellatedSphere) {
   constexpr int kW = 320, kH = 240;
   const glm::mat4 proj = glm::perspective(glm::radians(45.0f), float(kW) / kH, 0.1f, 20.0f);
-  const glm::mat4 view = glm::lookAt(glm::vec3(0.4f, 0.7f, 3.2f), glm::vec3(0.0f), glm::vec3(0, 1, 0));
+  const glm::mat4 view =
+      glm::lookAt(glm::vec3(0.4f, 0.7f, 3.2f), glm::vec3(0.0f), glm::vec3(0, 1, 0));
   const OracleResult r = compare_with_embree(sphere(proj * view, 96, 48), kW, kH);
   EXPECT_EQ(r.coverage_mismatches, 0);
   EXPECT_EQ(r.depth_mismatches, 0);
@@ -244,7 +249,8 @@ TEST(RasterEmbreeOracle, SphereCutByTheNearPlane) {
   constexpr int kW = 320, kH = 240;
   // The near plane cuts a cap of radius about 0.7 off the sphere, inside the 90 degree view.
   const glm::mat4 proj = glm::perspective(glm::radians(90.0f), float(kW) / kH, 0.8f, 20.0f);
-  const glm::mat4 view = glm::lookAt(glm::vec3(0.1f, 0.2f, 1.5f), glm::vec3(0.0f), glm::vec3(0, 1, 0));
+  const glm::mat4 view =
+      glm::lookAt(glm::vec3(0.1f, 0.2f, 1.5f), glm::vec3(0.0f), glm::vec3(0, 1, 0));
   const TriangleBatch b = sphere(proj * view, 64, 32);
   Framebuffer probe(kW, kH);
   test::CountingProgram counter(kW, kH);

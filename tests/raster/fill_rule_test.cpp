@@ -85,7 +85,7 @@ TEST(RasterFillRule, SlopedEdgesThroughPixelCenters) {
   const PixelSet s = covered(triangle({2.5f, 2.5f}, {12.5f, 2.5f}, {6.5f, 10.5f}));
   EXPECT_TRUE(s.count({3, 4}) && s.count({4, 6}) && s.count({5, 8}));
   EXPECT_FALSE(s.count({2, 2}) || s.count({9, 6}));
-  EXPECT_TRUE(s.count({8, 6}) && s.count({10, 4}));  // just inside the right edge
+  EXPECT_TRUE(s.count({8, 6}) && s.count({10, 4}));   // just inside the right edge
   EXPECT_FALSE(s.count({5, 2}) || s.count({11, 2}));  // bottom edge: outside
   EXPECT_FALSE(s.count({6, 10}));  // the apex is on the left and the right edge: outside
   // Row by row, centers x + 0.5 in [left, right): the spans worked out by hand.

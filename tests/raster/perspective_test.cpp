@@ -50,7 +50,9 @@ void check_floor(float z_near_edge, double tolerance) {
       ASSERT_LT(y_ndc, 0.0);
       const double qx = -x_ndc / y_ndc, qz = 1.0 / y_ndc;
       const glm::vec4 got = fb.color[i];
-      auto rel = [](double g, double want) { return std::abs(g - want) / std::max(1.0, std::abs(want)); };
+      auto rel = [](double g, double want) {
+        return std::abs(g - want) / std::max(1.0, std::abs(want));
+      };
       worst = std::max({worst, rel(got.x, qx), rel(got.z, qz), rel(got.y, -1.0)});
       ASSERT_LE(rel(got.x, qx), tolerance) << x << "," << y;
       ASSERT_LE(rel(got.z, qz), tolerance) << x << "," << y;

@@ -34,7 +34,8 @@ inline void add_triangle(TriangleBatch& b, const ClipVertex& a, const ClipVertex
 struct CountingProgram : FragmentProgram {
   int width;
   std::unique_ptr<std::atomic<std::uint32_t>[]> counts;
-  CountingProgram(int w, int h) : width(w), counts(new std::atomic<std::uint32_t>[std::size_t(w) * h]) {
+  CountingProgram(int w, int h)
+      : width(w), counts(new std::atomic<std::uint32_t>[std::size_t(w) * h]) {
     for (std::size_t i = 0; i < std::size_t(w) * h; ++i) counts[i] = 0;
   }
   FragmentOutput shade(const FragmentInput& in) const override {

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <random>
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "raster_test_util.h"
 
@@ -60,11 +60,18 @@ TriangleBatch jittered_grid(int nx, int ny, std::uint32_t seed, bool random_w, b
       const bool diag = coin(rng);
       const bool flip = flip_some && coin(rng);
       auto tri = [&](const ClipVertex& p, const ClipVertex& q, const ClipVertex& r) {
-        if (flip) test::add_triangle(b, p, r, q);
-        else test::add_triangle(b, p, q, r);
+        if (flip)
+          test::add_triangle(b, p, r, q);
+        else
+          test::add_triangle(b, p, q, r);
       };
-      if (diag) { tri(a, bq, c); tri(a, c, d); }
-      else { tri(a, bq, d); tri(bq, c, d); }
+      if (diag) {
+        tri(a, bq, c);
+        tri(a, c, d);
+      } else {
+        tri(a, bq, d);
+        tri(bq, c, d);
+      }
     }
   return b;
 }
@@ -72,7 +79,8 @@ TriangleBatch jittered_grid(int nx, int ny, std::uint32_t seed, bool random_w, b
 TEST(RasterWatertight, JitteredGrid) {
   for (std::uint32_t seed : {1u, 2u, 3u}) {
     expect_covered_once(jittered_grid(23, 17, seed, false, false), 1, "grid, w = 1");
-    expect_covered_once(jittered_grid(40, 31, seed + 10, true, true), 4, "grid, random w, mixed winding");
+    expect_covered_once(jittered_grid(40, 31, seed + 10, true, true), 4,
+                        "grid, random w, mixed winding");
   }
 }
 
@@ -86,14 +94,15 @@ TEST(RasterWatertight, FineGridOfSubPixelTriangles) {
 TriangleBatch fan(int segments, float radius, std::uint32_t seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
-  const ClipVertex center = test::window_vertex(20.0f + u(rng) * (kW - 40), 20.0f + u(rng) * (kH - 40),
-                                                0.5f, kW, kH);
+  const ClipVertex center =
+      test::window_vertex(20.0f + u(rng) * (kW - 40), 20.0f + u(rng) * (kH - 40), 0.5f, kW, kH);
   std::vector<ClipVertex> rim;
   const float step = 2.0f * 3.14159265f / segments;
   for (int k = 0; k < segments; ++k) {
     const float a = (k + 0.3f + 0.4f * u(rng)) * step;  // random angles, still in order
-    rim.push_back(test::window_vertex(kW * 0.5f + radius * std::cos(a), kH * 0.5f + radius * std::sin(a),
-                                      0.5f, kW, kH, 0.5f + 2.0f * u(rng)));
+    rim.push_back(test::window_vertex(kW * 0.5f + radius * std::cos(a),
+                                      kH * 0.5f + radius * std::sin(a), 0.5f, kW, kH,
+                                      0.5f + 2.0f * u(rng)));
   }
   TriangleBatch b;
   for (int k = 0; k < segments; ++k) test::add_triangle(b, center, rim[k], rim[(k + 1) % segments]);
@@ -112,8 +121,8 @@ TEST(RasterWatertight, VertexExactlyOnPixelCenters) {
   // A fan whose center and rim sit on pixel centers and pixel corners: the fill rule decides.
   TriangleBatch b;
   const ClipVertex c = test::window_vertex(80.5f, 64.5f, 0.5f, kW, kH);
-  const float rim[][2] = {{-20, -20}, {80.5f, -20}, {200, -20}, {200, 64.5f}, {200, 200},
-                          {80.5f, 200}, {-20, 200}, {-20, 64.5f}, {-20, 10.5f}};
+  const float rim[][2] = {{-20, -20},   {80.5f, -20}, {200, -20},   {200, 64.5f}, {200, 200},
+                          {80.5f, 200}, {-20, 200},   {-20, 64.5f}, {-20, 10.5f}};
   const int n = sizeof(rim) / sizeof(rim[0]);
   for (int k = 0; k < n; ++k) {
     const auto& p = rim[k];
