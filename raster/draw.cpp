@@ -71,9 +71,19 @@ void setup_chunk(const TriangleBatch& batch, std::size_t first, std::size_t last
   chunk.tile_begin.assign(grid.count() + 1, 0);
   auto for_tiles = [&](const SetupTriangle& t, auto&& fn) {
     if (t.min_x > t.max_x || t.min_y > t.max_y) return;
-    for (int ty = t.min_y / kTileSize; ty <= t.max_y / kTileSize; ++ty)
-      for (int tx = t.min_x / kTileSize; tx <= t.max_x / kTileSize; ++tx)
-        fn(std::size_t(ty) * grid.tiles_x + tx);
+    const int tx0 = t.min_x / kTileSize, tx1 = t.max_x / kTileSize;
+    const int ty0 = t.min_y / kTileSize, ty1 = t.max_y / kTileSize;
+    const bool single = tx0 == tx1 && ty0 == ty1;
+    for (int ty = ty0; ty <= ty1; ++ty)
+      for (int tx = tx0; tx <= tx1; ++tx) {
+        // Tiles of the bounding box that the triangle misses get no entry.
+        const raster::PixelRect rect{std::max(tx * kTileSize, t.min_x),
+                                     std::max(ty * kTileSize, t.min_y),
+                                     std::min((tx + 1) * kTileSize - 1, t.max_x),
+                                     std::min((ty + 1) * kTileSize - 1, t.max_y)};
+        if (single || raster::triangle_may_cover(t, rect))
+          fn(std::size_t(ty) * grid.tiles_x + tx);
+      }
   };
   for (const SetupTriangle& t : chunk.tris)
     for_tiles(t, [&](std::size_t tile) { ++chunk.tile_begin[tile + 1]; });

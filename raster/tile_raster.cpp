@@ -86,6 +86,21 @@ struct Interpolator {
 
 }  // namespace
 
+bool triangle_may_cover(const SetupTriangle& t, const PixelRect& rect) {
+  const Edge edges[3] = {make_edge(t.x[1], t.y[1], t.x[2], t.y[2]),
+                         make_edge(t.x[2], t.y[2], t.x[0], t.y[0]),
+                         make_edge(t.x[0], t.y[0], t.x[1], t.y[1])};
+  const std::int64_t cx0 = fixed::pixel_center(rect.x0), cx1 = fixed::pixel_center(rect.x1);
+  const std::int64_t cy0 = fixed::pixel_center(rect.y0), cy1 = fixed::pixel_center(rect.y1);
+  for (const Edge& e : edges) {
+    // E is linear, so its largest value over the rectangle of centers is at a corner.
+    const std::int64_t best = std::max(std::max(e.at(cx0, cy0), e.at(cx1, cy0)),
+                                       std::max(e.at(cx0, cy1), e.at(cx1, cy1)));
+    if (best + e.bias < 0) return false;
+  }
+  return true;
+}
+
 std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int num_varyings,
                               const PixelRect& rect, const FragmentProgram& fs, Framebuffer& fb) {
   const int x0 = std::max(rect.x0, t.min_x), x1 = std::min(rect.x1, t.max_x);

@@ -17,4 +17,9 @@ struct PixelRect {
 std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int num_varyings,
                               const PixelRect& rect, const FragmentProgram& fs, Framebuffer& fb);
 
+// False when no pixel center of rect can be inside t (every center is outside one edge): lets the
+// binner skip tiles that a large triangle's bounding box overlaps but the triangle misses. Exact
+// and conservative: true whenever raster_triangle would cover a pixel of rect.
+bool triangle_may_cover(const SetupTriangle& t, const PixelRect& rect);
+
 }  // namespace tessref::raster
