@@ -176,7 +176,7 @@ void clear(TaskResult& r) {
   r.stats = TessStats{};
 }
 
-// The body of tessellate(); `slots` keeps the tasks' buffers (capacity only) between calls.
+// The body of tessellate(); `results` keeps the tasks' buffers (capacity only) between calls.
 TessStats tessellate_range(const TessDrawInput& input, std::size_t first_patch,
                            std::size_t last_patch, const TessControlProgram& tcs,
                            const TessEvalProgram& tes, const TessOptions& options,

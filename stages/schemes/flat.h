@@ -23,7 +23,8 @@ struct PassThroughTcs : TessControlProgram {
 // weighting gl_in[0], gl_in[1], gl_in[2]; the normal is renormalized (zero if degenerate).
 // Quads: bilinear over gl_in[0..3], (1-u)(1-v) P0 + u(1-v) P1 + u v P2 + (1-u) v P3.
 // Isolines: linear from gl_in[0] (u = 0) to gl_in[1] (u = 1).
-// Triangle sums run in the canonical corner order, so shared edges match bit for bit.
+// Shared edges match bit for bit: on an edge only two terms are non-zero, and a + b == b + a;
+// triangle sums also run in the canonical corner order, which keeps signed zeros alike.
 struct FlatTes : TessEvalProgram {
   TessLayout tess_layout;
   glm::mat4 view_proj{1.0f};
