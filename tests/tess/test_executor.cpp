@@ -403,6 +403,46 @@ TEST(TessExecutor, FlatSharedEdgeIsBitIdentical) {
   }
 }
 
+TEST(TessExecutor, FlatQuadSharedEdgeIsBitIdentical) {
+  // Quad A = (0, 1, 2, 3) has the shared edge 1-2 at u = 1; quad B = (2, 1, 4, 5) has it at v = 0,
+  // running the other way.
+  const std::vector<StageVertex> vs = {
+      vertex({0.1f, 0.3f, 0.7f}, {0, 0, 1}), vertex({0.9f, -0.2f, 0.3f}, {0, 1, 1}),
+      vertex({1.3f, 0.8f, 0.1f}, {1, 0, 1}), vertex({0.2f, 0.9f, -0.4f}, {1, 1, 1}),
+      vertex({2.1f, 0.7f, 0.3f}, {0, 0, 1}), vertex({1.9f, -0.3f, 0.5f}, {0, 1, 0})};
+  const std::vector<std::uint32_t> idx = {0, 1, 2, 3, 2, 1, 4, 5};
+  for (TessSpacing spacing : {TessSpacing::Equal, TessSpacing::FractionalOdd, TessSpacing::FractionalEven}) {
+    PassThroughTcs tcs;
+    tcs.vertices = 4;
+    tcs.levels = TessLevelSettings::uniform(5.7f, 3.2f);
+    FlatTes tes;
+    tes.tess_layout.domain = TessDomain::Quads;
+    tes.tess_layout.spacing = spacing;
+    std::vector<TessDumpRecord> dump;
+    TessOptions opt;
+    opt.dump = &dump;
+    TriangleBatch out;
+    tessellate(TessDrawInput{vs, idx, 4}, 0, 2, tcs, tes, opt, Parallel(1), out);
+    std::vector<std::tuple<glm::vec3, glm::vec3>> a, b;
+    for (const auto& r : dump) {
+      if (r.patch_id == 0 && r.tess_coord.x == 1.0f) a.emplace_back(r.position, r.normal);
+      if (r.patch_id == 1 && r.tess_coord.y == 0.0f) b.emplace_back(r.position, r.normal);
+    }
+    auto by_position = [](const auto& x, const auto& y) {
+      const glm::vec3 &p = std::get<0>(x), &q = std::get<0>(y);
+      return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
+    };
+    std::sort(a.begin(), a.end(), by_position);
+    std::sort(b.begin(), b.end(), by_position);
+    ASSERT_EQ(a.size(), b.size());
+    ASSERT_GE(a.size(), 6u);
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      EXPECT_TRUE(same_bits(std::get<0>(a[i]), std::get<0>(b[i]))) << to_string(spacing) << " " << i;
+      EXPECT_TRUE(same_bits(std::get<1>(a[i]), std::get<1>(b[i]))) << to_string(spacing) << " " << i;
+    }
+  }
+}
+
 TEST(TessExecutor, FlatPnPatchThroughTheExecutorStaysOnItsPlane) {
   const glm::vec3 p0(0.2f, -0.1f, 0.3f), p1(1.1f, 0.2f, -0.4f), p2(0.1f, 0.9f, 0.5f);
   const glm::vec3 face = glm::normalize(glm::cross(p1 - p0, p2 - p0));
