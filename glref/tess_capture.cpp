@@ -197,9 +197,9 @@ void TessCapture::capture_slice(const TessLayout& layout, const TessLevels* leve
       // Every vertex must carry its own patch's id, patches in draw order, each primitive
       // wholly inside one patch; anything else is the driver mixing up vertices.
       std::int64_t prev = static_cast<std::int64_t>(first);
+      std::vector<std::size_t> counts(end - first, 0);
       for (std::size_t v = 0; v < nv; ++v) {
-        const FeedbackVertex& r = records[v];
-        const std::int64_t id = r.patch;
+        const std::int64_t id = records[v].patch;
         const std::int64_t prim_id = records[v - v % vpp].patch;
         if (id < static_cast<std::int64_t>(first) || id >= static_cast<std::int64_t>(end) || id < prev ||
             id != prim_id)
@@ -208,9 +208,14 @@ void TessCapture::capture_slice(const TessLayout& layout, const TessLevels* leve
                         std::to_string(id) + ": the driver mixed up patches (more than 65,535 domain " +
                         "points in one draw?)");
         prev = id;
+        ++counts[static_cast<std::size_t>(id) - first];
+      }
+      // Exact sizes up front: growing large vectors means mmap/munmap churn in glibc.
+      for (std::size_t i = first; i < end; ++i) result[i].reserve(result[i].size() + counts[i - first]);
+      for (std::size_t v = 0; v < nv; ++v) {
         glm::vec3 c;
-        std::memcpy(&c, r.coord, sizeof c);  // bit-exact
-        result[static_cast<std::size_t>(id)].push_back(c);
+        std::memcpy(&c, records[v].coord, sizeof c);  // bit-exact
+        result[static_cast<std::size_t>(records[v].patch)].push_back(c);
       }
       // Each patch's own bound must hold too (it sized the buffer).
       for (std::size_t i = first; i < end; ++i)
