@@ -18,7 +18,8 @@ inline constexpr std::int32_t kSubpixelOne = 1 << kSubpixelBits;
 inline constexpr int kGuardBits = 14;
 inline constexpr float kGuardBandPixels = float(1 << kGuardBits);
 
-// Snap a window coordinate to 24.8 with round-to-nearest (ties to even).
+// Snap a window coordinate to 24.8 with round-to-nearest (ties to even). The guard band keeps
+// |window_coord| below 2^(kGuardBits + 1), so the result fits.
 inline std::int32_t snap_subpixel(float window_coord) {
   return static_cast<std::int32_t>(std::nearbyint(window_coord * float(kSubpixelOne)));
 }
