@@ -2,6 +2,7 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <string>
 
 #include "glref/gl_context.h"
@@ -51,36 +52,110 @@ PatchMesh::PatchMesh(GlContext& context, const PatchMeshData& data)
 }
 
 PatchMesh::~PatchMesh() {
-  for (unsigned* b : {&position_buffer_, &normal_buffer_, &index_buffer_})
+  if (query_generated_) glDeleteQueries(1, &query_generated_);
+  if (query_written_) glDeleteQueries(1, &query_written_);
+  for (unsigned* b : {&position_buffer_, &normal_buffer_, &index_buffer_, &feedback_buffer_})
     if (*b) glDeleteBuffers(1, b);
   if (vao_) glDeleteVertexArrays(1, &vao_);
 }
 
+std::vector<std::size_t> PatchMesh::bounds_or_worst_case(const std::vector<std::size_t>& point_bounds) const {
+  if (!point_bounds.empty() && point_bounds.size() != patch_count_)
+    throw GlError("PatchMesh: " + std::to_string(point_bounds.size()) + " point bounds for " +
+                  std::to_string(patch_count_) + " patches");
+  if (!point_bounds.empty()) return point_bounds;
+  const std::size_t m = static_cast<std::size_t>(context_.max_tess_gen_level()) + 1;
+  return std::vector<std::size_t>(patch_count_, m * m);
+}
+
+void PatchMesh::draw_range(const DrawRange& d, int base_location) {
+  if (base_location >= 0) glUniform1i(base_location, static_cast<GLint>(d.first));
+  const std::size_t offset = d.first * patch_vertices_ * sizeof(std::uint32_t);
+  glDrawElements(GL_PATCHES, static_cast<GLsizei>(d.count * patch_vertices_), GL_UNSIGNED_INT,
+                 reinterpret_cast<const void*>(offset));
+}
+
 std::size_t PatchMesh::draw(const Program& program, const std::vector<std::size_t>& point_bounds,
                             std::size_t max_points_per_draw) {
-  if (!point_bounds.empty() && point_bounds.size() != patch_count_)
-    throw GlError("PatchMesh::draw: " + std::to_string(point_bounds.size()) + " point bounds for " +
-                  std::to_string(patch_count_) + " patches");
-  std::vector<std::size_t> bounds = point_bounds;
-  if (bounds.empty()) {
-    const std::size_t m = static_cast<std::size_t>(context_.max_tess_gen_level()) + 1;
-    bounds.assign(patch_count_, m * m);
-  }
+  const std::vector<std::size_t> bounds = bounds_or_worst_case(point_bounds);
   context_.make_current();
   program.use();
   const GLint base_location = glGetUniformLocation(program.id(), "u_patch_base");
   glBindVertexArray(vao_);
   glPatchParameteri(GL_PATCH_VERTICES, patch_vertices_);
   const std::vector<DrawRange> draws = split_draws(bounds, max_points_per_draw, std::size_t(1) << 20);
-  for (const DrawRange& d : draws) {
-    if (base_location >= 0) glUniform1i(base_location, static_cast<GLint>(d.first));
-    const std::size_t offset = d.first * patch_vertices_ * sizeof(std::uint32_t);
-    glDrawElements(GL_PATCHES, static_cast<GLsizei>(d.count * patch_vertices_), GL_UNSIGNED_INT,
-                   reinterpret_cast<const void*>(offset));
-  }
+  for (const DrawRange& d : draws) draw_range(d, base_location);
   glBindVertexArray(0);
   check_gl("PatchMesh::draw");
   return draws.size();
+}
+
+std::vector<std::uint32_t> PatchMesh::capture(const Program& program, int words_per_vertex, unsigned primitive,
+                                              const std::vector<std::size_t>& point_bounds,
+                                              std::size_t max_points_per_draw) {
+  const int vpp = primitive == GL_TRIANGLES ? 3 : primitive == GL_LINES ? 2 : primitive == GL_POINTS ? 1 : 0;
+  if (vpp == 0 || words_per_vertex < 1)
+    throw GlError("PatchMesh::capture: primitive must be GL_TRIANGLES, GL_LINES or GL_POINTS, words >= 1");
+  const std::vector<std::size_t> bounds = bounds_or_worst_case(point_bounds);
+  context_.make_current();
+  context_.bind_default_framebuffer();
+  program.use();
+  const GLint base_location = glGetUniformLocation(program.id(), "u_patch_base");
+  if (!feedback_buffer_) {
+    glGenBuffers(1, &feedback_buffer_);
+    glGenQueries(1, &query_generated_);
+    glGenQueries(1, &query_written_);
+  }
+  glBindVertexArray(vao_);
+  glPatchParameteri(GL_PATCH_VERTICES, patch_vertices_);
+  glEnable(GL_RASTERIZER_DISCARD);
+  std::vector<std::uint32_t> out;
+  try {
+    for (const DrawRange& d : split_draws(bounds, max_points_per_draw, std::size_t(1) << 20)) {
+      // Emitted vertices: fewer than 2 triangles (or 1 segment) per domain point.
+      std::size_t points = 0;
+      for (std::size_t i = d.first; i < d.first + d.count; ++i) points += bounds[i];
+      const std::size_t max_vertices = std::max<std::size_t>(points * (vpp == 3 ? 6 : vpp == 2 ? 2 : 1), vpp);
+      const std::size_t bytes = max_vertices * words_per_vertex * sizeof(std::uint32_t);
+      glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, feedback_buffer_);
+      if (bytes > feedback_capacity_) {
+        feedback_capacity_ = std::max(bytes, feedback_capacity_ * 2);
+        glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, static_cast<GLsizeiptr>(feedback_capacity_), nullptr,
+                     GL_DYNAMIC_COPY);
+      }
+      glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, feedback_buffer_, 0, static_cast<GLsizeiptr>(bytes));
+      glBeginQuery(GL_PRIMITIVES_GENERATED, query_generated_);
+      glBeginQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, query_written_);
+      glBeginTransformFeedback(primitive);
+      draw_range(d, base_location);
+      glEndTransformFeedback();
+      glEndQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
+      glEndQuery(GL_PRIMITIVES_GENERATED);
+      check_gl("PatchMesh::capture: drawing");
+      GLuint64 generated = 0, written = 0;
+      glGetQueryObjectui64v(query_generated_, GL_QUERY_RESULT, &generated);
+      glGetQueryObjectui64v(query_written_, GL_QUERY_RESULT, &written);
+      if (written != generated)
+        throw GlError("PatchMesh::capture: " + std::to_string(written) + " of " + std::to_string(generated) +
+                      " primitives captured (point bounds too small?)");
+      const std::size_t words = static_cast<std::size_t>(written) * vpp * words_per_vertex;
+      const std::size_t at = out.size();
+      out.resize(at + words);
+      if (words)
+        glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0, static_cast<GLsizeiptr>(words * sizeof(std::uint32_t)),
+                           out.data() + at);
+      check_gl("PatchMesh::capture: reading back");
+    }
+  } catch (...) {
+    glDisable(GL_RASTERIZER_DISCARD);
+    glBindVertexArray(0);
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    throw;
+  }
+  glDisable(GL_RASTERIZER_DISCARD);
+  glBindVertexArray(0);
+  return out;
 }
 
 }  // namespace tessref::glref

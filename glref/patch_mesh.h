@@ -40,9 +40,24 @@ class PatchMesh {
   std::size_t draw(const Program& program, const std::vector<std::size_t>& point_bounds = {},
                    std::size_t max_points_per_draw = kSafePointsPerDraw);
 
+  // Draws with rasterizer discard and returns the program's transform-feedback output: the
+  // program must be linked with interleaved varyings of 32-bit components (float, int bits),
+  // `words_per_vertex` of them per vertex, and its last stage must emit `primitive` (GL_TRIANGLES,
+  // GL_LINES or GL_POINTS: the TES output). Patches come back in order, each draw checked for
+  // primitives written == generated. To check the llvmpipe trap, capture u_patch_base +
+  // gl_PrimitiveID and verify it.
+  std::vector<std::uint32_t> capture(const Program& program, int words_per_vertex, unsigned primitive,
+                                     const std::vector<std::size_t>& point_bounds = {},
+                                     std::size_t max_points_per_draw = kSafePointsPerDraw);
+
  private:
   GlContext& context_;
+  std::vector<std::size_t> bounds_or_worst_case(const std::vector<std::size_t>& point_bounds) const;
+  void draw_range(const DrawRange& d, int base_location);
+
   unsigned vao_ = 0, position_buffer_ = 0, normal_buffer_ = 0, index_buffer_ = 0;
+  unsigned feedback_buffer_ = 0, query_generated_ = 0, query_written_ = 0;
+  std::size_t feedback_capacity_ = 0;
   std::size_t patch_count_ = 0;
   int patch_vertices_ = 3;
 };

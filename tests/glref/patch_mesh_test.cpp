@@ -2,6 +2,7 @@
 // llvmpipe's 65,535-vertex limit is not (the trap, seen in a picture).
 #include <epoxy/gl.h>
 
+#include <cstring>
 #include <limits>
 
 #include <gtest/gtest.h>
@@ -105,6 +106,65 @@ TEST(PatchMesh, UnsplitDrawPastTheLimitIsWrongOnLlvmpipe) {
   EXPECT_EQ(draws, 1u);
   EXPECT_GT(errors, 0u) << "Mesa no longer wraps: the split may be unnecessary on this version";
   RecordProperty("pixels_wrong_unsplit", static_cast<int>(errors));
+}
+
+// Capturing TES outputs (position, tess coord, patch id) of a split draw: every patch in order,
+// its coordinates those of the primitive generator, its positions the exact interpolation.
+TEST(PatchMesh, CapturesTesOutputsInPatchOrder) {
+  TESSREF_REQUIRE_GL(ctx);
+  const PatchMeshData data = full_screen_grid(4);
+  PatchMesh mesh(*ctx, data);
+  const char* vs = R"(#version 450 core
+layout(location = 0) in vec3 in_position;
+void main() { gl_Position = vec4(in_position, 1.0); }
+)";
+  const char* tcs = R"(#version 450 core
+layout(vertices = 3) out;
+void main() {
+  gl_out[gl_InvocationID].gl_Position = gl_in[gl_InvocationID].gl_Position;
+  gl_TessLevelOuter[0] = 64.0; gl_TessLevelOuter[1] = 64.0; gl_TessLevelOuter[2] = 64.0;
+  gl_TessLevelInner[0] = 64.0;
+}
+)";
+  const char* tes = R"(#version 450 core
+layout(triangles, equal_spacing, ccw) in;
+uniform int u_patch_base;
+out vec3 tf_position;
+out vec3 tf_coord;
+out int tf_patch;
+void main() {
+  vec4 p = gl_TessCoord.x * gl_in[0].gl_Position + gl_TessCoord.y * gl_in[1].gl_Position +
+           gl_TessCoord.z * gl_in[2].gl_Position;
+  tf_position = p.xyz;
+  tf_coord = gl_TessCoord;
+  tf_patch = u_patch_base + gl_PrimitiveID;
+  gl_Position = p;
+}
+)";
+  Program program = link_program({{GL_VERTEX_SHADER, vs, "cap.vert"},
+                                  {GL_TESS_CONTROL_SHADER, tcs, "cap.tesc"},
+                                  {GL_TESS_EVALUATION_SHADER, tes, "cap.tese"}},
+                                 FeedbackVaryings{{"tf_position", "tf_coord", "tf_patch"}, true});
+  TessLevels levels;
+  levels.outer = {64, 64, 64, 64};
+  levels.inner = {64, 64};
+  const std::vector<std::size_t> bounds(mesh.patch_count(), domain_point_bound(TessLayout{}, levels));
+  const std::vector<std::uint32_t> words = mesh.capture(program, 7, GL_TRIANGLES, bounds);
+  const std::vector<glm::vec3> coords = capture_tess_coords(*ctx, TessLayout{}, {levels})[0];
+  ASSERT_EQ(words.size(), mesh.patch_count() * coords.size() * 7);
+  for (std::size_t v = 0; v < words.size() / 7; ++v) {
+    const std::uint32_t* w = &words[v * 7];
+    const std::size_t patch = v / coords.size();
+    ASSERT_EQ(w[6], patch) << "vertex " << v;
+    glm::vec3 p, c;
+    std::memcpy(&p, w, sizeof p);
+    std::memcpy(&c, w + 3, sizeof c);
+    ASSERT_EQ(c, coords[v % coords.size()]) << "vertex " << v;
+    const std::uint32_t* idx = &data.indices[patch * 3];
+    const glm::vec3 expected = c.x * data.positions[idx[0]] + c.y * data.positions[idx[1]] + c.z * data.positions[idx[2]];
+    ASSERT_EQ(p, expected) << "vertex " << v;
+  }
+  EXPECT_THROW(mesh.capture(program, 7, GL_QUADS), GlError);
 }
 
 TEST(PatchMesh, RejectsBadData) {
