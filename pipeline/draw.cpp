@@ -4,6 +4,8 @@
 #include <chrono>
 
 #include "common/error.h"
+#include "stages/schemes/flat.h"
+#include "stages/schemes/pn_triangles.h"
 #include "stages/tess_stage.h"
 
 namespace tessref {
@@ -31,6 +33,71 @@ ClipVertex to_clip_vertex(const programs::VertexOut& v) {
     out.varyings[kVaryingNormal + c] = v.v_world_normal[c];
   }
   return out;
+}
+
+
+// The tessellation path: each mesh triangle is a 3-vertex patch whose control points are the
+// vertex shader's outputs; TCS -> TPG -> TES run chunk by chunk, each chunk rasterized before the
+// next is made, so memory stays bounded by the chunk whatever the level.
+template <typename Rasterize>
+void draw_tessellated(const std::vector<programs::VertexOut>& shaded, const Mesh& mesh,
+                      const programs::TransformVertexShader& vs,
+                      const TessellationSettings& settings, const Framebuffer& fb,
+                      const Parallel& parallel, const DrawOptions& options, Rasterize& rasterize,
+                      DrawStats& stats) {
+  auto t0 = Clock::now();
+  std::vector<StageVertex> control_points(shaded.size());
+  for (std::size_t v = 0; v < shaded.size(); ++v) {
+    control_points[v].attr[kAttrPosition] = glm::vec4(shaded[v].v_world_position, 1.0f);
+    control_points[v].attr[kAttrNormal] = glm::vec4(shaded[v].v_world_normal, 0.0f);
+  }
+  stats.vertex_seconds += seconds_since(t0);
+
+  TessLevelSettings levels;
+  levels.constant = settings.levels;
+  levels.adaptive = settings.adaptive.enabled;
+  levels.screen.view_proj = vs.u_view_projection;
+  levels.screen.viewport_pixels = glm::vec2(float(fb.width), float(fb.height));
+  levels.screen.pixels_per_segment = settings.adaptive.pixels_per_segment;
+
+  PassThroughTcs flat_tcs;
+  flat_tcs.levels = levels;
+  FlatTes flat_tes;
+  flat_tes.tess_layout = TessLayout{TessDomain::Triangles, settings.spacing, settings.winding, false};
+  flat_tes.view_proj = vs.u_view_projection;
+  PnTcs pn_tcs;
+  PnTes pn_tes;
+  parse(to_string(settings.normal_mode), pn_tcs.normal_mode);  // same names, same order
+  pn_tcs.levels = levels;
+  pn_tes.normal_mode = pn_tcs.normal_mode;
+  pn_tes.spacing = settings.spacing;
+  pn_tes.winding = settings.winding;
+  pn_tes.view_proj = vs.u_view_projection;
+  const bool pn = settings.scheme == SurfaceScheme::PN;
+  const TessControlProgram& tcs = pn ? static_cast<const TessControlProgram&>(pn_tcs) : flat_tcs;
+  const TessEvalProgram& tes = pn ? static_cast<const TessEvalProgram&>(pn_tes) : flat_tes;
+
+  std::vector<TessDumpRecord> records;
+  TessOptions tess_options;
+  if (options.dump_tess) tess_options.dump = &records;
+  const TessDrawInput input{control_points, mesh.indices, 3};
+  const std::size_t patches = input.patch_count();
+  std::size_t done = 0;
+  auto t1 = Clock::now();
+  const double raster_before = stats.raster_seconds;
+  const TessStats tess = tessellate_chunks(
+      input, options.tess_chunk_patches, tcs, tes, tess_options, parallel,
+      [&](const TriangleBatch& batch) {
+        rasterize(batch);
+        if (options.dump_tess) {
+          options.dump_tess(records);
+          records.clear();
+        }
+        done = std::min(patches, done + options.tess_chunk_patches);
+        if (options.progress) options.progress(double(done) / double(std::max<std::size_t>(1, patches)));
+      });
+  stats.tessellation_seconds += seconds_since(t1) - (stats.raster_seconds - raster_before);
+  stats.tess = tess;
 }
 
 }  // namespace
@@ -61,15 +128,9 @@ DrawStats draw_mesh(const Mesh& mesh, const programs::TransformVertexShader& ver
   };
 
   if (tessellation.enabled) {
-    // ---- Tessellation path -------------------------------------------------------------------
-    // Each mesh triangle is a 3-vertex patch (TessDrawInput: mesh.indices, patch_vertices 3)
-    // whose control points are `shaded` as StageVertex (attr[kAttrPosition] = (world position,
-    // 1), attr[kAttrNormal] = (world normal, 0)). tessellate_chunks (stages/tess_stage.h) runs
-    // TCS -> TPG -> TES chunk by chunk and hands each chunk's batch to `rasterize`, in patch
-    // order; its time minus the rasterizer's goes to stats.tessellation_seconds.
-    throw InputError(
-        "tessellation is not implemented yet: the scene has tessellation.enabled = true "
-        "(render with --set tessellation.enabled=false)");
+    draw_tessellated(shaded, mesh, vertex_shader, tessellation, fb, parallel, options, rasterize,
+                     stats);
+    return stats;
   }
 
   // ---- Primitive assembly: the mesh's triangles in order, in bounded batches ----------------

@@ -3,11 +3,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 #include "common/parallel.h"
 #include "pipeline/mesh.h"
 #include "pipeline/tessellation_settings.h"
 #include "raster/rasterizer.h"
+#include "stages/tess_stage.h"
 #include "stages/programs/transform.h"
 
 namespace tessref {
@@ -17,6 +19,7 @@ struct DrawStats {
   std::uint64_t triangles_in = 0;         // mesh triangles (patches, with tessellation)
   std::uint64_t triangles_generated = 0;  // handed to the rasterizer (after tessellation)
   RasterStats raster;                     // triangles_rasterized, fragments_shaded, ...
+  TessStats tess;                         // patches, discarded patches, domain points
   double vertex_seconds = 0.0;            // vertex shader and primitive assembly
   double tessellation_seconds = 0.0;
   double raster_seconds = 0.0;            // rasterization and fragment shading
@@ -27,10 +30,15 @@ struct DrawOptions {
   std::size_t batch_triangles = 65536;
   // Called on the calling thread after each batch with the fraction of the input done.
   std::function<void(double)> progress;
+  // Tessellation: patches per chunk (each chunk is tessellated, then rasterized, then dropped).
+  std::size_t tess_chunk_patches = 256;
+  // Tessellation: receives every TES invocation's record (patch id, gl_TessCoord, position,
+  // normal), chunk by chunk in patch order, on the calling thread.
+  std::function<void(const std::vector<TessDumpRecord>&)> dump_tess;
 };
 
 // Draws the mesh's triangles, in mesh order, into fb. The bytes of fb do not depend on
-// parallel.threads(). Throws InputError for tessellation until the tessellation stages land.
+// parallel.threads().
 DrawStats draw_mesh(const Mesh& mesh, const programs::TransformVertexShader& vertex_shader,
                     const TessellationSettings& tessellation, const RasterState& raster_state,
                     const FragmentProgram& fragment_shader, Framebuffer& fb,
