@@ -91,6 +91,25 @@ struct LevelRules {
   }
   // "all levels one" gives the single-primitive patch (equal and fractional_odd only).
   bool minimum_allowed() const { return spacing != TessSpacing::FractionalEven; }
+
+  // Clamps, rounds and converts `count` outer levels; returns whether any ends up above one.
+  bool process_outer(const std::array<float, 4>& raw, int count, Fx16* fx, Parity* parity) const {
+    bool any_above_one = false;
+    for (int e = 0; e < count; ++e) {
+      const float c = clamp_outer(raw[e]);
+      any_above_one |= above_one(c);
+      fx[e] = to_fixed(c);
+      parity[e] = this->parity(c);
+    }
+    return any_above_one;
+  }
+  // The inner level after the 1 + epsilon rule, clamping and (equal spacing) rounding up.
+  void process_inner(float raw, bool any_above_one, Fx16& fx, Parity& parity) const {
+    float inner = clamp_level(raw, inner_range(any_above_one));
+    if (spacing == TessSpacing::Equal) inner = std::ceil(inner);
+    fx = to_fixed(inner);
+    parity = inner_parity(inner);
+  }
 };
 
 void emit_points_only(tpg::DomainOutput& d, TessDomainPoints& out) {
@@ -121,17 +140,8 @@ void generate_tessellation(const TessLayout& layout, const TessLevels& levels,
         return;
       }
       tpg::TriangleLevels lv;
-      bool any_above_one = false;
-      for (int e = 0; e < 3; ++e) {
-        const float c = rules.clamp_outer(levels.outer[e]);
-        any_above_one |= rules.above_one(c);
-        lv.outer[e] = rules.to_fixed(c);
-        lv.outer_parity[e] = rules.parity(c);
-      }
-      float inner = clamp_level(levels.inner[0], rules.inner_range(any_above_one));
-      if (layout.spacing == TessSpacing::Equal) inner = std::ceil(inner);
-      lv.inner = rules.to_fixed(inner);
-      lv.inner_parity = rules.inner_parity(inner);
+      const bool any_above_one = rules.process_outer(levels.outer, 3, lv.outer, lv.outer_parity);
+      rules.process_inner(levels.inner[0], any_above_one, lv.inner, lv.inner_parity);
       if (rules.minimum_allowed() && lv.inner == kTessOne && lv.outer[0] == kTessOne &&
           lv.outer[1] == kTessOne && lv.outer[2] == kTessOne) {
         // A single triangle: the v = 1, w = 1 and u = 1 corners.
@@ -150,21 +160,12 @@ void generate_tessellation(const TessLayout& layout, const TessLevels& levels,
         }
       }
       tpg::QuadLevels lv;
-      bool any_above_one = false;
-      for (int e = 0; e < 4; ++e) {
-        const float c = rules.clamp_outer(levels.outer[e]);
-        any_above_one |= rules.above_one(c);
-        lv.outer[e] = rules.to_fixed(c);
-        lv.outer_parity[e] = rules.parity(c);
-      }
+      bool any_above_one = rules.process_outer(levels.outer, 4, lv.outer, lv.outer_parity);
       // Quads also look at the (raw) inner levels when deciding on the 1 + epsilon frame.
       for (int a = 0; a < 2; ++a) any_above_one |= rules.above_one(levels.inner[a]);
       bool all_one = true;
       for (int a = 0; a < 2; ++a) {
-        float inner = clamp_level(levels.inner[a], rules.inner_range(any_above_one));
-        if (layout.spacing == TessSpacing::Equal) inner = std::ceil(inner);
-        lv.inner[a] = rules.to_fixed(inner);
-        lv.inner_parity[a] = rules.inner_parity(inner);
+        rules.process_inner(levels.inner[a], any_above_one, lv.inner[a], lv.inner_parity[a]);
         all_one &= lv.inner[a] == kTessOne;
       }
       for (int e = 0; e < 4; ++e) all_one &= lv.outer[e] == kTessOne;
