@@ -101,6 +101,22 @@ TEST(TessCapture, EqualAllOneIsOneTriangle) {
   }
 }
 
+// The smallest patch of each kind, in llvmpipe's emission order (measured, Mesa 22.3.6).
+TEST(TessCapture, SmallestPatchesInLlvmpipeOrder) {
+  TESSREF_REQUIRE_GL(ctx);
+  if (!ctx->is_llvmpipe()) GTEST_SKIP() << "measured on llvmpipe; renderer is " << ctx->renderer();
+  using V = std::vector<glm::vec3>;
+  const TessLevels ones = uniform_levels(1.0f);
+  auto one = [&](TessLayout l) { return capture_tess_coords(*ctx, l, {ones})[0]; };
+  EXPECT_EQ(one(layout_of(TessDomain::Triangles, TessSpacing::Equal, TessWinding::Cw)),
+            (V{{0, 1, 0}, {1, 0, 0}, {0, 0, 1}}));
+  EXPECT_EQ(one(layout_of(TessDomain::Triangles, TessSpacing::Equal, TessWinding::Ccw, true)),
+            (V{{0, 1, 0}, {0, 0, 1}, {1, 0, 0}}));
+  EXPECT_EQ(one(layout_of(TessDomain::Quads, TessSpacing::Equal)),
+            (V{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}));
+  EXPECT_EQ(one(layout_of(TessDomain::Isolines, TessSpacing::Equal)), (V{{0, 0, 0}, {1, 0, 0}}));
+}
+
 TEST(TessCapture, CwReversesEachTriangleOfCcw) {
   TESSREF_REQUIRE_GL(ctx);
   const TessLevels l = uniform_levels(3.0f);
