@@ -7,11 +7,13 @@
 
 #include <gtest/gtest.h>
 
+#include "pipeline/camera.h"
 #include "pipeline/image_output.h"
 #include "pipeline/mesh_source.h"
 #include "pipeline/procedural.h"
 #include "pipeline/render.h"
 #include "pipeline/scene_loader.h"
+#include "stages/tess_stage.h"
 #include "test_util.h"
 
 namespace tessref {
@@ -139,6 +141,57 @@ TEST(Render, NormalsShading) {
     const glm::vec3 c = glm::vec3(r.framebuffer.color[i]);
     EXPECT_NEAR(glm::distance(c, n * 0.5f + 0.5f), 0.0f, 1e-6f);
   }
+}
+
+// Writes the interpolated world position (color) and world normal (aux) as they arrive.
+struct VaryingsProbe final : FragmentProgram {
+  FragmentOutput shade(const FragmentInput& in) const override {
+    const float* v = in.varyings;
+    FragmentOutput out;
+    out.color = glm::vec4(v[kVaryingPosition], v[kVaryingPosition + 1], v[kVaryingPosition + 2], 1.0f);
+    out.aux = glm::vec4(v[kVaryingNormal], v[kVaryingNormal + 1], v[kVaryingNormal + 2], 1.0f);
+    return out;
+  }
+};
+
+// End to end through the vertex shader and the rasterizer: on an icosphere every vertex normal
+// is its position / radius, so the interpolated normal must point along the interpolated
+// position, and that position must lie on the pixel's ray (perspective-correct interpolation).
+TEST(Render, VaryingsAreInterpolatedConsistently) {
+  const Scene scene = load_scene("", {"image.width=128", "image.height=96", "mesh.type=icosphere",
+                                      "mesh.icosphere.refinements=1", "mesh.icosphere.radius=100",
+                                      "transform.scale=0.01", "transform.rotate_deg=10,20,30"});
+  std::vector<std::string> warnings;
+  const Mesh mesh = build_mesh(scene.mesh, warnings);
+  const glm::mat4 view_projection =
+      projection_matrix(scene.camera, scene.width, scene.height) * view_matrix(scene.camera);
+  const auto vs = programs::TransformVertexShader::from(model_matrix(scene.transform), view_projection);
+  Framebuffer fb(scene.width, scene.height, glm::vec4(0.0f));
+  const VaryingsProbe probe;
+  RasterState state;
+  state.cull_back_faces = true;
+  const DrawStats stats = draw_mesh(mesh, vs, scene.tessellation, state, probe, fb, Parallel(2));
+  ASSERT_GT(stats.raster.fragments_shaded, 1000u);
+
+  const glm::dmat4 inverse_vp = glm::inverse(glm::dmat4(view_projection));
+  int checked = 0;
+  for (int y = 0; y < fb.height; ++y) {
+    for (int x = 0; x < fb.width; ++x) {
+      const std::size_t i = fb.index(x, y);
+      if (fb.depth[i] == 1.0f) continue;
+      const glm::vec3 position(fb.color[i]), normal(fb.aux[i]);
+      ASSERT_GT(glm::dot(glm::normalize(position), glm::normalize(normal)), 0.99999f)
+          << "pixel " << x << ", " << y;
+      // Unproject the pixel center at its depth: it must land on the interpolated position.
+      const glm::dvec4 ndc(2.0 * (x + 0.5) / fb.width - 1.0, 2.0 * (y + 0.5) / fb.height - 1.0,
+                           2.0 * double(fb.depth[i]) - 1.0, 1.0);
+      const glm::dvec4 world = inverse_vp * ndc;
+      ASSERT_LT(glm::distance(glm::dvec3(world) / world.w, glm::dvec3(position)), 1e-3)
+          << "pixel " << x << ", " << y;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 1000);
 }
 
 // ---- Golden image ------------------------------------------------------------------------------
