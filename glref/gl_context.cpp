@@ -178,12 +178,13 @@ void GlContext::create(EglPlatform p, int device_index, bool debug) {
     if (!eglChooseConfig(dpy, attribs, &config, 1, &n)) egl_fail("eglChooseConfig");
     if (n < 1) throw GlError("eglChooseConfig found no config with EGL_OPENGL_BIT");
   }
-  const EGLint ctx_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4,
-                                EGL_CONTEXT_MINOR_VERSION, 5,
-                                EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                EGL_CONTEXT_OPENGL_DEBUG, debug ? EGL_TRUE : EGL_FALSE,
-                                EGL_NONE};
-  EGLContext ctx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, ctx_attribs);
+  // The debug attribute only when asked for: it is EGL 1.5, other attributes also exist in
+  // EGL_KHR_create_context.
+  std::vector<EGLint> ctx_attribs = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+                                     EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT};
+  if (debug) ctx_attribs.insert(ctx_attribs.end(), {EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE});
+  ctx_attribs.push_back(EGL_NONE);
+  EGLContext ctx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, ctx_attribs.data());
   if (ctx == EGL_NO_CONTEXT) egl_fail("eglCreateContext(OpenGL 4.5 core)");
   context_ = ctx;
   make_current();

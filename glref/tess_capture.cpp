@@ -53,7 +53,9 @@ std::size_t domain_point_bound(const TessLayout& layout, const TessLevels& level
   };
   for (int i = 0; i < no; ++i) widen(levels.outer[i]);
   for (int i = 0; i < ni; ++i) widen(levels.inner[i]);
-  m = std::min(64, m + 1);  // rounding up to an odd or even segment count
+  // Rounding up to an odd or even segment count. 64 is GL_MAX_TESS_GEN_LEVEL on llvmpipe and
+  // NVIDIA; a driver with a larger maximum would overflow this bound, which capture() reports.
+  m = std::min(64, m + 1);
   // Quads: sum of outer edges + inner grid <= 4m + (m-1)^2; triangles and isolines have fewer.
   return static_cast<std::size_t>(m + 1) * static_cast<std::size_t>(m + 1);
 }

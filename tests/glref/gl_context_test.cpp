@@ -36,6 +36,25 @@ TEST(GlContext, KeepsAFramebufferBound) {
   EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), static_cast<GLenum>(GL_FRAMEBUFFER_COMPLETE));
 }
 
+// A second (debug) context beside the shared one; destroying it leaves the shared one usable.
+TEST(GlContext, SecondDebugContextComesAndGoes) {
+  TESSREF_REQUIRE_GL(ctx);
+  {
+    GlContextOptions o;
+    o.platform = ctx->platform();
+    o.debug_context = true;
+    GlContext second(o);
+    GLint flags = 0;
+    glGetIntegerv(GL_CONTEXT_FLAGS, &flags);
+    EXPECT_TRUE(flags & GL_CONTEXT_FLAG_DEBUG_BIT);
+    EXPECT_EQ(second.renderer(), ctx->renderer());
+  }
+  ctx->make_current();
+  ctx->bind_default_framebuffer();
+  EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), static_cast<GLenum>(GL_FRAMEBUFFER_COMPLETE));
+  check_gl("shared context after a second one");
+}
+
 TEST(GlContext, PlatformNamesRoundTrip) {
   for (EglPlatform p : {EglPlatform::Auto, EglPlatform::Surfaceless, EglPlatform::Device}) {
     EglPlatform q = EglPlatform::Auto;
