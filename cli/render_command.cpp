@@ -8,11 +8,13 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "common/error.h"
 #include "common/parallel.h"
 #include "pipeline/image_output.h"
 #include "pipeline/mesh_source.h"
 #include "pipeline/render.h"
 #include "pipeline/scene_loader.h"
+#include "pipeline/tess_dump.h"
 
 namespace tessref::cli {
 namespace {
@@ -20,7 +22,7 @@ namespace {
 struct RenderOptions {
   std::string scene;  // empty: the built-in default scene
   std::string output = "tessref.png";
-  std::string depth, normals;
+  std::string depth, normals, dump_tess;
   int threads = 0;
   std::vector<std::string> sets;
 };
@@ -70,13 +72,21 @@ void run_render(const RenderOptions& o) {
   for (const std::string& w : warnings) std::fprintf(stderr, "tessref: warning: %s\n", w.c_str());
 
   const Parallel parallel(o.threads);
+  std::unique_ptr<TessDumpWriter> dump;
+  if (!o.dump_tess.empty()) {
+    if (!scene.tessellation.enabled)
+      throw InputError("--dump-tess: the scene does not tessellate (tessellation.enabled is false)");
+    dump = std::make_unique<TessDumpWriter>(o.dump_tess);
+  }
   RenderResult result;
   {
     ProgressBar bar;
     DrawOptions options;
     options.progress = [&](double f) { bar.update(f); };
+    if (dump) options.dump_tess = [&](const std::vector<TessDumpRecord>& r) { dump->write(r); };
     result = render_scene(scene, mesh, parallel, options);
   }
+  if (dump) dump->close();
 
   t = Clock::now();
   write_color_image(result.framebuffer, o.output);
@@ -85,11 +95,14 @@ void run_render(const RenderOptions& o) {
   const double write_seconds = seconds_since(t);
 
   const DrawStats& s = result.stats;
+  std::string tessellated;
+  if (scene.tessellation.enabled)
+    tessellated = ", " + std::to_string(s.triangles_generated) + " after tessellation";
   std::printf(
-      "tessref render: %s -> %s (%dx%d, %d threads): %llu triangles in, %llu rasterized, "
+      "tessref render: %s -> %s (%dx%d, %d threads): %llu triangles in%s, %llu rasterized, "
       "%llu fragments shaded; mesh %s, vertex %s, tessellation %s, raster+fs %s, write %s\n",
       scene.source.c_str(), o.output.c_str(), scene.width, scene.height, parallel.threads(),
-      static_cast<unsigned long long>(s.triangles_in),
+      static_cast<unsigned long long>(s.triangles_in), tessellated.c_str(),
       static_cast<unsigned long long>(s.raster.triangles_rasterized),
       static_cast<unsigned long long>(s.raster.fragments_shaded), ms(mesh_seconds).c_str(),
       ms(s.vertex_seconds).c_str(), ms(s.tessellation_seconds).c_str(),
@@ -115,6 +128,9 @@ void add_render_command(CLI::App& app) {
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--depth", opts->depth, "also write window-space depth (.exr)");
   cmd->add_option("--normals", opts->normals, "also write world normals (.exr)");
+  cmd->add_option("--dump-tess", opts->dump_tess,
+                  "also write every tessellated vertex (patch id, gl_TessCoord, position, normal): "
+                  "binary, or text for *.txt (format: pipeline/tess_dump.h)");
   cmd->callback([opts] { run_render(*opts); });
 }
 

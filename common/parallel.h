@@ -3,12 +3,17 @@
 // callers write results into preassigned slots, so results never depend on the thread count.
 #include <cstddef>
 #include <functional>
+#include <memory>
+
+namespace tbb::detail::d1 {
+class task_arena;
+}
 
 namespace tessref {
 
 class Parallel {
  public:
-  // threads <= 0: all hardware threads.
+  // threads <= 0, or more than the hardware has: all hardware threads.
   explicit Parallel(int threads = 0);
   int threads() const { return threads_; }
   // Calls fn(i) for every i in [0, n), on up to threads() threads, in no particular order.
@@ -16,6 +21,8 @@ class Parallel {
 
  private:
   int threads_;
+  // One arena for the object's lifetime: creating one per call is slow and makes TBB warn.
+  std::shared_ptr<tbb::detail::d1::task_arena> arena_;
 };
 
 }  // namespace tessref

@@ -1,0 +1,60 @@
+#include "pipeline/tess_dump.h"
+
+#include <bit>
+#include <cstdint>
+#include <cstring>
+
+#include "common/error.h"
+
+namespace tessref {
+namespace {
+
+static_assert(std::endian::native == std::endian::little, "the dump format is little-endian");
+
+bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+}  // namespace
+
+TessDumpWriter::TessDumpWriter(const std::string& path)
+    : path_(path), text_(ends_with(path, ".txt")), file_(std::fopen(path.c_str(), "wb"), &std::fclose) {
+  if (!file_) throw InputError(path + ": cannot create the tessellation dump: " + std::strerror(errno));
+  if (text_) {
+    std::fputs("# tessref tess dump v1: patch_id u v w px py pz nx ny nz\n", file_.get());
+  } else {
+    const std::uint32_t version = 1, record_size = 40;
+    std::fwrite("TESSDUMP", 1, 8, file_.get());
+    std::fwrite(&version, 4, 1, file_.get());
+    std::fwrite(&record_size, 4, 1, file_.get());
+  }
+}
+
+void TessDumpWriter::write(const std::vector<TessDumpRecord>& records) {
+  std::FILE* f = file_.get();
+  for (const TessDumpRecord& r : records) {
+    if (text_) {
+      std::fprintf(f, "%u %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g\n", r.patch_id,
+                   double(r.tess_coord.x), double(r.tess_coord.y), double(r.tess_coord.z),
+                   double(r.position.x), double(r.position.y), double(r.position.z),
+                   double(r.normal.x), double(r.normal.y), double(r.normal.z));
+      continue;
+    }
+    unsigned char rec[40];
+    std::memcpy(rec, &r.patch_id, 4);
+    std::memcpy(rec + 4, &r.tess_coord, 12);
+    std::memcpy(rec + 16, &r.position, 12);
+    std::memcpy(rec + 28, &r.normal, 12);
+    std::fwrite(rec, 1, sizeof rec, f);
+  }
+  count_ += records.size();
+}
+
+void TessDumpWriter::close() {
+  if (!file_) return;
+  const bool failed = std::ferror(file_.get()) != 0;
+  const bool close_failed = std::fclose(file_.release()) != 0;
+  if (failed || close_failed) throw InputError(path_ + ": error writing the tessellation dump");
+}
+
+}  // namespace tessref

@@ -1,0 +1,36 @@
+#pragma once
+// --dump-tess: every tessellated vertex (patch id, gl_TessCoord, position, normal), streamed to a
+// file chunk by chunk in the draw's order (patch order, then generation order within a patch).
+//
+// Binary format (any file name not ending in .txt), little-endian:
+//   header, 16 bytes: "TESSDUMP" (8 bytes), uint32 version = 1, uint32 record size = 40
+//   records, 40 bytes each: uint32 patch_id, float32 tess_coord[3], float32 position[3],
+//                           float32 normal[3]   (position and normal in world space)
+// Text format (*.txt): a '#' header line naming the columns, then one record per line,
+//   "patch_id u v w px py pz nx ny nz", floats printed with %.9g (they round-trip exactly).
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "stages/tess_stage.h"
+
+namespace tessref {
+
+class TessDumpWriter {
+ public:
+  // Throws InputError when the file cannot be created.
+  explicit TessDumpWriter(const std::string& path);
+  void write(const std::vector<TessDumpRecord>& records);
+  // Flushes and closes; throws InputError on a write error (disk full).
+  void close();
+  std::size_t records_written() const { return count_; }
+
+ private:
+  std::string path_;
+  bool text_ = false;
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file_{nullptr, &std::fclose};
+  std::size_t count_ = 0;
+};
+
+}  // namespace tessref
