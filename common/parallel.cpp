@@ -3,18 +3,22 @@
 #include <algorithm>
 
 #include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 namespace tessref {
 
-// More threads than the hardware has would only oversubscribe (and make TBB warn); results never
-// depend on the count, so asking for more simply gets all there are.
 Parallel::Parallel(int threads)
-    : threads_(threads > 0 ? std::min(threads, tbb::info::default_concurrency())
-                           : tbb::info::default_concurrency()),
-      arena_(threads_ > 1 ? std::make_shared<tbb::task_arena>(threads_) : nullptr) {}
+    : threads_(threads > 0 ? threads : tbb::info::default_concurrency()),
+      arena_(threads_ > 1 ? std::make_shared<tbb::task_arena>(threads_) : nullptr) {
+  // More threads than the hardware has are allowed (tests oversubscribe on purpose to show the
+  // result does not depend on the count); TBB must be told, or it caps the workers and warns.
+  if (threads_ > tbb::info::default_concurrency())
+    oversubscribe_ = std::make_shared<tbb::global_control>(
+        tbb::global_control::max_allowed_parallelism, std::size_t(threads_));
+}
 
 void Parallel::for_each(std::size_t n, const std::function<void(std::size_t)>& fn) const {
   if (threads_ == 1 || n <= 1) {

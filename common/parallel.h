@@ -7,13 +7,14 @@
 
 namespace tbb::detail::d1 {
 class task_arena;
+class global_control;
 }
 
 namespace tessref {
 
 class Parallel {
  public:
-  // threads <= 0, or more than the hardware has: all hardware threads.
+  // threads <= 0: all hardware threads.
   explicit Parallel(int threads = 0);
   int threads() const { return threads_; }
   // Calls fn(i) for every i in [0, n), on up to threads() threads, in no particular order.
@@ -23,6 +24,7 @@ class Parallel {
   int threads_;
   // One arena for the object's lifetime: creating one per call is slow and makes TBB warn.
   std::shared_ptr<tbb::detail::d1::task_arena> arena_;
+  std::shared_ptr<tbb::detail::d1::global_control> oversubscribe_;
 };
 
 }  // namespace tessref
