@@ -59,6 +59,15 @@ TEST_F(Cli, RendersTheDefaultScene) {
   EXPECT_EQ(read_float_image(dir.path() / "n.exr").channels, 3);
 }
 
+TEST_F(Cli, RendersTessellated) {
+  TempDir dir;
+  const CliRun r = run("render -o " + (dir.path() / "x.png").string() +
+                    " --set tessellation.enabled=true --set image.width=64 --set image.height=64");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("256 triangles in, "));
+  EXPECT_THAT(r.output, HasSubstr(" after tessellation, "));
+}
+
 TEST_F(Cli, RendersTheRepositoryDefaultScene) {
   TempDir dir;
   const CliRun r = run("render " + std::string(TESSREF_SOURCE_DIR) + "/scenes/default.json -o " +

@@ -50,6 +50,21 @@ TEST(Render, DefaultScenePngIsIdenticalForAnyThreadCount) {
   }
 }
 
+TEST(Render, TessellatedPngIsIdenticalForAnyThreadCount) {
+  TempDir dir;
+  const Scene scene = load_scene("", {"tessellation.enabled=true", "image.width=256", "image.height=256"});
+  std::string first;
+  for (int threads : {1, 2, 8}) {
+    const auto path = dir.path() / ("pn_" + std::to_string(threads) + ".png");
+    const RenderResult r = render(scene, threads);
+    EXPECT_GT(r.stats.triangles_generated, 256u * 100u) << "PN at level 12 should refine the torus";
+    write_color_image(r.framebuffer, path);
+    const std::string bytes = test::read_file(path);
+    if (first.empty()) first = bytes;
+    EXPECT_TRUE(bytes == first) << threads << " threads";
+  }
+}
+
 TEST(Render, BatchSizeDoesNotChangeTheImage) {
   const Scene scene = load_scene("", {"image.width=256", "image.height=256", "mesh.type=icosphere",
                                       "mesh.icosphere.refinements=3"});
