@@ -1,0 +1,232 @@
+// PN triangles (quadratic normals, fractional_odd, levels 12 and 64) on a 320-triangle icosphere:
+// tessellated vertices per second, tessref's executor against Mesa llvmpipe running the GLSL twins
+// (transform.vert + pn_triangles.tesc/.tese), measured in the same process.
+//
+// "Vertices" are TES invocations, i.e. distinct domain points (tessref's TessStats::domain_points;
+// llvmpipe evaluates each domain point of a patch once too). The same count is credited to both
+// sides, position + normal computed for each.
+//   tessref:  tessellate_chunks (PnTcs/PnTes, 256 patches per chunk like the pipeline), all
+//             threads, consume = count triangles only.
+//   llvmpipe: capture = PatchMesh::capture of position + normal by transform feedback (rasterizer
+//             discard; includes reading the ~2 emitted vertices per point back);
+//             discard = PatchMesh::draw with rasterizer discard and a GL_PRIMITIVES_GENERATED
+//             query, nothing captured (llvmpipe still runs VS/TCS/TPG/TES on one thread).
+#include <benchmark/benchmark.h>
+#include <malloc.h>
+
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "common/parallel.h"
+#include "pipeline/procedural.h"
+#include "stages/programs/transform.h"
+#include "stages/schemes/pn_triangles.h"
+#include "stages/tess_stage.h"
+#ifdef TESSREF_HAVE_GLREF
+#include <epoxy/gl.h>
+
+#include "glref/gl_context.h"
+#include "glref/patch_mesh.h"
+#include "glref/pn_twins.h"
+#include "glref/tess_capture.h"
+#endif
+
+namespace {
+
+using namespace tessref;
+
+constexpr int kRefinements = 2;  // 320 triangles
+constexpr TessLayout kLayout{TessDomain::Triangles, TessSpacing::FractionalOdd, TessWinding::Ccw, false};
+
+const Mesh& mesh() {
+  static const Mesh m = make_icosphere(kRefinements);
+  return m;
+}
+
+// Control points = the vertex shader's outputs with an identity model (the twins get the same).
+const std::vector<StageVertex>& control_points() {
+  static const std::vector<StageVertex> cp = [] {
+    const auto vs = programs::TransformVertexShader::from(glm::mat4(1.0f), glm::mat4(1.0f));
+    std::vector<StageVertex> out(mesh().positions.size());
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      const programs::VertexOut v = vs.main(mesh().positions[i], mesh().normals[i]);
+      out[i].attr[kAttrPosition] = glm::vec4(v.v_world_position, 1.0f);
+      out[i].attr[kAttrNormal] = glm::vec4(v.v_world_normal, 0.0f);
+    }
+    return out;
+  }();
+  return cp;
+}
+
+const Parallel& parallel() {
+  static const Parallel p(0);
+  return p;
+}
+
+struct Tessref {
+  PnTcs tcs;
+  PnTes tes;
+  explicit Tessref(float level) {
+    tcs.normal_mode = PnNormalMode::Quadratic;
+    tcs.levels = TessLevelSettings::uniform(level, level);
+    tes.normal_mode = PnNormalMode::Quadratic;
+    tes.spacing = kLayout.spacing;
+  }
+  TessStats run(std::size_t& triangles) const {
+    const TessDrawInput input{control_points(), mesh().indices, 3};
+    return tessellate_chunks(input, 256, tcs, tes, {}, parallel(),
+                             [&](const TriangleBatch& b) { triangles += b.triangle_count(); });
+  }
+};
+
+// Domain points of one draw of the whole mesh (the count credited to both sides).
+std::uint64_t domain_points(float level) {
+  std::size_t triangles = 0;
+  return Tessref(level).run(triangles).domain_points;
+}
+
+void BM_TessrefPn(benchmark::State& state) {
+  const Tessref t(float(state.range(0)));
+  std::uint64_t points = 0;
+  std::size_t triangles = 0;
+  for (auto _ : state) points += t.run(triangles).domain_points;
+  state.counters["vertices_per_s"] = benchmark::Counter(double(points), benchmark::Counter::kIsRate);
+  state.counters["triangles_per_s"] = benchmark::Counter(double(triangles), benchmark::Counter::kIsRate);
+  state.counters["threads"] = parallel().threads();
+}
+BENCHMARK(BM_TessrefPn)->Arg(12)->Arg(64)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+#ifdef TESSREF_HAVE_GLREF
+glref::GlContext* context() {
+  static std::unique_ptr<glref::GlContext> ctx = [] {
+    try {
+      return std::make_unique<glref::GlContext>();
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "llvmpipe baseline unavailable: %s\n", e.what());
+      return std::unique_ptr<glref::GlContext>();
+    }
+  }();
+  return ctx.get();
+}
+
+struct Llvmpipe {
+  std::unique_ptr<glref::PatchMesh> patch_mesh;
+  glref::Program program;
+  std::vector<std::size_t> bounds;
+  Llvmpipe(glref::GlContext& ctx, float level, glref::TwinCapture capture) {
+    glref::PatchMeshData data;
+    data.positions = mesh().positions;
+    data.normals = mesh().normals;
+    data.indices = mesh().indices;
+    patch_mesh = std::make_unique<glref::PatchMesh>(ctx, data);
+    glref::TwinSetup setup;
+    setup.pn = true;
+    setup.normal_mode = PnNormalMode::Quadratic;
+    setup.layout = kLayout;
+    setup.levels = TessLevelSettings::uniform(level, level);
+    program = glref::link_twin_program(setup, capture);
+    glref::set_twin_uniforms(program, setup);
+    bounds.assign(patch_mesh->patch_count(), glref::domain_point_bound(kLayout, setup.levels.constant));
+  }
+};
+
+void BM_LlvmpipePnCapture(benchmark::State& state) {
+  glref::GlContext* ctx = context();
+  if (!ctx) return state.SkipWithError("no GL context");
+  const float level = float(state.range(0));
+  Llvmpipe gl(*ctx, level, glref::TwinCapture::PositionNormal);
+  const std::uint64_t per_draw = domain_points(level);
+  std::uint64_t points = 0, captured = 0;
+  for (auto _ : state) {
+    const std::vector<std::uint32_t> words = gl.patch_mesh->capture(gl.program, 6, GL_TRIANGLES, gl.bounds);
+    benchmark::DoNotOptimize(words.data());
+    points += per_draw;
+    captured += words.size() / 6;
+  }
+  state.counters["vertices_per_s"] = benchmark::Counter(double(points), benchmark::Counter::kIsRate);
+  state.counters["captured_per_s"] = benchmark::Counter(double(captured), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_LlvmpipePnCapture)->Arg(12)->Arg(64)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_LlvmpipePnDiscard(benchmark::State& state) {
+  glref::GlContext* ctx = context();
+  if (!ctx) return state.SkipWithError("no GL context");
+  const float level = float(state.range(0));
+  Llvmpipe gl(*ctx, level, glref::TwinCapture::None);
+  const std::uint64_t per_draw = domain_points(level);
+  unsigned query = 0;
+  glGenQueries(1, &query);
+  std::uint64_t points = 0, triangles = 0;
+  for (auto _ : state) {
+    ctx->bind_default_framebuffer();
+    glEnable(GL_RASTERIZER_DISCARD);
+    glBeginQuery(GL_PRIMITIVES_GENERATED, query);
+    gl.patch_mesh->draw(gl.program, gl.bounds);
+    glEndQuery(GL_PRIMITIVES_GENERATED);
+    GLuint64 generated = 0;
+    glGetQueryObjectui64v(query, GL_QUERY_RESULT, &generated);  // waits for the draws
+    glDisable(GL_RASTERIZER_DISCARD);
+    points += per_draw;
+    triangles += generated;
+  }
+  glDeleteQueries(1, &query);
+  state.counters["vertices_per_s"] = benchmark::Counter(double(points), benchmark::Counter::kIsRate);
+  state.counters["triangles_per_s"] = benchmark::Counter(double(triangles), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_LlvmpipePnDiscard)->Arg(12)->Arg(64)->Unit(benchmark::kMillisecond)->UseRealTime();
+#endif
+
+// Collects vertices_per_s per (benchmark, level) to print the ratios at the end.
+class RatioReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& r : runs) {
+      if (r.error_occurred) continue;
+      const auto it = r.counters.find("vertices_per_s");
+      if (it != r.counters.end()) rates_[r.benchmark_name()] = it->second.value;
+    }
+  }
+  void print_ratios() const {
+    auto rate = [this](const std::string& name) {
+      const auto it = rates_.find(name);
+      return it == rates_.end() ? 0.0 : it->second;
+    };
+    std::printf("\nPN quadratic, fractional_odd, icosphere %zu triangles; Mvertices/s (TES invocations)\n",
+                mesh().indices.size() / 3);
+    std::printf("level  tessref  llvmpipe capture  ratio  llvmpipe discard  ratio\n");
+    for (int level : {12, 64}) {
+      const std::string l = "/" + std::to_string(level) + "/real_time";
+      const double t = rate("BM_TessrefPn" + l), c = rate("BM_LlvmpipePnCapture" + l),
+                   d = rate("BM_LlvmpipePnDiscard" + l);
+      if (t == 0.0) continue;
+      std::printf("%5d  %7.1f", level, t / 1e6);
+      for (double g : {c, d}) {
+        if (g > 0.0) std::printf("  %16.2f  %4.1fx", g / 1e6, t / g);
+        else std::printf("  %16s  %5s", "n/a", "n/a");
+      }
+      std::printf("\n");
+    }
+  }
+
+ private:
+  std::map<std::string, double> rates_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // llvmpipe's multi-megabyte per-draw buffers must not be mmapped and unmapped every draw
+  // (glref/README.md, shared notes llvmpipe.md): pin glibc's thresholds before anything allocates.
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 256 << 20);
+  mallopt(M_TOP_PAD, 64 << 20);
+  benchmark::Initialize(&argc, argv);
+  RatioReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  reporter.print_ratios();
+  benchmark::Shutdown();
+  return 0;
+}
