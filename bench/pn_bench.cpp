@@ -5,8 +5,8 @@
 // "Vertices" are TES invocations, i.e. distinct domain points (tessref's TessStats::domain_points;
 // llvmpipe evaluates each domain point of a patch once too). The same count is credited to both
 // sides, position + normal computed for each.
-//   tessref:  tessellate_chunks (PnTcs/PnTes, 256 patches per chunk like the pipeline), all
-//             threads, consume = count triangles only.
+//   tessref:  tessellate_chunks (PnTcs/PnTes; 256 patches per chunk like the pipeline, and 16),
+//             all threads, consume = count triangles only.
 //   llvmpipe: capture = PatchMesh::capture of position + normal by transform feedback (rasterizer
 //             discard; includes reading the ~2 emitted vertices per point back);
 //             discard = PatchMesh::draw with rasterizer discard and a GL_PRIMITIVES_GENERATED
@@ -68,7 +68,8 @@ const Parallel& parallel() {
 struct Tessref {
   PnTcs tcs;
   PnTes tes;
-  explicit Tessref(float level) {
+  std::size_t chunk;
+  Tessref(float level, std::size_t chunk_patches) : chunk(chunk_patches) {
     tcs.normal_mode = PnNormalMode::Quadratic;
     tcs.levels = TessLevelSettings::uniform(level, level);
     tes.normal_mode = PnNormalMode::Quadratic;
@@ -76,7 +77,7 @@ struct Tessref {
   }
   TessStats run(std::size_t& triangles) const {
     const TessDrawInput input{control_points(), mesh().indices, 3};
-    return tessellate_chunks(input, 256, tcs, tes, {}, parallel(),
+    return tessellate_chunks(input, chunk, tcs, tes, {}, parallel(),
                              [&](const TriangleBatch& b) { triangles += b.triangle_count(); });
   }
 };
@@ -84,11 +85,14 @@ struct Tessref {
 // Domain points of one draw of the whole mesh (the count credited to both sides).
 std::uint64_t domain_points(float level) {
   std::size_t triangles = 0;
-  return Tessref(level).run(triangles).domain_points;
+  return Tessref(level, 16).run(triangles).domain_points;
 }
 
+// Second argument: patches per chunk. 256 is the pipeline's default (DrawOptions); at level 64 a
+// chunk's batch is then ~290 MB (256 x 5,953 triangles x 3 x 64-byte vertices) plus the tasks'
+// buffers, allocated afresh by every tessellate_chunks call, so 16 is measured beside it.
 void BM_TessrefPn(benchmark::State& state) {
-  const Tessref t(float(state.range(0)));
+  const Tessref t(float(state.range(0)), std::size_t(state.range(1)));
   std::uint64_t points = 0;
   std::size_t triangles = 0;
   for (auto _ : state) points += t.run(triangles).domain_points;
@@ -96,7 +100,7 @@ void BM_TessrefPn(benchmark::State& state) {
   state.counters["triangles_per_s"] = benchmark::Counter(double(triangles), benchmark::Counter::kIsRate);
   state.counters["threads"] = parallel().threads();
 }
-BENCHMARK(BM_TessrefPn)->Arg(12)->Arg(64)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_TessrefPn)->ArgsProduct({{12, 64}, {256, 16}})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 #ifdef TESSREF_HAVE_GLREF
 glref::GlContext* context() {
@@ -196,18 +200,20 @@ class RatioReporter : public benchmark::ConsoleReporter {
     };
     std::printf("\nPN quadratic, fractional_odd, icosphere %zu triangles; Mvertices/s (TES invocations)\n",
                 mesh().indices.size() / 3);
-    std::printf("level  tessref  llvmpipe capture  ratio  llvmpipe discard  ratio\n");
+    std::printf("level  chunk  tessref  llvmpipe capture  ratio  llvmpipe discard  ratio\n");
     for (int level : {12, 64}) {
       const std::string l = "/" + std::to_string(level) + "/real_time";
-      const double t = rate("BM_TessrefPn" + l), c = rate("BM_LlvmpipePnCapture" + l),
-                   d = rate("BM_LlvmpipePnDiscard" + l);
-      if (t == 0.0) continue;
-      std::printf("%5d  %7.1f", level, t / 1e6);
-      for (double g : {c, d}) {
-        if (g > 0.0) std::printf("  %16.2f  %4.1fx", g / 1e6, t / g);
-        else std::printf("  %16s  %5s", "n/a", "n/a");
+      const double c = rate("BM_LlvmpipePnCapture" + l), d = rate("BM_LlvmpipePnDiscard" + l);
+      for (int chunk : {256, 16}) {
+        const double t = rate("BM_TessrefPn/" + std::to_string(level) + "/" + std::to_string(chunk) + "/real_time");
+        if (t == 0.0) continue;
+        std::printf("%5d  %5d  %7.2f", level, chunk, t / 1e6);
+        for (double g : {c, d}) {
+          if (g > 0.0) std::printf("  %16.2f  %4.1fx", g / 1e6, t / g);
+          else std::printf("  %16s  %5s", "n/a", "n/a");
+        }
+        std::printf("\n");
       }
-      std::printf("\n");
     }
   }
 

@@ -6,7 +6,8 @@
 #   scripts/bench-memory.sh [BUILD_DIR]     (default: build)
 #
 # Prints peak RSS (from /usr/bin/time -v, package `time`), tessellated triangles (patches x the
-# triangles `tessref tpg` emits for one patch at that level) and the frame time (vertex +
+# triangles `tessref tpg` emits for one patch at that level, checked against the count tessref
+# render prints where it does) and the frame time (vertex +
 # tessellation + raster+fs as tessref reports them; wall time includes loading and PNG writing).
 # Exit status: 0 if the level-64 frame peaked below 1 GiB, 1 if not, 2 if it could not run.
 set -uo pipefail
@@ -43,6 +44,13 @@ render() {
   patches=$(sed -n 's/.*: \([0-9]*\) triangles in,.*/\1/p' <<<"$line")
   per_patch=$(( $("$tessref" tpg --domain triangles --spacing fractional_odd \
                    --outer "$level,$level,$level" --inner "$level" | wc -l) / 3 ))
+  # Newer tessref prints the count itself; it must agree with the generator's per-patch count.
+  local reported
+  reported=$(sed -n 's/.* \([0-9]*\) after tessellation,.*/\1/p' <<<"$line")
+  if [[ -n "$reported" && "$reported" != $((patches * per_patch)) ]]; then
+    echo "bench-memory: tessref reports $reported triangles, expected $patches x $per_patch" >&2
+    exit 2
+  fi
   local vertex tess raster wall
   vertex=$(field_ms vertex "$line")
   tess=$(field_ms tessellation "$line")
