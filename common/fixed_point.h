@@ -34,16 +34,19 @@ inline constexpr std::int64_t pixel_center(int pixel) {
 inline constexpr int kMaxViewportPixels = 1 << kGuardBits;
 static_assert(2 * (kGuardBits + 1 + kSubpixelBits) + 2 < 63, "edge functions must fit in int64");
 
-// Fill rule. GL 4.6 section 14.6.1 only asks that a pixel center on an edge shared by two
-// triangles belongs to exactly one of them. tessref uses the top-left rule stated in GL window
-// coordinates (y up). With the triangle wound counter-clockwise (interior to the left of each
-// directed edge) an edge running (dx, dy) in 24.8 units is
-//   "top":  horizontal (dy == 0) with the interior below it, i.e. running toward -x (dx < 0);
-//   "left": interior to its right, i.e. running downward (dy < 0).
-// A center exactly on a top or left edge is inside; on a right or bottom edge it is outside. The
+// Fill rule. GL 4.6 section 14.6.1 leaves it to the implementation: "if two polygons lie on
+// either side of a common edge (with identical endpoints) on which a fragment center lies, then
+// exactly one of the polygons results in the production of the fragment". tessref matches
+// llvmpipe: top-left in framebuffer memory rows, i.e. bottom-left in GL window coordinates (y up;
+// measured on Mesa 22.3.6 drawing into an FBO, tests/glref/raster_vs_llvmpipe_test.cpp). With the
+// triangle wound counter-clockwise (interior to the left of each directed edge) an edge running
+// (dx, dy) in 24.8 units is
+//   "bottom": horizontal (dy == 0) with the interior above it, i.e. running toward +x (dx > 0);
+//   "left":   interior to its right, i.e. running downward (dy < 0).
+// A center exactly on a bottom or left edge is inside; on a top or right edge it is outside. The
 // two triangles sharing an edge run it in opposite directions, so exactly one of them owns it.
 inline constexpr bool is_top_left_edge(std::int64_t dx, std::int64_t dy) {
-  return dy < 0 || (dy == 0 && dx < 0);
+  return dy < 0 || (dy == 0 && dx > 0);
 }
 
 // ---------------------------------------------------------------------------------------------

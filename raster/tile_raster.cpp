@@ -13,7 +13,7 @@ namespace {
 struct Edge {
   std::int64_t dx, dy;
   std::int64_t ax, ay;
-  std::int64_t bias;    // fill convention correction: 0 on top/left edges, -1 elsewhere
+  std::int64_t bias;    // fill rule: 0 on edges that own their centers, -1 elsewhere
   std::int64_t step_x;  // change of E for one pixel to the right: -dy * 256
   std::int64_t at(std::int64_t px, std::int64_t py) const {
     return dx * (py - ay) - dy * (px - ax);

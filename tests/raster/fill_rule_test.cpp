@@ -1,5 +1,6 @@
-// The top-left rule in GL window coordinates (y up), as stated in common/fixed_point.h: centers
-// on a top edge (horizontal, interior below) or a left edge are inside, on the others outside.
+// llvmpipe's fill rule, as stated in common/fixed_point.h: top-left in memory rows, so with GL's
+// y up centers on a bottom edge (horizontal, interior above) or a left edge are inside, on a top
+// or right edge outside. The same pixel sets come out of llvmpipe (raster_vs_llvmpipe_test).
 #include <set>
 #include <utility>
 
@@ -38,27 +39,31 @@ TriangleBatch triangle(glm::vec2 a, glm::vec2 b, glm::vec2 c) {
 const glm::vec2 kBottomLeft(2.5f, 2.5f), kTopLeft(2.5f, 10.5f), kTopRight(10.5f, 10.5f),
     kBottomRight(10.5f, 2.5f);
 
-TEST(RasterFillRule, TopAndLeftEdgesOnPixelCentersAreInside) {
-  // Upper-left half: a left edge x = 2.5, a top edge y = 10.5, the diagonal on its lower right.
+TEST(RasterFillRule, LeftEdgeInsideTopEdgeOutside) {
+  // Upper-left half: a left edge x = 2.5 (inside), a top edge y = 10.5 (outside), the diagonal
+  // on its lower right (a right edge: outside).
   PixelSet expected;
-  for (int x = 2; x <= 9; ++x)
-    for (int y = x + 1; y <= 10; ++y) expected.insert({x, y});  // on the diagonal: excluded
-  EXPECT_EQ(expected.size(), 36u);
+  for (int x = 2; x <= 8; ++x)
+    for (int y = x + 1; y <= 9; ++y) expected.insert({x, y});
+  EXPECT_EQ(expected.size(), 28u);
   EXPECT_EQ(covered(triangle(kTopLeft, kBottomLeft, kTopRight)), expected);
   // Winding does not change coverage.
   EXPECT_EQ(covered(triangle(kTopLeft, kTopRight, kBottomLeft)), expected);
-  EXPECT_TRUE(expected.count({2, 10}));  // the top-left corner pixel itself
+  EXPECT_FALSE(expected.count({2, 10}));  // the top-left corner pixel: on the top edge
+  EXPECT_TRUE(expected.count({2, 9}));
 }
 
-TEST(RasterFillRule, BottomAndRightEdgesOnPixelCentersAreOutside) {
-  // Lower-right half: a bottom edge y = 2.5, a right edge x = 10.5, the diagonal on its upper
-  // left (a left edge of this triangle, so inside).
+TEST(RasterFillRule, BottomEdgeInsideRightEdgeOutside) {
+  // Lower-right half: a bottom edge y = 2.5 (inside), a right edge x = 10.5 (outside), the
+  // diagonal on its upper left (a left edge: inside).
   PixelSet expected;
-  for (int x = 3; x <= 9; ++x)
-    for (int y = 3; y <= x; ++y) expected.insert({x, y});
-  EXPECT_EQ(expected.size(), 28u);
+  for (int x = 2; x <= 9; ++x)
+    for (int y = 2; y <= x; ++y) expected.insert({x, y});
+  EXPECT_EQ(expected.size(), 36u);
   EXPECT_EQ(covered(triangle(kBottomLeft, kBottomRight, kTopRight)), expected);
   EXPECT_EQ(covered(triangle(kBottomLeft, kTopRight, kBottomRight)), expected);
+  EXPECT_TRUE(expected.count({2, 2}));    // the bottom-left corner: on the bottom and diagonal
+  EXPECT_FALSE(expected.count({10, 2}));  // the bottom-right corner: on the right edge
 }
 
 TEST(RasterFillRule, DiagonalSplitSquareCoversEachPixelOnce) {
@@ -66,9 +71,9 @@ TEST(RasterFillRule, DiagonalSplitSquareCoversEachPixelOnce) {
   TriangleBatch lower = triangle(kBottomLeft, kBottomRight, kTopRight);
   both.vertices.insert(both.vertices.end(), lower.vertices.begin(), lower.vertices.end());
   test::make_depth_decreasing(both);
-  PixelSet expected;  // left and top sides in, right and bottom out
+  PixelSet expected;  // left and bottom sides in, right and top out
   for (int x = 2; x <= 9; ++x)
-    for (int y = 3; y <= 10; ++y) expected.insert({x, y});
+    for (int y = 2; y <= 9; ++y) expected.insert({x, y});
   EXPECT_EQ(covered(both), expected);  // covered() also checks no pixel is hit twice
 
   // The other diagonal, from top-left to bottom-right.
@@ -84,17 +89,19 @@ TEST(RasterFillRule, SlopedEdgesThroughPixelCenters) {
   // Right edge x = 12.5 - 3/4 (y - 2.5) through the center (9.5, 6.5): outside.
   const PixelSet s = covered(triangle({2.5f, 2.5f}, {12.5f, 2.5f}, {6.5f, 10.5f}));
   EXPECT_TRUE(s.count({3, 4}) && s.count({4, 6}) && s.count({5, 8}));
-  EXPECT_FALSE(s.count({2, 2}) || s.count({9, 6}));
-  EXPECT_TRUE(s.count({8, 6}) && s.count({10, 4}));   // just inside the right edge
-  EXPECT_FALSE(s.count({5, 2}) || s.count({11, 2}));  // bottom edge: outside
+  EXPECT_FALSE(s.count({9, 6}));
+  EXPECT_TRUE(s.count({8, 6}) && s.count({10, 4}));  // just inside the right edge
+  EXPECT_TRUE(s.count({5, 2}) && s.count({11, 2}));  // bottom edge: inside
+  EXPECT_TRUE(s.count({2, 2}));    // the bottom-left vertex is on the left and the bottom edge
+  EXPECT_FALSE(s.count({12, 2}));  // the bottom-right vertex is on the right edge
   EXPECT_FALSE(s.count({6, 10}));  // the apex is on the left and the right edge: outside
   // Row by row, centers x + 0.5 in [left, right): the spans worked out by hand.
-  const int spans[][3] = {{3, 3, 11}, {4, 3, 10}, {5, 4, 9}, {6, 4, 8},
-                          {7, 5, 8},  {8, 5, 7},  {9, 6, 6}};
+  const int spans[][3] = {{2, 2, 11}, {3, 3, 11}, {4, 3, 10}, {5, 4, 9},
+                          {6, 4, 8},  {7, 5, 8},  {8, 5, 7},  {9, 6, 6}};
   PixelSet expected;
   for (const auto& r : spans)
     for (int x = r[1]; x <= r[2]; ++x) expected.insert({x, r[0]});
-  EXPECT_EQ(expected.size(), 36u);
+  EXPECT_EQ(expected.size(), 46u);
   EXPECT_EQ(s, expected);
 }
 
@@ -120,11 +127,11 @@ TEST(RasterFillRule, BackFaceCullingAndFrontFacing) {
     state.cull_back_faces = cull;
     Framebuffer fb(kW, kH);
     RasterStats s = draw_triangles(ccw, state, prog, fb, Parallel(1));
-    EXPECT_EQ(s.fragments_shaded, 28u);
+    EXPECT_EQ(s.fragments_shaded, 36u);
     EXPECT_EQ(fb.aux[fb.index(5, 4)].y, 1.0f);  // front facing
     Framebuffer fb2(kW, kH);
     s = draw_triangles(cw, state, prog, fb2, Parallel(1));
-    EXPECT_EQ(s.fragments_shaded, cull ? 0u : 28u);
+    EXPECT_EQ(s.fragments_shaded, cull ? 0u : 36u);
     EXPECT_EQ(s.triangles_culled, cull ? 1u : 0u);
     if (!cull) {
       EXPECT_EQ(fb2.aux[fb2.index(5, 4)].y, 0.0f);  // back facing

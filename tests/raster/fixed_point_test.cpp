@@ -16,13 +16,16 @@ TEST(RasterFixedPoint, SnapIs24Point8RoundedToNearestEven) {
   EXPECT_EQ(fixed::pixel_center(3), 3 * 256 + 128);
 }
 
-TEST(RasterFixedPoint, TopLeftEdgesForCounterClockwiseTriangles) {
-  EXPECT_TRUE(fixed::is_top_left_edge(-5, 0));  // top: horizontal, running toward -x
-  EXPECT_FALSE(fixed::is_top_left_edge(5, 0));  // bottom
-  EXPECT_TRUE(fixed::is_top_left_edge(3, -4));  // left: running down
+TEST(RasterFixedPoint, BottomLeftEdgesInWindowCoordinatesForCounterClockwiseTriangles) {
+  // llvmpipe's top-left rule in memory rows: bottom-left with GL's y up.
+  EXPECT_TRUE(fixed::is_top_left_edge(5, 0));    // bottom: horizontal, running toward +x
+  EXPECT_FALSE(fixed::is_top_left_edge(-5, 0));  // top
+  EXPECT_TRUE(fixed::is_top_left_edge(3, -4));   // left: running down
   EXPECT_TRUE(fixed::is_top_left_edge(0, -4));
+  EXPECT_TRUE(fixed::is_top_left_edge(-3, -4));
   EXPECT_FALSE(fixed::is_top_left_edge(-3, 4));  // right: running up
   EXPECT_FALSE(fixed::is_top_left_edge(0, 4));
+  EXPECT_FALSE(fixed::is_top_left_edge(3, 4));
   // An edge and its reverse: exactly one of the two triangles sharing it owns it.
   for (int dx = -3; dx <= 3; ++dx)
     for (int dy = -3; dy <= 3; ++dy)
