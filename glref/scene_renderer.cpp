@@ -1,0 +1,264 @@
+#include "glref/scene_renderer.h"
+
+#include <epoxy/gl.h>
+
+#include <chrono>
+#include <cstring>
+#include <string>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "glref/gl_context.h"
+#include "glref/gl_error.h"
+#include "glref/glsl_rewrite.h"
+#include "glref/patch_mesh.h"
+#include "glref/shader_source.h"
+#include "glref/tess_capture.h"
+#include "pipeline/camera.h"
+#include "stages/programs/transform.h"
+#include "stages/tess_levels_adaptive.h"
+
+namespace tessref::glref {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+constexpr int kCaptureWords = 10;  // position 3, normal 3, tess coord 3, patch id 1
+
+// The level settings draw_mesh gives the C++ control programs (pipeline/draw.cpp).
+TessLevelSettings level_settings(const Scene& scene, const glm::mat4& view_projection) {
+  TessLevelSettings levels;
+  levels.constant = scene.tessellation.levels;
+  levels.adaptive = scene.tessellation.adaptive.enabled;
+  levels.screen.view_proj = view_projection;
+  levels.screen.viewport_pixels = glm::vec2(float(scene.width), float(scene.height));
+  levels.screen.pixels_per_segment = scene.tessellation.adaptive.pixels_per_segment;
+  return levels;
+}
+
+TessLayout tes_layout(const TessellationSettings& t) {
+  return TessLayout{TessDomain::Triangles, t.spacing, t.winding, false};
+}
+
+int normal_mode_index(NormalMode m) {  // u_normal_mode in pn_triangles.tesc/.tese
+  switch (m) {
+    case NormalMode::Linear: return 0;
+    case NormalMode::Quadratic: return 1;
+    case NormalMode::QuadraticCorrected: return 2;
+    case NormalMode::Analytic: return 3;
+  }
+  return 1;
+}
+
+// Runs the twin's main, then records gl_TessCoord and the mesh-wide patch index for capture.
+std::string wrap_tes_for_capture(const std::string& tes) {
+  const std::string decl = "void main()";
+  const std::size_t at = tes.find(decl);
+  if (at == std::string::npos || tes.find(decl, at + 1) != std::string::npos)
+    throw GlError("SceneRenderer: the TES twin must have exactly one 'void main()'");
+  std::string out = tes;
+  out.replace(at, decl.size(), "void twin_main()");
+  out = inject_after_version(
+      out, "out vec3 tf_tess_coord;\nflat out int tf_patch_id;\nuniform int u_patch_base;\n");
+  out += "\nvoid main() {\n  twin_main();\n  tf_tess_coord = gl_TessCoord;\n"
+         "  tf_patch_id = u_patch_base + gl_PrimitiveID;\n}\n";
+  return out;
+}
+
+std::vector<ShaderStage> twin_stages(const Scene& scene, bool for_capture) {
+  std::vector<ShaderStage> stages{{GL_VERTEX_SHADER, shader_source("transform.vert"), "transform.vert"}};
+  const TessellationSettings& t = scene.tessellation;
+  if (t.enabled) {
+    const std::string scheme = t.scheme == SurfaceScheme::PN ? "pn_triangles" : "flat";
+    std::string tes = set_tes_layout(shader_source(scheme + ".tese"), tes_layout(t));
+    if (for_capture) tes = wrap_tes_for_capture(tes);
+    stages.push_back({GL_TESS_CONTROL_SHADER, shader_source(scheme + ".tesc"), scheme + ".tesc"});
+    stages.push_back({GL_TESS_EVALUATION_SHADER, tes, scheme + ".tese"});
+  }
+  if (!for_capture) {
+    const char* fs = scene.shading == Shading::Phong ? "phong.frag" : "normals.frag";
+    stages.push_back({GL_FRAGMENT_SHADER, shader_source(fs), fs});
+  }
+  return stages;
+}
+
+}  // namespace
+
+SceneRenderer::SceneRenderer(GlContext& context, const Scene& scene, const Mesh& mesh,
+                             const SceneRendererOptions& options)
+    : context_(context), scene_(scene), options_(options) {
+  context_.make_current();
+  model_ = model_matrix(scene.transform);
+  view_projection_ =
+      projection_matrix(scene.camera, scene.width, scene.height) * view_matrix(scene.camera);
+
+  program_ = link_program(twin_stages(scene_, false));
+  set_uniforms(program_);
+
+  const TessellationSettings& t = scene_.tessellation;
+  if (t.enabled) {
+    patches_ = std::make_unique<PatchMesh>(context_, PatchMeshData{mesh.positions, mesh.normals, mesh.indices, 3});
+    // Constant levels: the exact bound of every patch. Adaptive: the TCS clamps to max_level.
+    TessLevels worst = t.levels;
+    if (t.adaptive.enabled) {
+      const float m = level_settings(scene_, view_projection_).screen.max_level;
+      worst.outer = {m, m, m, m};
+      worst.inner = {m, m};
+    }
+    point_bounds_.assign(patches_->patch_count(), domain_point_bound(tes_layout(t), worst));
+  } else {
+    glGenVertexArrays(1, &vao_);
+    glBindVertexArray(vao_);
+    glGenBuffers(3, buffers_);
+    glBindBuffer(GL_ARRAY_BUFFER, buffers_[0]);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.positions.size() * sizeof(glm::vec3)),
+                 mesh.positions.data(), GL_STATIC_DRAW);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+    glEnableVertexAttribArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, buffers_[1]);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.normals.size() * sizeof(glm::vec3)),
+                 mesh.normals.data(), GL_STATIC_DRAW);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+    glEnableVertexAttribArray(1);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers_[2]);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(std::uint32_t)),
+                 mesh.indices.data(), GL_STATIC_DRAW);
+    glBindVertexArray(0);
+    index_count_ = mesh.indices.size();
+    check_gl("SceneRenderer: uploading the mesh");
+  }
+
+  RenderTargetDesc desc;
+  desc.width = scene_.width;
+  desc.height = scene_.height;
+  desc.colors = {options_.color};
+  if (options_.normals_attachment) desc.colors.push_back(ColorFormat::Rgba32F);
+  target_ = std::make_unique<RenderTarget>(context_, desc);
+}
+
+SceneRenderer::~SceneRenderer() {
+  context_.make_current();
+  target_.reset();
+  patches_.reset();
+  if (buffers_[0]) glDeleteBuffers(3, buffers_);
+  if (vao_) glDeleteVertexArrays(1, &vao_);
+}
+
+// Every uniform the twins read, with the values render_scene/draw_mesh give the C++ programs.
+// Uniforms the driver optimized away (e.g. the lights in normals.frag) are skipped.
+void SceneRenderer::set_uniforms(const Program& program) const {
+  program.use();
+  auto loc = [&](const char* name) { return glGetUniformLocation(program.id(), name); };
+  const auto vs = programs::TransformVertexShader::from(model_, view_projection_);
+  const TessLevelSettings lv = level_settings(scene_, view_projection_);
+  const TessellationSettings& t = scene_.tessellation;
+  int l;
+  if ((l = loc("u_model")) >= 0) glUniformMatrix4fv(l, 1, GL_FALSE, glm::value_ptr(vs.u_model));
+  if ((l = loc("u_view_projection")) >= 0)
+    glUniformMatrix4fv(l, 1, GL_FALSE, glm::value_ptr(vs.u_view_projection));
+  if ((l = loc("u_normal_matrix")) >= 0)
+    glUniformMatrix3fv(l, 1, GL_FALSE, glm::value_ptr(vs.u_normal_matrix));
+  // One name in TCS and TES: the adaptive levels' matrix and gl_Position's, both the camera's.
+  if ((l = loc("u_view_proj")) >= 0) glUniformMatrix4fv(l, 1, GL_FALSE, glm::value_ptr(vs.u_view_projection));
+  if ((l = loc("u_normal_mode")) >= 0) glUniform1i(l, normal_mode_index(t.normal_mode));
+  if ((l = loc("u_adaptive")) >= 0) glUniform1i(l, lv.adaptive ? 1 : 0);
+  if ((l = loc("u_outer")) >= 0) glUniform4fv(l, 1, lv.constant.outer.data());
+  if ((l = loc("u_inner")) >= 0) glUniform2fv(l, 1, lv.constant.inner.data());
+  if ((l = loc("u_viewport")) >= 0)
+    glUniform2f(l, lv.screen.viewport_pixels.x, lv.screen.viewport_pixels.y);
+  if ((l = loc("u_pixels_per_segment")) >= 0) glUniform1f(l, lv.screen.pixels_per_segment);
+  if ((l = loc("u_min_level")) >= 0) glUniform1f(l, lv.screen.min_level);
+  if ((l = loc("u_max_level")) >= 0) glUniform1f(l, lv.screen.max_level);
+  if ((l = loc("u_inner_rule")) >= 0)
+    glUniform1i(l, lv.screen.inner_rule == InnerLevelRule::Max ? 0 : 1);
+
+  // phong.frag, as render.cpp's phong_shader().
+  if ((l = loc("u_eye")) >= 0) glUniform3fv(l, 1, glm::value_ptr(scene_.camera.eye));
+  if ((l = loc("u_num_lights")) >= 0) glUniform1i(l, int(scene_.lights.size()));
+  for (std::size_t i = 0; i < scene_.lights.size(); ++i) {
+    const std::string at = "[" + std::to_string(i) + "]";
+    if ((l = loc(("u_light_position" + at).c_str())) >= 0)
+      glUniform3fv(l, 1, glm::value_ptr(scene_.lights[i].position));
+    if ((l = loc(("u_light_intensity" + at).c_str())) >= 0)
+      glUniform3fv(l, 1, glm::value_ptr(scene_.lights[i].intensity));
+  }
+  if ((l = loc("u_ka")) >= 0) glUniform1f(l, scene_.material.ka);
+  if ((l = loc("u_kd")) >= 0) glUniform1f(l, scene_.material.kd);
+  if ((l = loc("u_ks")) >= 0) glUniform1f(l, scene_.material.ks);
+  if ((l = loc("u_shininess")) >= 0) glUniform1f(l, scene_.material.shininess);
+  if ((l = loc("u_color")) >= 0) glUniform3fv(l, 1, glm::value_ptr(scene_.material.color));
+  check_gl("SceneRenderer: setting uniforms");
+}
+
+void SceneRenderer::draw() {
+  context_.make_current();
+  const auto t0 = Clock::now();
+  target_->clear(scene_.background, 1.0f);  // binds the target, viewport = image size
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  if (scene_.cull_back_faces) {
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    glFrontFace(GL_CCW);
+  }
+  program_.use();
+  if (patches_) {
+    stats_.draws = patches_->draw(program_, point_bounds_, options_.max_points_per_draw);
+  } else {
+    glBindVertexArray(vao_);
+    glDrawElements(GL_TRIANGLES, GLsizei(index_count_), GL_UNSIGNED_INT, nullptr);
+    glBindVertexArray(0);
+    stats_.draws = 1;
+  }
+  glFinish();
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_DEPTH_TEST);
+  check_gl("SceneRenderer::draw");
+  stats_.draw_seconds = seconds_since(t0);
+}
+
+Framebuffer SceneRenderer::read_back() {
+  context_.make_current();
+  const auto t0 = Clock::now();
+  Framebuffer fb = target_->to_framebuffer();
+  stats_.readback_seconds = seconds_since(t0);
+  return fb;
+}
+
+Framebuffer SceneRenderer::render() {
+  draw();
+  return read_back();
+}
+
+std::vector<TessOutputVertex> SceneRenderer::capture_tess() {
+  if (!patches_) throw GlError("SceneRenderer::capture_tess: the scene does not tessellate");
+  context_.make_current();
+  if (!capture_program_) {
+    capture_program_ = link_program(
+        twin_stages(scene_, true),
+        FeedbackVaryings{{"v_world_position", "v_world_normal", "tf_tess_coord", "tf_patch_id"}, true});
+    set_uniforms(capture_program_);
+  }
+  const std::vector<std::uint32_t> words =
+      patches_->capture(capture_program_, kCaptureWords, GL_TRIANGLES, point_bounds_,
+                        options_.max_points_per_draw);
+  std::vector<TessOutputVertex> out(words.size() / kCaptureWords);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const std::uint32_t* w = &words[i * kCaptureWords];
+    std::memcpy(&out[i].position, w, 3 * sizeof(float));
+    std::memcpy(&out[i].normal, w + 3, 3 * sizeof(float));
+    std::memcpy(&out[i].tess_coord, w + 6, 3 * sizeof(float));
+    out[i].patch = w[9];
+    // Patches come back in order; anything else is the 16-bit trap (or a driver bug).
+    if (out[i].patch >= patches_->patch_count() || (i > 0 && out[i].patch < out[i - 1].patch))
+      throw GlError("SceneRenderer::capture_tess: vertex " + std::to_string(i) + " tagged with patch " +
+                    std::to_string(out[i].patch) + " out of order");
+  }
+  return out;
+}
+
+}  // namespace tessref::glref

@@ -1,0 +1,90 @@
+#pragma once
+// A tessref scene drawn by the GL driver with tessref's GLSL twins (stages/programs/*.vert/.frag,
+// stages/schemes/*.tesc/.tese), set up exactly as tessref::render_scene sets up the C++ programs:
+// the same matrices (pipeline/camera.h, so both sides upload the same floats), uniforms,
+// tessellation (scheme, normal mode, spacing, winding, constant or adaptive levels), culling (back
+// faces, CCW front), depth test (LESS), clear color and viewport. The result is read back into a
+// tessref Framebuffer (row 0 at the bottom), ready to compare with tessref's own.
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "glref/draw_split.h"
+#include "glref/gl_program.h"
+#include "glref/render_target.h"
+#include "pipeline/mesh.h"
+#include "pipeline/scene.h"
+#include "raster/framebuffer.h"
+
+namespace tessref::glref {
+
+class GlContext;
+class PatchMesh;
+
+struct SceneRendererOptions {
+  // Rgba32F keeps the shader's floats, so both images are quantized by the same code
+  // (pipeline/image_output.h to_rgb8); Rgba8 lets the driver round.
+  ColorFormat color = ColorFormat::Rgba32F;
+  bool normals_attachment = true;  // fragment output 1 (world normal) -> Framebuffer::aux
+  std::size_t max_points_per_draw = kSafePointsPerDraw;  // tessellated draws split under this
+};
+
+struct SceneRenderStats {
+  std::size_t draws = 0;         // GL draw calls (a tessellated mesh is split, see draw_split.h)
+  double draw_seconds = 0.0;     // clear + draw calls + glFinish
+  double readback_seconds = 0.0; // glReadPixels of color, depth (and normals)
+};
+
+// One TES invocation's outputs as transform feedback records them (one record per emitted
+// vertex, 3 per triangle, so shared domain points repeat).
+struct TessOutputVertex {
+  glm::vec3 position{0.0f};    // v_world_position
+  glm::vec3 normal{0.0f};      // v_world_normal
+  glm::vec3 tess_coord{0.0f};  // gl_TessCoord
+  std::uint32_t patch = 0;     // mesh triangle index (draw base + gl_PrimitiveID)
+};
+
+// Owns the programs, the mesh's buffers and the render target for one scene; render() may be
+// called repeatedly (a benchmark frame). Throws GlError on any GL failure.
+class SceneRenderer {
+ public:
+  SceneRenderer(GlContext& context, const Scene& scene, const Mesh& mesh,
+                const SceneRendererOptions& options = {});
+  ~SceneRenderer();
+  SceneRenderer(const SceneRenderer&) = delete;
+  SceneRenderer& operator=(const SceneRenderer&) = delete;
+
+  // Clears, draws and waits for the driver (glFinish): one complete frame, not read back.
+  void draw();
+  // Reads the target back: color, depth, and aux (normals, or 0 without that attachment).
+  Framebuffer read_back();
+  // draw() then read_back().
+  Framebuffer render();
+
+  // The tessellated mesh's TES outputs, patch by patch in mesh order (rasterizer discard, draws
+  // split and checked). Throws GlError when the scene does not tessellate.
+  std::vector<TessOutputVertex> capture_tess();
+
+  const SceneRenderStats& last_stats() const { return stats_; }
+  const glm::mat4& view_projection() const { return view_projection_; }
+
+ private:
+  void set_uniforms(const Program& program) const;
+
+  GlContext& context_;
+  Scene scene_;
+  SceneRendererOptions options_;
+  glm::mat4 model_{1.0f}, view_projection_{1.0f};
+  std::vector<std::size_t> point_bounds_;  // per patch, for splitting tessellated draws
+  Program program_;
+  Program capture_program_;  // linked on first capture_tess()
+  std::unique_ptr<PatchMesh> patches_;  // tessellation on
+  unsigned vao_ = 0, buffers_[3] = {0, 0, 0};  // tessellation off: plain GL_TRIANGLES
+  std::size_t index_count_ = 0;
+  std::unique_ptr<RenderTarget> target_;
+  SceneRenderStats stats_;
+};
+
+}  // namespace tessref::glref
