@@ -10,7 +10,8 @@
 //   llvmpipe: capture = PatchMesh::capture of position + normal by transform feedback (rasterizer
 //             discard; includes reading the ~2 emitted vertices per point back);
 //             discard = PatchMesh::draw with rasterizer discard and a GL_PRIMITIVES_GENERATED
-//             query, nothing captured (llvmpipe still runs VS/TCS/TPG/TES on one thread).
+//             query, nothing captured (llvmpipe still runs VS/TCS/TPG/TES on one thread);
+//             the flat twins under the same conditions give llvmpipe's floor without PN's TES.
 #include <benchmark/benchmark.h>
 #include <malloc.h>
 
@@ -82,10 +83,10 @@ struct Tessref {
   }
 };
 
-// Domain points of one draw of the whole mesh (the count credited to both sides).
-std::uint64_t domain_points(float level) {
+// One draw of the whole mesh by tessref: its domain points are the count credited to both sides.
+TessStats reference_stats(float level) {
   std::size_t triangles = 0;
-  return Tessref(level, 16).run(triangles).domain_points;
+  return Tessref(level, 16).run(triangles);
 }
 
 // Second argument: patches per chunk. 256 is the pipeline's default (DrawOptions); at level 64 a
@@ -119,14 +120,14 @@ struct Llvmpipe {
   std::unique_ptr<glref::PatchMesh> patch_mesh;
   glref::Program program;
   std::vector<std::size_t> bounds;
-  Llvmpipe(glref::GlContext& ctx, float level, glref::TwinCapture capture) {
+  Llvmpipe(glref::GlContext& ctx, float level, glref::TwinCapture capture, bool pn = true) {
     glref::PatchMeshData data;
     data.positions = mesh().positions;
     data.normals = mesh().normals;
     data.indices = mesh().indices;
     patch_mesh = std::make_unique<glref::PatchMesh>(ctx, data);
     glref::TwinSetup setup;
-    setup.pn = true;
+    setup.pn = pn;
     setup.normal_mode = PnNormalMode::Quadratic;
     setup.layout = kLayout;
     setup.levels = TessLevelSettings::uniform(level, level);
@@ -141,7 +142,7 @@ void BM_LlvmpipePnCapture(benchmark::State& state) {
   if (!ctx) return state.SkipWithError("no GL context");
   const float level = float(state.range(0));
   Llvmpipe gl(*ctx, level, glref::TwinCapture::PositionNormal);
-  const std::uint64_t per_draw = domain_points(level);
+  const std::uint64_t per_draw = reference_stats(level).domain_points;
   std::uint64_t points = 0, captured = 0;
   for (auto _ : state) {
     const std::vector<std::uint32_t> words = gl.patch_mesh->capture(gl.program, 6, GL_TRIANGLES, gl.bounds);
@@ -154,12 +155,16 @@ void BM_LlvmpipePnCapture(benchmark::State& state) {
 }
 BENCHMARK(BM_LlvmpipePnCapture)->Arg(12)->Arg(64)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-void BM_LlvmpipePnDiscard(benchmark::State& state) {
+// Rasterizer discard: nothing is read back; the primitives-generated query both waits for the
+// draws and checks the triangle count against tessref's. pn = false runs the flat twins on
+// the same patches: the floor set by llvmpipe's VS/TCS/tessellator/assembly, without PN's TES.
+void llvmpipe_discard(benchmark::State& state, bool pn) {
   glref::GlContext* ctx = context();
   if (!ctx) return state.SkipWithError("no GL context");
   const float level = float(state.range(0));
-  Llvmpipe gl(*ctx, level, glref::TwinCapture::None);
-  const std::uint64_t per_draw = domain_points(level);
+  Llvmpipe gl(*ctx, level, glref::TwinCapture::None, pn);
+  const TessStats expected = reference_stats(level);
+  const std::uint64_t per_draw = expected.domain_points;
   unsigned query = 0;
   glGenQueries(1, &query);
   std::uint64_t points = 0, triangles = 0;
@@ -172,6 +177,10 @@ void BM_LlvmpipePnDiscard(benchmark::State& state) {
     GLuint64 generated = 0;
     glGetQueryObjectui64v(query, GL_QUERY_RESULT, &generated);  // waits for the draws
     glDisable(GL_RASTERIZER_DISCARD);
+    if (generated != expected.triangles_out) {
+      glDeleteQueries(1, &query);
+      return state.SkipWithError("llvmpipe generated another triangle count than tessref");
+    }
     points += per_draw;
     triangles += generated;
   }
@@ -179,6 +188,9 @@ void BM_LlvmpipePnDiscard(benchmark::State& state) {
   state.counters["vertices_per_s"] = benchmark::Counter(double(points), benchmark::Counter::kIsRate);
   state.counters["triangles_per_s"] = benchmark::Counter(double(triangles), benchmark::Counter::kIsRate);
 }
+void BM_LlvmpipePnDiscard(benchmark::State& state) { llvmpipe_discard(state, true); }
+void BM_LlvmpipeFlatDiscard(benchmark::State& state) { llvmpipe_discard(state, false); }
+BENCHMARK(BM_LlvmpipeFlatDiscard)->Arg(12)->Arg(64)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_LlvmpipePnDiscard)->Arg(12)->Arg(64)->Unit(benchmark::kMillisecond)->UseRealTime();
 #endif
 
@@ -214,6 +226,10 @@ class RatioReporter : public benchmark::ConsoleReporter {
         }
         std::printf("\n");
       }
+    }
+    for (int level : {12, 64}) {
+      const double f = rate("BM_LlvmpipeFlatDiscard/" + std::to_string(level) + "/real_time");
+      if (f > 0.0) std::printf("level %d, llvmpipe flat twins, discard (no PN): %.2f Mvertices/s\n", level, f / 1e6);
     }
   }
 
