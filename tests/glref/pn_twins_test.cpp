@@ -242,6 +242,31 @@ TEST_P(PnTwins, MatchTessrefsExecutor) {
   EXPECT_LE(nrm_err, kNormalTolerance);
 }
 
+// The tolerances separate right from wrong: the twins run with quadratic normals against tessref
+// with quadratic_corrected (same positions, mid-edge normals scaled differently) are far outside.
+TEST(PnTwinsControl, ToleranceCatchesAnotherNormalField) {
+  TESSREF_REQUIRE_GL(ctx);
+  const PatchMeshData data = test_mesh();
+  PatchMesh mesh(*ctx, data);
+  TwinSetup gl_setup = setup_for({int(PnNormalMode::Quadratic), TessSpacing::FractionalOdd, Levels::FiveHalf});
+  gl_setup.layout.point_mode = true;
+  TwinSetup ours = gl_setup;
+  ours.normal_mode = PnNormalMode::QuadraticCorrected;
+  const Reference ref = run_tessref(data, ours);
+  Program program = link_twin_program(gl_setup, TwinCapture::Full);
+  set_twin_uniforms(program, gl_setup);
+  const std::vector<GlVertex> gl = unpack(mesh.capture(program, 10, GL_POINTS, ref.point_bounds));
+  ASSERT_EQ(gl.size(), ref.records.size());
+  float pos_err = 0.0f, nrm_err = 0.0f;
+  for (std::size_t i = 0; i < gl.size(); ++i) {
+    pos_err = std::max(pos_err, max_abs(gl[i].position, ref.records[i].position));
+    nrm_err = std::max(nrm_err, max_abs(gl[i].normal, ref.records[i].normal));
+  }
+  EXPECT_LE(pos_err, kPositionTolerance);
+  EXPECT_GT(nrm_err, 100.0f * kNormalTolerance);
+  RecordProperty("normal_error_other_mode", std::to_string(nrm_err));
+}
+
 std::string config_name(const ::testing::TestParamInfo<Config>& info) {
   const auto [scheme, spacing, levels] = info.param;
   const std::string s = scheme < 0 ? "flat" : std::string("pn_") + to_string(static_cast<PnNormalMode>(scheme));
