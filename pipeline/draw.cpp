@@ -143,7 +143,8 @@ DrawStats draw_mesh(const Mesh& mesh, const programs::TransformVertexShader& ver
     const std::size_t count = std::min(per_batch, triangles - first);
     batch.vertices.resize(3 * count);
     for_chunks(parallel, 3 * count, 3 * 4096, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t k = begin; k < end; ++k) batch.vertices[k] = to_clip_vertex(shaded[mesh.indices[3 * first + k]]);
+      for (std::size_t k = begin; k < end; ++k)
+        batch.vertices[k] = to_clip_vertex(shaded[mesh.indices[3 * first + k]]);
     });
     stats.vertex_seconds += seconds_since(t);
     rasterize(batch);

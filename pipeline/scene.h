@@ -1,5 +1,7 @@
 #pragma once
 // A scene as read from JSON (scenes/*.json; format in README.md): what to draw and how.
+// Scene files take every value they omit from scenes/default.json (scene_loader.h); the
+// initializers below only serve code that builds a Scene by hand.
 #include <filesystem>
 #include <string>
 #include <vector>

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "pipeline/camera.h"
+#include "pipeline/image_compare.h"
 #include "pipeline/image_output.h"
 #include "pipeline/mesh_source.h"
 #include "pipeline/procedural.h"
@@ -220,34 +221,21 @@ TEST(Golden, DefaultScene) {
   const std::string golden_path = std::string(TESSREF_SOURCE_DIR) + "/tests/golden/default.png";
   if (!std::filesystem::exists(golden_path)) GTEST_SKIP() << golden_path << " missing";
   const Rgb8Image golden = read_rgb8_image(golden_path);
-  const Rgb8Image image = to_rgb8(render(load_scene(""), 0).framebuffer);
+  const Scene scene = load_scene("");
+  const Rgb8Image image = to_rgb8(render(scene, 0).framebuffer);
   ASSERT_EQ(image.width, golden.width) << "regenerate: build/cli/tessref render -o tests/golden/default.png";
   ASSERT_EQ(image.height, golden.height);
-  Rgb8Image diff{image.width, image.height, std::vector<std::uint8_t>(image.pixels.size())};
-  std::size_t off = 0;
-  int max_diff = 0;
-  for (std::size_t p = 0; p < image.pixels.size(); p += 3) {
-    int worst = 0;
-    for (int k = 0; k < 3; ++k) {
-      int d = std::abs(int(image.pixels[p + k]) - int(golden.pixels[p + k]));
-      worst = std::max(worst, d);
-      diff.pixels[p + k] = std::uint8_t(std::min(255, d * 16));
-    }
-    off += worst > 3;
-    max_diff = std::max(max_diff, worst);
-  }
-  const std::size_t pixels = std::size_t(image.width) * image.height;
-  const bool ok = off * 1000 <= pixels;
-  if (!ok) {
+  const ImageComparison c = compare_images(golden, image, scene.background, 3, true);
+  const std::size_t off = c.pixels - c.within_tolerance;
+  if (off * 1000 > c.pixels) {
     const std::string diff_path = std::string(TESSREF_BINARY_DIR) + "/golden_default_diff.png";
-    write_rgb8_image(diff, diff_path);
+    write_rgb8_image(c.diff, diff_path);
     write_rgb8_image(image, std::string(TESSREF_BINARY_DIR) + "/golden_default_actual.png");
-    ADD_FAILURE() << off << " of " << pixels << " pixels differ by more than 3 (max " << max_diff
-                  << "); difference image: " << diff_path
+    ADD_FAILURE() << c.summary() << "; difference image: " << diff_path
                   << "; if the change is intended: build/cli/tessref render -o tests/golden/default.png";
   }
   RecordProperty("pixels_off", int(off));
-  RecordProperty("max_diff", max_diff);
+  RecordProperty("max_diff", c.max_difference);
 }
 
 }  // namespace
