@@ -95,7 +95,7 @@ TwinSetup setup_for(const Config& c) {
     s.levels.adaptive = true;
     s.levels.screen.view_proj = s.view_proj;
     s.levels.screen.viewport_pixels = glm::vec2(300.0f, 300.0f);
-    s.levels.screen.pixels_per_segment = 7.0f;  // levels from ~2 to ~20 on this mesh
+    s.levels.screen.pixels_per_segment = 7.0f;  // 43..205 domain points per patch here
   }
   return s;
 }
@@ -181,6 +181,13 @@ TEST_P(PnTwins, MatchTessrefsExecutor) {
   const Reference ref = run_tessref(data, setup);
   ASSERT_GT(ref.records.size(), 0u);
   ASSERT_EQ(ref.stats.domain_points, ref.records.size());
+  if (std::get<2>(GetParam()) == Levels::Adaptive) {
+    // The adaptive cases must really vary the levels from patch to patch.
+    std::vector<std::size_t> per_patch(data.indices.size() / 3, 0);
+    for (const TessDumpRecord& r : ref.records) ++per_patch[r.patch_id];
+    const auto [lo, hi] = std::minmax_element(per_patch.begin(), per_patch.end());
+    EXPECT_GE(*hi, 3 * *lo) << "domain points per patch " << *lo << ".." << *hi;
+  }
 
   float pos_err = 0.0f, nrm_err = 0.0f;
 
