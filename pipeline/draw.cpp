@@ -36,6 +36,10 @@ ClipVertex to_clip_vertex(const programs::VertexOut& v) {
 }
 
 
+// Triangles per tessellated chunk (64 bytes per vertex: ~25 MB) and per parallel task.
+constexpr std::size_t kChunkTriangles = 1 << 17;
+constexpr std::size_t kTaskTriangles = 1 << 12;
+
 // The tessellation path: each mesh triangle is a 3-vertex patch whose control points are the
 // vertex shader's outputs; TCS -> TPG -> TES run chunk by chunk, each chunk rasterized before the
 // next is made, so memory stays bounded by the chunk whatever the level.
@@ -77,8 +81,23 @@ void draw_tessellated(const std::vector<programs::VertexOut>& shaded, const Mesh
   const TessControlProgram& tcs = pn ? static_cast<const TessControlProgram&>(pn_tcs) : flat_tcs;
   const TessEvalProgram& tes = pn ? static_cast<const TessEvalProgram&>(pn_tes) : flat_tes;
 
+  // Chunks and tasks sized by triangles, not patches: at level 64 one patch makes ~6,000
+  // triangles, at level 1 one. The estimate is the generator's count for the constant levels
+  // (adaptive levels: the largest they can reach).
+  TessLevels estimate_levels = settings.levels;
+  if (settings.adaptive.enabled) {
+    estimate_levels.outer.fill(levels.screen.max_level);
+    estimate_levels.inner.fill(levels.screen.max_level);
+  }
+  const std::size_t per_patch = std::max<std::size_t>(
+      1, generate_tessellation(tes.layout(), estimate_levels).primitive_count());
+  const std::size_t chunk = options.tess_chunk_patches
+                                ? options.tess_chunk_patches
+                                : std::clamp<std::size_t>(kChunkTriangles / per_patch, 1, 4096);
+
   std::vector<TessDumpRecord> records;
   TessOptions tess_options;
+  tess_options.patches_per_task = std::clamp<std::size_t>(kTaskTriangles / per_patch, 1, 64);
   if (options.dump_tess) tess_options.dump = &records;
   const TessDrawInput input{control_points, mesh.indices, 3};
   const std::size_t patches = input.patch_count();
@@ -86,14 +105,14 @@ void draw_tessellated(const std::vector<programs::VertexOut>& shaded, const Mesh
   auto t1 = Clock::now();
   const double raster_before = stats.raster_seconds;
   const TessStats tess = tessellate_chunks(
-      input, options.tess_chunk_patches, tcs, tes, tess_options, parallel,
+      input, chunk, tcs, tes, tess_options, parallel,
       [&](const TriangleBatch& batch) {
         rasterize(batch);
         if (options.dump_tess) {
           options.dump_tess(records);
           records.clear();
         }
-        done = std::min(patches, done + options.tess_chunk_patches);
+        done = std::min(patches, done + chunk);
         if (options.progress) options.progress(double(done) / double(std::max<std::size_t>(1, patches)));
       });
   stats.tessellation_seconds += seconds_since(t1) - (stats.raster_seconds - raster_before);

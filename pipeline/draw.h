@@ -30,8 +30,9 @@ struct DrawOptions {
   std::size_t batch_triangles = 65536;
   // Called on the calling thread after each batch with the fraction of the input done.
   std::function<void(double)> progress;
-  // Tessellation: patches per chunk (each chunk is tessellated, then rasterized, then dropped).
-  std::size_t tess_chunk_patches = 256;
+  // Tessellation: patches per chunk (each chunk is tessellated, then rasterized, then dropped);
+  // 0 sizes chunks to about 128k triangles from the levels. The image never depends on it.
+  std::size_t tess_chunk_patches = 0;
   // Tessellation: receives every TES invocation's record (patch id, gl_TessCoord, position,
   // normal), chunk by chunk in patch order, on the calling thread.
   std::function<void(const std::vector<TessDumpRecord>&)> dump_tess;
