@@ -16,16 +16,25 @@ struct WindowVertex {
 };
 
 // GL 4.6 section 13.8.1: x_w = (x_ndc + 1) W/2, y_w = (y_ndc + 1) H/2,
-// z_w = n + (f - n)(z_ndc + 1)/2; then x_w, y_w snap to 24.8.
+// z_w = n + (f - n)(z_ndc + 1)/2; then x_w, y_w snap to 24.8. Evaluated as llvmpipe does (its
+// draw module's viewport code): x_ndc * scale + translate with one fused multiply-add, scale =
+// translate = W/2. Measured (raster_vs_llvmpipe_test, 200 x 152 viewport, random float clip
+// coordinates): with the fma 0 of 3,040,000 pixels differ, with (x_ndc + 1) * W/2 rounded twice 2
+// do. This is llvmpipe on a CPU with FMA (LLVM fuses its fmuladd); without FMA it would round
+// twice. llvmpipe snaps x_w - 0.5 instead of x_w: the same 24.8 value, since that subtraction is
+// exact for every x_w the viewport transform can produce (W >= 1).
 WindowVertex to_window(const ClipVertex& v, const Viewport& vp) {
   const float inv_w = 1.0f / v.position.w;
   const float x_ndc = v.position.x * inv_w;
   const float y_ndc = v.position.y * inv_w;
   const float z_ndc = v.position.z * inv_w;
   WindowVertex r;
-  r.x = fixed::snap_subpixel((x_ndc + 1.0f) * (0.5f * float(vp.width)));
-  r.y = fixed::snap_subpixel((y_ndc + 1.0f) * (0.5f * float(vp.height)));
-  float z = vp.depth_near + (vp.depth_far - vp.depth_near) * ((z_ndc + 1.0f) * 0.5f);
+  const float sx = 0.5f * float(vp.width), sy = 0.5f * float(vp.height);
+  r.x = fixed::snap_subpixel(std::fma(x_ndc, sx, sx));
+  r.y = fixed::snap_subpixel(std::fma(y_ndc, sy, sy));
+  const float sz = 0.5f * (vp.depth_far - vp.depth_near);
+  const float tz = 0.5f * (vp.depth_far + vp.depth_near);
+  const float z = std::fma(z_ndc, sz, tz);
   // Clipping leaves z_ndc in [-1, 1] up to rounding; keep the rounding inside the depth range.
   const float lo = std::min(vp.depth_near, vp.depth_far);
   const float hi = std::max(vp.depth_near, vp.depth_far);

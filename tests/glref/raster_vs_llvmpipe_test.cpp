@@ -140,11 +140,10 @@ bool llvmpipe_clips(const glm::vec3* v, int w, int h) {
   return false;
 }
 
-// Draws one scene both ways and adds the comparison to totals.
-void compare(glref::CoverageProber& prober, int w, int h, const std::vector<glm::vec3>& window,
-             Totals& totals) {
-  std::vector<glm::vec4> clip;
-  for (const glm::vec3& p : window) clip.push_back(clip_from_window(p, w, h));
+// Draws one scene (clip positions) both ways and adds the comparison to totals. clipped[t]:
+// whether llvmpipe clips triangle t.
+void compare_clip(glref::CoverageProber& prober, int w, int h, const std::vector<glm::vec4>& clip,
+                  const std::vector<bool>& clipped, Totals& totals) {
   const glref::CoverageProbe gl = prober.draw(clip);
   const TessrefDraw ours = tessref_draw(clip, w, h);
   ++totals.scenes;
@@ -159,7 +158,7 @@ void compare(glref::CoverageProber& prober, int w, int h, const std::vector<glm:
         bool clipped_only = true;
         for (int id = 0; id < glref::kProbeMaxTriangles; ++id)
           if ((gl.mask[i][id / 64] ^ ours.mask[i][id / 64]) >> (id % 64) & 1)
-            clipped_only &= llvmpipe_clips(&window[3 * std::size_t(id)], w, h);
+            clipped_only &= bool(clipped[std::size_t(id)]);
         if (clipped_only) {
           ++totals.differing_clipped;
           continue;
@@ -184,6 +183,17 @@ void compare(glref::CoverageProber& prober, int w, int h, const std::vector<glm:
       totals.max_depth_diff = std::max(totals.max_depth_diff, d);
       totals.depth_over += d > kDepthTolerance;
     }
+}
+
+// The same for a scene in window coordinates.
+void compare(glref::CoverageProber& prober, int w, int h, const std::vector<glm::vec3>& window,
+             Totals& totals) {
+  std::vector<glm::vec4> clip;
+  std::vector<bool> clipped;
+  for (const glm::vec3& p : window) clip.push_back(clip_from_window(p, w, h));
+  for (std::size_t t = 0; t < window.size() / 3; ++t)
+    clipped.push_back(llvmpipe_clips(&window[3 * t], w, h));
+  compare_clip(prober, w, h, clip, clipped, totals);
 }
 
 void expect_identical(const Totals& t, const char* name) {
@@ -402,6 +412,40 @@ TEST(RasterVsLlvmpipe, GridMeshes) {
     compare(prober, kW, kH, with_depth_bands(grid_mesh(rng, n, n, cell, scene % 3 != 0), rng), t);
   }
   expect_identical(t, "grid meshes");
+}
+
+}  // namespace
+}  // namespace tessref
+namespace tessref {
+namespace {
+
+// Off the 1/256 grid: random float clip coordinates, w in [0.5, 2] in every other scene, on a
+// viewport whose half-sizes are not powers of two, so the divide, the viewport transform's rounding
+// and the 24.8 snap all show. Inside the view volume: nothing is clipped.
+TEST(RasterVsLlvmpipe, FloatClipCoordinatesOnAnOddViewport) {
+  TESSREF_REQUIRE_GL(ctx);
+  const int w = 200, h = 152;
+  glref::CoverageProber prober(*ctx, w, h);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f), clip_w(0.5f, 2.0f);
+  Totals t;
+  const int n = glref::kProbeMaxTriangles;
+  for (int scene = 0; scene < scene_count(100); ++scene) {
+    std::vector<glm::vec4> clip;
+    for (int k = 0; k < n; ++k) {
+      const glm::vec2 c(u(rng), u(rng));
+      const float r = std::exp2(6.0f * u(rng) - 5.0f);  // 1/2048 to 2 in NDC
+      // Depth bands as in with_depth_bands: later triangles nearer.
+      const float z = 0.9f - 1.8f * float(k + 1) / float(n + 1);
+      for (int v = 0; v < 3; ++v) {
+        const glm::vec2 p = glm::clamp(c + r * glm::vec2(u(rng), u(rng)), -1.0f, 1.0f);
+        const float wv = scene % 2 ? clip_w(rng) : 1.0f;
+        clip.push_back(glm::vec4(p * wv, z * wv, wv));
+      }
+    }
+    compare_clip(prober, w, h, clip, std::vector<bool>(n, false), t);
+  }
+  expect_identical(t, "float clip coordinates");
 }
 
 }  // namespace
