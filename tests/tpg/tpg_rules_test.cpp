@@ -66,6 +66,8 @@ TessLayout layout_of(TessDomain d, TessSpacing s, TessWinding w = TessWinding::C
 }
 
 class TpgRules : public ::testing::TestWithParam<std::tuple<TessDomain, TessSpacing>> {};
+// The rules about outer edges and triangles: the triangle and quad domains.
+class TpgSurfaceRules : public TpgRules {};
 
 // Discard (11.2.2), the segment count of every outer edge (rounding and clamping per spacing),
 // rules 2-4 (an edge's points depend only on its level and spacing, whichever edge, and are
@@ -149,9 +151,8 @@ TEST_P(TpgRules, OuterEdgesFollowTheSpec) {
 
 // Rule 2 for fractional spacing: the points on an edge depend on its level only, so the same
 // level on any edge of any patch (and any domain) gives the same points.
-TEST_P(TpgRules, EdgePointsDependOnlyOnTheirLevel) {
+TEST_P(TpgSurfaceRules, EdgePointsDependOnlyOnTheirLevel) {
   const auto [domain, spacing] = GetParam();
-  if (domain == TessDomain::Isolines) GTEST_SKIP() << "isoline lines are checked above";
   std::mt19937 rng(99 + int(domain) * 10 + int(spacing));
   const int edges = outer_edges(domain);
   for (int n = 0; n < kSets / 10; ++n) {
@@ -176,9 +177,8 @@ TEST_P(TpgRules, EdgePointsDependOnlyOnTheirLevel) {
 // Rule 5: the vertex order changes the orientation of each triangle, not the set of triangles.
 // Rules 6 and 7: interior triangles depend only on the inner levels, and the triangles joining an
 // outer edge to the inner ring only on that edge's level and the inner levels.
-TEST_P(TpgRules, WindingInteriorAndTransitionInvariance) {
+TEST_P(TpgSurfaceRules, WindingInteriorAndTransitionInvariance) {
   const auto [domain, spacing] = GetParam();
-  if (domain == TessDomain::Isolines) GTEST_SKIP() << "no triangles";
   std::mt19937 rng(7 + int(domain) * 10 + int(spacing));
   using Tri = std::array<std::array<float, 3>, 3>;
   auto canonical = [](glm::vec3 a, glm::vec3 b, glm::vec3 c, bool flip) {
@@ -241,6 +241,15 @@ INSTANTIATE_TEST_SUITE_P(
     AllSpacings, TpgRules,
     ::testing::Combine(::testing::Values(TessDomain::Triangles, TessDomain::Quads,
                                          TessDomain::Isolines),
+                       ::testing::ValuesIn(kSpacings)),
+    [](const auto& info) {
+      return std::string(to_string(std::get<0>(info.param))) + "_" +
+             to_string(std::get<1>(info.param));
+    });
+
+INSTANTIATE_TEST_SUITE_P(
+    SurfaceDomains, TpgSurfaceRules,
+    ::testing::Combine(::testing::Values(TessDomain::Triangles, TessDomain::Quads),
                        ::testing::ValuesIn(kSpacings)),
     [](const auto& info) {
       return std::string(to_string(std::get<0>(info.param))) + "_" +
