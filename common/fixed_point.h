@@ -13,13 +13,14 @@ namespace tessref::fixed {
 // window x, y are in 24.8 fixed point.
 inline constexpr int kSubpixelBits = 8;
 inline constexpr std::int32_t kSubpixelOne = 1 << kSubpixelBits;
-// Largest window coordinate magnitude (guard band included) that keeps edge-function products in
-// 64-bit: |x| < 2^(kGuardBits) pixels.
+// Largest window coordinate magnitude that keeps edge-function products in 64-bit:
+// |x| < 2^(kGuardBits) pixels. Triangles are clipped at the viewport sides (raster/clip.cpp, as
+// llvmpipe does), so window coordinates stay within [0, W] x [0, H] up to float rounding.
 inline constexpr int kGuardBits = 14;
 inline constexpr float kGuardBandPixels = float(1 << kGuardBits);
 
-// Snap a window coordinate to 24.8 with round-to-nearest (ties to even). The guard band keeps
-// |window_coord| below 2^(kGuardBits + 1), so the result fits.
+// Snap a window coordinate to 24.8 with round-to-nearest (ties to even), as llvmpipe's
+// _mm_cvtps_epi32. Clipping keeps |window_coord| below 2^(kGuardBits + 1), so the result fits.
 inline std::int32_t snap_subpixel(float window_coord) {
   return static_cast<std::int32_t>(std::nearbyint(window_coord * float(kSubpixelOne)));
 }
@@ -28,9 +29,9 @@ inline constexpr std::int32_t kSubpixelHalf = kSubpixelOne / 2;
 inline constexpr std::int64_t pixel_center(int pixel) {
   return std::int64_t(pixel) * kSubpixelOne + kSubpixelHalf;
 }
-// The viewport may be at most this wide or high: the side clip planes of the guard band sit at
-// window x, y = W/2 +- kGuardBandPixels/2, so every snapped coordinate stays below 2^kGuardBits
-// pixels (2^22 in 24.8), edge deltas below 2^23 and edge-function products below 2^47.
+// The viewport may be at most this wide or high: clipping at its sides keeps every snapped
+// coordinate within 2^kGuardBits pixels (2^22 in 24.8), edge deltas below 2^23 and edge-function
+// products below 2^47.
 inline constexpr int kMaxViewportPixels = 1 << kGuardBits;
 static_assert(2 * (kGuardBits + 1 + kSubpixelBits) + 2 < 63, "edge functions must fit in int64");
 

@@ -6,14 +6,16 @@
 namespace tessref::raster {
 namespace {
 
-// Outcode bits: planes that clip (near, far, guard band) and the viewport sides, which only reject.
+// Outcode bits: planes that clip (the guard band sides, near, far; bits 0-5 in the order Mesa's
+// draw module clips in: x <= w first, then x >= -w, y <= w, y >= -w, near, far) and the viewport
+// sides, which only reject.
 enum : std::uint32_t {
-  kNear = 1u << 0,
-  kFar = 1u << 1,
-  kGuardLeft = 1u << 2,
-  kGuardRight = 1u << 3,
-  kGuardBottom = 1u << 4,
-  kGuardTop = 1u << 5,
+  kGuardRight = 1u << 0,
+  kGuardLeft = 1u << 1,
+  kGuardTop = 1u << 2,
+  kGuardBottom = 1u << 3,
+  kNear = 1u << 4,
+  kFar = 1u << 5,
   kLeft = 1u << 6,
   kRight = 1u << 7,
   kBottom = 1u << 8,
@@ -26,12 +28,12 @@ struct Planes {
   // Signed distance to plane i (bit 1 << i); >= 0 is inside.
   float distance(int i, const glm::vec4& p) const {
     switch (i) {
-      case 0: return p.z + p.w;
-      case 1: return p.w - p.z;
-      case 2: return p.x + gx * p.w;
-      case 3: return gx * p.w - p.x;
-      case 4: return p.y + gy * p.w;
-      default: return gy * p.w - p.y;
+      case 0: return gx * p.w - p.x;
+      case 1: return p.x + gx * p.w;
+      case 2: return gy * p.w - p.y;
+      case 3: return p.y + gy * p.w;
+      case 4: return p.z + p.w;
+      default: return p.w - p.z;
     }
   }
   std::uint32_t outcode(const glm::vec4& p) const {
@@ -50,19 +52,24 @@ bool finite(const glm::vec4& p) {
   return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
 }
 
-// Linear interpolation in clip space, always from the inside vertex toward the outside one, so
-// that an edge shared by two triangles is cut at bit-identical points.
-ClipVertex lerp(const ClipVertex& in, const ClipVertex& out, float t, int num_varyings) {
+// The cut point of edge in-out, as Mesa's draw clipper computes it (draw_pipe_clip.c, plain float
+// C): out + t (in - out) with t = d_out / (d_out - d_in), always from the outside vertex, so that
+// an edge shared by two triangles is cut at bit-identical points.
+ClipVertex cut(const ClipVertex& in, const ClipVertex& out, float d_in, float d_out,
+               int num_varyings) {
+  const float t = d_out / (d_out - d_in);
   ClipVertex r;
-  r.position = in.position + t * (out.position - in.position);
+  r.position = out.position + t * (in.position - out.position);
   for (int k = 0; k < num_varyings; ++k)
-    r.varyings[k] = in.varyings[k] + t * (out.varyings[k] - in.varyings[k]);
+    r.varyings[k] = out.varyings[k] + t * (in.varyings[k] - out.varyings[k]);
   return r;
 }
 
 // One Sutherland-Hodgman pass against plane i.
-int clip_against(const Planes& planes, int i, const ClipVertex* src, int n, ClipVertex* dst,
-                 int num_varyings) {
+// generated[k]: whether vertex k was made by clipping (it then gets Mesa's unfused viewport
+// transform, see setup.cpp).
+int clip_against(const Planes& planes, int i, const ClipVertex* src, const bool* src_generated,
+                 int n, ClipVertex* dst, bool* dst_generated, int num_varyings) {
   int m = 0;
   for (int k = 0; k < n; ++k) {
     const ClipVertex& cur = src[k];
@@ -71,10 +78,13 @@ int clip_against(const Planes& planes, int i, const ClipVertex* src, int n, Clip
     float dn = planes.distance(i, next.position);
     bool cur_in = dc >= 0.0f;
     bool next_in = dn >= 0.0f;
-    if (cur_in) dst[m++] = cur;
+    if (cur_in) {
+      dst_generated[m] = src_generated[k];
+      dst[m++] = cur;
+    }
     if (cur_in != next_in) {
-      dst[m++] = cur_in ? lerp(cur, next, dc / (dc - dn), num_varyings)
-                        : lerp(next, cur, dn / (dn - dc), num_varyings);
+      dst_generated[m] = true;
+      dst[m++] = cur_in ? cut(cur, next, dc, dn, num_varyings) : cut(next, cur, dn, dc, num_varyings);
     }
   }
   return m;
@@ -109,12 +119,18 @@ ClipResult clip_triangle(const ClipVertex& a, const ClipVertex& b, const ClipVer
   out.v[1] = b;
   out.v[2] = c;
   out.count = 3;
+  out.generated = {};
   if (to_clip) {
     std::array<ClipVertex, kMaxClipVertices> tmp;
+    std::array<bool, kMaxClipVertices> tmp_generated{};
     for (int i = 0; i < kClipPlaneCount && out.count >= 3; ++i) {
       if (!(to_clip & (1u << i))) continue;
-      int n = clip_against(planes, i, out.v.data(), out.count, tmp.data(), num_varyings);
-      for (int k = 0; k < n; ++k) out.v[k] = tmp[k];
+      int n = clip_against(planes, i, out.v.data(), out.generated.data(), out.count, tmp.data(),
+                           tmp_generated.data(), num_varyings);
+      for (int k = 0; k < n; ++k) {
+        out.v[k] = tmp[k];
+        out.generated[k] = tmp_generated[k];
+      }
       out.count = n;
     }
     if (out.count < 3) return ClipResult::kRejected;

@@ -1,6 +1,7 @@
 #pragma once
-// Clip-space clipping of one triangle (GL 4.6 section 13.7): near and far planes always, the side
-// planes only as a guard band, so that window coordinates stay inside the 24.8 fixed-point range.
+// Clip-space clipping of one triangle (GL 4.6 section 13.7) against the six planes of the view
+// volume (guard factors 1: Viewport::guard_x/y), with the plane order and float arithmetic of
+// Mesa's draw clipper (draw_pipe_clip.c), so that the cut vertices, and the pixels, are llvmpipe's.
 #include <array>
 
 #include "raster/vertex.h"
@@ -13,6 +14,7 @@ inline constexpr int kMaxClipVertices = 3 + 6;
 struct ClipPolygon {
   int count = 0;
   std::array<ClipVertex, kMaxClipVertices> v;
+  std::array<bool, kMaxClipVertices> generated{};  // made by clipping, not an input vertex
 };
 
 enum class ClipResult {
@@ -33,7 +35,7 @@ ClipTest classify_triangle(const glm::vec4& a, const glm::vec4& b, const glm::ve
                            float guard_x, float guard_y);
 
 // guard_x, guard_y: the guard planes are x = +-guard_x * w and y = +-guard_y * w, in clip space
-// (kGuardBandPixels / viewport width or height, so >= 1).
+// (>= 1; Viewport gives 1: llvmpipe clips at the viewport sides).
 ClipResult clip_triangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
                          int num_varyings, float guard_x, float guard_y, ClipPolygon& out);
 

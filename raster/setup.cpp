@@ -23,18 +23,23 @@ struct WindowVertex {
 // do. This is llvmpipe on a CPU with FMA (LLVM fuses its fmuladd); without FMA it would round
 // twice. llvmpipe snaps x_w - 0.5 instead of x_w: the same 24.8 value, since that subtraction is
 // exact for every x_w the viewport transform can produce (W >= 1).
-WindowVertex to_window(const ClipVertex& v, const Viewport& vp) {
+// Vertices made by clipping (generated) go through Mesa's clipper instead, plain C floats:
+// x_ndc * scale + translate rounded twice.
+WindowVertex to_window(const ClipVertex& v, const Viewport& vp, bool generated = false) {
   const float inv_w = 1.0f / v.position.w;
   const float x_ndc = v.position.x * inv_w;
   const float y_ndc = v.position.y * inv_w;
   const float z_ndc = v.position.z * inv_w;
   WindowVertex r;
   const float sx = 0.5f * float(vp.width), sy = 0.5f * float(vp.height);
-  r.x = fixed::snap_subpixel(std::fma(x_ndc, sx, sx));
-  r.y = fixed::snap_subpixel(std::fma(y_ndc, sy, sy));
   const float sz = 0.5f * (vp.depth_far - vp.depth_near);
   const float tz = 0.5f * (vp.depth_far + vp.depth_near);
-  const float z = std::fma(z_ndc, sz, tz);
+  auto transform = [generated](float ndc, float scale, float translate) {
+    return generated ? ndc * scale + translate : std::fma(ndc, scale, translate);
+  };
+  r.x = fixed::snap_subpixel(transform(x_ndc, sx, sx));
+  r.y = fixed::snap_subpixel(transform(y_ndc, sy, sy));
+  const float z = transform(z_ndc, sz, tz);
   // Clipping leaves z_ndc in [-1, 1] up to rounding; keep the rounding inside the depth range.
   const float lo = std::min(vp.depth_near, vp.depth_far);
   const float hi = std::max(vp.depth_near, vp.depth_far);
@@ -97,8 +102,11 @@ PieceResult setup_piece(const WindowVertex& a, const WindowVertex& b, const Wind
 
 }  // namespace
 
-float Viewport::guard_x() const { return fixed::kGuardBandPixels / float(width); }
-float Viewport::guard_y() const { return fixed::kGuardBandPixels / float(height); }
+// llvmpipe (Mesa's draw module) clips at the viewport sides, with no guard band: measured in
+// raster_vs_llvmpipe_test, where a triangle reaching 1.5 pixels past the top edge already gets cut
+// vertices. Clipping at the same planes with the same arithmetic gives the same pixels.
+float Viewport::guard_x() const { return 1.0f; }
+float Viewport::guard_y() const { return 1.0f; }
 
 SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index, const Viewport& vp,
                             bool cull_back_faces, std::vector<SetupTriangle>& tris,
@@ -126,7 +134,7 @@ SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index, const
   if (clipped != ClipResult::kKept) return SetupOutcome::kClippedAway;
 
   WindowVertex w[kMaxClipVertices];
-  for (int k = 0; k < poly.count; ++k) w[k] = to_window(poly.v[k], vp);
+  for (int k = 0; k < poly.count; ++k) w[k] = to_window(poly.v[k], vp, poly.generated[k]);
   // A planar convex polygon: fan from its first vertex.
   for (int k = 1; k + 1 < poly.count; ++k) {
     if (setup_piece(w[0], w[k], w[k + 1], vp, cull_back_faces, nv, tris, varyings) ==
