@@ -32,7 +32,7 @@ using raster::SetupTriangle;
 constexpr int kTileSize = 64;                    // pixels
 constexpr std::size_t kChunkTriangles = 1024;    // input triangles per setup task
 constexpr std::size_t kMinBinnedForTasks = 256;  // fewer (triangle, tile) pairs: scan inline
-// Bounds memory: about 100 bytes + 12 * num_varyings per triangle are held per pass. Each pass
+// Bounds memory: about 170 bytes + 12 * num_varyings per triangle are held per pass. Each pass
 // revisits the tiles it touches, so passes should not be too small either.
 constexpr std::size_t kPassTriangles = 64 * 1024;
 

@@ -11,9 +11,16 @@ namespace tessref::raster {
 // A triangle ready to scan: wound counter-clockwise in window space (y up).
 struct SetupTriangle {
   std::int32_t x[3], y[3];         // window coordinates, 24.8 fixed point
+  float xf[3], yf[3];              // the same before snapping
   std::int64_t area2;              // twice the area, > 0, in 16.16 (units of 2^-16 pixel^2)
   double inv_area2;                // 1 / area2: edge function -> barycentric weight
   float z[3];                      // window depth, already in the depth range
+  // Barycentric weights of vertices 1 and 2 as planes through the unsnapped window positions
+  // (where llvmpipe fits depth and varyings): b_k(x, y) = bk_dx (x - b_x0) + bk_dy (y - b_y0).
+  // Depth (clamped to [z_lo, z_hi]) and varyings are interpolated with them; coverage uses the
+  // snapped edges.
+  double b_x0, b_y0, b1_dx, b1_dy, b2_dx, b2_dy;
+  float z_lo, z_hi;
   float inv_w[3];                  // 1 / clip w, for perspective-correct varyings
   int min_x, min_y, max_x, max_y;  // pixels whose centers may be covered, inclusive, on screen
   bool front_facing;

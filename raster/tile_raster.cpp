@@ -57,14 +57,16 @@ struct Interpolator {
   // center of (x, y). Returns whether the fragment was shaded.
   bool fragment(int x, int y, std::size_t idx, const std::int64_t e[3], float* frag_varyings,
                 FragmentInput& in) const {
-    // Barycentrics from the exact edge functions; window depth is linear in window space.
-    const double b1 = double(e[1]) * t.inv_area2;
-    const double b2 = double(e[2]) * t.inv_area2;
-    const float z = float(double(t.z[0]) + b1 * dz1 + b2 * dz2);
+    // Barycentrics from the planes through the float positions (see SetupTriangle); window
+    // depth is linear in window space.
+    const double dx = double(x) + 0.5 - t.b_x0, dy = double(y) + 0.5 - t.b_y0;
+    const double b1 = t.b1_dx * dx + t.b1_dy * dy;
+    const double b2 = t.b2_dx * dx + t.b2_dy * dy;
+    const float z = std::clamp(float(double(t.z[0]) + b1 * dz1 + b2 * dz2), t.z_lo, t.z_hi);
     if (!(z < fb.depth[idx])) return false;
 
     // Perspective correction: interpolate attribute/w and 1/w linearly, then divide.
-    const double b0 = double(e[0]) * t.inv_area2;
+    const double b0 = 1.0 - b1 - b2;
     const double p0 = b0 * inv_w0, p1 = b1 * inv_w1, p2 = b2 * inv_w2;
     const double inv_w = p0 + p1 + p2;
     const double w = 1.0 / inv_w;

@@ -42,6 +42,24 @@ inline std::vector<raster::SetupTriangle> setup_all(const TriangleBatch& batch, 
   return tris;
 }
 
+// Depth of triangle t's plane at (px, py): the plane through its unsnapped window positions and
+// depths (where llvmpipe, and so the rasterizer, fits it), by barycentrics in double: an
+// independent evaluation of the same plane.
+inline double exact_depth_at(const raster::SetupTriangle& t, double px, double py) {
+  double e[3];
+  for (int k = 0; k < 3; ++k) {
+    const int a = (k + 1) % 3, b = (k + 2) % 3;
+    const double ax = t.xf[a], ay = t.yf[a], bx = t.xf[b], by = t.yf[b];
+    e[k] = (bx - ax) * (py - ay) - (by - ay) * (px - ax);
+  }
+  const double sum = e[0] + e[1] + e[2];
+  if (sum == 0.0) return t.z[0];  // degenerate before snapping: the rasterizer uses z[0]
+  return (e[0] * t.z[0] + e[1] * t.z[1] + e[2] * t.z[2]) / sum;
+}
+inline double exact_depth(const raster::SetupTriangle& t, int x, int y) {
+  return exact_depth_at(t, x + 0.5, y + 0.5);
+}
+
 // Embree's entry points, looked up at run time: test executables that link Embree find them in
 // the process, the others (tests/pipeline links only the tessref library) load libembree3.so.3.
 struct EmbreeApi {
@@ -86,7 +104,10 @@ class EmbreeOracle {
         // 24.8 -> pixels is exact in float (at most 22 significant bits).
         v[9 * t + 3 * k + 0] = float(tris[t].x[k]) / 256.0f;
         v[9 * t + 3 * k + 1] = float(tris[t].y[k]) / 256.0f;
-        v[9 * t + 3 * k + 2] = tris[t].z[k];
+        // Depth on the plane through the unsnapped positions (the rasterizer's, as llvmpipe's),
+        // so that Embree's t is that plane's depth too.
+        v[9 * t + 3 * k + 2] = float(exact_depth_at(tris[t], tris[t].x[k] / 256.0,
+                                                    tris[t].y[k] / 256.0));
         idx[3 * t + k] = unsigned(3 * t + k);
       }
     rtc_.rtcCommitGeometry(geom);
@@ -153,18 +174,6 @@ inline std::vector<char> near_edges(const std::vector<raster::SetupTriangle>& tr
   return mark;
 }
 
-// Depth of triangle t at the center of pixel (x, y), by barycentrics in double from its snapped
-// vertices (an independent evaluation of the same plane).
-inline double exact_depth(const raster::SetupTriangle& t, int x, int y) {
-  const double px = x + 0.5, py = y + 0.5;
-  double e[3];
-  for (int k = 0; k < 3; ++k) {
-    const int a = (k + 1) % 3, b = (k + 2) % 3;
-    const double ax = t.x[a] / 256.0, ay = t.y[a] / 256.0, bx = t.x[b] / 256.0, by = t.y[b] / 256.0;
-    e[k] = (bx - ax) * (py - ay) - (by - ay) * (px - ax);
-  }
-  return (e[0] * t.z[0] + e[1] * t.z[1] + e[2] * t.z[2]) / (e[0] + e[1] + e[2]);
-}
 
 struct OracleResult {
   int compared = 0, covered = 0, excluded = 0, coverage_mismatches = 0, depth_mismatches = 0;
