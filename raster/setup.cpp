@@ -110,7 +110,6 @@ PieceResult setup_piece(const WindowVertex& a, const WindowVertex& b, const Wind
     t.z_hi = std::max(vp.depth_near, vp.depth_far);
   }
   t.area2 = front ? area2 : -area2;
-  t.inv_area2 = 1.0 / double(t.area2);
   t.front_facing = front;
 
   // Pixel x is a candidate when its center x * 256 + 128 lies in [min x, max x].

@@ -13,7 +13,6 @@ struct SetupTriangle {
   std::int32_t x[3], y[3];         // window coordinates, 24.8 fixed point
   float xf[3], yf[3];              // the same before snapping
   std::int64_t area2;              // twice the area, > 0, in 16.16 (units of 2^-16 pixel^2)
-  double inv_area2;                // 1 / area2: edge function -> barycentric weight
   float z[3];                      // window depth, already in the depth range
   // Barycentric weights of vertices 1 and 2 as planes through the unsnapped window positions
   // (where llvmpipe fits depth and varyings): b_k(x, y) = bk_dx (x - b_x0) + bk_dy (y - b_y0).

@@ -53,10 +53,9 @@ struct Interpolator {
   Framebuffer& fb;
   bool write_aux;
 
-  // Depth test, then perspective-correct varyings and the shader; e: the edge functions at the
-  // center of (x, y). Returns whether the fragment was shaded.
-  bool fragment(int x, int y, std::size_t idx, const std::int64_t e[3], float* frag_varyings,
-                FragmentInput& in) const {
+  // Depth test, then perspective-correct varyings and the shader, for the center of (x, y).
+  // Returns whether the fragment was shaded.
+  bool fragment(int x, int y, std::size_t idx, float* frag_varyings, FragmentInput& in) const {
     // Barycentrics from the planes through the float positions (see SetupTriangle); window
     // depth is linear in window space.
     const double dx = double(x) + 0.5 - t.b_x0, dy = double(y) + 0.5 - t.b_y0;
@@ -143,7 +142,7 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
       // Inside iff E_i + bias_i >= 0 for all i, i.e. (E + bias) has no sign bit in any edge.
       for (int x = x0; x <= x1; ++x) {
         if (((e[0] + edges[0].bias) | (e[1] + edges[1].bias) | (e[2] + edges[2].bias)) >= 0)
-          shaded += interp.fragment(x, y, row + (x - x0), e, frag_varyings, in);
+          shaded += interp.fragment(x, y, row + (x - x0), frag_varyings, in);
         for (int i = 0; i < 3; ++i) e[i] += edges[i].step_x;
       }
       continue;
@@ -165,7 +164,7 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
     if (k_lo > k_hi) continue;
     for (int i = 0; i < 3; ++i) e[i] += k_lo * edges[i].step_x;
     for (std::int64_t k = k_lo; k <= k_hi; ++k) {
-      shaded += interp.fragment(x0 + int(k), y, row + std::size_t(k), e, frag_varyings, in);
+      shaded += interp.fragment(x0 + int(k), y, row + std::size_t(k), frag_varyings, in);
       for (int i = 0; i < 3; ++i) e[i] += edges[i].step_x;
     }
   }
