@@ -11,7 +11,6 @@
 #include <string>
 #include <vector>
 
-#include <dlfcn.h>
 #include <embree3/rtcore.h>
 #include <gtest/gtest.h>
 
@@ -60,44 +59,15 @@ inline double exact_depth(const raster::SetupTriangle& t, int x, int y) {
   return exact_depth_at(t, x + 0.5, y + 0.5);
 }
 
-// Embree's entry points, looked up at run time: test executables that link Embree find them in
-// the process, the others (tests/pipeline links only the tessref library) load libembree3.so.3.
-struct EmbreeApi {
-#define TESSREF_EMBREE_FUNCTIONS(X)                                                              \
-  X(rtcNewDevice) X(rtcNewScene) X(rtcNewGeometry) X(rtcSetNewGeometryBuffer)                    \
-  X(rtcCommitGeometry) X(rtcAttachGeometry) X(rtcReleaseGeometry) X(rtcCommitScene)              \
-  X(rtcReleaseScene) X(rtcReleaseDevice) X(rtcIntersect1)
-#define TESSREF_EMBREE_MEMBER(name) decltype(&::name) name = nullptr;
-  TESSREF_EMBREE_FUNCTIONS(TESSREF_EMBREE_MEMBER)
-#undef TESSREF_EMBREE_MEMBER
-
-  static const EmbreeApi& get() {
-    static const EmbreeApi api = [] {
-      EmbreeApi a;
-      void* lib = dlsym(RTLD_DEFAULT, "rtcNewDevice") ? RTLD_DEFAULT
-                                                      : dlopen("libembree3.so.3", RTLD_NOW);
-      if (!lib) throw std::runtime_error(std::string("Embree 3 not found: ") + dlerror());
-#define TESSREF_EMBREE_LOOKUP(name)                                                  \
-  a.name = reinterpret_cast<decltype(&::name)>(dlsym(lib, #name));                  \
-  if (!a.name) throw std::runtime_error("Embree 3: no " #name);
-      TESSREF_EMBREE_FUNCTIONS(TESSREF_EMBREE_LOOKUP)
-#undef TESSREF_EMBREE_LOOKUP
-      return a;
-    }();
-    return api;
-  }
-#undef TESSREF_EMBREE_FUNCTIONS
-};
-
 class EmbreeOracle {
  public:
   explicit EmbreeOracle(const std::vector<raster::SetupTriangle>& tris) {
-    device_ = rtc_.rtcNewDevice(nullptr);
-    scene_ = rtc_.rtcNewScene(device_);
-    RTCGeometry geom = rtc_.rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* v = static_cast<float*>(rtc_.rtcSetNewGeometryBuffer(
+    device_ = rtcNewDevice(nullptr);
+    scene_ = rtcNewScene(device_);
+    RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
         geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * tris.size()));
-    auto* idx = static_cast<unsigned*>(rtc_.rtcSetNewGeometryBuffer(
+    auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
         geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), tris.size()));
     for (std::size_t t = 0; t < tris.size(); ++t)
       for (int k = 0; k < 3; ++k) {
@@ -110,14 +80,14 @@ class EmbreeOracle {
                                                     tris[t].y[k] / 256.0));
         idx[3 * t + k] = unsigned(3 * t + k);
       }
-    rtc_.rtcCommitGeometry(geom);
-    rtc_.rtcAttachGeometry(scene_, geom);
-    rtc_.rtcReleaseGeometry(geom);
-    rtc_.rtcCommitScene(scene_);
+    rtcCommitGeometry(geom);
+    rtcAttachGeometry(scene_, geom);
+    rtcReleaseGeometry(geom);
+    rtcCommitScene(scene_);
   }
   ~EmbreeOracle() {
-    rtc_.rtcReleaseScene(scene_);
-    rtc_.rtcReleaseDevice(device_);
+    rtcReleaseScene(scene_);
+    rtcReleaseDevice(device_);
   }
   struct Hit {
     float t;        // +inf on a miss
@@ -138,14 +108,13 @@ class EmbreeOracle {
     rh.ray.tfar = std::numeric_limits<float>::infinity();
     rh.ray.mask = ~0u;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rtc_.rtcIntersect1(scene_, &ctx, &rh);
+    rtcIntersect1(scene_, &ctx, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID)
       return {std::numeric_limits<float>::infinity(), 0};
     return {rh.ray.tfar, rh.hit.primID};
   }
 
  private:
-  const EmbreeApi& rtc_ = EmbreeApi::get();
   RTCDevice device_;
   RTCScene scene_;
 };
