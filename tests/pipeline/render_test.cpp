@@ -68,7 +68,7 @@ TEST(Render, TessellatedPngIsIdenticalForAnyThreadCount) {
 
 TEST(Render, BatchSizeDoesNotChangeTheImage) {
   const Scene scene = load_scene("", {"image.width=256", "image.height=256", "mesh.type=icosphere",
-                                      "mesh.icosphere.refinements=3"});
+                                      "mesh.icosphere.refinements=3", "tessellation.enabled=false"});
   const RenderResult whole = render(scene, 2);
   const RenderResult pieces = render(scene, 2, 7);  // 1280 triangles in 183 batches
   EXPECT_EQ(whole.stats.triangles_in, 1280u);
@@ -82,10 +82,14 @@ TEST(Render, StatsOfTheDefaultScene) {
   const RenderResult r = render(load_scene(""), 2);
   EXPECT_EQ(r.stats.triangles_in, 256u);  // the 16 x 8 torus
   EXPECT_EQ(r.stats.vertices_shaded, 128u);
-  EXPECT_EQ(r.stats.triangles_generated, 256u);
+  // PN at level 12, fractional_odd: 253 triangles per patch (`tessref tpg --spacing
+  // fractional_odd --outer 12,12,12 --inner 12`), none discarded.
+  EXPECT_EQ(r.stats.tess.patches_in, 256u);
+  EXPECT_EQ(r.stats.tess.patches_discarded, 0u);
+  EXPECT_EQ(r.stats.triangles_generated, 256u * 253u);
   // Back faces culled: about half the torus faces the camera.
-  EXPECT_GT(r.stats.raster.triangles_rasterized, 100u);
-  EXPECT_LT(r.stats.raster.triangles_rasterized, 160u);
+  EXPECT_GT(r.stats.raster.triangles_rasterized, 256u * 253u * 4 / 10);
+  EXPECT_LT(r.stats.raster.triangles_rasterized, 256u * 253u * 6 / 10);
   // Every covered pixel shaded exactly once (closed mesh, culled back faces, front faces of a
   // torus seen from outside may overlap only at the inner rim).
   std::size_t covered = 0;
@@ -176,7 +180,8 @@ struct VaryingsProbe final : FragmentProgram {
 TEST(Render, VaryingsAreInterpolatedConsistently) {
   const Scene scene = load_scene("", {"image.width=128", "image.height=96", "mesh.type=icosphere",
                                       "mesh.icosphere.refinements=1", "mesh.icosphere.radius=100",
-                                      "transform.scale=0.01", "transform.rotate_deg=10,20,30"});
+                                      "transform.scale=0.01", "transform.rotate_deg=10,20,30",
+                                      "tessellation.enabled=false"});
   std::vector<std::string> warnings;
   const Mesh mesh = build_mesh(scene.mesh, warnings);
   const glm::mat4 view_projection =
