@@ -10,7 +10,6 @@
 //             or mesh upload (done once).
 // The closing table gives both frame times and the ratio (llvmpipe / tessref).
 #include <benchmark/benchmark.h>
-#include <malloc.h>
 
 #include <array>
 #include <cstdio>
@@ -23,8 +22,10 @@
 #include "pipeline/mesh_source.h"
 #include "pipeline/render.h"
 #include "pipeline/scene_loader.h"
+#include "bench_gl.h"
 #ifdef TESSREF_HAVE_GLREF
 #include "glref/gl_context.h"
+#include "glref/malloc_tuning.h"
 #include "glref/scene_renderer.h"
 #endif
 
@@ -78,20 +79,9 @@ void BM_TessrefFrame(benchmark::State& state) {
 BENCHMARK(BM_TessrefFrame)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 #ifdef TESSREF_HAVE_GLREF
-glref::GlContext* context() {
-  static std::unique_ptr<glref::GlContext> ctx = [] {
-    try {
-      return std::make_unique<glref::GlContext>();
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "llvmpipe baseline unavailable: %s\n", e.what());
-      return std::unique_ptr<glref::GlContext>();
-    }
-  }();
-  return ctx.get();
-}
 
 void BM_LlvmpipeFrame(benchmark::State& state) {
-  glref::GlContext* ctx = context();
+  glref::GlContext* ctx = bench::gl_context();
   if (!ctx) {
     state.SkipWithError("no GL context");
     return;
@@ -166,10 +156,9 @@ class RatioReporter : public benchmark::ConsoleReporter {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // As glref/README.md advises: llvmpipe's multi-megabyte per-draw buffers stay on the heap.
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);
-  mallopt(M_TRIM_THRESHOLD, 256 << 20);
-  mallopt(M_TOP_PAD, 64 << 20);
+#ifdef TESSREF_HAVE_GLREF
+  glref::keep_draw_buffers_off_mmap();
+#endif
   benchmark::Initialize(&argc, argv);
   RatioReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);

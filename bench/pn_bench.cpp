@@ -13,7 +13,6 @@
 //             query, nothing captured (llvmpipe still runs VS/TCS/TPG/TES on one thread);
 //             the flat twins under the same conditions give llvmpipe's floor without PN's TES.
 #include <benchmark/benchmark.h>
-#include <malloc.h>
 
 #include <cstdio>
 #include <map>
@@ -25,10 +24,12 @@
 #include "stages/programs/transform.h"
 #include "stages/schemes/pn_triangles.h"
 #include "stages/tess_stage.h"
+#include "bench_gl.h"
 #ifdef TESSREF_HAVE_GLREF
 #include <epoxy/gl.h>
 
 #include "glref/gl_context.h"
+#include "glref/malloc_tuning.h"
 #include "glref/patch_mesh.h"
 #include "glref/pn_twins.h"
 #include "glref/tess_capture.h"
@@ -104,17 +105,6 @@ void BM_TessrefPn(benchmark::State& state) {
 BENCHMARK(BM_TessrefPn)->ArgsProduct({{12, 64}, {256, 16}})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 #ifdef TESSREF_HAVE_GLREF
-glref::GlContext* context() {
-  static std::unique_ptr<glref::GlContext> ctx = [] {
-    try {
-      return std::make_unique<glref::GlContext>();
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "llvmpipe baseline unavailable: %s\n", e.what());
-      return std::unique_ptr<glref::GlContext>();
-    }
-  }();
-  return ctx.get();
-}
 
 struct Llvmpipe {
   std::unique_ptr<glref::PatchMesh> patch_mesh;
@@ -138,7 +128,7 @@ struct Llvmpipe {
 };
 
 void BM_LlvmpipePnCapture(benchmark::State& state) {
-  glref::GlContext* ctx = context();
+  glref::GlContext* ctx = bench::gl_context();
   if (!ctx) return state.SkipWithError("no GL context");
   const float level = float(state.range(0));
   Llvmpipe gl(*ctx, level, glref::TwinCapture::PositionNormal);
@@ -159,7 +149,7 @@ BENCHMARK(BM_LlvmpipePnCapture)->Arg(12)->Arg(64)->Unit(benchmark::kMillisecond)
 // draws and checks the triangle count against tessref's. pn = false runs the flat twins on
 // the same patches: the floor set by llvmpipe's VS/TCS/tessellator/assembly, without PN's TES.
 void llvmpipe_discard(benchmark::State& state, bool pn) {
-  glref::GlContext* ctx = context();
+  glref::GlContext* ctx = bench::gl_context();
   if (!ctx) return state.SkipWithError("no GL context");
   const float level = float(state.range(0));
   Llvmpipe gl(*ctx, level, glref::TwinCapture::None, pn);
@@ -240,11 +230,9 @@ class RatioReporter : public benchmark::ConsoleReporter {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // llvmpipe's multi-megabyte per-draw buffers must not be mmapped and unmapped every draw
-  // (glref/README.md, shared notes llvmpipe.md): pin glibc's thresholds before anything allocates.
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);
-  mallopt(M_TRIM_THRESHOLD, 256 << 20);
-  mallopt(M_TOP_PAD, 64 << 20);
+#ifdef TESSREF_HAVE_GLREF
+  glref::keep_draw_buffers_off_mmap();
+#endif
   benchmark::Initialize(&argc, argv);
   RatioReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);

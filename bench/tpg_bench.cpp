@@ -9,8 +9,10 @@
 #include <string>
 
 #include "stages/tpg.h"
+#include "bench_gl.h"
 #ifdef TESSREF_HAVE_GLREF
 #include "glref/gl_context.h"
+#include "glref/malloc_tuning.h"
 #include "glref/tess_capture.h"
 #endif
 
@@ -42,20 +44,9 @@ void BM_TessrefTpg(benchmark::State& state) {
 BENCHMARK(BM_TessrefTpg)->Arg(8)->Arg(16)->Arg(64)->Unit(benchmark::kMicrosecond);
 
 #ifdef TESSREF_HAVE_GLREF
-glref::GlContext* context() {
-  static std::unique_ptr<glref::GlContext> ctx = [] {
-    try {
-      return std::make_unique<glref::GlContext>();
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "llvmpipe baseline unavailable: %s\n", e.what());
-      return std::unique_ptr<glref::GlContext>();
-    }
-  }();
-  return ctx.get();
-}
 
 void BM_LlvmpipeTpg(benchmark::State& state) {
-  glref::GlContext* ctx = context();
+  glref::GlContext* ctx = bench::gl_context();
   if (!ctx) {
     state.SkipWithError("no GL context");
     return;
@@ -109,6 +100,9 @@ class RatioReporter : public benchmark::ConsoleReporter {
 }  // namespace
 
 int main(int argc, char** argv) {
+#ifdef TESSREF_HAVE_GLREF
+  glref::keep_draw_buffers_off_mmap();
+#endif
   benchmark::Initialize(&argc, argv);
   RatioReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);

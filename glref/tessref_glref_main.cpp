@@ -1,6 +1,5 @@
 // tessref-glref: runs the GL tessellation pipeline on a real driver (llvmpipe through EGL
 // surfaceless, or an EGL device) and prints what it produced, in tessref's own formats.
-#include <malloc.h>
 
 #include <cstdio>
 #include <exception>
@@ -11,6 +10,7 @@
 
 #include "common/error.h"
 #include "glref/gl_context.h"
+#include "glref/malloc_tuning.h"
 #include "glref/gl_error.h"
 #include "glref/levels_file.h"
 #include "glref/tess_capture.h"
@@ -68,12 +68,7 @@ void write_all(const std::string& s) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // llvmpipe and the captures allocate and free multi-megabyte buffers per draw; with glibc's
-  // default thresholds each is an mmap/munmap pair (measured: level-64 sweeps 3.5x slower, system
-  // time 4x). Keep them on the heap.
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);
-  mallopt(M_TRIM_THRESHOLD, 256 << 20);
-  mallopt(M_TOP_PAD, 64 << 20);
+  tessref::glref::keep_draw_buffers_off_mmap();
   CLI::App app{"tessref-glref: the real-GL reference runner (EGL + OpenGL 4.5 core)"};
   app.require_subcommand(1);
   std::string platform_name = "auto";

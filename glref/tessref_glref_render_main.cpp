@@ -1,6 +1,5 @@
 // tessref-glref-render: a tessref scene rendered by the GL driver with tessref's GLSL twins, for
 // comparison with `tessref render` (same scene loading, same --set overrides, same image writer).
-#include <malloc.h>
 
 #include <chrono>
 #include <cstdio>
@@ -11,6 +10,7 @@
 
 #include "common/error.h"
 #include "glref/gl_context.h"
+#include "glref/malloc_tuning.h"
 #include "glref/gl_error.h"
 #include "glref/scene_renderer.h"
 #include "pipeline/image_compare.h"
@@ -87,10 +87,7 @@ int run(const Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // llvmpipe's per-draw buffers stay on the heap (glref/README.md: mmap per draw is 3x slower).
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);
-  mallopt(M_TRIM_THRESHOLD, 256 << 20);
-  mallopt(M_TOP_PAD, 64 << 20);
+  tessref::glref::keep_draw_buffers_off_mmap();
   CLI::App app{"tessref-glref-render: a tessref scene on the GL driver, with tessref's GLSL twins"};
   Options o;
   app.add_option("scene", o.scene, "scene file (as `tessref render`); without one, the default scene");
