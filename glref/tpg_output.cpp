@@ -2,6 +2,9 @@
 
 #include <cstdint>
 #include <cstring>
+#include <sstream>
+
+#include "stages/tpg_stream.h"
 
 namespace tessref::glref {
 
@@ -23,23 +26,10 @@ void append_hex(std::string& out, float v) {
 }
 
 std::string format_stream(TessDomain domain, const std::vector<glm::vec3>& coords, CoordFormat format) {
-  const int n = printed_components(domain);
-  std::string out;
-  out.reserve(coords.size() * (format == CoordFormat::Hex ? 27 : 40));
-  for (const glm::vec3& c : coords) {
-    for (int k = 0; k < n; ++k) {
-      if (k) out += ' ';
-      if (format == CoordFormat::Hex) {
-        append_hex(out, c[k]);
-      } else {
-        char buf[32];
-        std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(c[k]));
-        out += buf;
-      }
-    }
-    out += '\n';
-  }
-  return out;
+  // The same writer as `tessref tpg`, so the two programs' outputs agree by construction.
+  std::ostringstream out;
+  write_stream(out, domain, coords, format == CoordFormat::Hex ? StreamFormat::Hex : StreamFormat::Text);
+  return out.str();
 }
 
 void append_sweep_line(std::string& out, TessDomain domain, std::size_t patch, const std::vector<glm::vec3>& coords) {
