@@ -19,8 +19,10 @@ case "${1:-}" in
     ldd build/glref/tessref-tpg-reference | awk '/=> \//{print $3}' |
       grep -vE '/(libc|libm|libstdc\+\+|libgcc_s|ld-linux|libEGL|libGL|libGLX|libGLdispatch|libOpenGL)[.-]' |
       xargs -r -I{} cp -L {} "$bundle/lib/"
-    (cd "$bundle/debs" && apt-get download libegl1 libglvnd0 libopengl0 libgl1 libglx0 >/dev/null)
-    grep -qx "/$bundle/" .git/info/exclude 2>/dev/null || echo "/$bundle/" >> .git/info/exclude
+    (cd "$bundle/debs" && apt-get download libegl1 libglvnd0 libopengl0 libgl1 libglx0 >/dev/null 2>&1)
+    exclude=$(git rev-parse --git-path info/exclude)
+    mkdir -p "$(dirname "$exclude")"
+    grep -qx "/$bundle/" "$exclude" 2>/dev/null || echo "/$bundle/" >> "$exclude"
     du -sh "$bundle"
     ;;
   run)
