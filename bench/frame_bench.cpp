@@ -22,10 +22,9 @@
 #include "pipeline/mesh_source.h"
 #include "pipeline/render.h"
 #include "pipeline/scene_loader.h"
-#include "bench_gl.h"
+#include "bench_common.h"
 #ifdef TESSREF_HAVE_GLREF
 #include "glref/gl_context.h"
-#include "glref/malloc_tuning.h"
 #include "glref/scene_renderer.h"
 #endif
 
@@ -155,14 +154,4 @@ class RatioReporter : public benchmark::ConsoleReporter {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-#ifdef TESSREF_HAVE_GLREF
-  glref::keep_draw_buffers_off_mmap();
-#endif
-  benchmark::Initialize(&argc, argv);
-  RatioReporter reporter;
-  benchmark::RunSpecifiedBenchmarks(&reporter);
-  reporter.print_ratios();
-  benchmark::Shutdown();
-  return 0;
-}
+int main(int argc, char** argv) { return tessref::bench::run_benchmarks<RatioReporter>(argc, argv); }

@@ -24,12 +24,11 @@
 #include "stages/programs/transform.h"
 #include "stages/schemes/pn_triangles.h"
 #include "stages/tess_stage.h"
-#include "bench_gl.h"
+#include "bench_common.h"
 #ifdef TESSREF_HAVE_GLREF
 #include <epoxy/gl.h>
 
 #include "glref/gl_context.h"
-#include "glref/malloc_tuning.h"
 #include "glref/patch_mesh.h"
 #include "glref/pn_twins.h"
 #include "glref/tess_capture.h"
@@ -229,14 +228,4 @@ class RatioReporter : public benchmark::ConsoleReporter {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-#ifdef TESSREF_HAVE_GLREF
-  glref::keep_draw_buffers_off_mmap();
-#endif
-  benchmark::Initialize(&argc, argv);
-  RatioReporter reporter;
-  benchmark::RunSpecifiedBenchmarks(&reporter);
-  reporter.print_ratios();
-  benchmark::Shutdown();
-  return 0;
-}
+int main(int argc, char** argv) { return tessref::bench::run_benchmarks<RatioReporter>(argc, argv); }

@@ -9,10 +9,9 @@
 #include <string>
 
 #include "stages/tpg.h"
-#include "bench_gl.h"
+#include "bench_common.h"
 #ifdef TESSREF_HAVE_GLREF
 #include "glref/gl_context.h"
-#include "glref/malloc_tuning.h"
 #include "glref/tess_capture.h"
 #endif
 
@@ -99,14 +98,4 @@ class RatioReporter : public benchmark::ConsoleReporter {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-#ifdef TESSREF_HAVE_GLREF
-  glref::keep_draw_buffers_off_mmap();
-#endif
-  benchmark::Initialize(&argc, argv);
-  RatioReporter reporter;
-  benchmark::RunSpecifiedBenchmarks(&reporter);
-  reporter.print_ratios();
-  benchmark::Shutdown();
-  return 0;
-}
+int main(int argc, char** argv) { return tessref::bench::run_benchmarks<RatioReporter>(argc, argv); }
