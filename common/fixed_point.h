@@ -17,7 +17,6 @@ inline constexpr std::int32_t kSubpixelOne = 1 << kSubpixelBits;
 // |x| < 2^(kGuardBits) pixels. Triangles are clipped at the viewport sides (raster/clip.cpp, as
 // llvmpipe does), so window coordinates stay within [0, W] x [0, H] up to float rounding.
 inline constexpr int kGuardBits = 14;
-inline constexpr float kGuardBandPixels = float(1 << kGuardBits);
 
 // Snap a window coordinate to 24.8 with round-to-nearest (ties to even), as llvmpipe's
 // _mm_cvtps_epi32. Clipping keeps |window_coord| below 2^(kGuardBits + 1), so the result fits.
