@@ -3,6 +3,10 @@
 // none can be made) and a main that prints each benchmark's ratio table after the runs.
 #include <benchmark/benchmark.h>
 
+#include <map>
+#include <string>
+#include <vector>
+
 #ifdef TESSREF_HAVE_GLREF
 #include <cstdio>
 #include <memory>
@@ -26,6 +30,30 @@ inline glref::GlContext* gl_context() {
   return ctx.get();
 }
 #endif
+
+// Prints as the console reporter does and keeps one rate counter of every successful run, by
+// benchmark name, for the ratio table a benchmark prints at the end.
+class RateReporter : public benchmark::ConsoleReporter {
+ public:
+  explicit RateReporter(std::string counter) : counter_(std::move(counter)) {}
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& r : runs) {
+      if (r.error_occurred) continue;
+      const auto it = r.counters.find(counter_);
+      if (it != r.counters.end()) rates_[r.benchmark_name()] = it->second.value;
+    }
+  }
+  // The counter of benchmark `name` ("BM_X/64"), 0 if it did not run.
+  double rate(const std::string& name) const {
+    const auto it = rates_.find(name);
+    return it == rates_.end() ? 0.0 : it->second;
+  }
+
+ private:
+  std::string counter_;
+  std::map<std::string, double> rates_;
+};
 
 // Reporter: a benchmark::ConsoleReporter with print_ratios(), called after all runs.
 template <typename Reporter>

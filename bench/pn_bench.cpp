@@ -184,21 +184,10 @@ BENCHMARK(BM_LlvmpipePnDiscard)->Arg(12)->Arg(64)->Unit(benchmark::kMillisecond)
 #endif
 
 // Collects vertices_per_s per (benchmark, level) to print the ratios at the end.
-class RatioReporter : public benchmark::ConsoleReporter {
+class RatioReporter : public bench::RateReporter {
  public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    ConsoleReporter::ReportRuns(runs);
-    for (const Run& r : runs) {
-      if (r.error_occurred) continue;
-      const auto it = r.counters.find("vertices_per_s");
-      if (it != r.counters.end()) rates_[r.benchmark_name()] = it->second.value;
-    }
-  }
+  RatioReporter() : RateReporter("vertices_per_s") {}
   void print_ratios() const {
-    auto rate = [this](const std::string& name) {
-      const auto it = rates_.find(name);
-      return it == rates_.end() ? 0.0 : it->second;
-    };
     std::printf("\nPN quadratic, fractional_odd, icosphere %zu triangles; Mvertices/s (TES invocations)\n",
                 mesh().indices.size() / 3);
     std::printf("level  chunk  tessref  llvmpipe capture  ratio  llvmpipe discard  ratio\n");
@@ -221,9 +210,6 @@ class RatioReporter : public benchmark::ConsoleReporter {
       if (f > 0.0) std::printf("level %d, llvmpipe flat twins, discard (no PN): %.2f Mvertices/s\n", level, f / 1e6);
     }
   }
-
- private:
-  std::map<std::string, double> rates_;
 };
 
 }  // namespace

@@ -67,33 +67,22 @@ BENCHMARK(BM_LlvmpipeTpg)->Arg(8)->Arg(16)->Arg(64)->Unit(benchmark::kMillisecon
 #endif
 
 // Collects points_per_s per (implementation, level) to print the ratios at the end.
-class RatioReporter : public benchmark::ConsoleReporter {
+class RatioReporter : public bench::RateReporter {
  public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    ConsoleReporter::ReportRuns(runs);
-    for (const Run& r : runs) {
-      if (r.error_occurred) continue;
-      const auto it = r.counters.find("points_per_s");
-      if (it != r.counters.end()) rates_[r.benchmark_name()] = it->second.value;
-    }
-  }
+  RatioReporter() : RateReporter("points_per_s") {}
   void print_ratios() const {
     std::printf("\nlevel  tessref Mpoints/s  llvmpipe Mpoints/s  ratio\n");
     for (int level : {8, 16, 64}) {
-      const auto t = rates_.find("BM_TessrefTpg/" + std::to_string(level));
-      const auto l = rates_.find("BM_LlvmpipeTpg/" + std::to_string(level));
-      if (t == rates_.end()) continue;
-      if (l == rates_.end()) {
-        std::printf("%5d  %17.1f  %18s  %5s\n", level, t->second / 1e6, "n/a", "n/a");
+      const double t = rate("BM_TessrefTpg/" + std::to_string(level));
+      const double l = rate("BM_LlvmpipeTpg/" + std::to_string(level));
+      if (t == 0.0) continue;
+      if (l == 0.0) {
+        std::printf("%5d  %17.1f  %18s  %5s\n", level, t / 1e6, "n/a", "n/a");
         continue;
       }
-      std::printf("%5d  %17.1f  %18.1f  %5.1fx\n", level, t->second / 1e6, l->second / 1e6,
-                  t->second / l->second);
+      std::printf("%5d  %17.1f  %18.1f  %5.1fx\n", level, t / 1e6, l / 1e6, t / l);
     }
   }
-
- private:
-  std::map<std::string, double> rates_;
 };
 
 }  // namespace
