@@ -6,6 +6,7 @@
 #include <string>
 
 #include "glref/gl_context.h"
+#include "glref/feedback_draw.h"
 #include "glref/gl_error.h"
 #include "glref/gl_program.h"
 
@@ -124,20 +125,9 @@ std::vector<std::uint32_t> PatchMesh::capture(const Program& program, int words_
                      GL_DYNAMIC_COPY);
       }
       glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, feedback_buffer_, 0, static_cast<GLsizeiptr>(bytes));
-      glBeginQuery(GL_PRIMITIVES_GENERATED, query_generated_);
-      glBeginQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, query_written_);
-      glBeginTransformFeedback(primitive);
-      draw_range(d, base_location);
-      glEndTransformFeedback();
-      glEndQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
-      glEndQuery(GL_PRIMITIVES_GENERATED);
-      check_gl("PatchMesh::capture: drawing");
-      GLuint64 generated = 0, written = 0;
-      glGetQueryObjectui64v(query_generated_, GL_QUERY_RESULT, &generated);
-      glGetQueryObjectui64v(query_written_, GL_QUERY_RESULT, &written);
-      if (written != generated)
-        throw GlError("PatchMesh::capture: " + std::to_string(written) + " of " + std::to_string(generated) +
-                      " primitives captured (point bounds too small?)");
+      const std::uint64_t written = draw_with_feedback(
+          primitive, query_generated_, query_written_, [&] { draw_range(d, base_location); },
+          "PatchMesh::capture", "point bounds too small?");
       const std::size_t words = static_cast<std::size_t>(written) * vpp * words_per_vertex;
       const std::size_t at = out.size();
       out.resize(at + words);

@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "glref/gl_context.h"
+#include "glref/feedback_draw.h"
 #include "glref/gl_error.h"
 #include "glref/shader_source.h"
 
@@ -173,22 +174,12 @@ void TessCapture::capture_slice(const TessLayout& layout, const TessLevels* leve
                         static_cast<GLsizeiptr>(capacity_vertices * sizeof(FeedbackVertex)));
       glUniform1i(base_location, static_cast<GLint>(first));
 
-      glBeginQuery(GL_PRIMITIVES_GENERATED, query_generated_);
-      glBeginQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, query_written_);
-      glBeginTransformFeedback(mode);
-      glDrawArrays(GL_PATCHES, static_cast<GLint>(first), static_cast<GLsizei>(end - first));
-      glEndTransformFeedback();
-      glEndQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
-      glEndQuery(GL_PRIMITIVES_GENERATED);
-      check_gl("TessCapture: drawing patches");
+      const std::uint64_t written = draw_with_feedback(
+          mode, query_generated_, query_written_,
+          [&] { glDrawArrays(GL_PATCHES, static_cast<GLint>(first), static_cast<GLsizei>(end - first)); },
+          "TessCapture", "patches " + std::to_string(first) + ".." + std::to_string(end - 1) +
+                             ": the vertex bound is wrong");
 
-      GLuint64 generated = 0, written = 0;
-      glGetQueryObjectui64v(query_generated_, GL_QUERY_RESULT, &generated);
-      glGetQueryObjectui64v(query_written_, GL_QUERY_RESULT, &written);
-      if (written != generated)
-        throw GlError("TessCapture: transform feedback captured " + std::to_string(written) + " of " +
-                      std::to_string(generated) + " primitives (patches " + std::to_string(first) +
-                      ".." + std::to_string(end - 1) + "): the vertex bound is wrong");
       const std::size_t nv = static_cast<std::size_t>(written) * vpp;
       records.resize(nv);
       if (nv)
