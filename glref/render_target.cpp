@@ -88,26 +88,33 @@ void RenderTarget::check_attachment(int attachment) const {
     throw GlError("RenderTarget: no color attachment " + std::to_string(attachment));
 }
 
+namespace {
+
+// Reads color attachment `attachment` of the bound FBO as RGBA of `type`, rows bottom first.
+template <typename Pixel>
+std::vector<Pixel> read_color(int width, int height, int attachment, GLenum type, const char* what) {
+  std::vector<Pixel> out(static_cast<std::size_t>(width) * height);
+  glReadBuffer(GL_COLOR_ATTACHMENT0 + attachment);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, type, out.data());
+  check_gl(what);
+  return out;
+}
+
+}  // namespace
+
 std::vector<glm::u8vec4> RenderTarget::read_rgba8(int attachment) {
   check_attachment(attachment);
   bind();
-  std::vector<glm::u8vec4> out(static_cast<std::size_t>(desc_.width) * desc_.height);
-  glReadBuffer(GL_COLOR_ATTACHMENT0 + attachment);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, desc_.width, desc_.height, GL_RGBA, GL_UNSIGNED_BYTE, out.data());
-  check_gl("RenderTarget::read_rgba8");
-  return out;
+  return read_color<glm::u8vec4>(desc_.width, desc_.height, attachment, GL_UNSIGNED_BYTE,
+                                 "RenderTarget::read_rgba8");
 }
 
 std::vector<glm::vec4> RenderTarget::read_rgba_float(int attachment) {
   check_attachment(attachment);
   bind();
-  std::vector<glm::vec4> out(static_cast<std::size_t>(desc_.width) * desc_.height);
-  glReadBuffer(GL_COLOR_ATTACHMENT0 + attachment);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, desc_.width, desc_.height, GL_RGBA, GL_FLOAT, out.data());
-  check_gl("RenderTarget::read_rgba_float");
-  return out;
+  return read_color<glm::vec4>(desc_.width, desc_.height, attachment, GL_FLOAT,
+                               "RenderTarget::read_rgba_float");
 }
 
 std::vector<float> RenderTarget::read_depth() {
