@@ -96,7 +96,12 @@ void BM_TessrefPn(benchmark::State& state) {
   const Tessref t(float(state.range(0)), std::size_t(state.range(1)));
   std::uint64_t points = 0;
   std::size_t triangles = 0;
-  for (auto _ : state) points += t.run(triangles).domain_points;
+  TessStats last;
+  for (auto _ : state) {
+    last = t.run(triangles);
+    points += last.domain_points;
+  }
+  bench::set_work_counters(state, bench::work::pn_tessellation(last.domain_points, last.triangles_out));
   state.counters["vertices_per_s"] = benchmark::Counter(double(points), benchmark::Counter::kIsRate);
   state.counters["triangles_per_s"] = benchmark::Counter(double(triangles), benchmark::Counter::kIsRate);
   state.counters["threads"] = parallel().threads();
@@ -131,7 +136,9 @@ void BM_LlvmpipePnCapture(benchmark::State& state) {
   if (!ctx) return state.SkipWithError("no GL context");
   const float level = float(state.range(0));
   Llvmpipe gl(*ctx, level, glref::TwinCapture::PositionNormal);
-  const std::uint64_t per_draw = reference_stats(level).domain_points;
+  const TessStats expected = reference_stats(level);
+  const std::uint64_t per_draw = expected.domain_points;
+  bench::set_work_counters(state, bench::work::pn_tessellation(per_draw, expected.triangles_out));
   std::uint64_t points = 0, captured = 0;
   for (auto _ : state) {
     const std::vector<std::uint32_t> words = gl.patch_mesh->capture(gl.program, 6, GL_TRIANGLES, gl.bounds);
@@ -154,6 +161,7 @@ void llvmpipe_discard(benchmark::State& state, bool pn) {
   Llvmpipe gl(*ctx, level, glref::TwinCapture::None, pn);
   const TessStats expected = reference_stats(level);
   const std::uint64_t per_draw = expected.domain_points;
+  bench::set_work_counters(state, bench::work::pn_tessellation(per_draw, expected.triangles_out));
   unsigned query = 0;
   glGenQueries(1, &query);
   std::uint64_t points = 0, triangles = 0;
