@@ -107,6 +107,7 @@ struct Runs {
 
 struct Limits {
   int threads = 1;
+  bool disturbed = false;  // an all-thread figure was floored at the one-thread one
   std::string fma_kind;
   double copy[2]{}, write[2]{}, cache_write[2]{}, fma[2]{};
   void read(const std::string& path) {
@@ -115,6 +116,7 @@ struct Limits {
     const json j = json::parse(in);
     threads = j.value("threads", 1);
     fma_kind = j.value("fma_kind", "");
+    disturbed = j.value("all_threads_disturbed", false);
     for (int i = 0; i < 2; ++i) {
       copy[i] = j["copy_gbs"][i].get<double>();
       write[i] = j["write_gbs"][i].get<double>();
@@ -308,7 +310,11 @@ int main(int argc, char** argv) {
       }
 
   if (!limits_path.empty()) {
-    md << "\nMachine limits (`machine_limits`, best of its trials):\n\n";
+    md << "\nMachine limits (`machine_limits`, best of its trials"
+       << (limits.disturbed ? "; where the all-thread run came out below one thread's, other work was "
+                              "sharing the cores and the one-thread figure is given"
+                            : "")
+       << "):\n\n";
     md << "| limit | 1 thread | " << all << " |\n| --- | --- | --- |\n";
     md << "| memory copy GB/s (memcpy, read + write, arrays >> caches) | " << fmt("%.1f", limits.copy[0])
        << " | " << fmt("%.1f", limits.copy[1]) << " |\n";

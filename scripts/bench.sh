@@ -58,7 +58,7 @@ export GLIBC_TUNABLES=glibc.malloc.mmap_threshold=33554432:glibc.malloc.trim_thr
 if (( quick )); then
   r_frame=3 r_heavy=1 r_pn=3 r_tpg=3 r_raster=3 limits_flag=--quick
 else
-  r_frame=7 r_heavy=3 r_pn=5 r_tpg=5 r_raster=5 limits_flag=
+  r_frame=9 r_heavy=3 r_pn=7 r_tpg=7 r_raster=7 limits_flag=
 fi
 
 rm -rf "$results"
