@@ -11,7 +11,7 @@
 #   scripts/bench.sh [--quick] [--no-build]
 #
 # Writes the Markdown table to build-bench/bench.md and stdout; the benchmarks' logs and JSON go to
-# build-bench/bench-results/. --quick runs fewer repetitions (a few minutes less; figures noisier).
+# build-bench/bench-results/. --quick runs fewer repetitions (about half the time; figures noisier).
 # Exit status: 0 done, 1 a benchmark program failed, 2 bad usage or build failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
