@@ -1,12 +1,16 @@
 #include "pipeline/image_output.h"
 
+#include <dlfcn.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <new>
 #include <string>
-
-#include <OpenImageIO/imageio.h>
+#include <system_error>
 
 #include "common/error.h"
+#include "pipeline/image_io_module.h"
 
 namespace tessref {
 namespace {
@@ -17,21 +21,119 @@ std::string lower_extension(const std::filesystem::path& path) {
   return ext;
 }
 
+// The image I/O module (see image_io_module.h), loaded on first use. Where it is looked for:
+//   1. $TESSREF_IMAGE_IO_MODULE, when set (then nowhere else);
+//   2. <executable's folder>/TESSREF_IMAGE_IO_EXE_RELATIVE: the installed layout (bin/ and
+//      lib/tessref/), which the build tree mirrors (cli/ and lib/tessref/);
+//   3. the library search path (dlopen of the bare name): the executable's RUNPATH, which
+//      find_package(tessref) adds for consumers, and LD_LIBRARY_PATH;
+//   4. TESSREF_IMAGE_IO_BUILD_PATH: where this build tree put it;
+//   5. TESSREF_IMAGE_IO_INSTALL_PATH: where `cmake --install` puts it by default.
+struct ImageIoModule {
+  const tessref_image_io_api* api = nullptr;
+  std::string path;
+};
+
+// Checks the table of a dlopened module; InputError naming the path when it is not usable.
+ImageIoModule checked_module(void* handle, const std::string& path) {
+  // Never dlclosed: OpenImageIO keeps threads and static state for the life of the process.
+  auto entry = reinterpret_cast<tessref_image_io_entry_fn>(::dlsym(handle, TESSREF_IMAGE_IO_ENTRY));
+  const tessref_image_io_api* api = entry ? entry() : nullptr;
+  if (!api)
+    throw InputError("cannot load the image I/O module " + path + ": it has no " TESSREF_IMAGE_IO_ENTRY);
+  if (api->abi_version != TESSREF_IMAGE_IO_ABI_VERSION || api->size < sizeof(tessref_image_io_api))
+    throw InputError("cannot load the image I/O module " + path +
+                     ": it is from another version of tessref");
+  Dl_info info{};
+  if (::dladdr(reinterpret_cast<const void*>(entry), &info) && info.dli_fname && *info.dli_fname)
+    return {api, info.dli_fname};
+  return {api, path};
+}
+
+ImageIoModule open_module(const std::string& path) {
+  void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!handle) {
+    const char* why = ::dlerror();
+    throw InputError("cannot load the image I/O module " + path + ": " + (why ? why : "dlopen failed"));
+  }
+  return checked_module(handle, path);
+}
+
+bool is_file(const std::string& path) {
+  std::error_code ec;
+  return !path.empty() && std::filesystem::is_regular_file(path, ec);
+}
+
+ImageIoModule find_module() {
+  if (const char* env = std::getenv("TESSREF_IMAGE_IO_MODULE"); env && *env) {
+    if (!is_file(env))
+      throw InputError(std::string("cannot load the image I/O module ") + env +
+                       " (from TESSREF_IMAGE_IO_MODULE): no such file");
+    return open_module(env);
+  }
+  std::vector<std::string> tried;
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const std::string path = (exe.parent_path() / TESSREF_IMAGE_IO_EXE_RELATIVE /
+                              TESSREF_IMAGE_IO_MODULE_NAME).lexically_normal().string();
+    if (is_file(path)) return open_module(path);
+    tried.push_back(path);
+  }
+  if (void* handle = ::dlopen(TESSREF_IMAGE_IO_MODULE_NAME, RTLD_NOW | RTLD_LOCAL))
+    return checked_module(handle, TESSREF_IMAGE_IO_MODULE_NAME);
+  tried.push_back(std::string(TESSREF_IMAGE_IO_MODULE_NAME) + " on the library search path");
+  for (const std::string path : {TESSREF_IMAGE_IO_BUILD_PATH, TESSREF_IMAGE_IO_INSTALL_PATH}) {
+    if (is_file(path)) return open_module(path);
+    tried.push_back(path);
+  }
+  std::string list;
+  for (const std::string& t : tried) list += (list.empty() ? "" : ", ") + t;
+  throw InputError("cannot find the image I/O module (tried " + list +
+                   "); set TESSREF_IMAGE_IO_MODULE to the path of " TESSREF_IMAGE_IO_MODULE_NAME);
+}
+
+const ImageIoModule& loaded_module() {
+  static const ImageIoModule module = find_module();  // a throw leaves it for the next call
+  return module;
+}
+
+const tessref_image_io_api& image_io() { return *loaded_module().api; }
+
+void check(const char* error) {
+  if (error) throw InputError(error);
+}
+
 // Writes rows top first from a buffer that is already top first.
 void write_image(const std::filesystem::path& path, int width, int height, int channels,
-                 OIIO::TypeDesc type, const void* data,
-                 const std::vector<std::string>& channel_names = {}) {
-  const std::string name = path.string();
-  auto out = OIIO::ImageOutput::create(name);
-  if (!out)
-    throw InputError(name + ": cannot write this image format (" + OIIO::geterror() + ")");
-  OIIO::ImageSpec spec(width, height, channels, type);
-  if (!channel_names.empty()) spec.channelnames = channel_names;
-  if (!out->open(name, spec)) throw InputError(name + ": cannot open for writing: " + out->geterror());
-  bool ok = out->write_image(type, data);
-  ok = out->close() && ok;
-  if (!ok) throw InputError(name + ": cannot write: " + out->geterror());
+                 tessref_image_io_type type, const void* data,
+                 const std::vector<const char*>& channel_names = {}) {
+  check(image_io().write(path.string().c_str(), width, height, channels, type, data,
+                         channel_names.empty() ? nullptr : channel_names.data()));
 }
+
+// Reads into a vector of T resized by the module's alloc call.
+template <typename T>
+struct ReadTarget {
+  std::vector<T>* pixels;
+  int width = 0, height = 0, channels = 0;
+  static void* alloc(void* context, int width, int height, int channels) {
+    auto* self = static_cast<ReadTarget*>(context);
+    if (width < 0 || height < 0 || channels < 0) return nullptr;
+    try {
+      self->pixels->assign(std::size_t(width) * std::size_t(height) * std::size_t(channels), T{});
+    } catch (const std::bad_alloc&) {
+      return nullptr;
+    } catch (const std::length_error&) {
+      return nullptr;
+    }
+    self->width = width;
+    self->height = height;
+    self->channels = channels;
+    // Non-null even for an empty image (null means out of memory); nothing is written then.
+    return self->pixels->empty() ? static_cast<void*>(self) : self->pixels->data();
+  }
+};
 
 // Copies a bottom-first framebuffer attachment into a top-first float buffer.
 template <typename Get>
@@ -77,8 +179,7 @@ bool is_float_format(const std::filesystem::path& path) {
 
 void check_image_path(const std::filesystem::path& path, bool float_only, const char* what) {
   if (float_only) require_float_format(path, what);
-  if (!OIIO::ImageOutput::create(path.string()))
-    throw InputError(path.string() + ": cannot write this image format (" + OIIO::geterror() + ")");
+  check(image_io().check_writable(path.string().c_str()));
 }
 
 void write_color_image(const Framebuffer& fb, const std::filesystem::path& path) {
@@ -88,13 +189,13 @@ void write_color_image(const Framebuffer& fb, const std::filesystem::path& path)
   std::vector<float> rows = flipped(fb, channels, [&](std::size_t i, float* dst) {
     for (int k = 0; k < channels; ++k) dst[k] = fb.color[i][k];
   });
-  write_image(path, fb.width, fb.height, channels, OIIO::TypeDesc::FLOAT, rows.data());
+  write_image(path, fb.width, fb.height, channels, TESSREF_IMAGE_IO_FLOAT, rows.data());
 }
 
 void write_depth_image(const Framebuffer& fb, const std::filesystem::path& path) {
   require_float_format(path, "depth images");
   std::vector<float> rows = flipped(fb, 1, [&](std::size_t i, float* dst) { dst[0] = fb.depth[i]; });
-  write_image(path, fb.width, fb.height, 1, OIIO::TypeDesc::FLOAT, rows.data(), {"Z"});
+  write_image(path, fb.width, fb.height, 1, TESSREF_IMAGE_IO_FLOAT, rows.data(), {"Z"});
 }
 
 void write_normals_image(const Framebuffer& fb, const std::filesystem::path& path) {
@@ -102,39 +203,35 @@ void write_normals_image(const Framebuffer& fb, const std::filesystem::path& pat
   std::vector<float> rows = flipped(fb, 3, [&](std::size_t i, float* dst) {
     for (int k = 0; k < 3; ++k) dst[k] = fb.aux[i][k];
   });
-  write_image(path, fb.width, fb.height, 3, OIIO::TypeDesc::FLOAT, rows.data());
+  write_image(path, fb.width, fb.height, 3, TESSREF_IMAGE_IO_FLOAT, rows.data());
 }
 
 void write_rgb8_image(const Rgb8Image& image, const std::filesystem::path& path) {
-  write_image(path, image.width, image.height, 3, OIIO::TypeDesc::UINT8, image.pixels.data());
+  write_image(path, image.width, image.height, 3, TESSREF_IMAGE_IO_UINT8, image.pixels.data());
 }
 
 Rgb8Image read_rgb8_image(const std::filesystem::path& path) {
-  const std::string name = path.string();
-  auto in = OIIO::ImageInput::open(name);
-  if (!in) throw InputError(name + ": cannot read image: " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
-  Rgb8Image img{spec.width, spec.height,
-                std::vector<std::uint8_t>(std::size_t(spec.width) * spec.height * 3)};
+  Rgb8Image img;
+  ReadTarget<std::uint8_t> target{&img.pixels};
   // Channels 0..2 as 8 bits (a gray image is read into the first channel only).
-  bool ok = in->read_image(0, 0, 0, std::min(3, spec.nchannels), OIIO::TypeDesc::UINT8,
-                           img.pixels.data(), 3, OIIO::stride_t(spec.width) * 3);
-  in->close();
-  if (!ok) throw InputError(name + ": cannot read image: " + in->geterror());
+  check(image_io().read(path.string().c_str(), TESSREF_IMAGE_IO_UINT8, 3,
+                        &ReadTarget<std::uint8_t>::alloc, &target));
+  img.width = target.width;
+  img.height = target.height;
   return img;
 }
 
 FloatImage read_float_image(const std::filesystem::path& path) {
-  const std::string name = path.string();
-  auto in = OIIO::ImageInput::open(name);
-  if (!in) throw InputError(name + ": cannot read image: " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
-  FloatImage img{spec.width, spec.height, spec.nchannels,
-                 std::vector<float>(std::size_t(spec.width) * spec.height * spec.nchannels)};
-  bool ok = in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data());
-  in->close();
-  if (!ok) throw InputError(name + ": cannot read image: " + in->geterror());
+  FloatImage img;
+  ReadTarget<float> target{&img.pixels};
+  check(image_io().read(path.string().c_str(), TESSREF_IMAGE_IO_FLOAT, 0, &ReadTarget<float>::alloc,
+                        &target));
+  img.width = target.width;
+  img.height = target.height;
+  img.channels = target.channels;
   return img;
 }
+
+std::string image_io_module_path() { return loaded_module().path; }
 
 }  // namespace tessref

@@ -1,8 +1,12 @@
 #pragma once
-// Framebuffer -> image files (through OpenImageIO; its headers stay in image_output.cpp).
+// Framebuffer -> image files, through OpenImageIO in the image I/O module
+// (libtessref_image_io.so, see image_io_module.h), which the first read or write loads. InputError
+// naming the paths tried when the module cannot be found or loaded; TESSREF_IMAGE_IO_MODULE
+// in the environment names the module's path.
 // Files are written top row first: the framebuffer's row 0 (GL: bottom) becomes the last row.
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "raster/framebuffer.h"
@@ -43,5 +47,8 @@ FloatImage read_float_image(const std::filesystem::path& path);  // InputError i
 
 void write_rgb8_image(const Rgb8Image& image, const std::filesystem::path& path);
 Rgb8Image read_rgb8_image(const std::filesystem::path& path);  // InputError if unreadable
+
+// The path of the image I/O module in use (loads it first; InputError if it cannot).
+std::string image_io_module_path();
 
 }  // namespace tessref

@@ -1,14 +1,31 @@
-# Installs tessref from BINARY_DIR into WORK_DIR/prefix, then builds and runs the consumer.
+# Installs tessref from BINARY_DIR into WORK_DIR/prefix, then builds and runs the consumer, and
+# checks that both the consumer and the installed `tessref` write images through the installed
+# image I/O module (not the build tree's), with the same bytes as the build tree's `tessref`.
 file(REMOVE_RECURSE ${WORK_DIR})
 function(step)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "failed (${rc}): ${ARGN}\n${out}\n${err}")
   endif()
+  set(step_output "${out}" PARENT_SCOPE)
 endfunction()
-step(${CMAKE_COMMAND} --install ${BINARY_DIR} --prefix ${WORK_DIR}/prefix)
-step(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/build -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix
+set(prefix ${WORK_DIR}/prefix)
+step(${CMAKE_COMMAND} --install ${BINARY_DIR} --prefix ${prefix})
+step(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/build -DCMAKE_PREFIX_PATH=${prefix}
      -DCMAKE_BUILD_TYPE=Release)
 step(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
-step(${WORK_DIR}/build/consumer)
+
+# Neither may fall back on an environment override.
+unset(ENV{TESSREF_IMAGE_IO_MODULE})
+step(${WORK_DIR}/build/consumer ${WORK_DIR}/consumer.png)
+if(NOT step_output MATCHES "image I/O module: ${prefix}/")
+  message(FATAL_ERROR "the consumer did not use the installed image I/O module:\n${step_output}")
+endif()
+
+set(args render --threads 1 --set image.width=64 --set image.height=64)
+set(installed_tessref ${prefix}/bin/tessref)
+step(${installed_tessref} ${args} -o ${WORK_DIR}/installed.png)
+step(${BINARY_DIR}/cli/tessref ${args} -o ${WORK_DIR}/build_tree.png)
+step(${CMAKE_COMMAND} -E compare_files ${WORK_DIR}/installed.png ${WORK_DIR}/build_tree.png)
+step(${CMAKE_COMMAND} -E compare_files ${WORK_DIR}/consumer.png ${WORK_DIR}/build_tree.png)
 message(STATUS "consumer built and ran against the installed tessref")

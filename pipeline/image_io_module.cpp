@@ -1,0 +1,94 @@
+// The image I/O module (libtessref_image_io.so): image files through OpenImageIO behind the C
+// table of pipeline/image_io_module.h. Built as a CMake MODULE, not part of tessref_pipeline;
+// pipeline/image_output.cpp loads it on first use.
+#include "pipeline/image_io_module.h"
+
+#include <algorithm>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imageio.h>
+
+namespace {
+
+thread_local std::string last_error;
+
+const char* fail(std::string message) {
+  last_error = std::move(message);
+  return last_error.c_str();
+}
+
+OIIO::TypeDesc type_desc(tessref_image_io_type type) {
+  return type == TESSREF_IMAGE_IO_FLOAT ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
+}
+
+std::size_t type_size(tessref_image_io_type type) {
+  return type == TESSREF_IMAGE_IO_FLOAT ? sizeof(float) : 1;
+}
+
+// Runs body, turning an escaping exception into an error message naming the file.
+template <typename Body>
+const char* guarded(const char* path, Body&& body) {
+  try {
+    return body();
+  } catch (const std::exception& e) {
+    return fail(std::string(path) + ": image I/O failed: " + e.what());
+  } catch (...) {
+    return fail(std::string(path) + ": image I/O failed");
+  }
+}
+
+const char* check_writable(const char* path) {
+  return guarded(path, [&]() -> const char* {
+    if (!OIIO::ImageOutput::create(path))
+      return fail(std::string(path) + ": cannot write this image format (" + OIIO::geterror() + ")");
+    return nullptr;
+  });
+}
+
+const char* write(const char* path, int width, int height, int channels, tessref_image_io_type type,
+                  const void* pixels, const char* const* channel_names) {
+  return guarded(path, [&]() -> const char* {
+    const std::string name = path;
+    auto out = OIIO::ImageOutput::create(name);
+    if (!out) return fail(name + ": cannot write this image format (" + OIIO::geterror() + ")");
+    OIIO::ImageSpec spec(width, height, channels, type_desc(type));
+    if (channel_names) spec.channelnames.assign(channel_names, channel_names + channels);
+    if (!out->open(name, spec)) return fail(name + ": cannot open for writing: " + out->geterror());
+    bool ok = out->write_image(type_desc(type), pixels);
+    ok = out->close() && ok;
+    if (!ok) return fail(name + ": cannot write: " + out->geterror());
+    return nullptr;
+  });
+}
+
+const char* read(const char* path, tessref_image_io_type type, int channels,
+                 tessref_image_io_alloc_fn alloc, void* context) {
+  return guarded(path, [&]() -> const char* {
+    const std::string name = path;
+    auto in = OIIO::ImageInput::open(name);
+    if (!in) return fail(name + ": cannot read image: " + OIIO::geterror());
+    const OIIO::ImageSpec& spec = in->spec();
+    const int stored = channels > 0 ? channels : spec.nchannels;
+    const int wanted = std::min(stored, spec.nchannels);
+    void* pixels = alloc(context, spec.width, spec.height, stored);
+    if (!pixels) return fail(name + ": cannot read image: out of memory");
+    const OIIO::stride_t xstride = OIIO::stride_t(stored * type_size(type));
+    bool ok = in->read_image(0, 0, 0, wanted, type_desc(type), pixels, xstride,
+                             xstride * spec.width);
+    in->close();
+    if (!ok) return fail(name + ": cannot read image: " + in->geterror());
+    return nullptr;
+  });
+}
+
+const tessref_image_io_api kApi = {TESSREF_IMAGE_IO_ABI_VERSION, sizeof(tessref_image_io_api),
+                                   check_writable, write, read};
+
+}  // namespace
+
+extern "C" __attribute__((visibility("default"))) const tessref_image_io_api*
+tessref_image_io_api_v1(void) {
+  return &kApi;
+}
