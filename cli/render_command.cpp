@@ -1,6 +1,8 @@
 // `tessref render`: a scene to an image, with a one-line summary of what the pipeline did.
 #include <unistd.h>
 
+#include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -24,6 +26,8 @@ struct RenderOptions {
   std::string output = "tessref.png";
   std::string depth, normals, dump_tess;
   int threads = 0;
+  int repeat = 1;              // frames rendered; the image is the last one's
+  bool report_repeat = false;  // --repeat given: print per-stage medians over the frames
   std::vector<std::string> sets;
 };
 
@@ -59,6 +63,24 @@ std::string ms(double seconds) {
   return buf;
 }
 
+// Per-frame times of one stage over the --repeat frames.
+struct StageTimes {
+  const char* name;
+  std::vector<double> seconds;
+
+  // "54.2 ms (50.1 .. 60.3 ms)": median (the mean of the middle two for an even count), min, max.
+  std::string summary() const {
+    std::vector<double> v = seconds;
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    const double median = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%s %.1f ms (%.1f .. %.1f ms)", name, median * 1e3, v.front() * 1e3,
+                  v.back() * 1e3);
+    return buf;
+  }
+};
+
 void run_render(const RenderOptions& o) {
   const Scene scene = load_scene(o.scene, o.sets);
   check_image_path(o.output, false, "color images");
@@ -78,13 +100,26 @@ void run_render(const RenderOptions& o) {
       throw InputError("--dump-tess: the scene does not tessellate (tessellation.enabled is false)");
     dump = std::make_unique<TessDumpWriter>(o.dump_tess);
   }
+  // --repeat: every frame renders the same scene from scratch; the first also feeds --dump-tess
+  // (the records are the same each frame), the last one's framebuffer is written.
+  StageTimes vertex{"vertex", {}}, tessellation{"tessellation", {}}, raster{"raster+fs", {}},
+      frame{"frame", {}};
   RenderResult result;
   {
     ProgressBar bar;
-    DrawOptions options;
-    options.progress = [&](double f) { bar.update(f); };
-    if (dump) options.dump_tess = [&](const std::vector<TessDumpRecord>& r) { dump->write(r); };
-    result = render_scene(scene, mesh, parallel, options);
+    for (int i = 0; i < o.repeat; ++i) {
+      DrawOptions options;
+      options.progress = [&](double f) { bar.update((i + f) / o.repeat); };
+      if (dump && i == 0)
+        options.dump_tess = [&](const std::vector<TessDumpRecord>& r) { dump->write(r); };
+      result = RenderResult{};  // one framebuffer alive at a time
+      const auto t0 = Clock::now();
+      result = render_scene(scene, mesh, parallel, options);
+      frame.seconds.push_back(seconds_since(t0));
+      vertex.seconds.push_back(result.stats.vertex_seconds);
+      tessellation.seconds.push_back(result.stats.tessellation_seconds);
+      raster.seconds.push_back(result.stats.raster_seconds);
+    }
   }
   if (dump) dump->close();
 
@@ -107,6 +142,22 @@ void run_render(const RenderOptions& o) {
       static_cast<unsigned long long>(s.raster.fragments_shaded), ms(mesh_seconds).c_str(),
       ms(s.vertex_seconds).c_str(), ms(s.tessellation_seconds).c_str(),
       ms(s.raster_seconds).c_str(), ms(write_seconds).c_str());
+  if (o.report_repeat)
+    std::printf("tessref render: %d frame%s, median (min .. max): %s, %s, %s, %s\n", o.repeat,
+                o.repeat == 1 ? "" : "s", vertex.summary().c_str(), tessellation.summary().c_str(), raster.summary().c_str(),
+                frame.summary().c_str());
+}
+
+// --repeat N: a whole number of frames in [1, kMaxRepeat] (CLI11 prefixes the option's name).
+constexpr int kMaxRepeat = 1000000;
+std::string check_repeat(std::string& text) {
+  int n = 0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, n);
+  if (ec != std::errc() || ptr != end || n < 1 || n > kMaxRepeat)
+    return "expected the number of frames, an integer from 1 to " + std::to_string(kMaxRepeat) +
+           ", got \"" + text + "\"";
+  return {};
 }
 
 }  // namespace
@@ -126,12 +177,21 @@ void add_render_command(CLI::App& app) {
                   "override a scene value, KEY=VALUE (e.g. camera.eye=2,5,-10); repeatable")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  CLI::Option* repeat = cmd->add_option("--repeat", opts->repeat,
+                  "render the frame N times and print each stage's median, min and max time; "
+                  "the image is written once, from the last frame")
+      ->check(CLI::Validator(check_repeat, ""))
+      ->type_name("N")
+      ->capture_default_str();
   cmd->add_option("--depth", opts->depth, "also write window-space depth (.exr)");
   cmd->add_option("--normals", opts->normals, "also write world normals (.exr)");
   cmd->add_option("--dump-tess", opts->dump_tess,
                   "also write every tessellated vertex (patch id, gl_TessCoord, position, normal): "
                   "binary, or text for *.txt (format: pipeline/tess_dump.h)");
-  cmd->callback([opts] { run_render(*opts); });
+  cmd->callback([opts, repeat] {
+    opts->report_repeat = repeat->count() > 0;
+    run_render(*opts);
+  });
 }
 
 }  // namespace tessref::cli

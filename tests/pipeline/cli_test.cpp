@@ -76,6 +76,52 @@ TEST_F(Cli, RendersTheRepositoryDefaultScene) {
   EXPECT_THAT(r.output, HasSubstr("scenes/default.json -> "));
 }
 
+TEST_F(Cli, RepeatPrintsStageTimesAndWritesTheSameImage) {
+  TempDir dir;
+  const std::string scene = " --threads 2 --set tessellation.enabled=true --set image.width=96 --set image.height=64";
+  const auto once = dir.path() / "once.png", plain = dir.path() / "plain.png", thrice = dir.path() / "thrice.png";
+  const CliRun r1 = run("render -o " + once.string() + scene + " --repeat 1");
+  const CliRun r0 = run("render -o " + plain.string() + scene);
+  const CliRun r3 = run("render -o " + thrice.string() + scene + " --repeat 3");
+  ASSERT_EQ(r1.exit_code, 0) << r1.output;
+  ASSERT_EQ(r0.exit_code, 0) << r0.output;
+  ASSERT_EQ(r3.exit_code, 0) << r3.output;
+  // The usual summary line, then one line of medians (min .. max) over the frames.
+  const std::string num = "[0-9]+\\.[0-9]", ms = num + " ms";
+  const auto stage = [&](const std::string& name) {
+    return name + " " + ms + " \\(" + num + " \\.\\. " + ms + "\\)";
+  };
+  const std::string medians = ", median \\(min \\.\\. max\\): " + stage("vertex") + ", " +
+                              stage("tessellation") + ", " + stage("raster\\+fs") + ", " + stage("frame") + "\n";
+  EXPECT_THAT(r3.output, ::testing::MatchesRegex("tessref render: <default scene> -> [^\n]*, write " + ms +
+                                                 "\ntessref render: 3 frames" + medians));
+  EXPECT_THAT(r1.output, ::testing::MatchesRegex("[^\n]*\ntessref render: 1 frame" + medians));
+  EXPECT_THAT(r0.output, ::testing::Not(HasSubstr(" median ")));
+  // The same counts, and the same image bytes, whatever the number of frames.
+  const auto counts = [](const std::string& out) {
+    const std::size_t begin = out.find(" threads): ");
+    return out.substr(begin, out.find("; mesh") - begin);
+  };
+  EXPECT_EQ(counts(r3.output), counts(r1.output));
+  EXPECT_EQ(counts(r0.output), counts(r1.output));
+  const std::string bytes = test::read_file(once);
+  EXPECT_FALSE(bytes.empty());
+  EXPECT_EQ(test::read_file(plain), bytes);
+  EXPECT_EQ(test::read_file(thrice), bytes);
+}
+
+TEST_F(Cli, BadRepeat) {
+  TempDir dir;
+  const auto out = dir.path() / "x.png";
+  for (const std::string n : {"0", "-1", "abc", "1.5", "2x", "99999999999", "\"\""}) {
+    SCOPED_TRACE(n);
+    const CliRun r = run("render -o " + out.string() + " --repeat " + n);
+    EXPECT_GE(r.exit_code, 100) << r.output;  // a malformed command line
+    EXPECT_THAT(r.output, HasSubstr("--repeat: expected the number of frames, an integer from 1 to "));
+  }
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 TEST_F(Cli, BadInput) {
   TempDir dir;
   const std::string out = " -o " + (dir.path() / "x.png").string();
