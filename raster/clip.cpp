@@ -20,6 +20,8 @@ enum : std::uint32_t {
   kRight = 1u << 7,
   kBottom = 1u << 8,
   kTop = 1u << 9,
+  kNonFinite = 1u << 10,   // some coordinate is NaN or infinite
+  kNonPositiveW = 1u << 11,
 };
 constexpr int kClipPlaneCount = 6;  // the first six bits
 
@@ -92,16 +94,30 @@ int clip_against(const Planes& planes, int i, const ClipVertex* src, const bool*
 
 }  // namespace
 
-ClipTest classify_triangle(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c,
-                           float guard_x, float guard_y) {
-  if (!finite(a) || !finite(b) || !finite(c)) return ClipTest::kInvalid;
-  const Planes planes{guard_x, guard_y};
-  const std::uint32_t ca = planes.outcode(a), cb = planes.outcode(b), cc = planes.outcode(c);
-  if (ca & cb & cc) return ClipTest::kRejected;
+std::uint32_t clip_outcode(const glm::vec4& p, float guard_x, float guard_y) {
+  if (!finite(p)) return kNonFinite;
+  std::uint32_t code = Planes{guard_x, guard_y}.outcode(p);
+  if (!(p.w > 0.0f)) code |= kNonPositiveW;
+  return code;
+}
+
+ClipTest classify_outcodes(std::uint32_t ca, std::uint32_t cb, std::uint32_t cc) {
+  if ((ca | cb | cc) & kNonFinite) return ClipTest::kInvalid;
+  if (ca & cb & cc & ~kNonPositiveW) return ClipTest::kRejected;
   if ((ca | cb | cc) & ((1u << kClipPlaneCount) - 1)) return ClipTest::kNeedsClip;
   // Inside near and far means w >= 0; w == 0 (the eye point) must not be divided by.
-  if (!(a.w > 0.0f && b.w > 0.0f && c.w > 0.0f)) return ClipTest::kInvalid;
+  if ((ca | cb | cc) & kNonPositiveW) return ClipTest::kInvalid;
   return ClipTest::kInside;
+}
+
+bool outcode_projectable(std::uint32_t code) {
+  return (code & (kNonFinite | kNonPositiveW | ((1u << kClipPlaneCount) - 1))) == 0;
+}
+
+ClipTest classify_triangle(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c,
+                           float guard_x, float guard_y) {
+  return classify_outcodes(clip_outcode(a, guard_x, guard_y), clip_outcode(b, guard_x, guard_y),
+                           clip_outcode(c, guard_x, guard_y));
 }
 
 ClipResult clip_triangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,

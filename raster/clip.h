@@ -3,6 +3,7 @@
 // volume (guard factors 1: Viewport::guard_x/y), with the plane order and float arithmetic of
 // Mesa's draw clipper (draw_pipe_clip.c), so that the cut vertices, and the pixels, are llvmpipe's.
 #include <array>
+#include <cstdint>
 
 #include "raster/vertex.h"
 
@@ -33,6 +34,15 @@ enum class ClipTest {
 // The outcode test alone (cheap; most triangles need no clipping).
 ClipTest classify_triangle(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c,
                            float guard_x, float guard_y);
+
+// The same test split into a per-vertex part and a per-triangle part, so that a vertex shared by
+// several triangles is classified once: classify_outcodes(clip_outcode(a), clip_outcode(b),
+// clip_outcode(c)) == classify_triangle(a, b, c).
+std::uint32_t clip_outcode(const glm::vec4& p, float guard_x, float guard_y);
+ClipTest classify_outcodes(std::uint32_t a, std::uint32_t b, std::uint32_t c);
+// True when a vertex with this outcode may be a corner of a kInside triangle (finite, w > 0,
+// inside every clipping plane): only then is its window position computed.
+bool outcode_projectable(std::uint32_t code);
 
 // guard_x, guard_y: the guard planes are x = +-guard_x * w and y = +-guard_y * w, in clip space
 // (>= 1; Viewport gives 1: llvmpipe clips at the viewport sides).
