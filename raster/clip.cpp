@@ -6,23 +6,7 @@
 namespace tessref::raster {
 namespace {
 
-// Outcode bits: planes that clip (the guard band sides, near, far; bits 0-5 in the order Mesa's
-// draw module clips in: x <= w first, then x >= -w, y <= w, y >= -w, near, far) and the viewport
-// sides, which only reject.
-enum : std::uint32_t {
-  kGuardRight = 1u << 0,
-  kGuardLeft = 1u << 1,
-  kGuardTop = 1u << 2,
-  kGuardBottom = 1u << 3,
-  kNear = 1u << 4,
-  kFar = 1u << 5,
-  kLeft = 1u << 6,
-  kRight = 1u << 7,
-  kBottom = 1u << 8,
-  kTop = 1u << 9,
-  kNonFinite = 1u << 10,   // some coordinate is NaN or infinite
-  kNonPositiveW = 1u << 11,
-};
+using namespace outcode;
 constexpr int kClipPlaneCount = 6;  // the first six bits
 
 struct Planes {
@@ -99,19 +83,6 @@ std::uint32_t clip_outcode(const glm::vec4& p, float guard_x, float guard_y) {
   std::uint32_t code = Planes{guard_x, guard_y}.outcode(p);
   if (!(p.w > 0.0f)) code |= kNonPositiveW;
   return code;
-}
-
-ClipTest classify_outcodes(std::uint32_t ca, std::uint32_t cb, std::uint32_t cc) {
-  if ((ca | cb | cc) & kNonFinite) return ClipTest::kInvalid;
-  if (ca & cb & cc & ~kNonPositiveW) return ClipTest::kRejected;
-  if ((ca | cb | cc) & ((1u << kClipPlaneCount) - 1)) return ClipTest::kNeedsClip;
-  // Inside near and far means w >= 0; w == 0 (the eye point) must not be divided by.
-  if ((ca | cb | cc) & kNonPositiveW) return ClipTest::kInvalid;
-  return ClipTest::kInside;
-}
-
-bool outcode_projectable(std::uint32_t code) {
-  return (code & (kNonFinite | kNonPositiveW | ((1u << kClipPlaneCount) - 1))) == 0;
 }
 
 ClipTest classify_triangle(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c,
