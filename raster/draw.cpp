@@ -181,16 +181,17 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
       const raster::PixelRect rect{tx * kTileSize, ty * kTileSize,
                                    std::min(fb.width, (tx + 1) * kTileSize) - 1,
                                    std::min(fb.height, (ty + 1) * kTileSize) - 1};
-      std::uint64_t shaded = 0;
+      raster::FragmentSink sink(fs, fb, num_varyings);
       for (std::size_t c = 0; c < num_chunks; ++c) {
         const Chunk& chunk = chunks[c];
         for (std::uint32_t k = chunk.tile_begin[tile]; k < chunk.tile_begin[tile + 1]; ++k) {
           const SetupTriangle& t = chunk.tris[chunk.tile_tris[k]];
-          shaded += raster::raster_triangle(t, chunk.varyings.data() + t.varying_offset,
-                                            num_varyings, rect, fs, fb);
+          raster::raster_triangle(t, chunk.varyings.data() + t.varying_offset, num_varyings, rect,
+                                  sink);
         }
       }
-      tile_fragments[a] = shaded;
+      sink.flush();
+      tile_fragments[a] = sink.shaded();
     };
     // Starting tasks costs more than scanning a few hundred small triangles.
     if (binned < kMinBinnedForTasks) {
