@@ -6,21 +6,7 @@
 namespace tessref::raster {
 namespace {
 
-// Outcode bits: planes that clip (the guard band sides, near, far; bits 0-5 in the order Mesa's
-// draw module clips in: x <= w first, then x >= -w, y <= w, y >= -w, near, far) and the viewport
-// sides, which only reject.
-enum : std::uint32_t {
-  kGuardRight = 1u << 0,
-  kGuardLeft = 1u << 1,
-  kGuardTop = 1u << 2,
-  kGuardBottom = 1u << 3,
-  kNear = 1u << 4,
-  kFar = 1u << 5,
-  kLeft = 1u << 6,
-  kRight = 1u << 7,
-  kBottom = 1u << 8,
-  kTop = 1u << 9,
-};
+using namespace outcode;
 constexpr int kClipPlaneCount = 6;  // the first six bits
 
 struct Planes {
@@ -92,16 +78,17 @@ int clip_against(const Planes& planes, int i, const ClipVertex* src, const bool*
 
 }  // namespace
 
+std::uint32_t clip_outcode(const glm::vec4& p, float guard_x, float guard_y) {
+  if (!finite(p)) return kNonFinite;
+  std::uint32_t code = Planes{guard_x, guard_y}.outcode(p);
+  if (!(p.w > 0.0f)) code |= kNonPositiveW;
+  return code;
+}
+
 ClipTest classify_triangle(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c,
                            float guard_x, float guard_y) {
-  if (!finite(a) || !finite(b) || !finite(c)) return ClipTest::kInvalid;
-  const Planes planes{guard_x, guard_y};
-  const std::uint32_t ca = planes.outcode(a), cb = planes.outcode(b), cc = planes.outcode(c);
-  if (ca & cb & cc) return ClipTest::kRejected;
-  if ((ca | cb | cc) & ((1u << kClipPlaneCount) - 1)) return ClipTest::kNeedsClip;
-  // Inside near and far means w >= 0; w == 0 (the eye point) must not be divided by.
-  if (!(a.w > 0.0f && b.w > 0.0f && c.w > 0.0f)) return ClipTest::kInvalid;
-  return ClipTest::kInside;
+  return classify_outcodes(clip_outcode(a, guard_x, guard_y), clip_outcode(b, guard_x, guard_y),
+                           clip_outcode(c, guard_x, guard_y));
 }
 
 ClipResult clip_triangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,

@@ -3,6 +3,7 @@
 // volume (guard factors 1: Viewport::guard_x/y), with the plane order and float arithmetic of
 // Mesa's draw clipper (draw_pipe_clip.c), so that the cut vertices, and the pixels, are llvmpipe's.
 #include <array>
+#include <cstdint>
 
 #include "raster/vertex.h"
 
@@ -33,6 +34,49 @@ enum class ClipTest {
 // The outcode test alone (cheap; most triangles need no clipping).
 ClipTest classify_triangle(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c,
                            float guard_x, float guard_y);
+
+// The same test split into a per-vertex part and a per-triangle part, so that a vertex shared by
+// several triangles is classified once: classify_outcodes(clip_outcode(a), clip_outcode(b),
+// clip_outcode(c)) == classify_triangle(a, b, c).
+// Outcode bits: planes that clip (the guard band sides, near, far; bits 0-5 in the order Mesa's
+// draw module clips in: x <= w first, then x >= -w, y <= w, y >= -w, near, far), the viewport
+// sides, which only reject, and two bits that make a vertex unusable.
+namespace outcode {
+enum : std::uint32_t {
+  kGuardRight = 1u << 0,
+  kGuardLeft = 1u << 1,
+  kGuardTop = 1u << 2,
+  kGuardBottom = 1u << 3,
+  kNear = 1u << 4,
+  kFar = 1u << 5,
+  kLeft = 1u << 6,
+  kRight = 1u << 7,
+  kBottom = 1u << 8,
+  kTop = 1u << 9,
+  kNonFinite = 1u << 10,  // some coordinate is NaN or infinite (no other bit is then set)
+  kNonPositiveW = 1u << 11,
+  kClipPlanes = (1u << 6) - 1,
+};
+}  // namespace outcode
+
+std::uint32_t clip_outcode(const glm::vec4& p, float guard_x, float guard_y);
+
+inline ClipTest classify_outcodes(std::uint32_t ca, std::uint32_t cb, std::uint32_t cc) {
+  using namespace outcode;
+  if ((ca | cb | cc) & kNonFinite) return ClipTest::kInvalid;
+  if (ca & cb & cc & ~kNonPositiveW) return ClipTest::kRejected;
+  if ((ca | cb | cc) & kClipPlanes) return ClipTest::kNeedsClip;
+  // Inside near and far means w >= 0; w == 0 (the eye point) must not be divided by.
+  if ((ca | cb | cc) & kNonPositiveW) return ClipTest::kInvalid;
+  return ClipTest::kInside;
+}
+
+// True when a vertex with this outcode may be a corner of a kInside triangle (finite, w > 0,
+// inside every clipping plane): only then is its window position computed.
+inline bool outcode_projectable(std::uint32_t code) {
+  using namespace outcode;
+  return (code & (kNonFinite | kNonPositiveW | kClipPlanes)) == 0;
+}
 
 // guard_x, guard_y: the guard planes are x = +-guard_x * w and y = +-guard_y * w, in clip space
 // (>= 1; Viewport gives 1: llvmpipe clips at the viewport sides).

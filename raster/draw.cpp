@@ -35,6 +35,7 @@ constexpr std::size_t kMinBinnedForTasks = 256;  // fewer (triangle, tile) pairs
 // Bounds memory: about 170 bytes + 12 * num_varyings per triangle are held per pass. Each pass
 // revisits the tiles it touches, so passes should not be too small either.
 constexpr std::size_t kPassTriangles = 64 * 1024;
+constexpr std::size_t kProjectVertices = 8192;  // vertices per projection task
 
 struct Chunk {
   std::vector<SetupTriangle> tris;
@@ -49,8 +50,9 @@ struct TileGrid {
   std::size_t count() const { return std::size_t(tiles_x) * tiles_y; }
 };
 
-void setup_chunk(const TriangleBatch& batch, std::size_t first, std::size_t last,
-                 const raster::Viewport& vp, bool cull, const TileGrid& grid, Chunk& chunk) {
+void setup_chunk(const TriangleBatch& batch, const raster::ProjectedVertex* projected,
+                 std::size_t first, std::size_t last, const raster::Viewport& vp, bool cull,
+                 const TileGrid& grid, Chunk& chunk) {
   chunk.tris.clear();
   chunk.varyings.clear();
   chunk.tris.reserve(last - first);
@@ -60,7 +62,8 @@ void setup_chunk(const TriangleBatch& batch, std::size_t first, std::size_t last
   for (std::size_t i = first; i < last; ++i) {
     int pieces = 0;
     ++chunk.stats.triangles_in;
-    switch (raster::setup_triangle(batch, i, vp, cull, chunk.tris, chunk.varyings, pieces)) {
+    switch (raster::setup_triangle(batch, i, projected, vp, cull, chunk.tris, chunk.varyings,
+                                   pieces)) {
       case raster::SetupOutcome::kClippedAway: ++chunk.stats.triangles_clipped_away; break;
       case raster::SetupOutcome::kCulled: ++chunk.stats.triangles_culled; break;
       case raster::SetupOutcome::kRasterized: chunk.stats.triangles_rasterized += pieces; break;
@@ -114,6 +117,15 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
       (!fb.aux.empty() && fb.aux.size() != pixels))
     throw std::invalid_argument("draw_triangles: framebuffer attachments do not match its size");
 
+  if (batch.indexed) {
+    if (batch.indices.size() % 3 != 0)
+      throw std::invalid_argument("draw_triangles: index count not a multiple of 3");
+    for (std::uint32_t i : batch.indices)
+      if (i >= batch.vertices.size())
+        throw std::invalid_argument("draw_triangles: index " + std::to_string(i) +
+                                    " past the vertex array (" +
+                                    std::to_string(batch.vertices.size()) + " vertices)");
+  }
   const raster::Viewport vp{fb.width, fb.height, state.depth_range_near, state.depth_range_far};
   const TileGrid grid{(fb.width + kTileSize - 1) / kTileSize,
                       (fb.height + kTileSize - 1) / kTileSize};
@@ -123,7 +135,22 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
   // draw would cost more than small draws themselves. Bound to a reference here, on the calling
   // thread: the tasks below run on other threads, whose own thread_local would be another object.
   thread_local std::vector<Chunk> scratch;
+  thread_local std::vector<raster::ProjectedVertex> projected_scratch;
   std::vector<Chunk>& chunks = scratch;
+
+  // Per-vertex clip-space work once per vertex (shared by the triangles that index it).
+  std::vector<raster::ProjectedVertex>& projected = projected_scratch;
+  projected.resize(batch.vertices.size());
+  const std::size_t vertex_tasks = (batch.vertices.size() + kProjectVertices - 1) / kProjectVertices;
+  auto project = [&](std::size_t c) {
+    const std::size_t first = c * kProjectVertices;
+    raster::project_vertices(batch.vertices.data() + first,
+                             std::min(kProjectVertices, batch.vertices.size() - first), vp,
+                             projected.data() + first);
+  };
+  if (vertex_tasks == 1) project(0);
+  else parallel.for_each(vertex_tasks, project);
+
   std::vector<std::size_t> active;            // tiles with triangles in this pass
   std::vector<std::uint64_t> tile_fragments;  // per active tile
   for (std::size_t pass_first = 0; pass_first < n; pass_first += kPassTriangles) {
@@ -133,7 +160,7 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
 
     parallel.for_each(num_chunks, [&](std::size_t c) {
       const std::size_t first = pass_first + c * kChunkTriangles;
-      setup_chunk(batch, first, std::min(pass_last, first + kChunkTriangles), vp,
+      setup_chunk(batch, projected.data(), first, std::min(pass_last, first + kChunkTriangles), vp,
                   state.cull_back_faces, grid, chunks[c]);
     });
 
@@ -154,16 +181,17 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
       const raster::PixelRect rect{tx * kTileSize, ty * kTileSize,
                                    std::min(fb.width, (tx + 1) * kTileSize) - 1,
                                    std::min(fb.height, (ty + 1) * kTileSize) - 1};
-      std::uint64_t shaded = 0;
+      raster::FragmentSink sink(fs, fb, num_varyings);
       for (std::size_t c = 0; c < num_chunks; ++c) {
         const Chunk& chunk = chunks[c];
         for (std::uint32_t k = chunk.tile_begin[tile]; k < chunk.tile_begin[tile + 1]; ++k) {
           const SetupTriangle& t = chunk.tris[chunk.tile_tris[k]];
-          shaded += raster::raster_triangle(t, chunk.varyings.data() + t.varying_offset,
-                                            num_varyings, rect, fs, fb);
+          raster::raster_triangle(t, chunk.varyings.data() + t.varying_offset, num_varyings, rect,
+                                  sink);
         }
       }
-      tile_fragments[a] = shaded;
+      sink.flush();
+      tile_fragments[a] = sink.shaded();
     };
     // Starting tasks costs more than scanning a few hundred small triangles.
     if (binned < kMinBinnedForTasks) {

@@ -6,11 +6,11 @@ namespace tessref {
 
 Framebuffer::Framebuffer(int w, int h, glm::vec4 clear_color)
     : width(w > 0 ? w : 0), height(h > 0 ? h : 0) {
+  // Constructed with their clear values: one pass over the memory, not a zero fill and a clear.
   const std::size_t n = std::size_t(width) * std::size_t(height);
-  color.resize(n);
-  depth.resize(n);
-  aux.resize(n);
-  clear(clear_color);
+  color.assign(n, clear_color);
+  depth.assign(n, 1.0f);
+  aux.assign(n, glm::vec4(0.0f));
 }
 
 void Framebuffer::clear(glm::vec4 clear_color) {

@@ -19,11 +19,32 @@ struct FragmentOutput {
   glm::vec4 aux{0.0f};
 };
 
+// Fragments in 2x2 quads, as structure of arrays: lane 4q + k is pixel (x + (k & 1), y + (k >> 1))
+// of quad q, whose lower-left pixel (x, y) has even coordinates. A lane is live when its pixel is
+// covered and passed the depth test; only live lanes' outputs are written. Other lanes hold no
+// meaningful inputs (helper invocations, which derivatives need, are for a later program kind).
+inline constexpr int kFragmentQuads = 16;
+inline constexpr int kFragmentLanes = 4 * kFragmentQuads;
+struct FragmentBatch {
+  int quads = 0;
+  int num_varyings = 0;
+  alignas(32) float frag_coord[4][kFragmentLanes];  // gl_FragCoord x, y, z, 1/w
+  alignas(32) float varyings[kMaxVaryings][kFragmentLanes];
+  alignas(32) float color[4][kFragmentLanes];       // outputs
+  alignas(32) float aux[4][kFragmentLanes];
+  std::uint8_t live[kFragmentLanes];
+  std::uint8_t front_facing[kFragmentLanes];
+  int lanes() const { return 4 * quads; }
+};
+
 // A fragment shader: a plain struct with shade(); it runs on many threads at once, so it must not
 // mutate shared state.
 struct FragmentProgram {
   virtual ~FragmentProgram() = default;
   virtual FragmentOutput shade(const FragmentInput& in) const = 0;
+  // What the rasterizer calls: a whole batch. The default runs shade() for each live lane; an
+  // override (SIMD kernels, the GLSL executor) must give the same bits for live lanes.
+  virtual void shade_batch(FragmentBatch& batch) const;
 };
 
 struct RasterState {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/fixed_point.h"
+#include "raster/edge.h"
 
 namespace tessref::raster {
 namespace {
@@ -60,6 +61,23 @@ std::int64_t floor_div(std::int64_t a, std::int64_t b) {
 
 enum class PieceResult { kCulled, kRasterized };
 
+// Bounding boxes of at most this many pixels get their coverage tested during setup.
+constexpr int kSmallTrianglePixels = 8;
+
+// Whether some pixel center k * 256 + 128 (0 <= k < size) lies in [lo, hi] (24.8): the bounding
+// box test of setup_piece, with floor division by 256 as an arithmetic shift.
+bool box_has_pixel_center(std::int64_t lo, std::int64_t hi, int size) {
+  const std::int64_t one = fixed::kSubpixelOne, half = fixed::kSubpixelHalf;
+  static_assert(fixed::kSubpixelOne == 256);
+  const std::int64_t first = std::max<std::int64_t>(0, (lo - half + one - 1) >> 8);
+  const std::int64_t last = std::min<std::int64_t>(size - 1, (hi - half) >> 8);
+  return first <= last;
+}
+
+WindowVertex from_projected(const ProjectedVertex& p, const ClipVertex& v) {
+  return WindowVertex{p.x, p.y, p.xf, p.yf, p.z, p.inv_w, v.varyings.data()};
+}
+
 PieceResult setup_piece(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                         const Viewport& vp, bool cull_back_faces, int num_varyings,
                         std::vector<SetupTriangle>& tris, std::vector<float>& varyings) {
@@ -71,6 +89,20 @@ PieceResult setup_piece(const WindowVertex& a, const WindowVertex& b, const Wind
   // Wind every triangle counter-clockwise so that the edge functions are positive inside.
   const WindowVertex* v[3] = {&a, front ? &b : &c, front ? &c : &b};
 
+  // Pixel x is a candidate when its center x * 256 + 128 lies in [min x, max x].
+  const std::int64_t lo_x = std::min({a.x, b.x, c.x});
+  const std::int64_t hi_x = std::max({a.x, b.x, c.x});
+  const std::int64_t lo_y = std::min({a.y, b.y, c.y});
+  const std::int64_t hi_y = std::max({a.y, b.y, c.y});
+  const std::int64_t one = fixed::kSubpixelOne, half = fixed::kSubpixelHalf;
+  const int min_x = int(std::max<std::int64_t>(0, floor_div(lo_x - half + one - 1, one)));
+  const int min_y = int(std::max<std::int64_t>(0, floor_div(lo_y - half + one - 1, one)));
+  const int max_x = int(std::min<std::int64_t>(vp.width - 1, floor_div(hi_x - half, one)));
+  const int max_y = int(std::min<std::int64_t>(vp.height - 1, floor_div(hi_y - half, one)));
+  // No pixel center in the bounding box: set up (it counts) but nothing to scan. Most triangles
+  // of a finely tessellated surface end here.
+  if (min_x > max_x || min_y > max_y) return PieceResult::kRasterized;
+
   SetupTriangle t;
   for (int i = 0; i < 3; ++i) {
     t.x[i] = v[i]->x;
@@ -79,6 +111,14 @@ PieceResult setup_piece(const WindowVertex& a, const WindowVertex& b, const Wind
     t.yf[i] = v[i]->yf;
     t.z[i] = v[i]->z;
     t.inv_w[i] = v[i]->inv_w;
+  }
+  // Small triangles: test the few candidate centers now; most cover none and need no more setup.
+  if ((max_x - min_x + 1) * (max_y - min_y + 1) <= kSmallTrianglePixels) {
+    const TriangleEdges edges(t.x, t.y);
+    bool any = false;
+    for (int py = min_y; py <= max_y && !any; ++py)
+      for (int px = min_x; px <= max_x && !any; ++px) any = edges.covers(px, py);
+    if (!any) return PieceResult::kRasterized;
   }
   // Interpolation planes through the float positions: llvmpipe sets up depth and every varying
   // from them, not from the snapped ones; off the 1/256 grid the two differ (measured: up to 9.5e-5
@@ -111,17 +151,10 @@ PieceResult setup_piece(const WindowVertex& a, const WindowVertex& b, const Wind
   }
   t.area2 = front ? area2 : -area2;
   t.front_facing = front;
-
-  // Pixel x is a candidate when its center x * 256 + 128 lies in [min x, max x].
-  const std::int64_t lo_x = std::min({t.x[0], t.x[1], t.x[2]});
-  const std::int64_t hi_x = std::max({t.x[0], t.x[1], t.x[2]});
-  const std::int64_t lo_y = std::min({t.y[0], t.y[1], t.y[2]});
-  const std::int64_t hi_y = std::max({t.y[0], t.y[1], t.y[2]});
-  const std::int64_t one = fixed::kSubpixelOne, half = fixed::kSubpixelHalf;
-  t.min_x = int(std::max<std::int64_t>(0, floor_div(lo_x - half + one - 1, one)));
-  t.min_y = int(std::max<std::int64_t>(0, floor_div(lo_y - half + one - 1, one)));
-  t.max_x = int(std::min<std::int64_t>(vp.width - 1, floor_div(hi_x - half, one)));
-  t.max_y = int(std::min<std::int64_t>(vp.height - 1, floor_div(hi_y - half, one)));
+  t.min_x = min_x;
+  t.min_y = min_y;
+  t.max_x = max_x;
+  t.max_y = max_y;
 
   // Stored as a0, a1 - a0, a2 - a0 (see SetupTriangle::varying_offset).
   t.varying_offset = std::uint32_t(varyings.size());
@@ -141,19 +174,49 @@ PieceResult setup_piece(const WindowVertex& a, const WindowVertex& b, const Wind
 float Viewport::guard_x() const { return 1.0f; }
 float Viewport::guard_y() const { return 1.0f; }
 
-SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index, const Viewport& vp,
+void project_vertices(const ClipVertex* vertices, std::size_t count, const Viewport& vp,
+                      ProjectedVertex* out) {
+  for (std::size_t i = 0; i < count; ++i) {
+    ProjectedVertex& p = out[i];
+    p.code = clip_outcode(vertices[i].position, vp.guard_x(), vp.guard_y());
+    if (!outcode_projectable(p.code)) continue;  // only clipped (or dropped) triangles use it
+    const WindowVertex w = to_window(vertices[i], vp);
+    p.x = w.x;
+    p.y = w.y;
+    p.xf = w.xf;
+    p.yf = w.yf;
+    p.z = w.z;
+    p.inv_w = w.inv_w;
+  }
+}
+
+SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index,
+                            const ProjectedVertex* projected, const Viewport& vp,
                             bool cull_back_faces, std::vector<SetupTriangle>& tris,
                             std::vector<float>& varyings, int& pieces_out) {
   pieces_out = 0;
-  const ClipVertex* in = &batch.vertices[3 * index];
+  const std::size_t i0 = batch.vertex_index(index, 0), i1 = batch.vertex_index(index, 1),
+                    i2 = batch.vertex_index(index, 2);
   const int nv = std::clamp(batch.num_varyings, 0, kMaxVaryings);
-  switch (classify_triangle(in[0].position, in[1].position, in[2].position, vp.guard_x(),
-                            vp.guard_y())) {
+  switch (classify_outcodes(projected[i0].code, projected[i1].code, projected[i2].code)) {
     case ClipTest::kInvalid:
     case ClipTest::kRejected: return SetupOutcome::kClippedAway;
     case ClipTest::kInside: {
-      const WindowVertex a = to_window(in[0], vp), b = to_window(in[1], vp),
-                         c = to_window(in[2], vp);
+      // Fast exits first, from the snapped positions alone (setup_piece decides the same way).
+      const ProjectedVertex &pa = projected[i0], &pb = projected[i1], &pc = projected[i2];
+      const std::int64_t area2 =
+          std::int64_t(pb.x - pa.x) * (pc.y - pa.y) - std::int64_t(pc.x - pa.x) * (pb.y - pa.y);
+      if (area2 == 0 || (area2 < 0 && cull_back_faces)) return SetupOutcome::kCulled;
+      if (!box_has_pixel_center(std::min({pa.x, pb.x, pc.x}), std::max({pa.x, pb.x, pc.x}),
+                                vp.width) ||
+          !box_has_pixel_center(std::min({pa.y, pb.y, pc.y}), std::max({pa.y, pb.y, pc.y}),
+                                vp.height)) {
+        pieces_out = 1;
+        return SetupOutcome::kRasterized;
+      }
+      const WindowVertex a = from_projected(projected[i0], batch.vertices[i0]);
+      const WindowVertex b = from_projected(projected[i1], batch.vertices[i1]);
+      const WindowVertex c = from_projected(projected[i2], batch.vertices[i2]);
       if (setup_piece(a, b, c, vp, cull_back_faces, nv, tris, varyings) == PieceResult::kCulled)
         return SetupOutcome::kCulled;
       pieces_out = 1;
@@ -162,8 +225,9 @@ SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index, const
     case ClipTest::kNeedsClip: break;
   }
 
+  const ClipVertex* in[3] = {&batch.vertices[i0], &batch.vertices[i1], &batch.vertices[i2]};
   ClipPolygon poly;
-  ClipResult clipped = clip_triangle(in[0], in[1], in[2], nv, vp.guard_x(), vp.guard_y(), poly);
+  ClipResult clipped = clip_triangle(*in[0], *in[1], *in[2], nv, vp.guard_x(), vp.guard_y(), poly);
   if (clipped != ClipResult::kKept) return SetupOutcome::kClippedAway;
 
   WindowVertex w[kMaxClipVertices];
@@ -175,6 +239,18 @@ SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index, const
       ++pieces_out;
   }
   return pieces_out > 0 ? SetupOutcome::kRasterized : SetupOutcome::kCulled;
+}
+
+SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index, const Viewport& vp,
+                            bool cull_back_faces, std::vector<SetupTriangle>& tris,
+                            std::vector<float>& varyings, int& pieces_out) {
+  // A three-vertex batch of this triangle's corners, projected here.
+  TriangleBatch one;
+  one.num_varyings = batch.num_varyings;
+  for (int k = 0; k < 3; ++k) one.vertices.push_back(batch.corner(index, k));
+  ProjectedVertex projected[3];
+  project_vertices(one.vertices.data(), 3, vp, projected);
+  return setup_triangle(one, 0, projected, vp, cull_back_faces, tris, varyings, pieces_out);
 }
 
 }  // namespace tessref::raster

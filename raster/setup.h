@@ -38,8 +38,29 @@ struct Viewport {
 // What became of one input triangle.
 enum class SetupOutcome { kClippedAway, kCulled, kRasterized };
 
-// Clips triangle `index` of batch and appends its pieces (0 to 7 triangles) to tris, their
-// varyings to varyings. pieces_out receives the number of pieces appended.
+// One vertex after the per-vertex clip-space work, done once per vertex of a batch: its outcode
+// (clip.h) and, when the vertex lies inside every clipping plane with w > 0, its window position.
+// Triangles whose corners are all inside are set up from these alone.
+struct ProjectedVertex {
+  std::int32_t x, y;  // window coordinates, 24.8 fixed point
+  float xf, yf;       // before snapping
+  float z;            // window depth, clamped to the depth range
+  float inv_w;
+  std::uint32_t code;  // clip_outcode(); window fields are valid only if !needs_clip_or_invalid
+};
+void project_vertices(const ClipVertex* vertices, std::size_t count, const Viewport& vp,
+                      ProjectedVertex* out);
+
+// Sets up triangle `index` of batch, whose vertices were projected into `projected` (indexed like
+// batch.vertices): clips it if needed and appends its pieces (0 to 7 triangles) to tris, their
+// varyings to varyings. pieces_out receives the number of pieces set up; a piece whose bounding
+// box holds no pixel center (most triangles of a fine tessellation) counts but is not stored, as
+// it cannot produce a fragment.
+SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index,
+                            const ProjectedVertex* projected, const Viewport& vp,
+                            bool cull_back_faces, std::vector<SetupTriangle>& tris,
+                            std::vector<float>& varyings, int& pieces_out);
+// The same, projecting the triangle's three corners on the fly (for tools and tests).
 SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index, const Viewport& vp,
                             bool cull_back_faces, std::vector<SetupTriangle>& tris,
                             std::vector<float>& varyings, int& pieces_out);

@@ -3,33 +3,10 @@
 #include <algorithm>
 
 #include "common/fixed_point.h"
+#include "raster/edge.h"
 
 namespace tessref::raster {
 namespace {
-
-// Edge function of the directed edge a -> b at window point p, all 24.8:
-// E(p) = dx (p.y - a.y) - dy (p.x - a.x), positive left of the edge (inside, for a CCW triangle).
-// Values are in 16.16 and stay below 2^47 (see kMaxViewportPixels).
-struct Edge {
-  std::int64_t dx, dy;
-  std::int64_t ax, ay;
-  std::int64_t bias;    // fill rule: 0 on edges that own their centers, -1 elsewhere
-  std::int64_t step_x;  // change of E for one pixel to the right: -dy * 256
-  std::int64_t at(std::int64_t px, std::int64_t py) const {
-    return dx * (py - ay) - dy * (px - ax);
-  }
-};
-
-Edge make_edge(std::int32_t ax, std::int32_t ay, std::int32_t bx, std::int32_t by) {
-  Edge e;
-  e.dx = std::int64_t(bx) - ax;
-  e.dy = std::int64_t(by) - ay;
-  e.ax = ax;
-  e.ay = ay;
-  e.bias = fixed::is_top_left_edge(e.dx, e.dy) ? 0 : -1;
-  e.step_x = -e.dy * fixed::kSubpixelOne;
-  return e;
-}
 
 // floor(a / b) and ceil(a / b) for b > 0.
 std::int64_t floor_div(std::int64_t a, std::int64_t b) {
@@ -49,21 +26,20 @@ struct Interpolator {
   int num_varyings;
   double dz1, dz2;
   double inv_w0, inv_w1, inv_w2;
-  const FragmentProgram& fs;
-  Framebuffer& fb;
-  bool write_aux;
 
-  // Depth test, then perspective-correct varyings and the shader, for the center of (x, y).
-  // Returns whether the fragment was shaded.
-  bool fragment(int x, int y, std::size_t idx, float* frag_varyings, FragmentInput& in) const {
-    // Barycentrics from the planes through the float positions (see SetupTriangle); window
-    // depth is linear in window space.
+  // Barycentrics of vertices 1 and 2 at the center of (x, y), from the planes through the float
+  // positions (see SetupTriangle).
+  void barycentrics(int x, int y, double& b1, double& b2) const {
     const double dx = double(x) + 0.5 - t.b_x0, dy = double(y) + 0.5 - t.b_y0;
-    const double b1 = t.b1_dx * dx + t.b1_dy * dy;
-    const double b2 = t.b2_dx * dx + t.b2_dy * dy;
-    const float z = std::clamp(float(double(t.z[0]) + b1 * dz1 + b2 * dz2), t.z_lo, t.z_hi);
-    if (!(z < fb.depth[idx])) return false;
-
+    b1 = t.b1_dx * dx + t.b1_dy * dy;
+    b2 = t.b2_dx * dx + t.b2_dy * dy;
+  }
+  // Window depth, linear in window space, kept in the depth range.
+  float depth(double b1, double b2) const {
+    return std::clamp(float(double(t.z[0]) + b1 * dz1 + b2 * dz2), t.z_lo, t.z_hi);
+  }
+  // Perspective-correct varyings into lane `lane` of the batch; returns 1/w there.
+  float varyings_into(double b1, double b2, FragmentBatch& batch, int lane) const {
     // Perspective correction: interpolate attribute/w and 1/w linearly, then divide.
     const double b0 = 1.0 - b1 - b2;
     const double p0 = b0 * inv_w0, p1 = b1 * inv_w1, p2 = b2 * inv_w2;
@@ -74,26 +50,63 @@ struct Interpolator {
     const float* __restrict d1 = varyings + num_varyings;
     const float* __restrict d2 = varyings + 2 * num_varyings;
     // Relative to vertex 0, so that a varying equal at all three vertices stays exact.
-    for (int j = 0; j < num_varyings; ++j) frag_varyings[j] = a0[j] + w1 * d1[j] + w2 * d2[j];
-
-    in.frag_coord = glm::vec4(float(x) + 0.5f, float(y) + 0.5f, z, float(inv_w));
-    const FragmentOutput out = fs.shade(in);
-    fb.depth[idx] = z;
-    fb.color[idx] = out.color;
-    if (write_aux) fb.aux[idx] = out.aux;
-    return true;
+    for (int j = 0; j < num_varyings; ++j) batch.varyings[j][lane] = a0[j] + w1 * d1[j] + w2 * d2[j];
+    return float(inv_w);
   }
 };
+
+// The covered centers of one row, [lo, hi] (empty when lo > hi): convex, so one span.
+struct Span {
+  int lo = 1, hi = 0;
+};
+
+Span row_span(const Edge* edges, int x0, int x1, int y) {
+  const std::int64_t px0 = fixed::pixel_center(x0);
+  const std::int64_t py = fixed::pixel_center(y);
+  std::int64_t e[3];
+  for (int i = 0; i < 3; ++i) e[i] = edges[i].at(px0, py);
+  Span span;
+  if (x1 - x0 + 1 < kSpanDivisionMinWidth) {
+    // Inside iff E_i + bias_i >= 0 for all i, i.e. (E + bias) has no sign bit in any edge.
+    for (int x = x0; x <= x1; ++x) {
+      if (((e[0] + edges[0].bias) | (e[1] + edges[1].bias) | (e[2] + edges[2].bias)) >= 0) {
+        if (span.lo > span.hi) span.lo = x;
+        span.hi = x;
+      } else if (span.lo <= span.hi) {
+        break;  // past the span
+      }
+      for (int i = 0; i < 3; ++i) e[i] += edges[i].step_x;
+    }
+    return span;
+  }
+  // Exact span: E_i(x0 + k) + bias_i = e_i + bias_i + k * step_i >= 0 for all i.
+  std::int64_t k_lo = 0, k_hi = x1 - x0;
+  for (int i = 0; i < 3; ++i) {
+    const std::int64_t c = e[i] + edges[i].bias;
+    const std::int64_t s = edges[i].step_x;
+    if (s == 0) {
+      if (c < 0) k_hi = -1;
+    } else if (s < 0) {
+      k_hi = std::min(k_hi, floor_div(c, -s));
+    } else {
+      k_lo = std::max(k_lo, ceil_div(-c, s));
+    }
+  }
+  if (k_lo <= k_hi) {
+    span.lo = x0 + int(k_lo);
+    span.hi = x0 + int(k_hi);
+  }
+  return span;
+}
 
 }  // namespace
 
 bool triangle_may_cover(const SetupTriangle& t, const PixelRect& rect) {
-  const Edge edges[3] = {make_edge(t.x[1], t.y[1], t.x[2], t.y[2]),
-                         make_edge(t.x[2], t.y[2], t.x[0], t.y[0]),
-                         make_edge(t.x[0], t.y[0], t.x[1], t.y[1])};
+  const TriangleEdges te(t.x, t.y);
+  const Edge* edges = te.e;
   const std::int64_t cx0 = fixed::pixel_center(rect.x0), cx1 = fixed::pixel_center(rect.x1);
   const std::int64_t cy0 = fixed::pixel_center(rect.y0), cy1 = fixed::pixel_center(rect.y1);
-  for (const Edge& e : edges) {
+  for (const Edge& e : te.e) {
     // E is linear, so its largest value over the rectangle of centers is at a corner.
     const std::int64_t best = std::max(std::max(e.at(cx0, cy0), e.at(cx1, cy0)),
                                        std::max(e.at(cx0, cy1), e.at(cx1, cy1)));
@@ -102,16 +115,38 @@ bool triangle_may_cover(const SetupTriangle& t, const PixelRect& rect) {
   return true;
 }
 
+FragmentSink::FragmentSink(const FragmentProgram& fs, Framebuffer& fb, int num_varyings)
+    : fs_(fs), fb_(fb), write_aux_(!fb.aux.empty()) {
+  batch_.num_varyings = num_varyings;
+  // Lanes that are not live still go through the programs' SIMD loops: give them harmless values.
+  for (auto* rows : {&batch_.frag_coord[0], &batch_.color[0], &batch_.aux[0]})
+    std::fill_n(rows[0], 4 * kFragmentLanes, 0.0f);
+  std::fill_n(batch_.varyings[0], kMaxVaryings * kFragmentLanes, 0.0f);
+}
+
+void FragmentSink::flush() {
+  if (batch_.quads == 0) return;
+  fs_.shade_batch(batch_);
+  const int lanes = batch_.lanes();
+  for (int l = 0; l < lanes; ++l) {
+    if (!batch_.live[l]) continue;
+    const std::size_t idx = pixel_[l];
+    fb_.color[idx] = glm::vec4(batch_.color[0][l], batch_.color[1][l], batch_.color[2][l],
+                               batch_.color[3][l]);
+    if (write_aux_)
+      fb_.aux[idx] = glm::vec4(batch_.aux[0][l], batch_.aux[1][l], batch_.aux[2][l],
+                               batch_.aux[3][l]);
+  }
+  batch_.quads = 0;
+}
+
 std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int num_varyings,
-                              const PixelRect& rect, const FragmentProgram& fs, Framebuffer& fb) {
+                              const PixelRect& rect, FragmentSink& sink) {
   const int x0 = std::max(rect.x0, t.min_x), x1 = std::min(rect.x1, t.max_x);
   const int y0 = std::max(rect.y0, t.min_y), y1 = std::min(rect.y1, t.max_y);
   if (x0 > x1 || y0 > y1) return 0;
 
-  // Edge i is opposite vertex i, so E_i / area2 is the barycentric weight of vertex i.
-  const Edge edges[3] = {make_edge(t.x[1], t.y[1], t.x[2], t.y[2]),
-                         make_edge(t.x[2], t.y[2], t.x[0], t.y[0]),
-                         make_edge(t.x[0], t.y[0], t.x[1], t.y[1])};
+  const TriangleEdges te(t.x, t.y);
   const Interpolator interp{t,
                             varyings,
                             num_varyings,
@@ -119,56 +154,75 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
                             double(t.z[2]) - t.z[0],
                             t.inv_w[0],
                             t.inv_w[1],
-                            t.inv_w[2],
-                            fs,
-                            fb,
-                            !fb.aux.empty()};
+                            t.inv_w[2]};
+  Framebuffer& fb = sink.fb_;
+  FragmentBatch& batch = sink.batch_;
 
-  float frag_varyings[kMaxVaryings] = {};  // slots past num_varyings read as 0
-  FragmentInput in;
-  in.front_facing = t.front_facing;
-  in.varyings = frag_varyings;
-
-  std::uint64_t shaded = 0;
-  const std::int64_t px0 = fixed::pixel_center(x0);
-  const bool divide = x1 - x0 + 1 >= kSpanDivisionMinWidth;
-  for (int y = y0; y <= y1; ++y) {
-    const std::int64_t py = fixed::pixel_center(y);
-    std::int64_t e[3];
-    for (int i = 0; i < 3; ++i) e[i] = edges[i].at(px0, py);
-    const std::size_t row = fb.index(x0, y);
-
-    if (!divide) {
-      // Inside iff E_i + bias_i >= 0 for all i, i.e. (E + bias) has no sign bit in any edge.
-      for (int x = x0; x <= x1; ++x) {
-        if (((e[0] + edges[0].bias) | (e[1] + edges[1].bias) | (e[2] + edges[2].bias)) >= 0)
-          shaded += interp.fragment(x, y, row + (x - x0), frag_varyings, in);
-        for (int i = 0; i < 3; ++i) e[i] += edges[i].step_x;
+  std::uint64_t passed = 0;
+  // Rows in aligned pairs: one quad row at a time.
+  for (int qy = y0 & ~1; qy <= y1; qy += 2) {
+    Span span[2];
+    for (int r = 0; r < 2; ++r)
+      if (qy + r >= y0 && qy + r <= y1) span[r] = row_span(te.e, x0, x1, qy + r);
+    const bool has0 = span[0].lo <= span[0].hi, has1 = span[1].lo <= span[1].hi;
+    if (!has0 && !has1) continue;
+    const int lo = has0 && has1 ? std::min(span[0].lo, span[1].lo) : (has0 ? span[0].lo : span[1].lo);
+    const int hi = has0 && has1 ? std::max(span[0].hi, span[1].hi) : (has0 ? span[0].hi : span[1].hi);
+    for (int qx = lo & ~1; qx <= hi; qx += 2) {
+      const int base = 4 * batch.quads;
+      bool any = false;
+      for (int k = 0; k < 4; ++k) {
+        const int x = qx + (k & 1), y = qy + (k >> 1);
+        const Span& sp = span[k >> 1];
+        const int lane = base + k;
+        batch.live[lane] = 0;
+        if (x < sp.lo || x > sp.hi) continue;
+        double b1, b2;
+        interp.barycentrics(x, y, b1, b2);
+        const float z = interp.depth(b1, b2);
+        const std::size_t idx = fb.index(x, y);
+        if (!(z < fb.depth[idx])) continue;
+        fb.depth[idx] = z;  // programs do not discard: the depth write is final
+        const float inv_w = interp.varyings_into(b1, b2, batch, lane);
+        batch.frag_coord[0][lane] = float(x) + 0.5f;
+        batch.frag_coord[1][lane] = float(y) + 0.5f;
+        batch.frag_coord[2][lane] = z;
+        batch.frag_coord[3][lane] = inv_w;
+        batch.front_facing[lane] = t.front_facing;
+        batch.live[lane] = 1;
+        sink.pixel_[lane] = idx;
+        any = true;
+        ++passed;
       }
-      continue;
-    }
-
-    // Exact span of this row: E_i(x0 + k) + bias_i = e_i + bias_i + k * step_i >= 0 for all i.
-    std::int64_t k_lo = 0, k_hi = x1 - x0;
-    for (int i = 0; i < 3; ++i) {
-      const std::int64_t c = e[i] + edges[i].bias;
-      const std::int64_t s = edges[i].step_x;
-      if (s == 0) {
-        if (c < 0) k_hi = -1;
-      } else if (s < 0) {
-        k_hi = std::min(k_hi, floor_div(c, -s));
-      } else {
-        k_lo = std::max(k_lo, ceil_div(-c, s));
-      }
-    }
-    if (k_lo > k_hi) continue;
-    for (int i = 0; i < 3; ++i) e[i] += k_lo * edges[i].step_x;
-    for (std::int64_t k = k_lo; k <= k_hi; ++k) {
-      shaded += interp.fragment(x0 + int(k), y, row + std::size_t(k), frag_varyings, in);
-      for (int i = 0; i < 3; ++i) e[i] += edges[i].step_x;
+      if (!any) continue;
+      if (++batch.quads == kFragmentQuads) sink.flush();
     }
   }
-  return shaded;
+  sink.shaded_ += passed;
+  return passed;
 }
 
 }  // namespace tessref::raster
+
+namespace tessref {
+
+void FragmentProgram::shade_batch(FragmentBatch& batch) const {
+  float varyings[kMaxVaryings] = {};  // slots past num_varyings read as 0
+  FragmentInput in;
+  in.varyings = varyings;
+  const int lanes = batch.lanes();
+  for (int l = 0; l < lanes; ++l) {
+    if (!batch.live[l]) continue;
+    for (int j = 0; j < batch.num_varyings; ++j) varyings[j] = batch.varyings[j][l];
+    in.frag_coord = glm::vec4(batch.frag_coord[0][l], batch.frag_coord[1][l],
+                              batch.frag_coord[2][l], batch.frag_coord[3][l]);
+    in.front_facing = batch.front_facing[l] != 0;
+    const FragmentOutput out = shade(in);
+    for (int c = 0; c < 4; ++c) {
+      batch.color[c][l] = out.color[c];
+      batch.aux[c][l] = out.aux[c];
+    }
+  }
+}
+
+}  // namespace tessref

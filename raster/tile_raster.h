@@ -10,12 +10,34 @@ struct PixelRect {
   int x0, y0, x1, y1;  // inclusive
 };
 
-// Shades the pixels of rect whose centers the triangle covers (fill rule in common/fixed_point.h)
-// and that pass the depth test LESS; returns how many were shaded. varyings: the triangle's
+// Collects the fragments of one tile's triangles into quad batches and shades them batch by
+// batch. Depth is tested and written as fragments arrive (programs do not discard), so a later
+// triangle is tested against an earlier one's depth even in the same batch; colors are written in
+// arrival order when a batch is shaded, so the last fragment to pass wins, as in submission order.
+class FragmentSink {
+ public:
+  FragmentSink(const FragmentProgram& fs, Framebuffer& fb, int num_varyings);
+  ~FragmentSink() { flush(); }
+  void flush();
+  std::uint64_t shaded() const { return shaded_; }
+
+ private:
+  friend std::uint64_t raster_triangle(const SetupTriangle&, const float*, int, const PixelRect&,
+                                       FragmentSink&);
+  const FragmentProgram& fs_;
+  Framebuffer& fb_;
+  bool write_aux_;
+  std::uint64_t shaded_ = 0;
+  std::size_t pixel_[kFragmentLanes];
+  FragmentBatch batch_;
+};
+
+// Sends the pixels of rect whose centers the triangle covers (fill rule in common/fixed_point.h)
+// and that pass the depth test LESS to sink; returns how many passed. varyings: the triangle's
 // 3 * num_varyings values as SetupTriangle stores them. The result for a pixel does not depend
 // on rect.
 std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int num_varyings,
-                              const PixelRect& rect, const FragmentProgram& fs, Framebuffer& fb);
+                              const PixelRect& rect, FragmentSink& sink);
 
 // False when no pixel center of rect can be inside t (every center is outside one edge): lets the
 // binner skip tiles that a large triangle's bounding box overlaps but the triangle misses. Exact

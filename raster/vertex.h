@@ -17,12 +17,32 @@ struct ClipVertex {
   std::array<float, kMaxVaryings> varyings{};  // interpolated perspective-correctly
 };
 
-// Triangles as consecutive vertex triples, in submission order: the order is part of the result
-// (depth ties resolve to the earlier triangle), so producers must fill it deterministically.
+// Triangles in submission order: the order is part of the result (depth ties resolve to the
+// earlier triangle), so producers must fill it deterministically. Indexed (3 indices per triangle
+// into `vertices`, each vertex stored and transformed once) or, with no indices, consecutive
+// vertex triples. Both forms of the same triangles draw the same bytes.
 struct TriangleBatch {
   std::vector<ClipVertex> vertices;
+  std::vector<std::uint32_t> indices;  // used when indexed
+  bool indexed = false;
   int num_varyings = 0;
-  std::size_t triangle_count() const { return vertices.size() / 3; }
+  std::size_t triangle_count() const { return (indexed ? indices.size() : vertices.size()) / 3; }
+  std::size_t vertex_index(std::size_t triangle, int corner) const {
+    const std::size_t k = 3 * triangle + std::size_t(corner);
+    return indexed ? indices[k] : k;
+  }
+  const ClipVertex& corner(std::size_t triangle, int corner) const {
+    return vertices[vertex_index(triangle, corner)];
+  }
+  void clear() {
+    vertices.clear();
+    indices.clear();
+  }
 };
+
+// The same triangles as consecutive triples (for tools and tests that walk corners in order).
+TriangleBatch expand_indices(const TriangleBatch& batch);
+// Appends src's triangles to dst (indexed if either is).
+void append_triangles(TriangleBatch& dst, const TriangleBatch& src);
 
 }  // namespace tessref

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -36,6 +37,21 @@ glm::vec3 safe_normalize(const glm::vec3& v) {
   return v / std::sqrt(len2);
 }
 
+void TessControlProgram::run_phase(int phase, const Patch& in, PatchOutput& out) const {
+  for (int id = 0; id < output_vertices(); ++id) run(phase, id, in, out);
+}
+
+void TessEvalProgram::evaluate_batch(const PatchOutput& patch, int primitive_id,
+                                     TessEvalBatch& batch) const {
+  const int nv = num_varyings();
+  for (int i = 0; i < batch.count; ++i) {
+    const glm::vec3 tc(batch.tess_coord[0][i], batch.tess_coord[1][i], batch.tess_coord[2][i]);
+    const ClipVertex v = evaluate(tc, patch, primitive_id);
+    for (int c = 0; c < 4; ++c) batch.position[c][i] = v.position[c];
+    for (int k = 0; k < nv; ++k) batch.varyings[k][i] = v.varyings[k];
+  }
+}
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -44,17 +60,37 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-// What one task (a fixed batch of patches) produces; concatenated in task order afterwards.
-struct TaskResult {
-  // Triangles as indices into `evaluated` (each domain point once): expanded straight into the
-  // output batch afterwards, so the large triangle stream is written once.
-  std::vector<ClipVertex> evaluated;
-  std::vector<std::uint32_t> triangles;
+// One patch of the range after the control stage: its generated pattern (null when the patch is
+// invalid or discarded) and, for triangle layouts, where its vertices and indices go in the
+// output batch.
+struct PatchSlot {
+  std::shared_ptr<const TessPattern> pattern;
+  std::size_t first_vertex = 0;
+  std::size_t first_index = 0;
+};
+
+// What one task (a fixed batch of patches) keeps; reused from range to range.
+struct TaskScratch {
+  std::vector<ClipVertex> evaluated;  // isolines and points only: the patch's vertices
   std::vector<ClipVertex> lines;
   std::vector<ClipVertex> points;
   std::vector<TessDumpRecord> dump;
   TessStats stats;
+  // The last lookup: neighbouring patches usually share their levels.
+  TessLevels memo_levels;
+  std::shared_ptr<const TessPattern> memo;
 };
+
+struct ExecutorScratch {
+  std::vector<PatchOutput> outputs;  // per patch of the range: the TCS output, the TES input
+  std::vector<PatchSlot> slots;
+  std::vector<TaskScratch> tasks;
+};
+
+bool same_levels(const TessLevels& a, const TessLevels& b) {
+  return std::memcmp(a.outer.data(), b.outer.data(), sizeof(a.outer)) == 0 &&
+         std::memcmp(a.inner.data(), b.inner.data(), sizeof(a.inner)) == 0;
+}
 
 // Gathers gl_in[] for one patch; false if an index falls outside the vertex buffer.
 bool gather_patch(const TessDrawInput& input, std::size_t p, Patch& patch) {
@@ -69,72 +105,122 @@ bool gather_patch(const TessDrawInput& input, std::size_t p, Patch& patch) {
   return true;
 }
 
-void run_task(const TessDrawInput& input, std::size_t first, std::size_t last,
-              const TessControlProgram& tcs, const TessEvalProgram& tes, const TessLayout& layout,
-              const TessOptions& options, TaskResult& result) {
+// Control stage and primitive generation for patches [first, last) of the range starting at
+// range_first: fills their slots and TCS outputs.
+void control_task(const TessDrawInput& input, std::size_t range_first, std::size_t first,
+                  std::size_t last, const TessControlProgram& tcs, const TessLayout& layout,
+                  const TessOptions& options, TessPatternCache& cache, ExecutorScratch& ex,
+                  TaskScratch& task) {
   Patch in;
-  PatchOutput tcs_out;
-  TessDomainPoints domain;
   const int n_out = tcs.output_vertices();
   const int n_phases = tcs.phases();
   for (std::size_t p = first; p < last; ++p) {
-    ++result.stats.patches_in;
+    PatchSlot& slot = ex.slots[p - range_first];
+    slot.pattern.reset();
+    ++task.stats.patches_in;
     if (!gather_patch(input, p, in)) {
-      ++result.stats.patches_invalid;
+      ++task.stats.patches_invalid;
       continue;
     }
-    // TCS: every invocation finishes phase k before any starts phase k + 1 (barrier()).
+    // TCS: every invocation finishes phase k before any starts phase k + 1 (barrier()). Outputs
+    // an invocation does not write read as zero.
     auto t0 = Clock::now();
-    tcs_out = PatchOutput{};
-    tcs_out.vertex_count = n_out;
-    for (int phase = 0; phase < n_phases; ++phase)
-      for (int id = 0; id < n_out; ++id) tcs.run(phase, id, in, tcs_out);
-    result.stats.tcs_seconds += seconds_since(t0);
+    PatchOutput& out = ex.outputs[p - range_first];
+    for (int v = 0; v < n_out; ++v) out.vertices[v] = StageVertex{};
+    out.patch = {};
+    out.levels = TessLevels{};
+    out.vertex_count = n_out;
+    for (int phase = 0; phase < n_phases; ++phase) tcs.run_phase(phase, in, out);
+    task.stats.tcs_seconds += seconds_since(t0);
 
     t0 = Clock::now();
-    generate_tessellation(layout, tcs_out.levels, options.profile, domain);
-    result.stats.tpg_seconds += seconds_since(t0);
-    if (domain.discarded) {
-      ++result.stats.patches_discarded;
+    if (!task.memo || !same_levels(task.memo_levels, out.levels)) {
+      task.memo = cache.get(layout, out.levels, options.profile);
+      task.memo_levels = out.levels;
+    }
+    task.stats.tpg_seconds += seconds_since(t0);
+    if (task.memo->points.discarded) {
+      ++task.stats.patches_discarded;
       continue;
     }
+    slot.pattern = task.memo;
+  }
+}
 
-    // TES: once per unique domain point, in generation order.
-    t0 = Clock::now();
-    const std::size_t first_point = result.evaluated.size();
-    result.evaluated.resize(first_point + domain.coords.size());
-    ClipVertex* evaluated = result.evaluated.data() + first_point;
-    for (std::size_t i = 0; i < domain.coords.size(); ++i)
-      evaluated[i] = tes.evaluate(domain.coords[i], tcs_out, in.primitive_id);
-    result.stats.tes_seconds += seconds_since(t0);
-    result.stats.domain_points += domain.coords.size();
-
-    if (options.dump) {
-      for (std::size_t i = 0; i < domain.coords.size(); ++i) {
-        const auto& vy = evaluated[i].varyings;
-        result.dump.push_back(TessDumpRecord{
-            std::uint32_t(p), domain.coords[i],
-            glm::vec3(vy[kVaryingPosition], vy[kVaryingPosition + 1], vy[kVaryingPosition + 2]),
-            glm::vec3(vy[kVaryingNormal], vy[kVaryingNormal + 1], vy[kVaryingNormal + 2])});
-      }
+// Evaluates the TES over one patch's pattern into dst (one ClipVertex per domain point).
+void evaluate_patch(const TessEvalProgram& tes, const PatchOutput& patch, int primitive_id,
+                    const TessPattern& pattern, int num_varyings, ClipVertex* dst) {
+  TessEvalBatch batch;
+  const std::size_t n = pattern.points.coords.size();
+  for (std::size_t start = 0; start < n; start += kTessEvalBatch) {
+    batch.count = int(std::min<std::size_t>(kTessEvalBatch, n - start));
+    for (int c = 0; c < 3; ++c) batch.tess_coord[c] = pattern.coord[c].data() + start;
+    tes.evaluate_batch(patch, primitive_id, batch);
+    for (int i = 0; i < batch.count; ++i) {
+      ClipVertex& v = dst[start + i];
+      v.position = glm::vec4(batch.position[0][i], batch.position[1][i], batch.position[2][i],
+                             batch.position[3][i]);
+      for (int k = 0; k < num_varyings; ++k) v.varyings[k] = batch.varyings[k][i];
+      for (int k = num_varyings; k < kMaxVaryings; ++k) v.varyings[k] = 0.0f;
     }
+  }
+}
+
+void append_dump(std::uint32_t patch_id, const TessPattern& pattern, const ClipVertex* v,
+                 std::vector<TessDumpRecord>& dump) {
+  for (std::size_t i = 0; i < pattern.points.coords.size(); ++i) {
+    const auto& vy = v[i].varyings;
+    dump.push_back(TessDumpRecord{
+        patch_id, pattern.points.coords[i],
+        glm::vec3(vy[kVaryingPosition], vy[kVaryingPosition + 1], vy[kVaryingPosition + 2]),
+        glm::vec3(vy[kVaryingNormal], vy[kVaryingNormal + 1], vy[kVaryingNormal + 2])});
+  }
+}
+
+// Evaluation stage for patches [first, last): triangles straight into out at their slots'
+// offsets; isolines and points into the task's own buffers.
+void evaluate_task(std::size_t range_first, std::size_t first, std::size_t last,
+                   const TessEvalProgram& tes, const TessOptions& options,
+                   ExecutorScratch& ex, TaskScratch& task, TriangleBatch& out) {
+  const int nv = std::clamp(tes.num_varyings(), 0, kMaxVaryings);
+  for (std::size_t p = first; p < last; ++p) {
+    const PatchSlot& slot = ex.slots[p - range_first];
+    if (!slot.pattern) continue;
+    const TessPattern& pattern = *slot.pattern;
+    const TessDomainPoints& domain = pattern.points;
+    const PatchOutput& patch = ex.outputs[p - range_first];
+    const std::size_t n = domain.coords.size();
+
+    auto t0 = Clock::now();
+    ClipVertex* evaluated = nullptr;
+    if (domain.vertices_per_primitive == 3) {
+      evaluated = out.vertices.data() + slot.first_vertex;
+    } else {
+      task.evaluated.resize(n);
+      evaluated = task.evaluated.data();
+    }
+    evaluate_patch(tes, patch, int(p), pattern, nv, evaluated);
+    task.stats.tes_seconds += seconds_since(t0);
+    task.stats.domain_points += n;
+    if (options.dump) append_dump(std::uint32_t(p), pattern, evaluated, task.dump);
 
     // Primitive assembly in the generator's emission order.
     const std::size_t prims = domain.primitive_count();
     const std::size_t used = prims * std::size_t(domain.vertices_per_primitive);
     if (domain.vertices_per_primitive == 3) {
-      result.stats.triangles_out += prims;
-      for (std::size_t i = 0; i < used; ++i)
-        result.triangles.push_back(std::uint32_t(first_point + domain.indices[i]));
+      task.stats.triangles_out += prims;
+      std::uint32_t* dst = out.indices.data() + slot.first_index;
+      const auto base = std::uint32_t(slot.first_vertex);
+      for (std::size_t i = 0; i < used; ++i) dst[i] = base + domain.indices[i];
       continue;
     }
     std::vector<ClipVertex>* sink = nullptr;
     if (domain.vertices_per_primitive == 2) {
-      result.stats.lines_out += prims;
-      sink = options.lines ? &result.lines : nullptr;
+      task.stats.lines_out += prims;
+      sink = options.lines ? &task.lines : nullptr;
     } else {
-      result.stats.points_out += prims;
-      sink = options.points ? &result.points : nullptr;
+      task.stats.points_out += prims;
+      sink = options.points ? &task.points : nullptr;
     }
     if (sink) {
       const std::size_t base = sink->size();
@@ -167,48 +253,70 @@ void append(std::vector<T>& dst, const std::vector<T>& src) {
   dst.insert(dst.end(), src.begin(), src.end());
 }
 
-void clear(TaskResult& r) {
-  r.evaluated.clear();
-  r.triangles.clear();
-  r.lines.clear();
-  r.points.clear();
-  r.dump.clear();
-  r.stats = TessStats{};
+void clear(TaskScratch& t) {
+  t.lines.clear();
+  t.points.clear();
+  t.dump.clear();
+  t.stats = TessStats{};
 }
 
-// The body of tessellate(); `results` keeps the tasks' buffers (capacity only) between calls.
+// The body of tessellate(); `ex` keeps its buffers (capacity only) between calls.
 TessStats tessellate_range(const TessDrawInput& input, std::size_t first_patch,
                            std::size_t last_patch, const TessControlProgram& tcs,
                            const TessEvalProgram& tes, const TessOptions& options,
-                           const Parallel& parallel, TriangleBatch& out,
-                           std::vector<TaskResult>& results) {
+                           const Parallel& parallel, TriangleBatch& out, ExecutorScratch& ex) {
   out.num_varyings = tes.num_varyings();
+  if (!out.indexed) {  // earlier contents as consecutive triples: index them as they are
+    out.indices.resize(out.vertices.size() / 3 * 3);
+    for (std::size_t k = 0; k < out.indices.size(); ++k) out.indices[k] = std::uint32_t(k);
+    out.vertices.resize(out.indices.size());
+    out.indexed = true;
+  }
   last_patch = std::min(last_patch, input.patch_count());
   if (first_patch >= last_patch) return TessStats{};
 
   const TessLayout layout = tes.layout();
+  TessPatternCache& cache = options.patterns ? *options.patterns : TessPatternCache::shared();
   const std::size_t grain = std::max<std::size_t>(1, options.patches_per_task);
   const std::size_t n = last_patch - first_patch;
   const std::size_t tasks = (n + grain - 1) / grain;
-  if (results.size() < tasks) results.resize(tasks);  // one preassigned slot per task
-  for (std::size_t t = 0; t < tasks; ++t) clear(results[t]);
-  parallel.for_each(tasks, [&](std::size_t t) {
+  if (ex.outputs.size() < n) ex.outputs.resize(n);
+  if (ex.slots.size() < n) ex.slots.resize(n);
+  if (ex.tasks.size() < tasks) ex.tasks.resize(tasks);  // one preassigned slot per task
+  for (std::size_t t = 0; t < tasks; ++t) clear(ex.tasks[t]);
+  auto task_range = [&](std::size_t t) {
     const std::size_t a = first_patch + t * grain;
-    run_task(input, a, std::min(a + grain, last_patch), tcs, tes, layout, options, results[t]);
+    return std::pair{a, std::min(a + grain, last_patch)};
+  };
+
+  parallel.for_each(tasks, [&](std::size_t t) {
+    const auto [a, b] = task_range(t);
+    control_task(input, first_patch, a, b, tcs, layout, options, cache, ex, ex.tasks[t]);
   });
 
-  // Concatenate in patch order: each task expands its triangles into its own range of out.
-  std::vector<std::size_t> offset(tasks + 1, out.vertices.size());
-  for (std::size_t t = 0; t < tasks; ++t) offset[t + 1] = offset[t] + results[t].triangles.size();
-  out.vertices.resize(offset[tasks]);
+  // Output ranges in patch order: the batch's bytes never depend on the split into tasks.
+  std::size_t vertices = out.vertices.size(), indices = out.indices.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    PatchSlot& slot = ex.slots[i];
+    if (!slot.pattern || slot.pattern->points.vertices_per_primitive != 3) continue;
+    slot.first_vertex = vertices;
+    slot.first_index = indices;
+    vertices += slot.pattern->points.coords.size();
+    indices += slot.pattern->points.indices.size();
+  }
+  if (vertices > std::size_t(UINT32_MAX))
+    throw std::length_error("tessellate: more than 2^32 vertices in one batch");
+  out.vertices.resize(vertices);
+  out.indices.resize(indices);
+
   parallel.for_each(tasks, [&](std::size_t t) {
-    const TaskResult& r = results[t];
-    ClipVertex* dst = out.vertices.data() + offset[t];
-    for (std::size_t i = 0; i < r.triangles.size(); ++i) dst[i] = r.evaluated[r.triangles[i]];
+    const auto [a, b] = task_range(t);
+    evaluate_task(first_patch, a, b, tes, options, ex, ex.tasks[t], out);
   });
+
   TessStats stats;
   for (std::size_t t = 0; t < tasks; ++t) {
-    const TaskResult& r = results[t];
+    const TaskScratch& r = ex.tasks[t];
     if (options.lines) append(*options.lines, r.lines);
     if (options.points) append(*options.points, r.points);
     if (options.dump) append(*options.dump, r.dump);
@@ -223,9 +331,9 @@ TessStats tessellate(const TessDrawInput& input, std::size_t first_patch, std::s
                      const TessControlProgram& tcs, const TessEvalProgram& tes,
                      const TessOptions& options, const Parallel& parallel, TriangleBatch& out) {
   validate(input, tcs, tes);
-  std::vector<TaskResult> results;
+  ExecutorScratch scratch;
   return tessellate_range(input, first_patch, last_patch, tcs, tes, options, parallel, out,
-                          results);
+                          scratch);
 }
 
 TessStats tessellate_chunks(const TessDrawInput& input, std::size_t chunk_patches,
@@ -236,12 +344,13 @@ TessStats tessellate_chunks(const TessDrawInput& input, std::size_t chunk_patche
   const std::size_t total = input.patch_count();
   const std::size_t chunk = std::max<std::size_t>(1, chunk_patches);
   TessStats stats;
-  TriangleBatch batch;                // reused: its capacity stays at about one chunk
-  std::vector<TaskResult> results;    // likewise the tasks' buffers
+  TriangleBatch batch;      // reused: its capacity stays at about one chunk
+  batch.indexed = true;
+  ExecutorScratch scratch;  // likewise the per-patch and per-task buffers
   for (std::size_t first = 0; first < total; first += chunk) {
-    batch.vertices.clear();
+    batch.clear();
     stats += tessellate_range(input, first, std::min(first + chunk, total), tcs, tes, options,
-                              parallel, batch, results);
+                              parallel, batch, scratch);
     consume(batch);
   }
   return stats;

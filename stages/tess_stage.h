@@ -13,6 +13,7 @@
 #include "common/parallel.h"
 #include "raster/vertex.h"
 #include "stages/tpg.h"
+#include "stages/tpg_cache.h"
 
 namespace tessref {
 
@@ -69,6 +70,20 @@ class TessControlProgram {
   virtual int output_vertices() const = 0;  // layout(vertices = N), 1..kMaxPatchVertices
   virtual int phases() const { return 1; }
   virtual void run(int phase, int invocation_id, const Patch& in, PatchOutput& out) const = 0;
+  // One phase of every invocation of the patch (gl_InvocationID 0..N-1): what the executor calls.
+  // The default runs run() for each invocation in increasing order; a batched program (the GLSL
+  // executor) overrides it to run all invocations together.
+  virtual void run_phase(int phase, const Patch& in, PatchOutput& out) const;
+};
+
+// A batch of domain points of one patch for the TES, as structure of arrays: gl_TessCoord in,
+// gl_Position and varyings out, point i in column i. The batch is at most kTessEvalBatch points.
+inline constexpr int kTessEvalBatch = 64;
+struct TessEvalBatch {
+  int count = 0;
+  const float* tess_coord[3] = {};  // gl_TessCoord.x, .y, .z: count values each
+  alignas(32) float position[4][kTessEvalBatch];
+  alignas(32) float varyings[kMaxVaryings][kTessEvalBatch];  // rows 0 .. num_varyings() - 1
 };
 
 // A tessellation evaluation shader: its input layout qualifiers and one invocation per domain
@@ -83,6 +98,11 @@ class TessEvalProgram {
   // w gl_in[2]; quads and isolines: (u, v, 0)).
   virtual ClipVertex evaluate(const glm::vec3& tess_coord, const PatchOutput& patch,
                               int primitive_id) const = 0;
+  // What the executor calls: batch.count invocations at once. The default runs evaluate() per
+  // point; an override (built-in programs over SIMD kernels, the GLSL executor) must write the
+  // same bits as evaluate() would.
+  virtual void evaluate_batch(const PatchOutput& patch, int primitive_id,
+                              TessEvalBatch& batch) const;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -132,12 +152,15 @@ struct TessOptions {
   // layouts that do not produce triangles. Without them such primitives are only counted.
   std::vector<ClipVertex>* lines = nullptr;
   std::vector<ClipVertex>* points = nullptr;
+  // Where generated patterns are looked up; null: TessPatternCache::shared().
+  TessPatternCache* patterns = nullptr;
 };
 
 // Runs TCS -> generate_tessellation -> TES for patches [first_patch, last_patch) of the draw and
 // appends their triangles to out in patch order, then emission order within a patch. Each unique
-// domain point is evaluated once; primitives copy the evaluated vertices. out.num_varyings is set
-// to tes.num_varyings(). The bytes appended do not depend on parallel.threads() nor on
+// domain point is evaluated once and stored once: out becomes an indexed batch (its vertices in
+// patch order, then generation order), triangles index them. out.num_varyings is set to
+// tes.num_varyings(). The bytes appended do not depend on parallel.threads() nor on
 // options.patches_per_task. Memory grows with the range asked for: draw large meshes in chunks
 // (tessellate_chunks below). Throws std::invalid_argument for a patch_vertices or output_vertices
 // outside 1..kMaxPatchVertices or a TES with more than kMaxVaryings varyings.

@@ -9,6 +9,7 @@ namespace tessref::programs {
 struct NormalsShader final : FragmentProgram {
   // out_color: (n * 0.5 + 0.5, 1); out_normal (aux): (n, 1).
   FragmentOutput shade(const FragmentInput& in) const override;
+  void shade_batch(FragmentBatch& batch) const override;  // same bits as shade()
 };
 
 }  // namespace tessref::programs

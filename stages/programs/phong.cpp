@@ -1,7 +1,10 @@
 #include "stages/programs/phong.h"
 
+#include <algorithm>
 #include <cmath>
 
+#include "common/simd.h"
+#include "stages/programs/shading_lanes.h"
 #include "stages/tess_stage.h"
 
 namespace tessref::programs {
@@ -28,6 +31,42 @@ FragmentOutput PhongShader::shade(const FragmentInput& in) const {
   out.color = glm::vec4(c, 1.0f);
   out.aux = glm::vec4(n, 1.0f);
   return out;
+}
+
+ShadingLanes shading_lanes(FragmentBatch& b) {
+  static_assert(kFragmentLanes == 64, "the shading kernels run on 64 lanes");
+  return ShadingLanes{b.lanes(),
+                      b.live,
+                      {b.varyings[kVaryingPosition], b.varyings[kVaryingPosition + 1],
+                       b.varyings[kVaryingPosition + 2]},
+                      {b.varyings[kVaryingNormal], b.varyings[kVaryingNormal + 1],
+                       b.varyings[kVaryingNormal + 2]},
+                      {b.color[0], b.color[1], b.color[2], b.color[3]},
+                      {b.aux[0], b.aux[1], b.aux[2], b.aux[3]}};
+}
+
+void PhongShader::shade_batch(FragmentBatch& batch) const {
+  static_assert(kMaxBatchLights == kMaxLights);
+  PhongBatchUniforms u{};
+  for (int k = 0; k < 3; ++k) {
+    u.eye[k] = u_eye[k];
+    u.color[k] = u_color[k];
+  }
+  u.num_lights = std::clamp(u_num_lights, 0, kMaxLights);
+  for (int i = 0; i < u.num_lights; ++i)
+    for (int k = 0; k < 3; ++k) {
+      u.light_position[i][k] = u_light_position[i][k];
+      u.light_intensity[i][k] = u_light_intensity[i][k];
+    }
+  u.ka = u_ka;
+  u.kd = u_kd;
+  u.ks = u_ks;
+  u.shininess = u_shininess;
+  const ShadingLanes io = shading_lanes(batch);
+  if (simd_path() == SimdPath::Avx2)
+    phong_batch_avx2(u, io);
+  else
+    phong_batch_scalar(u, io);
 }
 
 }  // namespace tessref::programs

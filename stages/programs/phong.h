@@ -28,6 +28,8 @@ struct PhongShader final : FragmentProgram {
 
   // out_color: the shaded color, alpha 1; out_normal (aux): (N, 1).
   FragmentOutput shade(const FragmentInput& in) const override;
+  // The SIMD kernel of shading_batch.h: the same bits as shade() per live lane.
+  void shade_batch(FragmentBatch& batch) const override;
 };
 
 }  // namespace tessref::programs

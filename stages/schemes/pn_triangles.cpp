@@ -1,6 +1,7 @@
 #include "stages/schemes/pn_triangles.h"
 
 #include "stages/schemes/canonical.h"
+#include "stages/schemes/pn_batch.h"
 #include "stages/schemes/flat.h"
 
 namespace tessref {
@@ -188,6 +189,47 @@ glm::vec3 pn_normal(const PatchOutput& patch, const glm::vec3& tc, PnNormalMode 
 
 ClipVertex PnTes::evaluate(const glm::vec3& tc, const PatchOutput& patch, int) const {
   return make_clip_vertex(view_proj, pn_position(patch, tc), pn_normal(patch, tc, normal_mode));
+}
+
+void PnTes::evaluate_batch(const PatchOutput& patch, int primitive_id,
+                           TessEvalBatch& batch) const {
+  if (normal_mode == PnNormalMode::Analytic) {
+    TessEvalProgram::evaluate_batch(patch, primitive_id, batch);
+    return;
+  }
+  // The net in canonical order, exactly the operands pn_position and pn_normal pick.
+  const Net net(patch);
+  const int x = net.order[0], y = net.order[1], z = net.order[2];
+  PnBatchPatch k;
+  auto put = [](float (&dst)[3], const glm::vec3& v) {
+    for (int c = 0; c < 3; ++c) dst[c] = v[c];
+  };
+  put(k.p[0], net.p[x]);
+  put(k.p[1], net.p[y]);
+  put(k.p[2], net.p[z]);
+  put(k.t[0], net.tangent(x, y));
+  put(k.t[1], net.tangent(y, x));
+  put(k.t[2], net.tangent(y, z));
+  put(k.t[3], net.tangent(z, y));
+  put(k.t[4], net.tangent(x, z));
+  put(k.t[5], net.tangent(z, x));
+  put(k.center, net.center);
+  put(k.n[0], net.n[x]);
+  put(k.n[1], net.n[y]);
+  put(k.n[2], net.n[z]);
+  put(k.mid[0], net.mid_normal(x, y));
+  put(k.mid[1], net.mid_normal(y, z));
+  put(k.mid[2], net.mid_normal(x, z));
+  for (int col = 0; col < 4; ++col)
+    for (int row = 0; row < 4; ++row) k.view_proj[4 * col + row] = view_proj[col][row];
+  k.quadratic = normal_mode != PnNormalMode::Linear;
+  float* const clip[4] = {batch.position[0], batch.position[1], batch.position[2],
+                          batch.position[3]};
+  float* const var[6] = {batch.varyings[kVaryingPosition], batch.varyings[kVaryingPosition + 1],
+                         batch.varyings[kVaryingPosition + 2], batch.varyings[kVaryingNormal],
+                         batch.varyings[kVaryingNormal + 1], batch.varyings[kVaryingNormal + 2]};
+  pn_batch_kernel()(k, batch.count, batch.tess_coord[x], batch.tess_coord[y], batch.tess_coord[z],
+                    clip, var);
 }
 
 }  // namespace tessref

@@ -61,6 +61,10 @@ struct PnTes : TessEvalProgram {
   }
   ClipVertex evaluate(const glm::vec3& tess_coord, const PatchOutput& patch,
                       int primitive_id) const override;
+  // Linear and quadratic normal fields run the SIMD kernel of pn_batch.h (same bits as
+  // evaluate()); the analytic field runs evaluate() per point.
+  void evaluate_batch(const PatchOutput& patch, int primitive_id,
+                      TessEvalBatch& batch) const override;
 };
 
 // The pieces of PnTes::evaluate, for tests and tools. tc is gl_TessCoord.

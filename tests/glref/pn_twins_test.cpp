@@ -135,6 +135,7 @@ Reference run_tessref(const PatchMeshData& mesh, const TwinSetup& s) {
   options.dump = &r.records;
   const TessDrawInput input{cp, mesh.indices, 3};
   r.stats = tessellate(input, 0, input.patch_count(), tcs, tes, options, Parallel(1), r.batch);
+  r.batch = expand_indices(r.batch);  // corners in emission order, as GL captures them
   // Bounds for splitting the GL draws, from the levels alone (not from tessref's output).
   for (std::size_t p = 0; p < input.patch_count(); ++p) {
     const glm::vec3 a(cp[mesh.indices[3 * p]].attr[0]), b(cp[mesh.indices[3 * p + 1]].attr[0]),

@@ -61,8 +61,7 @@ TriangleBatch screen_triangles(const Scene& scene, const Mesh& mesh) {
   tes.view_proj = vs.u_view_projection;
   tessellate_chunks(TessDrawInput{control_points, mesh.indices, 3}, 256, tcs, tes, {}, Parallel(2),
                     [&](const TriangleBatch& b) {
-                      out.vertices.insert(out.vertices.end(), b.vertices.begin(),
-                                          b.vertices.end());
+                      append_triangles(out, b);
                     });
   return out;
 }

@@ -42,7 +42,9 @@ inline bool same_bits(const glm::vec3& a, const glm::vec3& b) {
   return bits(a.x) == bits(b.x) && bits(a.y) == bits(b.y) && bits(a.z) == bits(b.z);
 }
 
-inline bool same_bytes(const TriangleBatch& a, const TriangleBatch& b) {
+// The same triangles, corner for corner, bit for bit (indexed or not).
+inline bool same_bytes(const TriangleBatch& indexed_or_not_a, const TriangleBatch& indexed_or_not_b) {
+  const TriangleBatch a = expand_indices(indexed_or_not_a), b = expand_indices(indexed_or_not_b);
   return a.num_varyings == b.num_varyings && a.vertices.size() == b.vertices.size() &&
          std::memcmp(a.vertices.data(), b.vertices.data(),
                      a.vertices.size() * sizeof(ClipVertex)) == 0;

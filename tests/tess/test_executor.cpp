@@ -222,8 +222,7 @@ TEST(TessExecutor, OutputDoesNotDependOnThreadsOrGrain) {
   opt.dump = nullptr;
   tessellate_chunks(input, 10, tcs, tes, opt, Parallel(2), [&](const TriangleBatch& b) {
     ++chunks;
-    joined.num_varyings = b.num_varyings;
-    joined.vertices.insert(joined.vertices.end(), b.vertices.begin(), b.vertices.end());
+    append_triangles(joined, b);
   });
   EXPECT_EQ(chunks, 13u);
   EXPECT_TRUE(same_bytes(joined, ref));
@@ -367,8 +366,8 @@ TEST(TessExecutor, WindingFollowsTheLayoutWithGlCornerMapping) {
       tessellate(TessDrawInput{vs, {}, 3}, 0, 1, tcs, tes, {}, Parallel(1), out);
       ASSERT_GT(out.triangle_count(), 1u);
       for (std::size_t t = 0; t < out.triangle_count(); ++t) {
-        const glm::vec2 a(out.vertices[3 * t].position), b(out.vertices[3 * t + 1].position),
-            c(out.vertices[3 * t + 2].position);
+        const glm::vec2 a(out.corner(t, 0).position), b(out.corner(t, 1).position),
+            c(out.corner(t, 2).position);
         const float area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
         if (winding == TessWinding::Ccw)
           EXPECT_GT(area, 0.0f) << t;

@@ -1,0 +1,33 @@
+#include "raster/vertex.h"
+
+namespace tessref {
+
+TriangleBatch expand_indices(const TriangleBatch& batch) {
+  TriangleBatch out;
+  out.num_varyings = batch.num_varyings;
+  const std::size_t n = batch.triangle_count();
+  out.vertices.reserve(3 * n);
+  for (std::size_t t = 0; t < n; ++t)
+    for (int k = 0; k < 3; ++k) out.vertices.push_back(batch.corner(t, k));
+  return out;
+}
+
+void append_triangles(TriangleBatch& dst, const TriangleBatch& src) {
+  dst.num_varyings = src.num_varyings;
+  if (!dst.indexed && !src.indexed) {
+    dst.vertices.insert(dst.vertices.end(), src.vertices.begin(), src.vertices.end());
+    return;
+  }
+  if (!dst.indexed) {  // turn dst's triples into an identity index list
+    dst.indices.resize(dst.vertices.size());
+    for (std::size_t k = 0; k < dst.indices.size(); ++k) dst.indices[k] = std::uint32_t(k);
+    dst.indexed = true;
+  }
+  const auto base = std::uint32_t(dst.vertices.size());
+  const std::size_t n = 3 * src.triangle_count();
+  for (std::size_t k = 0; k < n; ++k)
+    dst.indices.push_back(base + std::uint32_t(src.vertex_index(k / 3, int(k % 3))));
+  dst.vertices.insert(dst.vertices.end(), src.vertices.begin(), src.vertices.end());
+}
+
+}  // namespace tessref

@@ -1,0 +1,8 @@
+// The avx2 build of the shading batch kernels (this file alone is compiled with -mavx2).
+#include "stages/programs/shading_batch.h"
+
+namespace tessref::programs {
+#define SHADING_SUFFIX avx2
+#include "stages/programs/shading_batch_kernel.inc"
+#undef SHADING_SUFFIX
+}  // namespace tessref::programs
