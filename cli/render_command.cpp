@@ -100,8 +100,9 @@ void run_render(const RenderOptions& o) {
       throw InputError("--dump-tess: the scene does not tessellate (tessellation.enabled is false)");
     dump = std::make_unique<TessDumpWriter>(o.dump_tess);
   }
-  // --repeat: every frame renders the same scene from scratch; the first also feeds --dump-tess
-  // (the records are the same each frame), the last one's framebuffer is written.
+  // --repeat: every frame renders the same scene again into the same framebuffer memory (as a GL
+  // application redraws into its framebuffer); the first also feeds --dump-tess (the records are
+  // the same each frame), the last one's framebuffer is written.
   StageTimes vertex{"vertex", {}}, tessellation{"tessellation", {}}, raster{"raster+fs", {}},
       frame{"frame", {}};
   RenderResult result;
@@ -112,9 +113,8 @@ void run_render(const RenderOptions& o) {
       options.progress = [&](double f) { bar.update((i + f) / o.repeat); };
       if (dump && i == 0)
         options.dump_tess = [&](const std::vector<TessDumpRecord>& r) { dump->write(r); };
-      result = RenderResult{};  // one framebuffer alive at a time
       const auto t0 = Clock::now();
-      result = render_scene(scene, mesh, parallel, options);
+      result.stats = render_scene(scene, mesh, parallel, result.framebuffer, options);
       frame.seconds.push_back(seconds_since(t0));
       vertex.seconds.push_back(result.stats.vertex_seconds);
       tessellation.seconds.push_back(result.stats.tessellation_seconds);

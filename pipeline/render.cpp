@@ -27,6 +27,13 @@ programs::PhongShader phong_shader(const Scene& scene) {
 
 RenderResult render_scene(const Scene& scene, const Mesh& mesh, const Parallel& parallel,
                           const DrawOptions& options) {
+  RenderResult result;
+  result.stats = render_scene(scene, mesh, parallel, result.framebuffer, options);
+  return result;
+}
+
+DrawStats render_scene(const Scene& scene, const Mesh& mesh, const Parallel& parallel,
+                       Framebuffer& fb, const DrawOptions& options) {
   const glm::mat4 view_projection =
       projection_matrix(scene.camera, scene.width, scene.height) * view_matrix(scene.camera);
   const auto vs = programs::TransformVertexShader::from(model_matrix(scene.transform), view_projection);
@@ -38,10 +45,8 @@ RenderResult render_scene(const Scene& scene, const Mesh& mesh, const Parallel& 
   const FragmentProgram& fs =
       scene.shading == Shading::Phong ? static_cast<const FragmentProgram&>(phong) : normals;
 
-  RenderResult result{Framebuffer(scene.width, scene.height, scene.background), {}};
-  result.stats = draw_mesh(mesh, vs, scene.tessellation, state, fs, result.framebuffer, parallel,
-                           options);
-  return result;
+  fb.reset(scene.width, scene.height, scene.background, parallel);
+  return draw_mesh(mesh, vs, scene.tessellation, state, fs, fb, parallel, options);
 }
 
 }  // namespace tessref

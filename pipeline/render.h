@@ -15,5 +15,9 @@ struct RenderResult {
 
 RenderResult render_scene(const Scene& scene, const Mesh& mesh, const Parallel& parallel,
                           const DrawOptions& options = {});
+// The same frame into fb, whose memory is reused when its size matches the scene's (repeated
+// frames: --repeat, benchmarks). The bytes of fb are those render_scene would return.
+DrawStats render_scene(const Scene& scene, const Mesh& mesh, const Parallel& parallel,
+                       Framebuffer& fb, const DrawOptions& options = {});
 
 }  // namespace tessref

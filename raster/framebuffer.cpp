@@ -19,4 +19,21 @@ void Framebuffer::clear(glm::vec4 clear_color) {
   std::fill(aux.begin(), aux.end(), glm::vec4(0.0f));
 }
 
+void Framebuffer::reset(int w, int h, glm::vec4 clear_color, const Parallel& parallel) {
+  w = w > 0 ? w : 0;
+  h = h > 0 ? h : 0;
+  const std::size_t n = std::size_t(w) * std::size_t(h);
+  if (w != width || h != height || color.size() != n || depth.size() != n || aux.size() != n) {
+    *this = Framebuffer(w, h, clear_color);
+    return;
+  }
+  constexpr std::size_t kPixelsPerTask = 1 << 16;
+  parallel.for_each((n + kPixelsPerTask - 1) / kPixelsPerTask, [&](std::size_t t) {
+    const std::size_t a = t * kPixelsPerTask, b = std::min(n, a + kPixelsPerTask);
+    std::fill(color.begin() + a, color.begin() + b, clear_color);
+    std::fill(depth.begin() + a, depth.begin() + b, 1.0f);
+    std::fill(aux.begin() + a, aux.begin() + b, glm::vec4(0.0f));
+  });
+}
+
 }  // namespace tessref

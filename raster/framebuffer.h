@@ -5,6 +5,8 @@
 
 #include <glm/glm.hpp>
 
+#include "common/parallel.h"
+
 namespace tessref {
 
 struct Framebuffer {
@@ -17,6 +19,9 @@ struct Framebuffer {
   Framebuffer() = default;
   Framebuffer(int w, int h, glm::vec4 clear_color = glm::vec4(0.0f));
   void clear(glm::vec4 clear_color);
+  // Makes the framebuffer w x h and clears it, reusing its memory when the size is unchanged (a
+  // frame drawn again then pays no allocation and no page faults), on all of parallel's threads.
+  void reset(int w, int h, glm::vec4 clear_color, const Parallel& parallel);
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * width + x; }
 };
 
