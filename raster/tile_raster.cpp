@@ -19,42 +19,6 @@ std::int64_t ceil_div(std::int64_t a, std::int64_t b) { return -floor_div(-a, b)
 // division first (three 64-bit divisions cost about as much as a dozen pixel tests).
 constexpr int kSpanDivisionMinWidth = 12;
 
-// Everything per triangle that the per-fragment work reads.
-struct Interpolator {
-  const SetupTriangle& t;
-  const float* varyings;  // a0, a1 - a0, a2 - a0; num_varyings each
-  int num_varyings;
-  double dz1, dz2;
-  double inv_w0, inv_w1, inv_w2;
-
-  // Barycentrics of vertices 1 and 2 at the center of (x, y), from the planes through the float
-  // positions (see SetupTriangle).
-  void barycentrics(int x, int y, double& b1, double& b2) const {
-    const double dx = double(x) + 0.5 - t.b_x0, dy = double(y) + 0.5 - t.b_y0;
-    b1 = t.b1_dx * dx + t.b1_dy * dy;
-    b2 = t.b2_dx * dx + t.b2_dy * dy;
-  }
-  // Window depth, linear in window space, kept in the depth range.
-  float depth(double b1, double b2) const {
-    return std::clamp(float(double(t.z[0]) + b1 * dz1 + b2 * dz2), t.z_lo, t.z_hi);
-  }
-  // Perspective-correct varyings into lane `lane` of the batch; returns 1/w there.
-  float varyings_into(double b1, double b2, FragmentBatch& batch, int lane) const {
-    // Perspective correction: interpolate attribute/w and 1/w linearly, then divide.
-    const double b0 = 1.0 - b1 - b2;
-    const double p0 = b0 * inv_w0, p1 = b1 * inv_w1, p2 = b2 * inv_w2;
-    const double inv_w = p0 + p1 + p2;
-    const double w = 1.0 / inv_w;
-    const float w1 = float(p1 * w), w2 = float(p2 * w);
-    const float* __restrict a0 = varyings;
-    const float* __restrict d1 = varyings + num_varyings;
-    const float* __restrict d2 = varyings + 2 * num_varyings;
-    // Relative to vertex 0, so that a varying equal at all three vertices stays exact.
-    for (int j = 0; j < num_varyings; ++j) batch.varyings[j][lane] = a0[j] + w1 * d1[j] + w2 * d2[j];
-    return float(inv_w);
-  }
-};
-
 // The covered centers of one row, [lo, hi] (empty when lo > hi): convex, so one span.
 struct Span {
   int lo = 1, hi = 0;
@@ -103,7 +67,6 @@ Span row_span(const Edge* edges, int x0, int x1, int y) {
 
 bool triangle_may_cover(const SetupTriangle& t, const PixelRect& rect) {
   const TriangleEdges te(t.x, t.y);
-  const Edge* edges = te.e;
   const std::int64_t cx0 = fixed::pixel_center(rect.x0), cx1 = fixed::pixel_center(rect.x1);
   const std::int64_t cy0 = fixed::pixel_center(rect.y0), cy1 = fixed::pixel_center(rect.y1);
   for (const Edge& e : te.e) {
@@ -122,6 +85,8 @@ FragmentSink::FragmentSink(const FragmentProgram& fs, Framebuffer& fb, int num_v
   for (auto* rows : {&batch_.frag_coord[0], &batch_.color[0], &batch_.aux[0]})
     std::fill_n(rows[0], 4 * kFragmentLanes, 0.0f);
   std::fill_n(batch_.varyings[0], kMaxVaryings * kFragmentLanes, 0.0f);
+  std::fill_n(b1_, kFragmentLanes, 0.0);
+  std::fill_n(b2_, kFragmentLanes, 0.0);
 }
 
 void FragmentSink::flush() {
@@ -147,19 +112,18 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
   if (x0 > x1 || y0 > y1) return 0;
 
   const TriangleEdges te(t.x, t.y);
-  const Interpolator interp{t,
-                            varyings,
-                            num_varyings,
-                            double(t.z[1]) - t.z[0],
-                            double(t.z[2]) - t.z[0],
-                            t.inv_w[0],
-                            t.inv_w[1],
-                            t.inv_w[2]};
+  const double dz1 = double(t.z[1]) - t.z[0], dz2 = double(t.z[2]) - t.z[0];
+  const double inv_w0 = t.inv_w[0], inv_w1 = t.inv_w[1], inv_w2 = t.inv_w[2];
+  const float* __restrict a0 = varyings;
+  const float* __restrict d1 = varyings + num_varyings;
+  const float* __restrict d2 = varyings + 2 * num_varyings;
   Framebuffer& fb = sink.fb_;
   FragmentBatch& batch = sink.batch_;
 
   std::uint64_t passed = 0;
-  // Rows in aligned pairs: one quad row at a time.
+  // Quad rows (aligned row pairs), each cut into segments of at most a batch of quads. Every
+  // per-pixel formula below is evaluated over a whole row segment or batch range in loops without
+  // branches (so they vectorize), with the operations and their order of the one-pixel form.
   for (int qy = y0 & ~1; qy <= y1; qy += 2) {
     Span span[2];
     for (int r = 0; r < 2; ++r)
@@ -168,38 +132,93 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
     if (!has0 && !has1) continue;
     const int lo = has0 && has1 ? std::min(span[0].lo, span[1].lo) : (has0 ? span[0].lo : span[1].lo);
     const int hi = has0 && has1 ? std::max(span[0].hi, span[1].hi) : (has0 ? span[0].hi : span[1].hi);
-    for (int qx = lo & ~1; qx <= hi; qx += 2) {
+    for (int seg_x = lo & ~1; seg_x <= hi; seg_x += 2 * kFragmentQuads) {
+      const int seg_quads = std::min(kFragmentQuads, (hi - seg_x) / 2 + 1);
+      if (batch.quads + seg_quads > kFragmentQuads) sink.flush();
       const int base = 4 * batch.quads;
-      bool any = false;
-      for (int k = 0; k < 4; ++k) {
-        const int x = qx + (k & 1), y = qy + (k >> 1);
-        const Span& sp = span[k >> 1];
-        const int lane = base + k;
-        batch.live[lane] = 0;
-        if (x < sp.lo || x > sp.hi) continue;
-        double b1, b2;
-        interp.barycentrics(x, y, b1, b2);
-        const float z = interp.depth(b1, b2);
-        const std::size_t idx = fb.index(x, y);
-        if (!(z < fb.depth[idx])) continue;
-        fb.depth[idx] = z;  // programs do not discard: the depth write is final
-        const float inv_w = interp.varyings_into(b1, b2, batch, lane);
-        batch.frag_coord[0][lane] = float(x) + 0.5f;
-        batch.frag_coord[1][lane] = float(y) + 0.5f;
-        batch.frag_coord[2][lane] = z;
-        batch.frag_coord[3][lane] = inv_w;
-        batch.front_facing[lane] = t.front_facing;
-        batch.live[lane] = 1;
-        sink.pixel_[lane] = idx;
-        any = true;
-        ++passed;
+      const int lanes = 4 * seg_quads;
+      for (int l = base; l < base + lanes; ++l) batch.live[l] = 0;
+
+      // Depth, row by row: barycentrics and depth over the covered run, then the test.
+      for (int r = 0; r < 2; ++r) {
+        const int y = qy + r;
+        const int xs = std::max(span[r].lo, seg_x);
+        const int xe = std::min(span[r].hi, seg_x + 2 * seg_quads - 1);
+        const int n = xe - xs + 1;
+        if (n <= 0) continue;
+        double b1[2 * kFragmentQuads], b2[2 * kFragmentQuads];
+        float z[2 * kFragmentQuads];
+        const double dy = double(y) + 0.5 - t.b_y0;
+        for (int i = 0; i < n; ++i) {
+          const double dx = double(xs + i) + 0.5 - t.b_x0;
+          b1[i] = t.b1_dx * dx + t.b1_dy * dy;
+          b2[i] = t.b2_dx * dx + t.b2_dy * dy;
+          // Window depth, linear in window space, kept in the depth range.
+          z[i] = std::clamp(float(double(t.z[0]) + b1[i] * dz1 + b2[i] * dz2), t.z_lo, t.z_hi);
+        }
+        float* depth = fb.depth.data() + fb.index(xs, y);
+        for (int i = 0; i < n; ++i) {
+          if (!(z[i] < depth[i])) continue;
+          depth[i] = z[i];  // programs do not discard: the depth write is final
+          const int x = xs + i;
+          const int lane = base + 2 * (x - seg_x) - (x & 1) + 2 * r;  // 4 * quad + (x & 1) + 2r
+          batch.live[lane] = 1;
+          sink.b1_[lane] = b1[i];
+          sink.b2_[lane] = b2[i];
+          batch.frag_coord[0][lane] = float(x) + 0.5f;
+          batch.frag_coord[1][lane] = float(y) + 0.5f;
+          batch.frag_coord[2][lane] = z[i];
+          sink.pixel_[lane] = fb.index(x, y);
+          ++passed;
+        }
       }
-      if (!any) continue;
-      if (++batch.quads == kFragmentQuads) sink.flush();
+
+      // Perspective-correct varyings of the segment's lanes (dead lanes compute what they hold,
+      // unused): interpolate attribute/w and 1/w linearly, then divide.
+      float w1[kFragmentLanes], w2[kFragmentLanes];
+      for (int l = base; l < base + lanes; ++l) {
+        const double b1 = sink.b1_[l], b2 = sink.b2_[l];
+        const double b0 = 1.0 - b1 - b2;
+        const double p0 = b0 * inv_w0, p1 = b1 * inv_w1, p2 = b2 * inv_w2;
+        const double inv_w = p0 + p1 + p2;
+        const double w = 1.0 / inv_w;
+        w1[l] = float(p1 * w);
+        w2[l] = float(p2 * w);
+        batch.frag_coord[3][l] = float(inv_w);
+      }
+      // Relative to vertex 0, so that a varying equal at all three vertices stays exact.
+      for (int j = 0; j < num_varyings; ++j) {
+        float* __restrict out = batch.varyings[j];
+        for (int l = base; l < base + lanes; ++l) out[l] = a0[j] + w1[l] * d1[j] + w2[l] * d2[j];
+      }
+      for (int l = base; l < base + lanes; ++l) batch.front_facing[l] = t.front_facing;
+
+      // Keep only quads with a live lane.
+      int kept = batch.quads;
+      for (int q = 0; q < seg_quads; ++q) {
+        const int src = base + 4 * q;
+        if (!(batch.live[src] | batch.live[src + 1] | batch.live[src + 2] | batch.live[src + 3]))
+          continue;
+        const int dst = 4 * kept++;
+        if (dst != src) sink.move_quad(src, dst);
+      }
+      batch.quads = kept;
+      if (batch.quads == kFragmentQuads) sink.flush();
     }
   }
   sink.shaded_ += passed;
   return passed;
+}
+
+void FragmentSink::move_quad(int src, int dst) {
+  for (int k = 0; k < 4; ++k) {
+    for (int c = 0; c < 4; ++c) batch_.frag_coord[c][dst + k] = batch_.frag_coord[c][src + k];
+    for (int j = 0; j < batch_.num_varyings; ++j)
+      batch_.varyings[j][dst + k] = batch_.varyings[j][src + k];
+    batch_.live[dst + k] = batch_.live[src + k];
+    batch_.front_facing[dst + k] = batch_.front_facing[src + k];
+    pixel_[dst + k] = pixel_[src + k];
+  }
 }
 
 }  // namespace tessref::raster

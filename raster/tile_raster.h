@@ -24,11 +24,14 @@ class FragmentSink {
  private:
   friend std::uint64_t raster_triangle(const SetupTriangle&, const float*, int, const PixelRect&,
                                        FragmentSink&);
+  void move_quad(int src_lane, int dst_lane);  // lanes src..src+3 to dst..dst+3
   const FragmentProgram& fs_;
   Framebuffer& fb_;
   bool write_aux_;
   std::uint64_t shaded_ = 0;
   std::size_t pixel_[kFragmentLanes];
+  alignas(32) double b1_[kFragmentLanes];  // barycentrics of the lanes being filled
+  alignas(32) double b2_[kFragmentLanes];
   FragmentBatch batch_;
 };
 
