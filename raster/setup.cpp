@@ -158,10 +158,12 @@ PieceResult setup_piece(const WindowVertex& a, const WindowVertex& b, const Wind
 
   // Stored as a0, a1 - a0, a2 - a0 (see SetupTriangle::varying_offset).
   t.varying_offset = std::uint32_t(varyings.size());
-  varyings.insert(varyings.end(), v[0]->varyings, v[0]->varyings + num_varyings);
+  varyings.resize(varyings.size() + 3 * std::size_t(num_varyings));
+  float* out = varyings.data() + t.varying_offset;
+  for (int j = 0; j < num_varyings; ++j) out[j] = v[0]->varyings[j];
   for (int i = 1; i < 3; ++i)
     for (int j = 0; j < num_varyings; ++j)
-      varyings.push_back(v[i]->varyings[j] - v[0]->varyings[j]);
+      out[i * num_varyings + j] = v[i]->varyings[j] - v[0]->varyings[j];
   tris.push_back(t);
   return PieceResult::kRasterized;
 }

@@ -264,7 +264,14 @@ void clear(TaskScratch& t) {
 TessStats tessellate_range(const TessDrawInput& input, std::size_t first_patch,
                            std::size_t last_patch, const TessControlProgram& tcs,
                            const TessEvalProgram& tes, const TessOptions& options,
-                           const Parallel& parallel, TriangleBatch& out, ExecutorScratch& ex) {
+                           const Parallel& parallel, TriangleBatch& out, ExecutorScratch& ex,
+                           bool overwrite = false) {
+  // overwrite: out's vertices are a previous chunk's, to be replaced; their memory is written over
+  // rather than cleared and constructed again (64 bytes per vertex saved).
+  if (overwrite) {
+    out.indices.clear();
+    out.indexed = true;
+  }
   out.num_varyings = tes.num_varyings();
   if (!out.indexed) {  // earlier contents as consecutive triples: index them as they are
     out.indices.resize(out.vertices.size() / 3 * 3);
@@ -272,8 +279,12 @@ TessStats tessellate_range(const TessDrawInput& input, std::size_t first_patch,
     out.vertices.resize(out.indices.size());
     out.indexed = true;
   }
+  const std::size_t first_vertex = overwrite ? 0 : out.vertices.size();
   last_patch = std::min(last_patch, input.patch_count());
-  if (first_patch >= last_patch) return TessStats{};
+  if (first_patch >= last_patch) {
+    out.vertices.resize(first_vertex);
+    return TessStats{};
+  }
 
   const TessLayout layout = tes.layout();
   TessPatternCache& cache = options.patterns ? *options.patterns : TessPatternCache::shared();
@@ -295,7 +306,7 @@ TessStats tessellate_range(const TessDrawInput& input, std::size_t first_patch,
   });
 
   // Output ranges in patch order: the batch's bytes never depend on the split into tasks.
-  std::size_t vertices = out.vertices.size(), indices = out.indices.size();
+  std::size_t vertices = first_vertex, indices = out.indices.size();
   for (std::size_t i = 0; i < n; ++i) {
     PatchSlot& slot = ex.slots[i];
     if (!slot.pattern || slot.pattern->points.vertices_per_primitive != 3) continue;
@@ -348,9 +359,8 @@ TessStats tessellate_chunks(const TessDrawInput& input, std::size_t chunk_patche
   batch.indexed = true;
   ExecutorScratch scratch;  // likewise the per-patch and per-task buffers
   for (std::size_t first = 0; first < total; first += chunk) {
-    batch.clear();
     stats += tessellate_range(input, first, std::min(first + chunk, total), tcs, tes, options,
-                              parallel, batch, scratch);
+                              parallel, batch, scratch, /*overwrite=*/true);
     consume(batch);
   }
   return stats;
