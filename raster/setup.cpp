@@ -61,8 +61,6 @@ std::int64_t floor_div(std::int64_t a, std::int64_t b) {
 
 enum class PieceResult { kCulled, kRasterized };
 
-// Bounding boxes of at most this many pixels get their coverage tested during setup.
-constexpr int kSmallTrianglePixels = 8;
 
 // Whether some pixel center k * 256 + 128 (0 <= k < size) lies in [lo, hi] (24.8): the bounding
 // box test of setup_piece, with floor division by 256 as an arithmetic shift.
@@ -113,12 +111,14 @@ PieceResult setup_piece(const WindowVertex& a, const WindowVertex& b, const Wind
     t.inv_w[i] = v[i]->inv_w;
   }
   // Small triangles: test the few candidate centers now; most cover none and need no more setup.
+  t.small_mask = 0;
   if ((max_x - min_x + 1) * (max_y - min_y + 1) <= kSmallTrianglePixels) {
     const TriangleEdges edges(t.x, t.y);
-    bool any = false;
-    for (int py = min_y; py <= max_y && !any; ++py)
-      for (int px = min_x; px <= max_x && !any; ++px) any = edges.covers(px, py);
-    if (!any) return PieceResult::kRasterized;
+    int bit = 0;
+    for (int py = min_y; py <= max_y; ++py)
+      for (int px = min_x; px <= max_x; ++px, ++bit)
+        if (edges.covers(px, py)) t.small_mask |= std::uint8_t(1u << bit);
+    if (!t.small_mask) return PieceResult::kRasterized;
   }
   // Interpolation planes through the float positions: llvmpipe sets up depth and every varying
   // from them, not from the snapped ones; off the 1/256 grid the two differ (measured: up to 9.5e-5

@@ -23,6 +23,10 @@ struct SetupTriangle {
   float inv_w[3];                  // 1 / clip w, for perspective-correct varyings
   int min_x, min_y, max_x, max_y;  // pixels whose centers may be covered, inclusive, on screen
   bool front_facing;
+  // Small triangles (bounding box of at most kSmallTrianglePixels pixels): which pixel centers of
+  // the box are covered, bit k for pixel (min_x + k % width, min_y + k / width), found during
+  // setup; the scan then needs no edge functions. 0 for other triangles.
+  std::uint8_t small_mask;
   // 3 * num_varyings floats in the owner's varying store: vertex 0's values, then the
   // differences a1 - a0 and a2 - a0 (a constant varying then interpolates exactly).
   std::uint32_t varying_offset;
@@ -37,6 +41,8 @@ struct Viewport {
 
 // What became of one input triangle.
 enum class SetupOutcome { kClippedAway, kCulled, kRasterized };
+
+inline constexpr int kSmallTrianglePixels = 8;
 
 // One vertex after the per-vertex clip-space work, done once per vertex of a batch: its outcode
 // (clip.h) and, when the vertex lies inside every clipping plane with w > 0, its window position.

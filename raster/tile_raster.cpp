@@ -121,6 +121,50 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
   FragmentBatch& batch = sink.batch_;
 
   std::uint64_t passed = 0;
+  if (t.small_mask) {
+    // Coverage known from setup: each covered center of the box, one lane at a time, with the
+    // operations of the row loops below.
+    const int width = t.max_x - t.min_x + 1;
+    int quad_x = -1, quad_y = -1, quad_base = 0;
+    for (int bit = 0; bit < kSmallTrianglePixels; ++bit) {
+      if (!(t.small_mask & (1u << bit))) continue;
+      const int x = t.min_x + bit % width, y = t.min_y + bit / width;
+      if (x < x0 || x > x1 || y < y0 || y > y1) continue;
+      const double dx = double(x) + 0.5 - t.b_x0, dy = double(y) + 0.5 - t.b_y0;
+      const double b1 = t.b1_dx * dx + t.b1_dy * dy;
+      const double b2 = t.b2_dx * dx + t.b2_dy * dy;
+      const float z = std::clamp(float(double(t.z[0]) + b1 * dz1 + b2 * dz2), t.z_lo, t.z_hi);
+      const std::size_t idx = fb.index(x, y);
+      if (!(z < fb.depth[idx])) continue;
+      fb.depth[idx] = z;
+      if ((x & ~1) != quad_x || (y & ~1) != quad_y) {
+        if (batch.quads == kFragmentQuads) sink.flush();
+        quad_x = x & ~1;
+        quad_y = y & ~1;
+        quad_base = 4 * batch.quads++;
+        for (int k = 0; k < 4; ++k) batch.live[quad_base + k] = 0;
+      }
+      const int lane = quad_base + (x & 1) + 2 * (y & 1);
+      const double b0 = 1.0 - b1 - b2;
+      const double p0 = b0 * inv_w0, p1 = b1 * inv_w1, p2 = b2 * inv_w2;
+      const double inv_w = p0 + p1 + p2;
+      const double w = 1.0 / inv_w;
+      const float w1 = float(p1 * w), w2 = float(p2 * w);
+      for (int j = 0; j < num_varyings; ++j)
+        batch.varyings[j][lane] = a0[j] + w1 * d1[j] + w2 * d2[j];
+      batch.frag_coord[0][lane] = float(x) + 0.5f;
+      batch.frag_coord[1][lane] = float(y) + 0.5f;
+      batch.frag_coord[2][lane] = z;
+      batch.frag_coord[3][lane] = float(inv_w);
+      batch.front_facing[lane] = t.front_facing;
+      batch.live[lane] = 1;
+      sink.pixel_[lane] = idx;
+      ++passed;
+    }
+    if (batch.quads == kFragmentQuads) sink.flush();
+    sink.shaded_ += passed;
+    return passed;
+  }
   // Quad rows (aligned row pairs), each cut into segments of at most a batch of quads. Every
   // per-pixel formula below is evaluated over a whole row segment or batch range in loops without
   // branches (so they vectorize), with the operations and their order of the one-pixel form.
