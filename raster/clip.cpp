@@ -78,13 +78,6 @@ int clip_against(const Planes& planes, int i, const ClipVertex* src, const bool*
 
 }  // namespace
 
-std::uint32_t clip_outcode(const glm::vec4& p, float guard_x, float guard_y) {
-  if (!finite(p)) return kNonFinite;
-  std::uint32_t code = Planes{guard_x, guard_y}.outcode(p);
-  if (!(p.w > 0.0f)) code |= kNonPositiveW;
-  return code;
-}
-
 ClipTest classify_triangle(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c,
                            float guard_x, float guard_y) {
   return classify_outcodes(clip_outcode(a, guard_x, guard_y), clip_outcode(b, guard_x, guard_y),

@@ -3,6 +3,7 @@
 // volume (guard factors 1: Viewport::guard_x/y), with the plane order and float arithmetic of
 // Mesa's draw clipper (draw_pipe_clip.c), so that the cut vertices, and the pixels, are llvmpipe's.
 #include <array>
+#include <cmath>
 #include <cstdint>
 
 #include "raster/vertex.h"
@@ -59,7 +60,25 @@ enum : std::uint32_t {
 };
 }  // namespace outcode
 
-std::uint32_t clip_outcode(const glm::vec4& p, float guard_x, float guard_y);
+// The signed distances are those the clipper cuts with (clip.cpp, Planes::distance), term for term.
+inline std::uint32_t clip_outcode(const glm::vec4& p, float guard_x, float guard_y) {
+  using namespace outcode;
+  if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) || !std::isfinite(p.w))
+    return kNonFinite;
+  std::uint32_t code = 0;
+  if (guard_x * p.w - p.x < 0.0f) code |= kGuardRight;
+  if (p.x + guard_x * p.w < 0.0f) code |= kGuardLeft;
+  if (guard_y * p.w - p.y < 0.0f) code |= kGuardTop;
+  if (p.y + guard_y * p.w < 0.0f) code |= kGuardBottom;
+  if (p.z + p.w < 0.0f) code |= kNear;
+  if (p.w - p.z < 0.0f) code |= kFar;
+  if (p.x < -p.w) code |= kLeft;
+  if (p.x > p.w) code |= kRight;
+  if (p.y < -p.w) code |= kBottom;
+  if (p.y > p.w) code |= kTop;
+  if (!(p.w > 0.0f)) code |= kNonPositiveW;
+  return code;
+}
 
 inline ClipTest classify_outcodes(std::uint32_t ca, std::uint32_t cb, std::uint32_t cc) {
   using namespace outcode;

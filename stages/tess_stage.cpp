@@ -266,12 +266,9 @@ TessStats tessellate_range(const TessDrawInput& input, std::size_t first_patch,
                            const TessEvalProgram& tes, const TessOptions& options,
                            const Parallel& parallel, TriangleBatch& out, ExecutorScratch& ex,
                            bool overwrite = false) {
-  // overwrite: out's vertices are a previous chunk's, to be replaced; their memory is written over
-  // rather than cleared and constructed again (64 bytes per vertex saved).
-  if (overwrite) {
-    out.indices.clear();
-    out.indexed = true;
-  }
+  // overwrite: out holds a previous chunk, to be replaced; its memory is written over rather than
+  // cleared and constructed again (64 bytes per vertex and 4 per index saved).
+  if (overwrite) out.indexed = true;
   out.num_varyings = tes.num_varyings();
   if (!out.indexed) {  // earlier contents as consecutive triples: index them as they are
     out.indices.resize(out.vertices.size() / 3 * 3);
@@ -280,9 +277,11 @@ TessStats tessellate_range(const TessDrawInput& input, std::size_t first_patch,
     out.indexed = true;
   }
   const std::size_t first_vertex = overwrite ? 0 : out.vertices.size();
+  const std::size_t first_index = overwrite ? 0 : out.indices.size();
   last_patch = std::min(last_patch, input.patch_count());
   if (first_patch >= last_patch) {
     out.vertices.resize(first_vertex);
+    out.indices.resize(first_index);
     return TessStats{};
   }
 
@@ -306,7 +305,7 @@ TessStats tessellate_range(const TessDrawInput& input, std::size_t first_patch,
   });
 
   // Output ranges in patch order: the batch's bytes never depend on the split into tasks.
-  std::size_t vertices = first_vertex, indices = out.indices.size();
+  std::size_t vertices = first_vertex, indices = first_index;
   for (std::size_t i = 0; i < n; ++i) {
     PatchSlot& slot = ex.slots[i];
     if (!slot.pattern || slot.pattern->points.vertices_per_primitive != 3) continue;
