@@ -113,11 +113,22 @@ PieceResult setup_piece(const WindowVertex& a, const WindowVertex& b, const Wind
   // Small triangles: test the few candidate centers now; most cover none and need no more setup.
   t.small_mask = 0;
   if ((max_x - min_x + 1) * (max_y - min_y + 1) <= kSmallTrianglePixels) {
+    // E_i + bias_i at each center, stepped exactly in integers from the box's first center.
     const TriangleEdges edges(t.x, t.y);
+    std::int64_t row[3];
+    for (int i = 0; i < 3; ++i)
+      row[i] = edges.e[i].at(fixed::pixel_center(min_x), fixed::pixel_center(min_y)) + edges.e[i].bias;
     int bit = 0;
-    for (int py = min_y; py <= max_y; ++py)
-      for (int px = min_x; px <= max_x; ++px, ++bit)
-        if (edges.covers(px, py)) t.small_mask |= std::uint8_t(1u << bit);
+    for (int py = min_y; py <= max_y; ++py) {
+      std::int64_t e0 = row[0], e1 = row[1], e2 = row[2];
+      for (int px = min_x; px <= max_x; ++px, ++bit) {
+        if ((e0 | e1 | e2) >= 0) t.small_mask |= std::uint8_t(1u << bit);
+        e0 += edges.e[0].step_x;
+        e1 += edges.e[1].step_x;
+        e2 += edges.e[2].step_x;
+      }
+      for (int i = 0; i < 3; ++i) row[i] += edges.e[i].dx * fixed::kSubpixelOne;
+    }
     if (!t.small_mask) return PieceResult::kRasterized;
   }
   // Interpolation planes through the float positions: llvmpipe sets up depth and every varying

@@ -111,7 +111,6 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
   const int y0 = std::max(rect.y0, t.min_y), y1 = std::min(rect.y1, t.max_y);
   if (x0 > x1 || y0 > y1) return 0;
 
-  const TriangleEdges te(t.x, t.y);
   const double dz1 = double(t.z[1]) - t.z[0], dz2 = double(t.z[2]) - t.z[0];
   const double inv_w0 = t.inv_w[0], inv_w1 = t.inv_w[1], inv_w2 = t.inv_w[2];
   const float* __restrict a0 = varyings;
@@ -165,6 +164,7 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
     sink.shaded_ += passed;
     return passed;
   }
+  const TriangleEdges te(t.x, t.y);
   // Quad rows (aligned row pairs), each cut into segments of at most a batch of quads. Every
   // per-pixel formula below is evaluated over a whole row segment or batch range in loops without
   // branches (so they vectorize), with the operations and their order of the one-pixel form.
