@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "common/fixed_point.h"
 #include "raster/edge.h"
@@ -170,11 +171,15 @@ PieceResult setup_piece(const WindowVertex& a, const WindowVertex& b, const Wind
   // Stored as a0, a1 - a0, a2 - a0 (see SetupTriangle::varying_offset).
   t.varying_offset = std::uint32_t(varyings.size());
   varyings.resize(varyings.size() + 3 * std::size_t(num_varyings));
-  float* out = varyings.data() + t.varying_offset;
-  for (int j = 0; j < num_varyings; ++j) out[j] = v[0]->varyings[j];
-  for (int i = 1; i < 3; ++i)
-    for (int j = 0; j < num_varyings; ++j)
-      out[i * num_varyings + j] = v[i]->varyings[j] - v[0]->varyings[j];
+  float* __restrict out = varyings.data() + t.varying_offset;
+  const float* __restrict a0 = v[0]->varyings;
+  const float* __restrict a1 = v[1]->varyings;
+  const float* __restrict a2 = v[2]->varyings;
+  std::memcpy(out, a0, sizeof(float) * std::size_t(num_varyings));
+  for (int j = 0; j < num_varyings; ++j) {
+    out[num_varyings + j] = a1[j] - a0[j];
+    out[2 * num_varyings + j] = a2[j] - a0[j];
+  }
   tris.push_back(t);
   return PieceResult::kRasterized;
 }
