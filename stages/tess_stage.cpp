@@ -1,5 +1,6 @@
 // The tessellation executor: TCS -> primitive generator -> TES per patch, over fixed patch batches.
 #include "stages/tess_stage.h"
+#include "stages/vertex_store.h"
 
 #include <algorithm>
 #include <chrono>
@@ -151,18 +152,19 @@ void control_task(const TessDrawInput& input, std::size_t range_first, std::size
 void evaluate_patch(const TessEvalProgram& tes, const PatchOutput& patch, int primitive_id,
                     const TessPattern& pattern, int num_varyings, ClipVertex* dst) {
   TessEvalBatch batch;
+  // The batch's rows in ClipVertex order; varyings the program does not write are stored as 0.
+  static_assert(sizeof(ClipVertex) == 16 * sizeof(float) && kMaxVaryings == 12);
+  static const float zeros[kTessEvalBatch] = {};
+  const float* rows[16];
+  for (int c = 0; c < 4; ++c) rows[c] = batch.position[c];
+  for (int k = 0; k < kMaxVaryings; ++k) rows[4 + k] = k < num_varyings ? batch.varyings[k] : zeros;
+  const StoreVerticesKernel store = store_vertices_kernel();
   const std::size_t n = pattern.points.coords.size();
   for (std::size_t start = 0; start < n; start += kTessEvalBatch) {
     batch.count = int(std::min<std::size_t>(kTessEvalBatch, n - start));
     for (int c = 0; c < 3; ++c) batch.tess_coord[c] = pattern.coord[c].data() + start;
     tes.evaluate_batch(patch, primitive_id, batch);
-    for (int i = 0; i < batch.count; ++i) {
-      ClipVertex& v = dst[start + i];
-      v.position = glm::vec4(batch.position[0][i], batch.position[1][i], batch.position[2][i],
-                             batch.position[3][i]);
-      for (int k = 0; k < num_varyings; ++k) v.varyings[k] = batch.varyings[k][i];
-      for (int k = num_varyings; k < kMaxVaryings; ++k) v.varyings[k] = 0.0f;
-    }
+    store(rows, batch.count, reinterpret_cast<float*>(dst + start));
   }
 }
 
