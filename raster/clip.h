@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "raster/project_kernel.h"
 #include "raster/vertex.h"
 
 namespace tessref::raster {
@@ -39,26 +40,7 @@ ClipTest classify_triangle(const glm::vec4& a, const glm::vec4& b, const glm::ve
 // The same test split into a per-vertex part and a per-triangle part, so that a vertex shared by
 // several triangles is classified once: classify_outcodes(clip_outcode(a), clip_outcode(b),
 // clip_outcode(c)) == classify_triangle(a, b, c).
-// Outcode bits: planes that clip (the guard band sides, near, far; bits 0-5 in the order Mesa's
-// draw module clips in: x <= w first, then x >= -w, y <= w, y >= -w, near, far), the viewport
-// sides, which only reject, and two bits that make a vertex unusable.
-namespace outcode {
-enum : std::uint32_t {
-  kGuardRight = 1u << 0,
-  kGuardLeft = 1u << 1,
-  kGuardTop = 1u << 2,
-  kGuardBottom = 1u << 3,
-  kNear = 1u << 4,
-  kFar = 1u << 5,
-  kLeft = 1u << 6,
-  kRight = 1u << 7,
-  kBottom = 1u << 8,
-  kTop = 1u << 9,
-  kNonFinite = 1u << 10,  // some coordinate is NaN or infinite (no other bit is then set)
-  kNonPositiveW = 1u << 11,
-  kClipPlanes = (1u << 6) - 1,
-};
-}  // namespace outcode
+// Outcode bits: raster/project_kernel.h (namespace outcode).
 
 // The signed distances are those the clipper cuts with (clip.cpp, Planes::distance), term for term.
 inline std::uint32_t clip_outcode(const glm::vec4& p, float guard_x, float guard_y) {

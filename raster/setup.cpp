@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 
 #include "common/fixed_point.h"
+#include "common/simd.h"
 #include "raster/edge.h"
 
 namespace tessref::raster {
@@ -194,6 +196,19 @@ float Viewport::guard_y() const { return 1.0f; }
 
 void project_vertices(const ClipVertex* vertices, std::size_t count, const Viewport& vp,
                       ProjectedVertex* out) {
+  static const bool kernel = project_kernel_available();
+  if (kernel && simd_path() == SimdPath::Avx2) {
+    static_assert(sizeof(ClipVertex) % sizeof(float) == 0 && offsetof(ClipVertex, position) == 0);
+    const float sx = 0.5f * float(vp.width), sy = 0.5f * float(vp.height);
+    const ProjectParams params{vp.guard_x(), vp.guard_y(), sx, sy,
+                               0.5f * (vp.depth_far - vp.depth_near),
+                               0.5f * (vp.depth_far + vp.depth_near),
+                               std::min(vp.depth_near, vp.depth_far),
+                               std::max(vp.depth_near, vp.depth_far)};
+    project_vertices_avx2(reinterpret_cast<const float*>(vertices), sizeof(ClipVertex) / sizeof(float),
+                          count, params, out);
+    return;
+  }
   for (std::size_t i = 0; i < count; ++i) {
     ProjectedVertex& p = out[i];
     p.code = clip_outcode(vertices[i].position, vp.guard_x(), vp.guard_y());

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "raster/clip.h"
+#include "raster/project_kernel.h"
 #include "raster/rasterizer.h"
 
 namespace tessref::raster {
@@ -44,16 +45,8 @@ enum class SetupOutcome { kClippedAway, kCulled, kRasterized };
 
 inline constexpr int kSmallTrianglePixels = 8;
 
-// One vertex after the per-vertex clip-space work, done once per vertex of a batch: its outcode
-// (clip.h) and, when the vertex lies inside every clipping plane with w > 0, its window position.
-// Triangles whose corners are all inside are set up from these alone.
-struct ProjectedVertex {
-  std::int32_t x, y;  // window coordinates, 24.8 fixed point
-  float xf, yf;       // before snapping
-  float z;            // window depth, clamped to the depth range
-  float inv_w;
-  std::uint32_t code;  // clip_outcode(); window fields are valid only if !needs_clip_or_invalid
-};
+// Projects every vertex (ProjectedVertex, project_kernel.h): the AVX2 + FMA kernel where the CPU
+// has it and simd_path() is AVX2, else the portable code; the same bits either way.
 void project_vertices(const ClipVertex* vertices, std::size_t count, const Viewport& vp,
                       ProjectedVertex* out);
 

@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <limits>
 #include <random>
 
+#include "common/simd.h"
 #include "raster/rasterizer.h"
+#include "raster/setup.h"
 #include "raster_test_util.h"
 
 namespace tessref {
@@ -92,6 +95,44 @@ TEST(IndexedBatch, AnIndexPastTheVertexArrayIsRefused) {
   b = grid_batch(3, 1);
   b.indices.pop_back();
   EXPECT_THROW(draw_triangles(b, RasterState{}, fs, fb, Parallel(1)), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace tessref
+
+namespace tessref {
+namespace {
+
+TEST(ProjectVertices, KernelAndPortableCodeAgreeBitForBit) {
+  if (!raster::project_kernel_available()) GTEST_SKIP() << "no AVX2 + FMA: only the portable code runs";
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<float> u(-3.0f, 3.0f);
+  std::vector<ClipVertex> vs(20000);
+  for (std::size_t i = 0; i < vs.size(); ++i) {
+    vs[i].position = glm::vec4(u(rng), u(rng), u(rng), u(rng));
+    if (i % 97 == 0) vs[i].position.y = std::numeric_limits<float>::infinity();
+    if (i % 89 == 0) vs[i].position.w = 0.0f;
+  }
+  const raster::Viewport vp{997, 613, 0.25f, 0.75f};
+  const SimdPath saved = simd_path();
+  std::vector<raster::ProjectedVertex> a(vs.size()), b(vs.size());
+  set_simd_path(SimdPath::Avx2);
+  raster::project_vertices(vs.data(), vs.size(), vp, a.data());
+  set_simd_path(SimdPath::Scalar);
+  raster::project_vertices(vs.data(), vs.size(), vp, b.data());
+  set_simd_path(saved);
+  std::size_t projected = 0;
+  for (std::size_t i = 0; i < vs.size(); ++i) {
+    ASSERT_EQ(a[i].code, b[i].code) << i;
+    if (!raster::outcode_projectable(a[i].code)) continue;
+    ++projected;
+    ASSERT_EQ(a[i].x, b[i].x) << i;
+    ASSERT_EQ(a[i].y, b[i].y) << i;
+    for (auto f : {&raster::ProjectedVertex::xf, &raster::ProjectedVertex::yf,
+                   &raster::ProjectedVertex::z, &raster::ProjectedVertex::inv_w})
+      ASSERT_EQ(std::memcmp(&(a[i].*f), &(b[i].*f), sizeof(float)), 0) << i;
+  }
+  EXPECT_GT(projected, 1000u);
 }
 
 }  // namespace
