@@ -42,6 +42,8 @@ struct Chunk {
   std::vector<float> varyings;
   std::vector<std::uint32_t> tile_begin;  // per tile: start in tile_tris; num_tiles + 1 entries
   std::vector<std::uint32_t> tile_tris;   // indices into tris, grouped by tile, in order
+  std::vector<std::uint32_t> single_tile; // per triangle: its only tile, or ~0 (scratch)
+  std::vector<std::uint32_t> fill;        // per tile: next slot in tile_tris (scratch)
   RasterStats stats;
 };
 
@@ -88,14 +90,33 @@ void setup_chunk(const TriangleBatch& batch, const raster::ProjectedVertex* proj
           fn(std::size_t(ty) * grid.tiles_x + tx);
       }
   };
-  for (const SetupTriangle& t : chunk.tris)
-    for_tiles(t, [&](std::size_t tile) { ++chunk.tile_begin[tile + 1]; });
+  // Most triangles lie in one tile: remember it from the counting pass.
+  constexpr std::uint32_t kSeveralTiles = ~0u;
+  chunk.single_tile.resize(chunk.tris.size());
+  for (std::size_t k = 0; k < chunk.tris.size(); ++k) {
+    const SetupTriangle& t = chunk.tris[k];
+    const int tx0 = t.min_x / kTileSize, ty0 = t.min_y / kTileSize;
+    if (t.min_x <= t.max_x && t.min_y <= t.max_y && tx0 == t.max_x / kTileSize &&
+        ty0 == t.max_y / kTileSize) {
+      const auto tile = std::uint32_t(ty0 * grid.tiles_x + tx0);
+      chunk.single_tile[k] = tile;
+      ++chunk.tile_begin[tile + 1];
+    } else {
+      chunk.single_tile[k] = kSeveralTiles;
+      for_tiles(t, [&](std::size_t tile) { ++chunk.tile_begin[tile + 1]; });
+    }
+  }
   for (std::size_t k = 1; k < chunk.tile_begin.size(); ++k)
     chunk.tile_begin[k] += chunk.tile_begin[k - 1];
   chunk.tile_tris.resize(chunk.tile_begin.back());
-  std::vector<std::uint32_t> fill(chunk.tile_begin.begin(), chunk.tile_begin.end() - 1);
-  for (std::uint32_t k = 0; k < chunk.tris.size(); ++k)
-    for_tiles(chunk.tris[k], [&](std::size_t tile) { chunk.tile_tris[fill[tile]++] = k; });
+  chunk.fill.assign(chunk.tile_begin.begin(), chunk.tile_begin.end() - 1);
+  for (std::uint32_t k = 0; k < chunk.tris.size(); ++k) {
+    if (chunk.single_tile[k] != kSeveralTiles) {
+      chunk.tile_tris[chunk.fill[chunk.single_tile[k]]++] = k;
+      continue;
+    }
+    for_tiles(chunk.tris[k], [&](std::size_t tile) { chunk.tile_tris[chunk.fill[tile]++] = k; });
+  }
 }
 
 }  // namespace
@@ -120,11 +141,12 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
   if (batch.indexed) {
     if (batch.indices.size() % 3 != 0)
       throw std::invalid_argument("draw_triangles: index count not a multiple of 3");
-    for (std::uint32_t i : batch.indices)
-      if (i >= batch.vertices.size())
-        throw std::invalid_argument("draw_triangles: index " + std::to_string(i) +
-                                    " past the vertex array (" +
-                                    std::to_string(batch.vertices.size()) + " vertices)");
+    std::uint32_t largest = 0;  // a max reduction (vectorizes), then one test
+    for (std::uint32_t i : batch.indices) largest = std::max(largest, i);
+    if (!batch.indices.empty() && largest >= batch.vertices.size())
+      throw std::invalid_argument("draw_triangles: index " + std::to_string(largest) +
+                                  " past the vertex array (" +
+                                  std::to_string(batch.vertices.size()) + " vertices)");
   }
   const raster::Viewport vp{fb.width, fb.height, state.depth_range_near, state.depth_range_far};
   const TileGrid grid{(fb.width + kTileSize - 1) / kTileSize,

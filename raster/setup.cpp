@@ -56,53 +56,55 @@ WindowVertex to_window(const ClipVertex& v, const Viewport& vp, bool generated =
   return r;
 }
 
-// floor(a / b) for b > 0.
-std::int64_t floor_div(std::int64_t a, std::int64_t b) {
-  std::int64_t q = a / b;
-  return (a % b != 0 && a < 0) ? q - 1 : q;
-}
 
 enum class PieceResult { kCulled, kRasterized };
 
 
-// Whether some pixel center k * 256 + 128 (0 <= k < size) lies in [lo, hi] (24.8): the bounding
-// box test of setup_piece, with floor division by 256 as an arithmetic shift.
-bool box_has_pixel_center(std::int64_t lo, std::int64_t hi, int size) {
+// The pixels whose centers k * 256 + 128 (0 <= k < size) lie in [lo, hi] (24.8): [first, last],
+// empty when first > last. Floor division by 256 as an arithmetic shift.
+void pixel_range(std::int64_t lo, std::int64_t hi, int size, int& first, int& last) {
   const std::int64_t one = fixed::kSubpixelOne, half = fixed::kSubpixelHalf;
   static_assert(fixed::kSubpixelOne == 256);
-  const std::int64_t first = std::max<std::int64_t>(0, (lo - half + one - 1) >> 8);
-  const std::int64_t last = std::min<std::int64_t>(size - 1, (hi - half) >> 8);
-  return first <= last;
+  first = int(std::max<std::int64_t>(0, (lo - half + one - 1) >> 8));
+  last = int(std::min<std::int64_t>(size - 1, (hi - half) >> 8));
 }
 
 WindowVertex from_projected(const ProjectedVertex& p, const ClipVertex& v) {
   return WindowVertex{p.x, p.y, p.xf, p.yf, p.z, p.inv_w, v.varyings.data()};
 }
 
-PieceResult setup_piece(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
-                        const Viewport& vp, bool cull_back_faces, int num_varyings,
-                        std::vector<SetupTriangle>& tris, std::vector<float>& varyings) {
-  const std::int64_t area2 =
-      std::int64_t(b.x - a.x) * (c.y - a.y) - std::int64_t(c.x - a.x) * (b.y - a.y);
-  if (area2 == 0) return PieceResult::kCulled;
-  const bool front = area2 > 0;  // counter-clockwise with y up
-  if (!front && cull_back_faces) return PieceResult::kCulled;
+// The snapped area test, culling and the box of candidate pixels, from the snapped positions
+// alone: what every piece goes through before anything is stored.
+struct PieceBox {
+  std::int64_t area2;
+  bool front;
+  int min_x, min_y, max_x, max_y;  // pixels whose centers may be covered, inclusive
+  bool empty() const { return min_x > max_x || min_y > max_y; }
+};
+
+template <class V>
+bool piece_box(const V& a, const V& b, const V& c, const Viewport& vp, bool cull_back_faces,
+               PieceBox& box) {
+  box.area2 = std::int64_t(b.x - a.x) * (c.y - a.y) - std::int64_t(c.x - a.x) * (b.y - a.y);
+  if (box.area2 == 0) return false;
+  box.front = box.area2 > 0;  // counter-clockwise with y up
+  if (!box.front && cull_back_faces) return false;
+  // Pixel x is a candidate when its center x * 256 + 128 lies in [min x, max x].
+  pixel_range(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x}), vp.width, box.min_x, box.max_x);
+  pixel_range(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}), vp.height, box.min_y, box.max_y);
+  return true;
+}
+
+// Stores a piece that passed piece_box with a non-empty box (or drops it when it is small and
+// covers no center): what remains of setup_piece.
+void store_piece(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
+                 const PieceBox& box, const Viewport& vp, int num_varyings,
+                 std::vector<SetupTriangle>& tris, std::vector<float>& varyings) {
+  const std::int64_t area2 = box.area2;
+  const bool front = box.front;
+  const int min_x = box.min_x, min_y = box.min_y, max_x = box.max_x, max_y = box.max_y;
   // Wind every triangle counter-clockwise so that the edge functions are positive inside.
   const WindowVertex* v[3] = {&a, front ? &b : &c, front ? &c : &b};
-
-  // Pixel x is a candidate when its center x * 256 + 128 lies in [min x, max x].
-  const std::int64_t lo_x = std::min({a.x, b.x, c.x});
-  const std::int64_t hi_x = std::max({a.x, b.x, c.x});
-  const std::int64_t lo_y = std::min({a.y, b.y, c.y});
-  const std::int64_t hi_y = std::max({a.y, b.y, c.y});
-  const std::int64_t one = fixed::kSubpixelOne, half = fixed::kSubpixelHalf;
-  const int min_x = int(std::max<std::int64_t>(0, floor_div(lo_x - half + one - 1, one)));
-  const int min_y = int(std::max<std::int64_t>(0, floor_div(lo_y - half + one - 1, one)));
-  const int max_x = int(std::min<std::int64_t>(vp.width - 1, floor_div(hi_x - half, one)));
-  const int max_y = int(std::min<std::int64_t>(vp.height - 1, floor_div(hi_y - half, one)));
-  // No pixel center in the bounding box: set up (it counts) but nothing to scan. Most triangles
-  // of a finely tessellated surface end here.
-  if (min_x > max_x || min_y > max_y) return PieceResult::kRasterized;
 
   SetupTriangle t;
   for (int i = 0; i < 3; ++i) {
@@ -132,7 +134,7 @@ PieceResult setup_piece(const WindowVertex& a, const WindowVertex& b, const Wind
       }
       for (int i = 0; i < 3; ++i) row[i] += edges.e[i].dx * fixed::kSubpixelOne;
     }
-    if (!t.small_mask) return PieceResult::kRasterized;
+    if (!t.small_mask) return;
   }
   // Interpolation planes through the float positions: llvmpipe sets up depth and every varying
   // from them, not from the snapped ones; off the 1/256 grid the two differ (measured: up to 9.5e-5
@@ -183,6 +185,16 @@ PieceResult setup_piece(const WindowVertex& a, const WindowVertex& b, const Wind
     out[2 * num_varyings + j] = a2[j] - a0[j];
   }
   tris.push_back(t);
+}
+
+PieceResult setup_piece(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
+                        const Viewport& vp, bool cull_back_faces, int num_varyings,
+                        std::vector<SetupTriangle>& tris, std::vector<float>& varyings) {
+  PieceBox box;
+  if (!piece_box(a, b, c, vp, cull_back_faces, box)) return PieceResult::kCulled;
+  // No pixel center in the bounding box: set up (it counts) but nothing to scan. Most triangles
+  // of a finely tessellated surface end here.
+  if (!box.empty()) store_piece(a, b, c, box, vp, num_varyings, tris, varyings);
   return PieceResult::kRasterized;
 }
 
@@ -235,24 +247,15 @@ SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index,
     case ClipTest::kInvalid:
     case ClipTest::kRejected: return SetupOutcome::kClippedAway;
     case ClipTest::kInside: {
-      // Fast exits first, from the snapped positions alone (setup_piece decides the same way).
-      const ProjectedVertex &pa = projected[i0], &pb = projected[i1], &pc = projected[i2];
-      const std::int64_t area2 =
-          std::int64_t(pb.x - pa.x) * (pc.y - pa.y) - std::int64_t(pc.x - pa.x) * (pb.y - pa.y);
-      if (area2 == 0 || (area2 < 0 && cull_back_faces)) return SetupOutcome::kCulled;
-      if (!box_has_pixel_center(std::min({pa.x, pb.x, pc.x}), std::max({pa.x, pb.x, pc.x}),
-                                vp.width) ||
-          !box_has_pixel_center(std::min({pa.y, pb.y, pc.y}), std::max({pa.y, pb.y, pc.y}),
-                                vp.height)) {
-        pieces_out = 1;
-        return SetupOutcome::kRasterized;
-      }
-      const WindowVertex a = from_projected(projected[i0], batch.vertices[i0]);
-      const WindowVertex b = from_projected(projected[i1], batch.vertices[i1]);
-      const WindowVertex c = from_projected(projected[i2], batch.vertices[i2]);
-      if (setup_piece(a, b, c, vp, cull_back_faces, nv, tris, varyings) == PieceResult::kCulled)
+      // Fast exits first, from the snapped positions alone, as setup_piece decides them.
+      PieceBox box;
+      if (!piece_box(projected[i0], projected[i1], projected[i2], vp, cull_back_faces, box))
         return SetupOutcome::kCulled;
       pieces_out = 1;
+      if (!box.empty())
+        store_piece(from_projected(projected[i0], batch.vertices[i0]),
+                    from_projected(projected[i1], batch.vertices[i1]),
+                    from_projected(projected[i2], batch.vertices[i2]), box, vp, nv, tris, varyings);
       return SetupOutcome::kRasterized;
     }
     case ClipTest::kNeedsClip: break;
