@@ -38,12 +38,6 @@ struct TriangleEdges {
   TriangleEdges(const std::int32_t x[3], const std::int32_t y[3])
       : e{make_edge(x[1], y[1], x[2], y[2]), make_edge(x[2], y[2], x[0], y[0]),
           make_edge(x[0], y[0], x[1], y[1])} {}
-  // Whether the center of pixel (px, py) is covered: E_i + bias_i >= 0 for every edge.
-  bool covers(int px, int py) const {
-    const std::int64_t cx = fixed::pixel_center(px), cy = fixed::pixel_center(py);
-    return ((e[0].at(cx, cy) + e[0].bias) | (e[1].at(cx, cy) + e[1].bias) |
-            (e[2].at(cx, cy) + e[2].bias)) >= 0;
-  }
 };
 
 }  // namespace tessref::raster
