@@ -5,6 +5,7 @@
 #include <charconv>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "common/parallel.h"
 #include "pipeline/image_output.h"
 #include "pipeline/mesh_source.h"
+#include "pipeline/output_files.h"
 #include "pipeline/render.h"
 #include "pipeline/scene_loader.h"
 #include "pipeline/tess_dump.h"
@@ -81,11 +83,51 @@ struct StageTimes {
   }
 };
 
+// Runs a write to `temp` and names `target` instead of the temporary in any error it throws.
+template <class Write>
+void write_as(const std::filesystem::path& temp, const std::filesystem::path& target, Write&& write) {
+  try {
+    write();
+  } catch (const InputError& e) {
+    std::string message = e.what();
+    const std::string from = temp.string(), to = target.string();
+    for (std::size_t at; (at = message.find(from)) != std::string::npos;) message.replace(at, from.size(), to);
+    throw InputError(message);
+  }
+}
+
+// An 8-bit file whose writer reports no write errors (PNG, BMP, TGA, JPEG under a file-size limit
+// or on a full disk) is read back whole before it counts as written.
+void verify_written(const std::filesystem::path& temp, const Framebuffer& fb) {
+  if (is_float_format(temp)) return;  // these writers report failed writes themselves
+  bool whole = false;
+  try {
+    const FloatImage back = read_float_image(temp);
+    whole = back.width == fb.width && back.height == fb.height;
+  } catch (const InputError&) {
+  }
+  if (!whole)
+    throw InputError(temp.string() +
+                     ": the written file does not read back whole (disk full or file size limit?)");
+}
+
 void run_render(const RenderOptions& o) {
   const Scene scene = load_scene(o.scene, o.sets);
+  // Every output checked before any work: its folder, its format, and no two on one file. All
+  // are written to temporaries and moved into place together at the end, or none is.
+  OutputFiles outputs;
+  const std::filesystem::path color_tmp = outputs.add("-o", o.output);
   check_image_path(o.output, false, "color images");
-  if (!o.depth.empty()) check_image_path(o.depth, true, "depth images");
-  if (!o.normals.empty()) check_image_path(o.normals, true, "normal images");
+  std::filesystem::path depth_tmp, normals_tmp, dump_tmp;
+  if (!o.depth.empty()) {
+    depth_tmp = outputs.add("--depth", o.depth);
+    check_image_path(o.depth, true, "depth images");
+  }
+  if (!o.normals.empty()) {
+    normals_tmp = outputs.add("--normals", o.normals);
+    check_image_path(o.normals, true, "normal images");
+  }
+  if (!o.dump_tess.empty()) dump_tmp = outputs.add("--dump-tess", o.dump_tess);
 
   auto t = Clock::now();
   std::vector<std::string> warnings;
@@ -98,7 +140,7 @@ void run_render(const RenderOptions& o) {
   if (!o.dump_tess.empty()) {
     if (!scene.tessellation.enabled)
       throw InputError("--dump-tess: the scene does not tessellate (tessellation.enabled is false)");
-    dump = std::make_unique<TessDumpWriter>(o.dump_tess);
+    write_as(dump_tmp, o.dump_tess, [&] { dump = std::make_unique<TessDumpWriter>(dump_tmp.string()); });
   }
   // --repeat: every frame renders the same scene again into the same framebuffer memory (as a GL
   // application redraws into its framebuffer); the first also feeds --dump-tess (the records are
@@ -121,12 +163,17 @@ void run_render(const RenderOptions& o) {
       raster.seconds.push_back(result.stats.raster_seconds);
     }
   }
-  if (dump) dump->close();
+  if (dump) write_as(dump_tmp, o.dump_tess, [&] { dump->close(); });
 
   t = Clock::now();
-  write_color_image(result.framebuffer, o.output);
-  if (!o.depth.empty()) write_depth_image(result.framebuffer, o.depth);
-  if (!o.normals.empty()) write_normals_image(result.framebuffer, o.normals);
+  const Framebuffer& fb = result.framebuffer;
+  write_as(color_tmp, o.output, [&] {
+    write_color_image(fb, color_tmp);
+    verify_written(color_tmp, fb);
+  });
+  if (!o.depth.empty()) write_as(depth_tmp, o.depth, [&] { write_depth_image(fb, depth_tmp); });
+  if (!o.normals.empty()) write_as(normals_tmp, o.normals, [&] { write_normals_image(fb, normals_tmp); });
+  outputs.commit();
   const double write_seconds = seconds_since(t);
 
   const DrawStats& s = result.stats;

@@ -1,9 +1,12 @@
 // The built `tessref render` binary: exit codes and messages for good and bad input.
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -155,6 +158,87 @@ TEST_F(Cli, BadInput) {
     EXPECT_THAT(r.output, ::testing::Not(HasSubstr("internal error")));
   }
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "x.png"));
+}
+
+// Files in a folder, hidden ones (the temporaries) included.
+std::vector<std::string> files_in(const std::filesystem::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+TEST_F(Cli, TwoOutputsOnOneFileAreRefused) {
+  TempDir dir;
+  const std::string d = dir.path().string();
+  CliRun r = run("render --set image.width=32 --set image.height=32 -o " + d + "/o.exr --depth " + d + "/o.exr");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("o.exr: --depth and -o name the same file"));
+  r = run("render --set image.width=32 --set image.height=32 -o " + d + "/o.png --dump-tess " + d + "/./o.png");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("--dump-tess and -o name the same file"));
+  EXPECT_TRUE(files_in(dir.path()).empty());
+}
+
+TEST_F(Cli, OutputPathsAreCheckedBeforeAnyWorkAndWrittenAllOrNone) {
+  TempDir dir;
+  const std::string d = dir.path().string();
+  CliRun r = run("render -o " + d + "/nodir/x.png");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("nodir/x.png: -o: the folder " + d + "/nodir does not exist"));
+  EXPECT_THAT(r.output, ::testing::Not(HasSubstr("tessref render:")));  // nothing was rendered
+  // A bad --depth path: the good -o is not written either.
+  r = run("render -o " + d + "/ok.png --depth " + d + "/nodir/d.exr");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("--depth: the folder"));
+  r = run("render -o " + d);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("names a folder, not a file"));
+  EXPECT_TRUE(files_in(dir.path()).empty());
+  // Success leaves exactly the outputs, no temporaries.
+  r = run("render --set image.width=32 --set image.height=32 -o " + d + "/a.png --depth " + d +
+          "/a.exr --dump-tess " + d + "/a.tess");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(files_in(dir.path()), (std::vector<std::string>{"a.exr", "a.png", "a.tess"}));
+}
+
+// Under a file-size limit every format fails with status 2 and leaves no file: the 8-bit writers
+// that do not report failed writes are caught by reading the file back, libjpeg's exit() by the
+// exit handler, the others by their own errors.
+TEST_F(Cli, AWriteThatFailsLeavesNoFileAndExitsTwo) {
+  for (const char* ext : {".png", ".bmp", ".tga", ".jpg", ".exr", ".tif", ".hdr"}) {
+    TempDir dir;
+    const std::string out = (dir.path() / (std::string("x") + ext)).string();
+    // 16 blocks of 1 KiB: far less than a 1024x1024 image. SIGXFSZ ignored: writes fail with EFBIG.
+    CliRun r;
+    FILE* pipe = popen(("sh -c 'ulimit -f 16; trap \"\" XFSZ; exec " + kBinary + " render -o " + out +
+                        "' 2>&1").c_str(), "r");
+    ASSERT_NE(pipe, nullptr);
+    std::array<char, 4096> buf;
+    for (std::size_t n; (n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0;) r.output.append(buf.data(), n);
+    const int status = pclose(pipe);
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    EXPECT_EQ(r.exit_code, 2) << ext << ": " << r.output;
+    EXPECT_THAT(r.output, HasSubstr("x" + std::string(ext))) << ext;
+    EXPECT_TRUE(files_in(dir.path()).empty()) << ext << ": left " << ::testing::PrintToString(files_in(dir.path()));
+  }
+}
+
+TEST_F(Cli, AnInterruptedRenderLeavesNoPartialFile) {
+  TempDir dir;
+  const std::string d = dir.path().string();
+  // About a minute of frames, interrupted after one second.
+  const std::string cmd = kBinary + " render --set tessellation.inner=64 --set tessellation.outer=64 --repeat 1000 -o " +
+                          d + "/x.png --dump-tess " + d + "/x.tess";
+  FILE* pipe = popen(("sh -c '" + cmd + " & p=$!; sleep 1; kill -INT $p; wait $p; echo status=$?' 2>&1").c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string output;
+  std::array<char, 4096> buf;
+  for (std::size_t n; (n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0;) output.append(buf.data(), n);
+  pclose(pipe);
+  EXPECT_THAT(output, HasSubstr("interrupted; unfinished output files removed"));
+  EXPECT_THAT(output, HasSubstr("status=130"));
+  EXPECT_TRUE(files_in(dir.path()).empty()) << ::testing::PrintToString(files_in(dir.path()));
 }
 
 TEST_F(Cli, BadOptions) {

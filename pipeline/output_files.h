@@ -1,0 +1,37 @@
+#pragma once
+// The files one command writes, written all or none. Each output goes to a temporary file in its
+// target's folder (so the final rename is atomic and a failed or interrupted run leaves no
+// half-written file under the target's name); only when every output has been written and checked
+// are they renamed into place. Paths are checked before any work starts.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace tessref {
+
+class OutputFiles {
+ public:
+  OutputFiles() = default;
+  OutputFiles(const OutputFiles&) = delete;
+  OutputFiles& operator=(const OutputFiles&) = delete;
+  ~OutputFiles();  // removes the temporaries of a set that was not committed
+
+  // Registers an output; `option` names it in messages ("-o", "--depth"). InputError when its
+  // folder does not exist, is not a folder or is not writable, or when an earlier output names the
+  // same file. Returns the temporary path to write to (same folder and extension as the target).
+  std::filesystem::path add(const std::string& option, const std::filesystem::path& target);
+
+  // Renames every temporary onto its target, in the order added. InputError if one fails (the
+  // ones not yet renamed are removed).
+  void commit();
+
+ private:
+  struct Entry {
+    std::string option;
+    std::filesystem::path target, temp, identity;
+  };
+  std::vector<Entry> entries_;
+  bool committed_ = false;
+};
+
+}  // namespace tessref
