@@ -55,6 +55,9 @@ const char* write(const char* path, int width, int height, int channels, tessref
     if (!out) return fail(name + ": cannot write this image format (" + OIIO::geterror() + ")");
     OIIO::ImageSpec spec(width, height, channels, type_desc(type));
     if (channel_names) spec.channelnames.assign(channel_names, channel_names + channels);
+    // OpenImageIO stamps the current time into EXR and TIFF headers unless the spec names one:
+    // name a fixed one, so that the same frame gives the same bytes on any day.
+    spec.attribute("DateTime", "1970:01:01 00:00:00");
     if (!out->open(name, spec)) return fail(name + ": cannot open for writing: " + out->geterror());
     bool ok = out->write_image(type_desc(type), pixels);
     ok = out->close() && ok;

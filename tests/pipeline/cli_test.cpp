@@ -4,7 +4,10 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -239,6 +242,29 @@ TEST_F(Cli, AnInterruptedRenderLeavesNoPartialFile) {
   EXPECT_THAT(output, HasSubstr("interrupted; unfinished output files removed"));
   EXPECT_THAT(output, HasSubstr("status=130"));
   EXPECT_TRUE(files_in(dir.path()).empty()) << ::testing::PrintToString(files_in(dir.path()));
+}
+
+std::string file_bytes(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// Every format is byte-stable across runs and clock changes (EXR and TIFF headers carry a DateTime
+// that OpenImageIO would stamp with the current time). faketime comes from scripts/install-deps.sh.
+TEST_F(Cli, OutputBytesDoNotDependOnTheClock) {
+  if (std::system("command -v faketime > /dev/null 2>&1") != 0) GTEST_SKIP() << "faketime not installed";
+  TempDir dir;
+  const std::string d = dir.path().string();
+  const std::string args = " render --set image.width=24 --set image.height=16";
+  for (const char* ext : {".exr", ".tif", ".png", ".jpg", ".hdr", ".bmp"}) {
+    const std::string now = d + "/now" + ext, then = d + "/then" + ext;
+    ASSERT_EQ(run(args.substr(1) + " -o " + now + " --depth " + d + "/now_d.exr").exit_code, 0);
+    ASSERT_EQ(std::system(("faketime '2001-02-03 04:05:06' " + kBinary + args + " -o " + then + " --depth " + d +
+                           "/then_d.exr > /dev/null").c_str()), 0);
+    EXPECT_EQ(file_bytes(now), file_bytes(then)) << ext;
+    EXPECT_FALSE(file_bytes(now).empty()) << ext;
+    EXPECT_EQ(file_bytes(d + "/now_d.exr"), file_bytes(d + "/then_d.exr"));
+  }
 }
 
 TEST_F(Cli, BadOptions) {
