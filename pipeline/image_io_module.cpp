@@ -56,8 +56,10 @@ const char* write(const char* path, int width, int height, int channels, tessref
     OIIO::ImageSpec spec(width, height, channels, type_desc(type));
     if (channel_names) spec.channelnames.assign(channel_names, channel_names + channels);
     // OpenImageIO stamps the current time into EXR and TIFF headers unless the spec names one:
-    // name a fixed one, so that the same frame gives the same bytes on any day.
-    spec.attribute("DateTime", "1970:01:01 00:00:00");
+    // name a fixed one there, so that the same frame gives the same bytes on any day. (Other
+    // writers add no time; giving them one would only add a metadata chunk.)
+    const std::string format = out->format_name();
+    if (format == "openexr" || format == "tiff") spec.attribute("DateTime", "1970:01:01 00:00:00");
     if (!out->open(name, spec)) return fail(name + ": cannot open for writing: " + out->geterror());
     bool ok = out->write_image(type_desc(type), pixels);
     ok = out->close() && ok;
