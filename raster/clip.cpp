@@ -11,7 +11,8 @@ constexpr int kClipPlaneCount = 6;  // the first six bits
 
 struct Planes {
   float gx, gy;
-  // Signed distance to plane i (bit 1 << i); >= 0 is inside.
+  // Signed distance to plane i (bit 1 << i); >= 0 is inside. clip_outcode (clip.h) tests the same
+  // expressions.
   float distance(int i, const glm::vec4& p) const {
     switch (i) {
       case 0: return gx * p.w - p.x;
@@ -21,16 +22,6 @@ struct Planes {
       case 4: return p.z + p.w;
       default: return p.w - p.z;
     }
-  }
-  std::uint32_t outcode(const glm::vec4& p) const {
-    std::uint32_t code = 0;
-    for (int i = 0; i < kClipPlaneCount; ++i)
-      if (distance(i, p) < 0.0f) code |= 1u << i;
-    if (p.x < -p.w) code |= kLeft;
-    if (p.x > p.w) code |= kRight;
-    if (p.y < -p.w) code |= kBottom;
-    if (p.y > p.w) code |= kTop;
-    return code;
   }
 };
 
@@ -89,12 +80,13 @@ ClipResult clip_triangle(const ClipVertex& a, const ClipVertex& b, const ClipVer
   if (!finite(a.position) || !finite(b.position) || !finite(c.position))
     return ClipResult::kInvalid;
   const Planes planes{guard_x, guard_y};
-  std::uint32_t ca = planes.outcode(a.position);
-  std::uint32_t cb = planes.outcode(b.position);
-  std::uint32_t cc = planes.outcode(c.position);
+  // The plane and viewport-side bits of clip_outcode (w <= 0 is handled after clipping).
+  const std::uint32_t ca = clip_outcode(a.position, guard_x, guard_y) & ~kNonPositiveW;
+  const std::uint32_t cb = clip_outcode(b.position, guard_x, guard_y) & ~kNonPositiveW;
+  const std::uint32_t cc = clip_outcode(c.position, guard_x, guard_y) & ~kNonPositiveW;
   if (ca & cb & cc) return ClipResult::kRejected;
 
-  std::uint32_t to_clip = (ca | cb | cc) & ((1u << kClipPlaneCount) - 1);
+  const std::uint32_t to_clip = (ca | cb | cc) & kClipPlanes;
   out.v[0] = a;
   out.v[1] = b;
   out.v[2] = c;

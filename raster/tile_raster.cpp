@@ -63,6 +63,50 @@ Span row_span(const Edge* edges, int x0, int x1, int y) {
   return span;
 }
 
+// The per-pixel interpolation of one triangle: the one definition both scan paths below use.
+// Barycentrics come from the planes through the float positions (see SetupTriangle); window
+// depth is linear in window space; varyings are perspective-correct (attribute/w and 1/w
+// interpolated linearly, then divided), relative to vertex 0 so that a varying equal at all
+// three vertices stays exact.
+struct PixelInterpolation {
+  const SetupTriangle& t;
+  double dz1, dz2;
+  double inv_w0, inv_w1, inv_w2;
+
+  explicit PixelInterpolation(const SetupTriangle& tri)
+      : t(tri),
+        dz1(double(tri.z[1]) - tri.z[0]),
+        dz2(double(tri.z[2]) - tri.z[0]),
+        inv_w0(tri.inv_w[0]),
+        inv_w1(tri.inv_w[1]),
+        inv_w2(tri.inv_w[2]) {}
+
+  // Barycentric weights of vertices 1 and 2 at the center of (x, y).
+  void barycentrics(int x, int y, double& b1, double& b2) const {
+    const double dx = double(x) + 0.5 - t.b_x0, dy = double(y) + 0.5 - t.b_y0;
+    b1 = t.b1_dx * dx + t.b1_dy * dy;
+    b2 = t.b2_dx * dx + t.b2_dy * dy;
+  }
+  // Window depth, kept in the depth range.
+  float depth(double b1, double b2) const {
+    return std::clamp(float(double(t.z[0]) + b1 * dz1 + b2 * dz2), t.z_lo, t.z_hi);
+  }
+  // The perspective-correct weights of vertices 1 and 2; returns 1/w at the pixel.
+  double perspective(double b1, double b2, float& w1, float& w2) const {
+    const double b0 = 1.0 - b1 - b2;
+    const double p0 = b0 * inv_w0, p1 = b1 * inv_w1, p2 = b2 * inv_w2;
+    const double inv_w = p0 + p1 + p2;
+    const double w = 1.0 / inv_w;
+    w1 = float(p1 * w);
+    w2 = float(p2 * w);
+    return inv_w;
+  }
+  // One varying from its stored a0, a1 - a0, a2 - a0.
+  static float varying(float a0, float d1, float d2, float w1, float w2) {
+    return a0 + w1 * d1 + w2 * d2;
+  }
+};
+
 }  // namespace
 
 bool triangle_may_cover(const SetupTriangle& t, const PixelRect& rect) {
@@ -111,8 +155,7 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
   const int y0 = std::max(rect.y0, t.min_y), y1 = std::min(rect.y1, t.max_y);
   if (x0 > x1 || y0 > y1) return 0;
 
-  const double dz1 = double(t.z[1]) - t.z[0], dz2 = double(t.z[2]) - t.z[0];
-  const double inv_w0 = t.inv_w[0], inv_w1 = t.inv_w[1], inv_w2 = t.inv_w[2];
+  const PixelInterpolation ip(t);
   const float* __restrict a0 = varyings;
   const float* __restrict d1 = varyings + num_varyings;
   const float* __restrict d2 = varyings + 2 * num_varyings;
@@ -121,18 +164,16 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
 
   std::uint64_t passed = 0;
   if (t.small_mask) {
-    // Coverage known from setup: each covered center of the box, one lane at a time, with the
-    // operations of the row loops below.
+    // Coverage known from setup: each covered center of the box, one lane at a time.
     const int width = t.max_x - t.min_x + 1;
     int quad_x = -1, quad_y = -1, quad_base = 0;
     for (int bit = 0; bit < kSmallTrianglePixels; ++bit) {
       if (!(t.small_mask & (1u << bit))) continue;
       const int x = t.min_x + bit % width, y = t.min_y + bit / width;
       if (x < x0 || x > x1 || y < y0 || y > y1) continue;
-      const double dx = double(x) + 0.5 - t.b_x0, dy = double(y) + 0.5 - t.b_y0;
-      const double b1 = t.b1_dx * dx + t.b1_dy * dy;
-      const double b2 = t.b2_dx * dx + t.b2_dy * dy;
-      const float z = std::clamp(float(double(t.z[0]) + b1 * dz1 + b2 * dz2), t.z_lo, t.z_hi);
+      double b1, b2;
+      ip.barycentrics(x, y, b1, b2);
+      const float z = ip.depth(b1, b2);
       const std::size_t idx = fb.index(x, y);
       if (!(z < fb.depth[idx])) continue;
       fb.depth[idx] = z;
@@ -144,17 +185,13 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
         for (int k = 0; k < 4; ++k) batch.live[quad_base + k] = 0;
       }
       const int lane = quad_base + (x & 1) + 2 * (y & 1);
-      const double b0 = 1.0 - b1 - b2;
-      const double p0 = b0 * inv_w0, p1 = b1 * inv_w1, p2 = b2 * inv_w2;
-      const double inv_w = p0 + p1 + p2;
-      const double w = 1.0 / inv_w;
-      const float w1 = float(p1 * w), w2 = float(p2 * w);
+      float w1, w2;
+      batch.frag_coord[3][lane] = float(ip.perspective(b1, b2, w1, w2));
       for (int j = 0; j < num_varyings; ++j)
-        batch.varyings[j][lane] = a0[j] + w1 * d1[j] + w2 * d2[j];
+        batch.varyings[j][lane] = PixelInterpolation::varying(a0[j], d1[j], d2[j], w1, w2);
       batch.frag_coord[0][lane] = float(x) + 0.5f;
       batch.frag_coord[1][lane] = float(y) + 0.5f;
       batch.frag_coord[2][lane] = z;
-      batch.frag_coord[3][lane] = float(inv_w);
       batch.front_facing[lane] = t.front_facing;
       batch.live[lane] = 1;
       sink.pixel_[lane] = idx;
@@ -165,17 +202,17 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
     return passed;
   }
   const TriangleEdges te(t.x, t.y);
-  // Quad rows (aligned row pairs), each cut into segments of at most a batch of quads. Every
-  // per-pixel formula below is evaluated over a whole row segment or batch range in loops without
-  // branches (so they vectorize), with the operations and their order of the one-pixel form.
+  // Quad rows (aligned row pairs), each cut into segments of at most a batch of quads. The
+  // per-pixel formulas run over a whole row segment or batch range in loops without branches
+  // (so they vectorize).
   for (int qy = y0 & ~1; qy <= y1; qy += 2) {
     Span span[2];
     for (int r = 0; r < 2; ++r)
       if (qy + r >= y0 && qy + r <= y1) span[r] = row_span(te.e, x0, x1, qy + r);
     const bool has0 = span[0].lo <= span[0].hi, has1 = span[1].lo <= span[1].hi;
     if (!has0 && !has1) continue;
-    const int lo = has0 && has1 ? std::min(span[0].lo, span[1].lo) : (has0 ? span[0].lo : span[1].lo);
-    const int hi = has0 && has1 ? std::max(span[0].hi, span[1].hi) : (has0 ? span[0].hi : span[1].hi);
+    const int lo = !has1 ? span[0].lo : !has0 ? span[1].lo : std::min(span[0].lo, span[1].lo);
+    const int hi = !has1 ? span[0].hi : !has0 ? span[1].hi : std::max(span[0].hi, span[1].hi);
     for (int seg_x = lo & ~1; seg_x <= hi; seg_x += 2 * kFragmentQuads) {
       const int seg_quads = std::min(kFragmentQuads, (hi - seg_x) / 2 + 1);
       if (batch.quads + seg_quads > kFragmentQuads) sink.flush();
@@ -192,13 +229,9 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
         if (n <= 0) continue;
         double b1[2 * kFragmentQuads], b2[2 * kFragmentQuads];
         float z[2 * kFragmentQuads];
-        const double dy = double(y) + 0.5 - t.b_y0;
         for (int i = 0; i < n; ++i) {
-          const double dx = double(xs + i) + 0.5 - t.b_x0;
-          b1[i] = t.b1_dx * dx + t.b1_dy * dy;
-          b2[i] = t.b2_dx * dx + t.b2_dy * dy;
-          // Window depth, linear in window space, kept in the depth range.
-          z[i] = std::clamp(float(double(t.z[0]) + b1[i] * dz1 + b2[i] * dz2), t.z_lo, t.z_hi);
+          ip.barycentrics(xs + i, y, b1[i], b2[i]);
+          z[i] = ip.depth(b1[i], b2[i]);
         }
         float* depth = fb.depth.data() + fb.index(xs, y);
         for (int i = 0; i < n; ++i) {
@@ -217,27 +250,18 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
         }
       }
 
-      // Perspective-correct varyings of the segment's lanes (dead lanes compute what they hold,
-      // unused): interpolate attribute/w and 1/w linearly, then divide.
+      // Varyings of the segment's lanes (dead lanes compute what they hold, unused).
       float w1[kFragmentLanes], w2[kFragmentLanes];
-      for (int l = base; l < base + lanes; ++l) {
-        const double b1 = sink.b1_[l], b2 = sink.b2_[l];
-        const double b0 = 1.0 - b1 - b2;
-        const double p0 = b0 * inv_w0, p1 = b1 * inv_w1, p2 = b2 * inv_w2;
-        const double inv_w = p0 + p1 + p2;
-        const double w = 1.0 / inv_w;
-        w1[l] = float(p1 * w);
-        w2[l] = float(p2 * w);
-        batch.frag_coord[3][l] = float(inv_w);
-      }
-      // Relative to vertex 0, so that a varying equal at all three vertices stays exact.
+      for (int l = base; l < base + lanes; ++l)
+        batch.frag_coord[3][l] = float(ip.perspective(sink.b1_[l], sink.b2_[l], w1[l], w2[l]));
       for (int j = 0; j < num_varyings; ++j) {
         float* __restrict out = batch.varyings[j];
-        for (int l = base; l < base + lanes; ++l) out[l] = a0[j] + w1[l] * d1[j] + w2[l] * d2[j];
+        const float a = a0[j], e1 = d1[j], e2 = d2[j];
+        for (int l = base; l < base + lanes; ++l) out[l] = PixelInterpolation::varying(a, e1, e2, w1[l], w2[l]);
       }
       for (int l = base; l < base + lanes; ++l) batch.front_facing[l] = t.front_facing;
 
-      // Keep only quads with a live lane.
+  // Keep only quads with a live lane.
       int kept = batch.quads;
       for (int q = 0; q < seg_quads; ++q) {
         const int src = base + 4 * q;
