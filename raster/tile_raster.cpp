@@ -122,16 +122,41 @@ bool triangle_may_cover(const SetupTriangle& t, const PixelRect& rect) {
   return true;
 }
 
-FragmentSink::FragmentSink(const FragmentProgram& fs, Framebuffer& fb, int num_varyings)
-    : fs_(fs), fb_(fb), write_aux_(!fb.aux.empty()) {
-  batch_.num_varyings = num_varyings;
-  // Lanes that are not live still go through the programs' SIMD loops: give them harmless values.
-  for (auto* rows : {&batch_.frag_coord[0], &batch_.color[0], &batch_.aux[0]})
-    std::fill_n(rows[0], 4 * kFragmentLanes, 0.0f);
-  std::fill_n(batch_.varyings[0], kMaxVaryings * kFragmentLanes, 0.0f);
-  std::fill_n(b1_, kFragmentLanes, 0.0);
-  std::fill_n(b2_, kFragmentLanes, 0.0);
+struct FragmentSink::Lanes {
+  std::size_t pixel[kFragmentLanes];
+  alignas(32) double b1[kFragmentLanes];
+  alignas(32) double b2[kFragmentLanes];
+  FragmentBatch batch;
+  // Lanes that are not live still go through the programs' SIMD loops: they start out with
+  // harmless values and afterwards hold earlier fragments' ones.
+  Lanes() {
+    std::fill_n(pixel, kFragmentLanes, 0);
+    std::fill_n(b1, kFragmentLanes, 0.0);
+    std::fill_n(b2, kFragmentLanes, 0.0);
+    for (auto* rows : {&batch.frag_coord[0], &batch.color[0], &batch.aux[0]})
+      std::fill_n(rows[0], 4 * kFragmentLanes, 0.0f);
+    std::fill_n(batch.varyings[0], kMaxVaryings * kFragmentLanes, 0.0f);
+    std::fill_n(batch.live, kFragmentLanes, 0);
+    std::fill_n(batch.front_facing, kFragmentLanes, 0);
+  }
+};
+
+FragmentSink::Lanes& FragmentSink::thread_lanes(int num_varyings) {
+  thread_local Lanes lanes;
+  lanes.batch.quads = 0;
+  lanes.batch.num_varyings = num_varyings;
+  return lanes;
 }
+
+FragmentSink::FragmentSink(const FragmentProgram& fs, Framebuffer& fb, int num_varyings)
+    : fs_(fs),
+      fb_(fb),
+      write_aux_(!fb.aux.empty()),
+      lanes_(thread_lanes(num_varyings)),
+      batch_(lanes_.batch),
+      pixel_(lanes_.pixel),
+      b1_(lanes_.b1),
+      b2_(lanes_.b2) {}
 
 void FragmentSink::flush() {
   if (batch_.quads == 0) return;

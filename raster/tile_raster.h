@@ -29,10 +29,15 @@ class FragmentSink {
   Framebuffer& fb_;
   bool write_aux_;
   std::uint64_t shaded_ = 0;
-  std::size_t pixel_[kFragmentLanes];
-  alignas(32) double b1_[kFragmentLanes];  // barycentrics of the lanes being filled
-  alignas(32) double b2_[kFragmentLanes];
-  FragmentBatch batch_;
+  // The lanes live in per-thread storage, set up once per thread rather than once per tile (a
+  // thread scans one tile at a time, so one sink per thread is alive at a time).
+  struct Lanes;
+  static Lanes& thread_lanes(int num_varyings);
+  Lanes& lanes_;
+  FragmentBatch& batch_;
+  std::size_t* pixel_;  // framebuffer index of each lane
+  double* b1_;          // barycentrics of the lanes being filled
+  double* b2_;
 };
 
 // Sends the pixels of rect whose centers the triangle covers (fill rule in common/fixed_point.h)
