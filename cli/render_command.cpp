@@ -102,7 +102,7 @@ void verify_written(const std::filesystem::path& temp, const Framebuffer& fb) {
   if (is_float_format(temp)) return;  // these writers report failed writes themselves
   bool whole = false;
   try {
-    const FloatImage back = read_float_image(temp);
+    const Rgb8Image back = read_rgb8_image(temp);  // 8 bits, as written: no float conversion
     whole = back.width == fb.width && back.height == fb.height;
   } catch (const InputError&) {
   }
