@@ -7,6 +7,7 @@ namespace tessref::cli {
 
 void add_render_command(CLI::App& app);  // cli/render_command.cpp
 void add_tpg_command(CLI::App& app);     // cli/tpg_command.cpp
+void add_shader_test_command(CLI::App& app);  // cli/shader_test_command.cpp
 
 // Exit status set by a command callback (0 unless it failed without throwing).
 int exit_code();

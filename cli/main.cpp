@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   tessref::cli::add_render_command(app);
   tessref::cli::add_tpg_command(app);
+  tessref::cli::add_shader_test_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

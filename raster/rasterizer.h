@@ -49,6 +49,7 @@ struct FragmentProgram {
 
 struct RasterState {
   bool cull_back_faces = false;  // CCW front faces, as glFrontFace(GL_CCW)
+  bool depth_test = true;        // LESS, with depth writes; false: neither (glDisable(GL_DEPTH_TEST))
   float depth_range_near = 0.0f;
   float depth_range_far = 1.0f;
 };

@@ -97,8 +97,14 @@ bool piece_box(const V& a, const V& b, const V& c, const Viewport& vp, bool cull
 
 // Stores a piece that passed piece_box with a non-empty box (or drops it when it is small and
 // covers no center): what remains of setup_piece.
+// Flat varyings (flat.mask) take the provoking vertex's values, with zero differences.
+struct FlatVaryings {
+  std::uint32_t mask = 0;
+  const float* provoking = nullptr;
+};
+
 void store_piece(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
-                 const PieceBox& box, const Viewport& vp, int num_varyings,
+                 const PieceBox& box, const Viewport& vp, int num_varyings, FlatVaryings flat,
                  std::vector<SetupTriangle>& tris, std::vector<float>& varyings) {
   const std::int64_t area2 = box.area2;
   const bool front = box.front;
@@ -184,17 +190,24 @@ void store_piece(const WindowVertex& a, const WindowVertex& b, const WindowVerte
     out[num_varyings + j] = a1[j] - a0[j];
     out[2 * num_varyings + j] = a2[j] - a0[j];
   }
+  if (flat.mask)
+    for (int j = 0; j < num_varyings; ++j)
+      if (flat.mask & (1u << j)) {
+        out[j] = flat.provoking[j];
+        out[num_varyings + j] = out[2 * num_varyings + j] = 0.0f;
+      }
   tris.push_back(t);
 }
 
 PieceResult setup_piece(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                         const Viewport& vp, bool cull_back_faces, int num_varyings,
-                        std::vector<SetupTriangle>& tris, std::vector<float>& varyings) {
+                        FlatVaryings flat, std::vector<SetupTriangle>& tris,
+                        std::vector<float>& varyings) {
   PieceBox box;
   if (!piece_box(a, b, c, vp, cull_back_faces, box)) return PieceResult::kCulled;
   // No pixel center in the bounding box: set up (it counts) but nothing to scan. Most triangles
   // of a finely tessellated surface end here.
-  if (!box.empty()) store_piece(a, b, c, box, vp, num_varyings, tris, varyings);
+  if (!box.empty()) store_piece(a, b, c, box, vp, num_varyings, flat, tris, varyings);
   return PieceResult::kRasterized;
 }
 
@@ -243,6 +256,7 @@ SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index,
   const std::size_t i0 = batch.vertex_index(index, 0), i1 = batch.vertex_index(index, 1),
                     i2 = batch.vertex_index(index, 2);
   const int nv = std::clamp(batch.num_varyings, 0, kMaxVaryings);
+  const FlatVaryings flat{batch.flat_varyings, batch.vertices[i2].varyings.data()};
   switch (classify_outcodes(projected[i0].code, projected[i1].code, projected[i2].code)) {
     case ClipTest::kInvalid:
     case ClipTest::kRejected: return SetupOutcome::kClippedAway;
@@ -255,7 +269,8 @@ SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index,
       if (!box.empty())
         store_piece(from_projected(projected[i0], batch.vertices[i0]),
                     from_projected(projected[i1], batch.vertices[i1]),
-                    from_projected(projected[i2], batch.vertices[i2]), box, vp, nv, tris, varyings);
+                    from_projected(projected[i2], batch.vertices[i2]), box, vp, nv, flat, tris,
+                    varyings);
       return SetupOutcome::kRasterized;
     }
     case ClipTest::kNeedsClip: break;
@@ -270,7 +285,7 @@ SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index,
   for (int k = 0; k < poly.count; ++k) w[k] = to_window(poly.v[k], vp, poly.generated[k]);
   // A planar convex polygon: fan from its first vertex.
   for (int k = 1; k + 1 < poly.count; ++k) {
-    if (setup_piece(w[0], w[k], w[k + 1], vp, cull_back_faces, nv, tris, varyings) ==
+    if (setup_piece(w[0], w[k], w[k + 1], vp, cull_back_faces, nv, flat, tris, varyings) ==
         PieceResult::kRasterized)
       ++pieces_out;
   }
@@ -283,6 +298,7 @@ SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index, const
   // A three-vertex batch of this triangle's corners, projected here.
   TriangleBatch one;
   one.num_varyings = batch.num_varyings;
+  one.flat_varyings = batch.flat_varyings;
   for (int k = 0; k < 3; ++k) one.vertices.push_back(batch.corner(index, k));
   ProjectedVertex projected[3];
   project_vertices(one.vertices.data(), 3, vp, projected);

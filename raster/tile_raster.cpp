@@ -148,10 +148,12 @@ FragmentSink::Lanes& FragmentSink::thread_lanes(int num_varyings) {
   return lanes;
 }
 
-FragmentSink::FragmentSink(const FragmentProgram& fs, Framebuffer& fb, int num_varyings)
+FragmentSink::FragmentSink(const FragmentProgram& fs, Framebuffer& fb, int num_varyings,
+                           bool depth_test)
     : fs_(fs),
       fb_(fb),
       write_aux_(!fb.aux.empty()),
+      depth_test_(depth_test),
       lanes_(thread_lanes(num_varyings)),
       batch_(lanes_.batch),
       pixel_(lanes_.pixel),
@@ -200,8 +202,10 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
       ip.barycentrics(x, y, b1, b2);
       const float z = ip.depth(b1, b2);
       const std::size_t idx = fb.index(x, y);
-      if (!(z < fb.depth[idx])) continue;
-      fb.depth[idx] = z;
+      if (sink.depth_test_) {
+        if (!(z < fb.depth[idx])) continue;
+        fb.depth[idx] = z;
+      }
       if ((x & ~1) != quad_x || (y & ~1) != quad_y) {
         if (batch.quads == kFragmentQuads) sink.flush();
         quad_x = x & ~1;
@@ -260,8 +264,10 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
         }
         float* depth = fb.depth.data() + fb.index(xs, y);
         for (int i = 0; i < n; ++i) {
-          if (!(z[i] < depth[i])) continue;
-          depth[i] = z[i];  // programs do not discard: the depth write is final
+          if (sink.depth_test_) {
+            if (!(z[i] < depth[i])) continue;
+            depth[i] = z[i];  // programs do not discard: the depth write is final
+          }
           const int x = xs + i;
           const int lane = base + 2 * (x - seg_x) - (x & 1) + 2 * r;  // 4 * quad + (x & 1) + 2r
           batch.live[lane] = 1;

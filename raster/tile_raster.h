@@ -16,7 +16,9 @@ struct PixelRect {
 // arrival order when a batch is shaded, so the last fragment to pass wins, as in submission order.
 class FragmentSink {
  public:
-  FragmentSink(const FragmentProgram& fs, Framebuffer& fb, int num_varyings);
+  // depth_test false: every covered fragment is shaded and depth is neither tested nor written
+  // (glDisable(GL_DEPTH_TEST)).
+  FragmentSink(const FragmentProgram& fs, Framebuffer& fb, int num_varyings, bool depth_test = true);
   ~FragmentSink() { flush(); }
   void flush();
   std::uint64_t shaded() const { return shaded_; }
@@ -28,6 +30,7 @@ class FragmentSink {
   const FragmentProgram& fs_;
   Framebuffer& fb_;
   bool write_aux_;
+  bool depth_test_;
   std::uint64_t shaded_ = 0;
   // The lanes live in per-thread storage, set up once per thread rather than once per tile (a
   // thread scans one tile at a time, so one sink per thread is alive at a time).

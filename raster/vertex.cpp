@@ -5,6 +5,7 @@ namespace tessref {
 TriangleBatch expand_indices(const TriangleBatch& batch) {
   TriangleBatch out;
   out.num_varyings = batch.num_varyings;
+  out.flat_varyings = batch.flat_varyings;
   const std::size_t n = batch.triangle_count();
   out.vertices.reserve(3 * n);
   for (std::size_t t = 0; t < n; ++t)
@@ -14,6 +15,7 @@ TriangleBatch expand_indices(const TriangleBatch& batch) {
 
 void append_triangles(TriangleBatch& dst, const TriangleBatch& src) {
   dst.num_varyings = src.num_varyings;
+  dst.flat_varyings = src.flat_varyings;
   if (!dst.indexed && !src.indexed) {
     dst.vertices.insert(dst.vertices.end(), src.vertices.begin(), src.vertices.end());
     return;

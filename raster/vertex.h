@@ -26,6 +26,9 @@ struct TriangleBatch {
   std::vector<std::uint32_t> indices;  // used when indexed
   bool indexed = false;
   int num_varyings = 0;
+  // Bit j set: varying j is flat (not interpolated): every fragment of a triangle gets the value
+  // of its provoking vertex, the last one (GL_LAST_VERTEX_CONVENTION).
+  std::uint32_t flat_varyings = 0;
   std::size_t triangle_count() const { return (indexed ? indices.size() : vertices.size()) / 3; }
   std::size_t vertex_index(std::size_t triangle, int corner) const {
     const std::size_t k = 3 * triangle + std::size_t(corner);

@@ -272,6 +272,7 @@ TessStats tessellate_range(const TessDrawInput& input, std::size_t first_patch,
   // cleared and constructed again (64 bytes per vertex and 4 per index saved).
   if (overwrite) out.indexed = true;
   out.num_varyings = tes.num_varyings();
+  out.flat_varyings = tes.flat_varyings();
   if (!out.indexed) {  // earlier contents as consecutive triples: index them as they are
     out.indices.resize(out.vertices.size() / 3 * 3);
     for (std::size_t k = 0; k < out.indices.size(); ++k) out.indices[k] = std::uint32_t(k);

@@ -94,6 +94,8 @@ class TessEvalProgram {
   virtual ~TessEvalProgram() = default;
   virtual TessLayout layout() const = 0;
   virtual int num_varyings() const { return kBuiltinVaryings; }  // <= kMaxVaryings
+  // Bit j: varying j is flat (TriangleBatch::flat_varyings).
+  virtual std::uint32_t flat_varyings() const { return 0; }
   // tess_coord: gl_TessCoord as generated (triangles: (u, v, w), u weighs gl_in[0], v gl_in[1],
   // w gl_in[2]; quads and isolines: (u, v, 0)).
   virtual ClipVertex evaluate(const glm::vec3& tess_coord, const PatchOutput& patch,

@@ -1,0 +1,751 @@
+// The executor's run loop and instruction kernels (see executor.h for the model).
+#include "shader/executor.h"
+
+#include <algorithm>
+#include <atomic>
+#include <unordered_map>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include <spirv/unified1/GLSL.std.450.h>
+
+#include "shader/executor_runner.h"
+
+namespace tessref::shader {
+
+std::unique_ptr<DecodedProgram> decode_program(const Module& m);  // executor_decode.cpp
+
+void Runner::compare(const XIns& x) {
+  auto cmp = [&](auto zero, auto f) {
+    using T = decltype(zero);
+    map2<T, std::uint32_t>(x, [&](T a, T b) { return std::uint32_t(f(a, b)); });
+  };
+  auto fcmp = [&](auto f) {
+    if (x.s == Scalar::F64) cmp(double{}, f);
+    else cmp(float{}, f);
+  };
+  auto unord = [](auto f) {
+    return [f](auto a, auto b) { return std::isnan(a) || std::isnan(b) || f(a, b); };
+  };
+  switch (x.op) {
+    case XOp::OrdEq: fcmp([](auto a, auto b) { return a == b; }); break;
+    case XOp::OrdNe: fcmp([](auto a, auto b) { return a < b || a > b; }); break;
+    case XOp::OrdLt: fcmp([](auto a, auto b) { return a < b; }); break;
+    case XOp::OrdGt: fcmp([](auto a, auto b) { return a > b; }); break;
+    case XOp::OrdLe: fcmp([](auto a, auto b) { return a <= b; }); break;
+    case XOp::OrdGe: fcmp([](auto a, auto b) { return a >= b; }); break;
+    case XOp::UnordEq: fcmp(unord([](auto a, auto b) { return a == b; })); break;
+    case XOp::UnordNe: fcmp([](auto a, auto b) { return !(a == b); }); break;
+    case XOp::UnordLt: fcmp(unord([](auto a, auto b) { return a < b; })); break;
+    case XOp::UnordGt: fcmp(unord([](auto a, auto b) { return a > b; })); break;
+    case XOp::UnordLe: fcmp(unord([](auto a, auto b) { return a <= b; })); break;
+    case XOp::UnordGe: fcmp(unord([](auto a, auto b) { return a >= b; })); break;
+    case XOp::IEq: cmp(std::uint32_t{}, [](auto a, auto b) { return a == b; }); break;
+    case XOp::INe: cmp(std::uint32_t{}, [](auto a, auto b) { return a != b; }); break;
+    case XOp::SLt: cmp(std::int32_t{}, [](auto a, auto b) { return a < b; }); break;
+    case XOp::SGt: cmp(std::int32_t{}, [](auto a, auto b) { return a > b; }); break;
+    case XOp::SLe: cmp(std::int32_t{}, [](auto a, auto b) { return a <= b; }); break;
+    case XOp::SGe: cmp(std::int32_t{}, [](auto a, auto b) { return a >= b; }); break;
+    case XOp::ULt: cmp(std::uint32_t{}, [](auto a, auto b) { return a < b; }); break;
+    case XOp::UGt: cmp(std::uint32_t{}, [](auto a, auto b) { return a > b; }); break;
+    case XOp::ULe: cmp(std::uint32_t{}, [](auto a, auto b) { return a <= b; }); break;
+    case XOp::UGe: cmp(std::uint32_t{}, [](auto a, auto b) { return a >= b; }); break;
+    default: break;
+  }
+}
+
+void Runner::access_chain(const XIns& x) {
+  const Chain& ch = p.chains[x.aux];
+  std::uint32_t* dst = A + std::size_t(x.dst) * L;
+  const std::uint32_t* base = x.a == kNone ? nullptr : A + std::size_t(x.a) * L;
+  const std::uint32_t constant = ch.steps[0].offset;
+  put(dst, [&](int l) {
+    std::uint32_t off = (base ? base[l] : 0u) + constant;
+    for (std::size_t i = 1; i < ch.steps.size(); ++i) {
+      const ChainStep& s = ch.steps[i];
+      const std::uint32_t raw = A[std::size_t(s.index_reg) * L + l];
+      // Robust access: an index outside the array reads or writes its last (or first) element.
+      std::int64_t k = s.index_scalar == Scalar::I32 ? std::int64_t(std::int32_t(raw)) : std::int64_t(raw);
+      k = std::clamp<std::int64_t>(k, 0, s.length ? s.length - 1 : 0);
+      off += std::uint32_t(k) * s.stride;
+    }
+    return off;
+  });
+}
+
+void Runner::load(const XIns& x) {
+  const Access& a = p.accesses[x.aux];
+  const VariableSlot& v = p.slots[a.slot];
+  const std::uint32_t* off = a.offset_reg == kNone ? nullptr : A + std::size_t(a.offset_reg) * L;
+  for (const FlatComponent& c : a.flat) {
+    if (c.scalar == Scalar::F64) {
+      double* d = row<double>(x.dst + c.word);
+      if (v.per_lane) {
+        put(d, [&](int l) {
+          const std::uint32_t o = (off ? off[l] : 0u) + c.word;
+          return reinterpret_cast<const double*>(A + std::size_t(v.base + o) * L)[l];
+        });
+      } else {
+        put(d, [&](int l) {
+          const std::uint32_t o = v.base + (off ? off[l] : 0u) + c.word;
+          double r;
+          std::memcpy(&r, inv.shared_.data() + o, 8);
+          return r;
+        });
+      }
+      continue;
+    }
+    std::uint32_t* d = A + std::size_t(x.dst + c.word) * L;
+    if (v.per_lane) {
+      if (!off) {
+        const std::uint32_t* s = A + std::size_t(v.base + c.word) * L;
+        put(d, [&](int l) { return s[l]; });
+      } else {
+        put(d, [&](int l) { return A[std::size_t(v.base + off[l] + c.word) * L + l]; });
+      }
+    } else {
+      const std::uint32_t* s = inv.shared_.data() + v.base + c.word;
+      if (!off) {
+        const std::uint32_t value = *s;
+        put(d, [&](int) { return value; });
+      } else {
+        put(d, [&](int l) { return s[off[l]]; });
+      }
+    }
+  }
+}
+
+void Runner::store(const XIns& x) {
+  const Access& a = p.accesses[x.aux];
+  const VariableSlot& v = p.slots[a.slot];
+  const std::uint32_t* off = a.offset_reg == kNone ? nullptr : A + std::size_t(a.offset_reg) * L;
+  for (const FlatComponent& c : a.flat) {
+    const int w = scalar_words(c.scalar);
+    for (int l = 0; l < n; ++l) {
+      if (!mask[l]) continue;
+      const std::uint32_t o = (off ? off[l] : 0u) + c.word;
+      const std::uint32_t* src = A + std::size_t(x.a + c.word) * L + std::size_t(l) * w;
+      std::uint32_t* dst = v.per_lane ? A + std::size_t(v.base + o) * L + std::size_t(l) * w
+                                      : inv.shared_.data() + v.base + o;
+      dst[0] = src[0];
+      if (w == 2) dst[1] = src[1];
+    }
+  }
+}
+
+void Runner::matrix(const XIns& x) {
+  // Columns of a: x.aux, rows of a: x.m; columns of b: x.d. Sums run in index order, as glm's.
+  auto go = [&](auto zero) {
+    using T = decltype(zero);
+    const std::uint32_t ca = x.aux, ra = x.m;
+    auto a = [&](std::uint32_t col, std::uint32_t r) { return row<T>(x.a, col * ra + r); };
+    switch (x.op) {
+      case XOp::MatTimesVec:  // (ra x ca) * vec(ca) -> vec(ra)
+        for (std::uint32_t r = 0; r < ra; ++r)
+          put(row<T>(x.dst, r), [&](int l) {
+            T s = a(0, r)[l] * row<T>(x.b, 0)[l];
+            for (std::uint32_t c = 1; c < ca; ++c) s = s + a(c, r)[l] * row<T>(x.b, c)[l];
+            return s;
+          });
+        break;
+      case XOp::VecTimesMat: {  // vec(rb) * (rb x cb) -> vec(cb); a is the vector (ra comps)
+        const std::uint32_t cb = x.d;
+        for (std::uint32_t c = 0; c < cb; ++c)
+          put(row<T>(x.dst, c), [&](int l) {
+            T s = row<T>(x.a, 0)[l] * row<T>(x.b, c * ra)[l];
+            for (std::uint32_t r = 1; r < ra; ++r) s = s + row<T>(x.a, r)[l] * row<T>(x.b, c * ra + r)[l];
+            return s;
+          });
+        break;
+      }
+      case XOp::MatTimesMat: {  // (ra x ca) * (ca x cb) -> (ra x cb)
+        const std::uint32_t cb = x.d;
+        for (std::uint32_t j = 0; j < cb; ++j)
+          for (std::uint32_t r = 0; r < ra; ++r)
+            put(row<T>(x.dst, j * ra + r), [&](int l) {
+              T s = a(0, r)[l] * row<T>(x.b, j * ca)[l];
+              for (std::uint32_t c = 1; c < ca; ++c) s = s + a(c, r)[l] * row<T>(x.b, j * ca + c)[l];
+              return s;
+            });
+        break;
+      }
+      case XOp::OuterProduct:  // vec(ra) * vec(cb)^T -> (ra x cb)
+        for (std::uint32_t j = 0; j < x.d; ++j)
+          for (std::uint32_t r = 0; r < ra; ++r)
+            put(row<T>(x.dst, j * ra + r), [&](int l) { return row<T>(x.a, r)[l] * row<T>(x.b, j)[l]; });
+        break;
+      case XOp::Transpose:  // (ra x ca) -> (ca x ra)
+        for (std::uint32_t c = 0; c < ca; ++c)
+          for (std::uint32_t r = 0; r < ra; ++r) {
+            const T* s = a(c, r);
+            put(row<T>(x.dst, r * ca + c), [&](int l) { return s[l]; });
+          }
+        break;
+      default: break;
+    }
+  };
+  if (x.s == Scalar::F64) go(double{});
+  else go(float{});
+}
+
+void Runner::derivative(const XIns& x) {
+  // Lane 4q + k is pixel (k & 1, k >> 1) of quad q. Coarse: one difference per quad; fine: per
+  // row (dFdx) or column (dFdy).
+  const bool fine = x.op == XOp::DPdxFine || x.op == XOp::DPdyFine || x.op == XOp::FwidthFine;
+  const bool is_x = x.op == XOp::DPdx || x.op == XOp::DPdxFine;
+  const bool is_w = x.op == XOp::Fwidth || x.op == XOp::FwidthFine;
+  for (std::uint32_t c = 0; c < x.n; ++c) {
+    const float* a = row<float>(x.a, c);
+    auto dx = [&](int l) {
+      const int q = l & ~3, k = fine ? (l & 2) : 0;
+      return a[q + k + 1] - a[q + k];
+    };
+    auto dy = [&](int l) {
+      const int q = l & ~3, k = fine ? (l & 1) : 0;
+      return a[q + k + 2] - a[q + k];
+    };
+    put(row<float>(x.dst, c), [&](int l) {
+      if (l - (l & 3) + 3 >= n) return 0.0f;
+      if (is_w) return std::fabs(dx(l)) + std::fabs(dy(l));
+      return is_x ? dx(l) : dy(l);
+    });
+  }
+}
+
+void Runner::texture(const XIns& x) {
+  const std::uint32_t* unit = A + std::size_t(x.a) * L;
+  auto texel = [](const Texture& t, int i, int j, int c) {
+    if (t.clamp) {
+      i = std::clamp(i, 0, t.width - 1);
+      j = std::clamp(j, 0, t.height - 1);
+    } else {
+      i = ((i % t.width) + t.width) % t.width;
+      j = ((j % t.height) + t.height) % t.height;
+    }
+    return t.texels[(std::size_t(j) * t.width + i) * 4 + c];
+  };
+  if (x.op == XOp::QuerySize) {
+    for (int c = 0; c < 2; ++c)
+      put(row<std::uint32_t>(x.dst, c), [&](int l) {
+        const std::uint32_t u = unit[l];
+        const Texture* t = u < inv.textures_.size() ? inv.textures_[u] : nullptr;
+        return std::uint32_t(t ? (c ? t->height : t->width) : 0);
+      });
+    return;
+  }
+  for (int c = 0; c < 4; ++c) {
+    put(row<float>(x.dst, c), [&](int l) -> float {
+      const std::uint32_t u = unit[l];
+      const Texture* t = u < inv.textures_.size() ? inv.textures_[u] : nullptr;
+      if (!t || t->width <= 0 || t->height <= 0) return c == 3 ? 1.0f : 0.0f;  // incomplete texture
+      if (x.op == XOp::Fetch) {
+        const std::int32_t i = std::int32_t(row<std::uint32_t>(x.b, 0)[l]);
+        const std::int32_t j = std::int32_t(row<std::uint32_t>(x.b, 1)[l]);
+        if (i < 0 || j < 0 || i >= t->width || j >= t->height) return 0.0f;  // out of range: zero
+        return texel(*t, i, j, c);
+      }
+      const float s = row<float>(x.b, 0)[l] * float(t->width);
+      const float r = row<float>(x.b, 1)[l] * float(t->height);
+      if (!t->linear) return texel(*t, int(std::floor(s)), int(std::floor(r)), c);
+      const float fs = s - 0.5f, fr = r - 0.5f;
+      const int i0 = int(std::floor(fs)), j0 = int(std::floor(fr));
+      const float a = fs - float(i0), b = fr - float(j0);
+      return (1.0f - a) * (1.0f - b) * texel(*t, i0, j0, c) + a * (1.0f - b) * texel(*t, i0 + 1, j0, c) +
+             (1.0f - a) * b * texel(*t, i0, j0 + 1, c) + a * b * texel(*t, i0 + 1, j0 + 1, c);
+    });
+  }
+}
+
+void Runner::atomic(const XIns& x) {
+  // Lanes take their turns in lane order, so the values returned are deterministic.
+  const Access& a = p.accesses[x.aux];
+  const VariableSlot& v = p.slots[a.slot];
+  const std::uint32_t* off = a.offset_reg == kNone ? nullptr : A + std::size_t(a.offset_reg) * L;
+  std::uint32_t* result = x.dst == kNone ? nullptr : A + std::size_t(x.dst) * L;
+  for (int l = 0; l < n; ++l) {
+    if (!mask[l]) continue;
+    const std::uint32_t o = off ? off[l] : 0u;
+    std::uint32_t* cell = v.per_lane ? A + std::size_t(v.base + o) * L + l : inv.shared_.data() + v.base + o;
+    const std::uint32_t before = *cell;
+    const std::uint32_t operand = x.a == kNone ? 0u : A[std::size_t(x.a) * L + l];
+    switch (x.op) {
+      case XOp::AtomicInc: *cell = before + 1; break;
+      case XOp::AtomicDec: *cell = before - 1; break;
+      case XOp::AtomicAdd: *cell = before + operand; break;
+      case XOp::AtomicSub: *cell = before - operand; break;
+      case XOp::AtomicStore: *cell = operand; break;
+      default: break;
+    }
+    if (result) result[l] = x.op == XOp::AtomicDec ? before - 1 : before;
+  }
+}
+
+void Runner::exec(const XIns& x) {
+  switch (x.op) {
+    case XOp::Nop: break;
+    case XOp::Copy: words_copy(x.dst, x.a, x.n); break;
+    case XOp::Undef:
+      for (std::uint32_t w = 0; w < x.n; ++w) put(A + std::size_t(x.dst + w) * L, [](int) { return 0u; });
+      break;
+    case XOp::Neg:
+      arith(x, [&](auto z) {
+        using T = decltype(z);
+        if constexpr (std::is_integral_v<T>) map1<std::uint32_t, std::uint32_t>(x, [](std::uint32_t a) { return 0u - a; });
+        else map1<T, T>(x, [](T a) { return -a; });
+      });
+      break;
+    case XOp::Not: map1<std::uint32_t, std::uint32_t>(x, [](std::uint32_t a) { return ~a; }); break;
+    case XOp::LogicalNot: map1<std::uint32_t, std::uint32_t>(x, [](std::uint32_t a) { return a ^ 1u; }); break;
+    case XOp::Add:
+      arith(x, [&](auto z) {
+        using T = decltype(z);
+        if constexpr (std::is_integral_v<T>) map2<std::uint32_t, std::uint32_t>(x, [](std::uint32_t a, std::uint32_t b) { return a + b; });
+        else map2<T, T>(x, [](T a, T b) { return a + b; });
+      });
+      break;
+    case XOp::Sub:
+      arith(x, [&](auto z) {
+        using T = decltype(z);
+        if constexpr (std::is_integral_v<T>) map2<std::uint32_t, std::uint32_t>(x, [](std::uint32_t a, std::uint32_t b) { return a - b; });
+        else map2<T, T>(x, [](T a, T b) { return a - b; });
+      });
+      break;
+    case XOp::Mul:
+      arith(x, [&](auto z) {
+        using T = decltype(z);
+        if constexpr (std::is_integral_v<T>) map2<std::uint32_t, std::uint32_t>(x, [](std::uint32_t a, std::uint32_t b) { return a * b; });
+        else map2<T, T>(x, [](T a, T b) { return a * b; });
+      });
+      break;
+    case XOp::Div:
+      arith(x, [&](auto z) {
+        using T = decltype(z);
+        if constexpr (std::is_same_v<T, std::int32_t>)
+          map2<T, T>(x, [](T a, T b) { return b == 0 ? 0 : (b == -1 ? T(0u - std::uint32_t(a)) : a / b); });
+        else if constexpr (std::is_integral_v<T>) map2<T, T>(x, [](T a, T b) { return b == 0 ? 0 : a / b; });
+        else map2<T, T>(x, [](T a, T b) { return a / b; });
+      });
+      break;
+    case XOp::Rem:  // sign of the dividend (C's %, fmod)
+      arith(x, [&](auto z) {
+        using T = decltype(z);
+        if constexpr (std::is_same_v<T, std::int32_t>) map2<T, T>(x, [](T a, T b) { return (b == 0 || b == -1) ? 0 : a % b; });
+        else if constexpr (std::is_integral_v<T>) map2<T, T>(x, [](T a, T b) { return b == 0 ? 0 : a % b; });
+        else map2<T, T>(x, [](T a, T b) { return a - b * std::trunc(a / b); });
+      });
+      break;
+    case XOp::Mod:  // sign of the divisor (GLSL mod: x - y * floor(x / y))
+      arith(x, [&](auto z) {
+        using T = decltype(z);
+        if constexpr (std::is_same_v<T, std::int32_t>)
+          map2<T, T>(x, [](T a, T b) {
+            if (b == 0 || b == -1) return T(0);
+            T r = a % b;
+            return (r != 0 && ((r < 0) != (b < 0))) ? r + b : r;
+          });
+        else if constexpr (std::is_integral_v<T>) map2<T, T>(x, [](T a, T b) { return b == 0 ? 0 : a % b; });
+        else map2<T, T>(x, [](T a, T b) { return a - b * std::floor(a / b); });
+      });
+      break;
+    case XOp::Shl: map2<std::uint32_t, std::uint32_t>(x, [](std::uint32_t a, std::uint32_t b) { return a << (b & 31u); }); break;
+    case XOp::Shr: map2<std::uint32_t, std::uint32_t>(x, [](std::uint32_t a, std::uint32_t b) { return a >> (b & 31u); }); break;
+    case XOp::Sar: map2<std::int32_t, std::int32_t>(x, [](std::int32_t a, std::int32_t b) { return a >> (b & 31); }); break;
+    case XOp::And: case XOp::LogicalAnd: map2<std::uint32_t, std::uint32_t>(x, [](std::uint32_t a, std::uint32_t b) { return a & b; }); break;
+    case XOp::Or: case XOp::LogicalOr: map2<std::uint32_t, std::uint32_t>(x, [](std::uint32_t a, std::uint32_t b) { return a | b; }); break;
+    case XOp::Xor: case XOp::LogicalNe: map2<std::uint32_t, std::uint32_t>(x, [](std::uint32_t a, std::uint32_t b) { return a ^ b; }); break;
+    case XOp::LogicalEq: map2<std::uint32_t, std::uint32_t>(x, [](std::uint32_t a, std::uint32_t b) { return std::uint32_t(a == b); }); break;
+    case XOp::OrdEq: case XOp::OrdNe: case XOp::OrdLt: case XOp::OrdGt: case XOp::OrdLe: case XOp::OrdGe:
+    case XOp::UnordEq: case XOp::UnordNe: case XOp::UnordLt: case XOp::UnordGt: case XOp::UnordLe:
+    case XOp::UnordGe: case XOp::IEq: case XOp::INe: case XOp::SLt: case XOp::SGt: case XOp::SLe:
+    case XOp::SGe: case XOp::ULt: case XOp::UGt: case XOp::ULe: case XOp::UGe:
+      compare(x);
+      break;
+    case XOp::Select:
+      if (x.s == Scalar::None) {  // one condition, whole value
+        const std::uint32_t* cond = A + std::size_t(x.a) * L;
+        for (std::uint32_t w = 0; w < x.n; ++w) {
+          const std::uint32_t* t = A + std::size_t(x.b + w) * L;
+          const std::uint32_t* f = A + std::size_t(x.c + w) * L;
+          put(A + std::size_t(x.dst + w) * L, [&](int l) { return cond[l] ? t[l] : f[l]; });
+        }
+      } else {  // per component
+        for (std::uint32_t c = 0; c < x.n; ++c) {
+          const std::uint32_t* cond = A + std::size_t(x.a + c) * L;
+          if (x.s == Scalar::F64) {
+            const double* t = row<double>(x.b, c);
+            const double* f = row<double>(x.c, c);
+            put(row<double>(x.dst, c), [&](int l) { return cond[l] ? t[l] : f[l]; });
+          } else {
+            const std::uint32_t* t = A + std::size_t(x.b + c) * L;
+            const std::uint32_t* f = A + std::size_t(x.c + c) * L;
+            put(A + std::size_t(x.dst + c) * L, [&](int l) { return cond[l] ? t[l] : f[l]; });
+          }
+        }
+      }
+      break;
+    case XOp::IsNan: case XOp::IsInf:
+      for (std::uint32_t c = 0; c < x.n; ++c) {
+        std::uint32_t* d = A + std::size_t(x.dst + c) * L;
+        const bool nan = x.op == XOp::IsNan;
+        if (x.s == Scalar::F64) {
+          const double* a = row<double>(x.a, c);
+          put(d, [&](int l) { return std::uint32_t(nan ? std::isnan(a[l]) : std::isinf(a[l])); });
+        } else {
+          const float* a = row<float>(x.a, c);
+          put(d, [&](int l) { return std::uint32_t(nan ? std::isnan(a[l]) : std::isinf(a[l])); });
+        }
+      }
+      break;
+    case XOp::Any: case XOp::All: {
+      const bool any = x.op == XOp::Any;
+      put(A + std::size_t(x.dst) * L, [&](int l) {
+        std::uint32_t r = any ? 0u : 1u;
+        for (std::uint32_t c = 0; c < x.m; ++c) {
+          const std::uint32_t v = A[std::size_t(x.a + c) * L + l];
+          r = any ? (r | v) : (r & v);
+        }
+        return r;
+      });
+      break;
+    }
+    case XOp::ConvFToS:
+      if (x.s == Scalar::F64) map1<double, std::int32_t>(x, [](double a) { return to_int(a); });
+      else map1<float, std::int32_t>(x, [](float a) { return to_int(a); });
+      break;
+    case XOp::ConvFToU:
+      if (x.s == Scalar::F64) map1<double, std::uint32_t>(x, [](double a) { return to_uint(a); });
+      else map1<float, std::uint32_t>(x, [](float a) { return to_uint(a); });
+      break;
+    case XOp::ConvSToF: case XOp::ConvUToF: {
+      const bool sign = x.op == XOp::ConvSToF;
+      // x.s is the operand's scalar; aux = 1 when the result is double.
+      if (x.aux == 1) {
+        if (sign) map1<std::int32_t, double>(x, [](std::int32_t a) { return double(a); });
+        else map1<std::uint32_t, double>(x, [](std::uint32_t a) { return double(a); });
+      } else {
+        if (sign) map1<std::int32_t, float>(x, [](std::int32_t a) { return float(a); });
+        else map1<std::uint32_t, float>(x, [](std::uint32_t a) { return float(a); });
+      }
+      break;
+    }
+    case XOp::FConvert:
+      if (x.s == Scalar::F64) map1<double, float>(x, [](double a) { return float(a); });
+      else map1<float, double>(x, [](float a) { return double(a); });
+      break;
+    case XOp::Bitcast:
+      // Same words, but a double's rows are interleaved lane by lane: regroup when widths differ.
+      if (x.aux == 0) {
+        words_copy(x.dst, x.a, x.n * (x.s == Scalar::F64 ? 2u : 1u));
+      } else if (x.s == Scalar::F64) {  // double(s) -> 2n words
+        for (std::uint32_t c = 0; c < x.m; ++c) {
+          const std::uint32_t* s = A + std::size_t(x.a + 2 * c) * L;
+          for (int half = 0; half < 2; ++half)
+            put(A + std::size_t(x.dst + 2 * c + half) * L, [&](int l) { return s[2 * l + half]; });
+        }
+      } else {  // 2n words -> double(s)
+        for (std::uint32_t c = 0; c < x.m / 2; ++c) {
+          const std::uint32_t* lo = A + std::size_t(x.a + 2 * c) * L;
+          const std::uint32_t* hi = A + std::size_t(x.a + 2 * c + 1) * L;
+          put(row<double>(x.dst, c), [&](int l) {
+            const std::uint64_t bits = std::uint64_t(lo[l]) | (std::uint64_t(hi[l]) << 32);
+            return std::bit_cast<double>(bits);
+          });
+        }
+      }
+      break;
+    case XOp::Dot: {
+      auto go = [&](auto z) {
+        using T = decltype(z);
+        put(row<T>(x.dst, 0), [&](int l) {
+          T s = row<T>(x.a, 0)[l] * row<T>(x.b, 0)[l];
+          for (std::uint32_t c = 1; c < x.m; ++c) s = s + row<T>(x.a, c)[l] * row<T>(x.b, c)[l];
+          return s;
+        });
+      };
+      if (x.s == Scalar::F64) go(double{});
+      else go(float{});
+      break;
+    }
+    case XOp::VecTimesScalar: case XOp::MatTimesScalar:
+      if (x.s == Scalar::F64) map2<double, double>(x, [](double a, double b) { return a * b; }, true);
+      else map2<float, float>(x, [](float a, float b) { return a * b; }, true);
+      break;
+    case XOp::VecTimesMat: case XOp::MatTimesVec: case XOp::MatTimesMat: case XOp::OuterProduct:
+    case XOp::Transpose:
+      matrix(x);
+      break;
+    case XOp::Composite:
+      for (const WordCopy& c : p.copies[x.aux])
+        for (std::uint32_t w = 0; w < c.words; ++w) {
+          const std::uint32_t* s = A + std::size_t(c.src + c.src_word + w) * L;
+          put(A + std::size_t(x.dst + c.dst_word + w) * L, [&](int l) { return s[l]; });
+        }
+      break;
+    case XOp::ExtractDyn: case XOp::InsertDyn: {
+      const bool insert = x.op == XOp::InsertDyn;
+      const std::uint32_t* index = A + std::size_t(insert ? x.c : x.b) * L;
+      const bool is_signed = Scalar(x.aux) == Scalar::I32;
+      auto clamp_index = [&](int l) {
+        std::int64_t k = is_signed ? std::int64_t(std::int32_t(index[l])) : std::int64_t(index[l]);
+        return std::uint32_t(std::clamp<std::int64_t>(k, 0, x.m - 1));
+      };
+      const std::uint32_t w = std::uint32_t(scalar_words(x.s));
+      if (!insert) {
+        if (w == 2) {
+          put(row<double>(x.dst), [&](int l) { return row<double>(x.a, clamp_index(l))[l]; });
+        } else {
+          put(A + std::size_t(x.dst) * L, [&](int l) { return A[std::size_t(x.a + clamp_index(l)) * L + l]; });
+        }
+      } else {
+        words_copy(x.dst, x.a, x.m * w);
+        if (w == 2) {
+          const double* v = row<double>(x.b);
+          for (int l = 0; l < n; ++l)
+            if (mask[l]) row<double>(x.dst, clamp_index(l))[l] = v[l];
+        } else {
+          const std::uint32_t* v = A + std::size_t(x.b) * L;
+          for (int l = 0; l < n; ++l)
+            if (mask[l]) A[std::size_t(x.dst + clamp_index(l)) * L + l] = v[l];
+        }
+      }
+      break;
+    }
+    case XOp::Load: load(x); break;
+    case XOp::Store: store(x); break;
+    case XOp::AccessChain: access_chain(x); break;
+    case XOp::CopyMemory: {
+      XIns ld = x;
+      ld.aux = x.b;
+      load(ld);
+      XIns st = x;
+      st.a = x.dst;
+      store(st);
+      break;
+    }
+    case XOp::Ext: ext(x); break;
+    case XOp::BitCount: map1<std::uint32_t, std::uint32_t>(x, [](std::uint32_t a) { return std::uint32_t(std::popcount(a)); }); break;
+    case XOp::BitReverse:
+      map1<std::uint32_t, std::uint32_t>(x, [](std::uint32_t a) {
+        std::uint32_t r = 0;
+        for (int i = 0; i < 32; ++i) r |= ((a >> i) & 1u) << (31 - i);
+        return r;
+      });
+      break;
+    case XOp::BitFieldInsert:
+      for (std::uint32_t c = 0; c < x.n; ++c) {
+        const std::uint32_t* base = A + std::size_t(x.a + c) * L;
+        const std::uint32_t* ins = A + std::size_t(x.b + c) * L;
+        const std::uint32_t* off = A + std::size_t(x.c) * L;
+        const std::uint32_t* cnt = A + std::size_t(x.d) * L;
+        put(A + std::size_t(x.dst + c) * L, [&](int l) {
+          const std::uint32_t o = off[l] & 31u, k = std::min(cnt[l], 32u - o);
+          const std::uint32_t mask_bits = k >= 32 ? 0xffffffffu : ((1u << k) - 1u) << o;
+          return (base[l] & ~mask_bits) | ((ins[l] << o) & mask_bits);
+        });
+      }
+      break;
+    case XOp::BitFieldSExtract: case XOp::BitFieldUExtract:
+      for (std::uint32_t c = 0; c < x.n; ++c) {
+        const std::uint32_t* base = A + std::size_t(x.a + c) * L;
+        const std::uint32_t* off = A + std::size_t(x.b) * L;
+        const std::uint32_t* cnt = A + std::size_t(x.c) * L;
+        const bool sign = x.op == XOp::BitFieldSExtract;
+        put(A + std::size_t(x.dst + c) * L, [&](int l) {
+          const std::uint32_t o = off[l] & 31u, k = std::min(cnt[l], 32u - o);
+          if (k == 0) return 0u;
+          std::uint32_t v = base[l] >> o;
+          if (k < 32) {
+            v &= (1u << k) - 1u;
+            if (sign && (v >> (k - 1)) & 1u) v |= ~((1u << k) - 1u);
+          }
+          return v;
+        });
+      }
+      break;
+    case XOp::DPdx: case XOp::DPdy: case XOp::Fwidth: case XOp::DPdxFine: case XOp::DPdyFine:
+    case XOp::FwidthFine:
+      derivative(x);
+      break;
+    case XOp::SampledImage: break;
+    case XOp::Sample: case XOp::SampleLod: case XOp::Fetch: case XOp::QuerySize: texture(x); break;
+    case XOp::AtomicInc: case XOp::AtomicDec: case XOp::AtomicLoad: case XOp::AtomicAdd:
+    case XOp::AtomicSub: case XOp::AtomicStore:
+      atomic(x);
+      break;
+    case XOp::Kill:
+      for (int l = 0; l < n; ++l)
+        if (mask[l]) inv.killed_[l] = 1;
+      break;
+  }
+}
+
+void Runner::run_block(const XBlock& b) {
+  // Phis are parallel copies: read every incoming value before writing any.
+  if (!b.phis.empty()) {
+    std::vector<std::uint32_t> staged;
+    for (const Phi& phi : b.phis) {
+      for (int l = 0; l < n; ++l) {
+        if (!mask[l]) continue;
+        std::uint32_t src = kNone;
+        for (const auto& [value, pred] : phi.incoming)
+          if (pred == prev[l]) src = value;
+        if (src == kNone) fail("internal: phi without an incoming value for its predecessor", l, 0);
+        for (const FlatComponent& c : phi.flat) {
+          const int w = scalar_words(c.scalar);
+          const std::uint32_t* s = A + std::size_t(src + c.word) * L + std::size_t(l) * w;
+          staged.push_back(s[0]);
+          if (w == 2) staged.push_back(s[1]);
+        }
+      }
+    }
+    std::size_t k = 0;
+    for (const Phi& phi : b.phis)
+      for (int l = 0; l < n; ++l) {
+        if (!mask[l]) continue;
+        for (const FlatComponent& c : phi.flat) {
+          const int w = scalar_words(c.scalar);
+          std::uint32_t* d = A + std::size_t(phi.dst + c.word) * L + std::size_t(l) * w;
+          d[0] = staged[k++];
+          if (w == 2) d[1] = staged[k++];
+        }
+      }
+  }
+  const XIns* code = p.code.data() + b.first;
+  for (std::uint32_t i = 0; i < b.count; ++i) exec(code[i]);
+}
+
+Invocations::Invocations(const Executable& exe) : exe_(exe) {
+  const DecodedProgram& p = *exe.program_;
+  arena_.assign(std::size_t(p.arena_rows) * kMaxLanes, 0u);
+  shared_.assign(p.shared_words, 0u);
+  killed_.assign(kMaxLanes, 0);
+  // Constants: the same value in every lane, set once.
+  for (const auto& [row, words] : p.constant_init) {
+    for (std::uint32_t w = 0; w < words.size(); ++w) {
+      std::uint32_t* r = arena_.data() + std::size_t(row + w) * kMaxLanes;
+      std::fill(r, r + kMaxLanes, words[w]);
+    }
+  }
+  // Double constants: rows hold kMaxLanes doubles, not a word per lane.
+  for (const auto& [row, scalar] : p.constant_scalars) {
+    if (scalar != Scalar::F64) continue;
+    std::uint32_t* r = arena_.data() + std::size_t(row) * kMaxLanes;
+    const std::uint32_t lo = r[0], hi = r[kMaxLanes];
+    for (int l = 0; l < kMaxLanes; ++l) {
+      r[2 * l] = lo;
+      r[2 * l + 1] = hi;
+    }
+  }
+  for (const auto& [slot, init] : p.shared_inits)
+    std::copy(init.begin(), init.end(), shared_.begin() + p.slots[slot].base);
+}
+
+Invocations::~Invocations() = default;
+
+void Invocations::zero_shared() { std::fill(shared_.begin(), shared_.end(), 0u); }
+
+void Invocations::bind_texture(std::uint32_t binding, const Texture* t) {
+  if (textures_.size() <= binding) textures_.resize(binding + 1, nullptr);
+  textures_[binding] = t;
+}
+
+void Invocations::begin(int lanes) {
+  lanes_ = std::clamp(lanes, 0, kMaxLanes);
+  const DecodedProgram& p = *exe_.program_;
+  const Module& m = exe_.module();
+  std::fill(killed_.begin(), killed_.end(), 0);
+  for (const auto& [slot, init] : p.lane_resets) {
+    const VariableSlot& v = p.slots[slot];
+    std::uint32_t* base = arena_.data() + std::size_t(v.base) * kMaxLanes;
+    if (init.empty()) {
+      std::fill(base, base + std::size_t(v.words) * kMaxLanes, 0u);
+      continue;
+    }
+    const Type& t = m.type(m.variable(v.id)->type);
+    for (const FlatComponent& c : t.flat) {
+      std::uint32_t* r = base + std::size_t(c.word) * kMaxLanes;
+      for (int l = 0; l < kMaxLanes; ++l) {
+        if (c.scalar == Scalar::F64) {
+          r[2 * l] = init[c.word];
+          r[2 * l + 1] = init[c.word + 1];
+        } else {
+          r[l] = init[c.word];
+        }
+      }
+    }
+  }
+}
+
+void Invocations::run() {
+  const DecodedProgram& p = *exe_.program_;
+  Runner r{*this, p, arena_.data(), lanes_, {}, false, {}, {}, {}};
+  const std::uint64_t budget = exe_.limits().max_instructions;
+  for (int l = 0; l < lanes_; ++l) {
+    r.pc[l] = 0;
+    r.prev[l] = kNone;
+    r.steps[l] = 0;
+  }
+  for (;;) {
+    std::uint32_t block = kNone;
+    for (int l = 0; l < lanes_; ++l) block = std::min(block, r.pc[l]);
+    if (block == kNone) break;
+    int active = 0;
+    for (int l = 0; l < lanes_; ++l) {
+      r.mask[l] = r.pc[l] == block;
+      active += r.mask[l];
+    }
+    r.full = active == lanes_;
+    const XBlock& b = p.blocks[block];
+    r.run_block(b);
+    const Terminator& t = b.term;
+    for (int l = 0; l < lanes_; ++l) {
+      if (!r.mask[l]) continue;
+      r.steps[l] += b.count + 1;
+      if (r.steps[l] > budget)
+        r.fail("instruction budget of " + std::to_string(budget) +
+               " exceeded (an infinite loop?); raise it with --max-shader-instructions", l, t.line);
+      r.prev[l] = block;
+      switch (t.kind) {
+        case TermKind::Branch: r.pc[l] = t.target; break;
+        case TermKind::Cond: r.pc[l] = arena_[std::size_t(t.reg) * kMaxLanes + l] ? t.target : t.other; break;
+        case TermKind::Switch: {
+          const std::uint32_t sel = arena_[std::size_t(t.reg) * kMaxLanes + l];
+          std::uint32_t to = t.other;
+          for (const auto& [lit, target] : t.cases)
+            if (lit == sel) to = target;
+          r.pc[l] = to;
+          break;
+        }
+        case TermKind::Kill: killed_[l] = 1; r.pc[l] = kNone; break;
+        case TermKind::Return:
+        case TermKind::Unreachable: r.pc[l] = kNone; break;
+      }
+    }
+  }
+}
+
+namespace {
+std::atomic<std::uint64_t> next_serial{1};
+}
+
+Executable::Executable(Module module, ExecLimits limits)
+    : module_(std::move(module)), limits_(limits), program_(decode_program(module_)),
+      serial_(next_serial++) {}
+
+Invocations& Executable::local() const {
+  thread_local std::unordered_map<std::uint64_t, std::unique_ptr<Invocations>> cache;
+  auto& slot = cache[serial_];
+  if (!slot) slot = std::make_unique<Invocations>(*this);
+  return *slot;
+}
+
+Executable::~Executable() = default;
+
+const VariableSlot* Executable::slot(std::uint32_t id) const {
+  if (id >= program_->slot_of_id.size() || program_->slot_of_id[id] == kNone) return nullptr;
+  return &program_->slots[program_->slot_of_id[id]];
+}
+
+}  // namespace tessref::shader

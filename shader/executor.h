@@ -1,0 +1,132 @@
+#pragma once
+// tessref's SPIR-V executor: runs up to kMaxLanes invocations of one entry point together, one
+// decoded instruction at a time over structure-of-arrays registers, so an instruction's dispatch
+// is paid once per batch. Divergent control flow keeps a block index per lane; the lanes waiting
+// at the lowest-numbered block run it together (structured SPIR-V lists a construct's blocks
+// before its merge block, so lanes meet again at merges and loops exit together). Every lane's
+// results are those of running it alone: lanes never see each other except through shared memory
+// (a TCS's outputs), written in lock step, which is barrier()'s meaning.
+//
+// Memory: each variable lives either per lane (Function, Private, and the stage's per-invocation
+// inputs and outputs) or shared by the batch (uniforms; a TCS's gl_in[], gl_out[] and patch
+// variables; a TES's inputs). A value of N flattened words (spirv_module.h) occupies N rows of
+// kMaxLanes words in the per-lane arena: word w of lane l at row w, column l (a double occupies two
+// rows as kMaxLanes contiguous doubles). Shared variables are plain flattened words.
+//
+// Out-of-range array indices are clamped into the array (GL robust access: "a value from within
+// the buffer"), integer division by zero gives 0, and float-to-integer conversion of NaN or of a
+// value out of range gives INT_MIN (or 0 for unsigned), as x86 does: never undefined behaviour.
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "shader/spirv_module.h"
+
+namespace tessref::shader {
+
+inline constexpr int kMaxLanes = 64;
+
+// A runaway or failed invocation: what() names the cause; the stage adapters add the stage, patch
+// and invocation.
+class ShaderRuntimeError : public std::runtime_error {
+ public:
+  ShaderRuntimeError(const std::string& what, int lane, int line)
+      : std::runtime_error(what), lane(lane), line(line) {}
+  int lane;  // the lane (invocation within the batch) that failed
+  int line;  // source line, 0 when unknown
+};
+
+// A 2D texture bound to a sampler's binding point: RGBA texels, row 0 at the bottom (GL).
+struct Texture {
+  int width = 0, height = 0;
+  std::vector<float> texels;  // 4 floats per texel
+  bool linear = false;        // GL_LINEAR (else GL_NEAREST) for minification and magnification
+  bool clamp = false;         // GL_CLAMP_TO_EDGE (else GL_REPEAT)
+};
+
+struct ExecLimits {
+  // Instructions one invocation may execute before it is stopped as a runaway (infinite loop).
+  std::uint64_t max_instructions = 50'000'000;
+};
+
+// Where an interface variable lives (see above).
+struct VariableSlot {
+  std::uint32_t id = 0;
+  std::uint32_t base = 0;   // per lane: first row in the arena; shared: first word
+  std::uint32_t words = 0;  // flattened size
+  bool per_lane = true;
+};
+
+struct DecodedProgram;  // executor.cpp
+
+class Executable;
+
+// Per-thread state of one Executable: the arena, shared memory and lane bookkeeping. Reused batch
+// after batch; not thread-safe.
+class Invocations {
+ public:
+  explicit Invocations(const Executable& exe);
+  ~Invocations();
+  Invocations(const Invocations&) = delete;
+  Invocations& operator=(const Invocations&) = delete;
+
+  // Starts a batch of `lanes` invocations: per-lane Function/Private variables are reset to their
+  // initializers (or zero) and outputs to zero; shared memory keeps what was written into it.
+  void begin(int lanes);
+  int lanes() const { return lanes_; }
+
+  // Per-lane rows and shared words of a variable (by slot, see Executable::slot).
+  std::uint32_t* row(const VariableSlot& v, std::uint32_t word) {
+    return arena_.data() + std::size_t(v.base + word) * kMaxLanes;
+  }
+  std::uint32_t* shared(const VariableSlot& v) { return shared_.data() + v.base; }
+  std::uint32_t* shared_words() { return shared_.data(); }
+  void zero_shared();
+
+  void bind_texture(std::uint32_t binding, const Texture* t);
+
+  // Runs main() for lanes 0 .. lanes() - 1. Throws ShaderRuntimeError.
+  void run();
+  // After run(): lanes that executed OpKill (discard).
+  const std::uint8_t* discarded() const { return killed_.data(); }
+  // After run(): per-lane atomic counter values are in shared memory like any variable.
+
+ private:
+  friend struct Runner;
+  const Executable& exe_;
+  std::vector<std::uint32_t> arena_;   // registers and per-lane variables
+  std::vector<std::uint32_t> shared_;  // shared variables
+  std::vector<std::uint8_t> killed_;
+  std::vector<const Texture*> textures_;
+  int lanes_ = 0;
+};
+
+// A decoded, immutable program: one per shader stage, shared by all threads.
+class Executable {
+ public:
+  // `shared_io`: whether the stage's Input/Output variables are shared by the batch (a TCS's and
+  // a TES's patch data) rather than per lane; the per-invocation built-ins (gl_InvocationID,
+  // gl_TessCoord) stay per lane either way. Throws SpirvError for unsupported instructions.
+  Executable(Module module, ExecLimits limits = {});
+  ~Executable();
+
+  const Module& module() const { return module_; }
+  // The slot of a module-level variable; nullptr if there is none with that id.
+  const VariableSlot* slot(std::uint32_t variable_id) const;
+  const ExecLimits& limits() const { return limits_; }
+  // This thread's Invocations of this executable, made on first use and kept for the thread's
+  // life (stage programs are shared by the worker threads; each thread runs its own batches).
+  Invocations& local() const;
+
+ private:
+  friend class Invocations;
+  friend struct Runner;
+  Module module_;
+  ExecLimits limits_;
+  std::unique_ptr<DecodedProgram> program_;
+  std::uint64_t serial_;  // tells this executable's thread-local state from an earlier one's
+};
+
+}  // namespace tessref::shader

@@ -1,0 +1,115 @@
+#pragma once
+// The decoded form of a SPIR-V entry point (internal to the executor): SSA ids become rows of the
+// per-lane arena, instructions become fixed-size records with their operands' rows, and access
+// chains, phis, terminators and composite copies go to side tables.
+#include <cstdint>
+#include <vector>
+
+#include "shader/executor.h"
+
+namespace tessref::shader {
+
+inline constexpr std::uint32_t kNone = 0xffffffffu;
+
+enum class XOp : std::uint16_t {
+  Nop, Copy, Undef,
+  // arithmetic, per component; `s` names the operand scalar
+  Neg, Not, LogicalNot, Add, Sub, Mul, Div, Rem, Mod, Shl, Shr, Sar, And, Or, Xor,
+  LogicalAnd, LogicalOr, LogicalEq, LogicalNe,
+  OrdEq, OrdNe, OrdLt, OrdGt, OrdLe, OrdGe, UnordEq, UnordNe, UnordLt, UnordGt, UnordLe, UnordGe,
+  IEq, INe, SLt, SGt, SLe, SGe, ULt, UGt, ULe, UGe,
+  Select, IsNan, IsInf, Any, All,
+  ConvFToS, ConvFToU, ConvSToF, ConvUToF, FConvert, Bitcast,
+  Dot, VecTimesScalar, MatTimesScalar, VecTimesMat, MatTimesVec, MatTimesMat, OuterProduct,
+  Transpose,
+  Composite,  // construct / extract / insert / shuffle: aux = copy list
+  ExtractDyn, InsertDyn,
+  Load, Store, AccessChain, CopyMemory,
+  Ext,  // GLSL.std.450: aux = instruction number, operands a, b, c
+  BitCount, BitReverse, BitFieldInsert, BitFieldSExtract, BitFieldUExtract,
+  DPdx, DPdy, Fwidth, DPdxFine, DPdyFine, FwidthFine,
+  SampledImage, Sample, SampleLod, Fetch, QuerySize,
+  AtomicInc, AtomicDec, AtomicLoad, AtomicAdd, AtomicSub, AtomicStore,
+  Kill,
+};
+
+struct XIns {
+  XOp op = XOp::Nop;
+  Scalar s = Scalar::None;   // operand scalar
+  std::uint16_t spv = 0;     // SPIR-V opcode, for messages
+  std::uint32_t dst = kNone;  // result row
+  std::uint32_t a = kNone, b = kNone, c = kNone, d = kNone;
+  std::uint32_t n = 0;        // result components (or words, for copies)
+  std::uint32_t aux = 0;      // side table index or a literal
+  std::uint32_t m = 0;        // second dimension: matrix rows, vector size of an operand
+  int line = 0;
+};
+
+// dst word w := src row's word sw, `words` rows in a row.
+struct WordCopy {
+  std::uint32_t dst_word, src, src_word, words;
+};
+
+struct ChainStep {
+  std::uint32_t index_reg = kNone;  // kNone: a constant index folded into `offset`
+  Scalar index_scalar = Scalar::I32;
+  std::uint32_t offset = 0;         // words added (constant steps)
+  std::uint32_t stride = 0;         // words per element (dynamic steps)
+  std::uint32_t length = 0;         // elements, for clamping (dynamic steps)
+};
+
+struct Chain {
+  std::vector<ChainStep> steps;
+};
+
+// A memory access: the variable's slot and a per-lane offset register (or none: offset 0).
+struct Access {
+  std::uint32_t slot = 0;           // index into DecodedProgram::slots
+  std::uint32_t offset_reg = kNone;
+  std::vector<FlatComponent> flat;  // the accessed value's components
+  std::uint32_t words = 0;
+};
+
+struct Phi {
+  std::uint32_t dst = 0;
+  std::vector<FlatComponent> flat;
+  std::uint32_t words = 0;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> incoming;  // (value row, predecessor block)
+};
+
+enum class TermKind : std::uint8_t { Branch, Cond, Switch, Return, Kill, Unreachable };
+struct Terminator {
+  TermKind kind = TermKind::Return;
+  std::uint32_t reg = kNone;  // condition or selector row
+  std::uint32_t target = 0, other = 0;  // Branch/Cond targets (block indices); Switch default
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> cases;  // (literal, block index)
+  int line = 0;
+};
+
+struct XBlock {
+  std::vector<Phi> phis;
+  std::uint32_t first = 0, count = 0;  // instructions in DecodedProgram::code
+  Terminator term;
+};
+
+struct DecodedProgram {
+  std::vector<XIns> code;
+  std::vector<XBlock> blocks;
+  std::vector<VariableSlot> slots;  // every variable (module-level, then Function)
+  std::vector<std::uint32_t> slot_of_id;  // id -> slot index, kNone if not a variable
+  std::vector<std::vector<WordCopy>> copies;
+  std::vector<Chain> chains;
+  std::vector<Access> accesses;
+  std::vector<std::vector<std::uint32_t>> shuffles;  // not used by copies: extra literal lists
+  // Arena layout: rows [0, constant_rows) hold constants, set once per Invocations; then SSA
+  // registers; then per-lane variables.
+  std::uint32_t arena_rows = 0;
+  std::uint32_t shared_words = 0;
+  std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>> constant_init;  // row, words
+  std::vector<std::pair<std::uint32_t, Scalar>> constant_scalars;  // per constant word: its scalar
+  // Per-lane variables to reset at begin(): (slot index, initializer words or empty for zero).
+  std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>> lane_resets;
+  std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>> shared_inits;  // initializers
+};
+
+}  // namespace tessref::shader

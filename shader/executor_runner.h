@@ -1,0 +1,116 @@
+#pragma once
+// The executor's run state and kernel helpers (internal): shared by executor.cpp (control flow,
+// memory, arithmetic) and executor_ext.cpp (GLSL.std.450).
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <type_traits>
+
+#include "shader/executor_program.h"
+
+namespace tessref::shader {
+
+inline constexpr int L = kMaxLanes;
+
+// float -> int as x86's cvttss2si: NaN and out-of-range give INT_MIN (documented in executor.h).
+template <class F>
+std::int32_t to_int(F x) {
+  if (!(x > F(-2147483649.0) && x < F(2147483648.0))) return std::numeric_limits<std::int32_t>::min();
+  return std::int32_t(x);
+}
+template <class F>
+std::uint32_t to_uint(F x) {
+  if (!(x > F(-1.0))) return 0u;
+  if (!(x < F(4294967296.0))) return 0xffffffffu;
+  return std::uint32_t(x);
+}
+
+struct Runner {
+  Invocations& inv;
+  const DecodedProgram& p;
+  std::uint32_t* A;  // arena
+  int n;             // lanes
+  std::uint8_t mask[L];
+  bool full = false;
+  std::uint32_t pc[L];
+  std::uint32_t prev[L];
+  std::uint64_t steps[L];
+
+  template <class T>
+  T* row(std::uint32_t r, std::uint32_t comp = 0) {
+    return reinterpret_cast<T*>(A + std::size_t(r + comp * sizeof(T) / 4) * L);
+  }
+
+  // Writes f(l) into dst for the active lanes; inactive lanes keep their values (a value defined in
+  // a loop stays valid for lanes that left the loop).
+  template <class T, class F>
+  void put(T* dst, F f) {
+    if (full) {
+      for (int l = 0; l < n; ++l) dst[l] = f(l);
+    } else {
+      for (int l = 0; l < n; ++l)
+        if (mask[l]) dst[l] = f(l);
+    }
+  }
+
+  // Per-component kernels over `comps` components.
+  template <class T, class U, class F>
+  void map1(const XIns& x, F f) {
+    for (std::uint32_t c = 0; c < x.n; ++c) {
+      const T* a = row<T>(x.a, c);
+      put(row<U>(x.dst, c), [&](int l) { return f(a[l]); });
+    }
+  }
+  template <class T, class U, class F>
+  void map2(const XIns& x, F f, bool b_scalar = false) {
+    for (std::uint32_t c = 0; c < x.n; ++c) {
+      const T* a = row<T>(x.a, c);
+      const T* b = row<T>(x.b, b_scalar ? 0 : c);
+      put(row<U>(x.dst, c), [&](int l) { return f(a[l], b[l]); });
+    }
+  }
+  template <class T, class U, class F>
+  void map3(const XIns& x, F f) {
+    for (std::uint32_t c = 0; c < x.n; ++c) {
+      const T* a = row<T>(x.a, c);
+      const T* b = row<T>(x.b, c);
+      const T* d = row<T>(x.c, c);
+      put(row<U>(x.dst, c), [&](int l) { return f(a[l], b[l], d[l]); });
+    }
+  }
+
+  // The operand's scalar decides which instantiation runs.
+  template <class F>
+  void arith(const XIns& x, F f) {
+    switch (x.s) {
+      case Scalar::F32: f(float{}); break;
+      case Scalar::F64: f(double{}); break;
+      case Scalar::I32: f(std::int32_t{}); break;
+      default: f(std::uint32_t{}); break;
+    }
+  }
+
+  void words_copy(std::uint32_t dst, std::uint32_t src, std::uint32_t words) {
+    for (std::uint32_t w = 0; w < words; ++w) {
+      const std::uint32_t* s = A + std::size_t(src + w) * L;
+      put(A + std::size_t(dst + w) * L, [&](int l) { return s[l]; });
+    }
+  }
+
+  void exec(const XIns& x);
+  void run_block(const XBlock& b);
+  void load(const XIns& x);
+  void store(const XIns& x);
+  void access_chain(const XIns& x);
+  void ext(const XIns& x);
+  void compare(const XIns& x);
+  void matrix(const XIns& x);
+  void texture(const XIns& x);
+  void atomic(const XIns& x);
+  void derivative(const XIns& x);
+  [[noreturn]] void fail(const std::string& what, int lane, int line) { throw ShaderRuntimeError(what, lane, line); }
+};
+
+
+}  // namespace tessref::shader

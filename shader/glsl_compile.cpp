@@ -1,0 +1,507 @@
+#include "shader/glsl_compile.h"
+
+#include <glslang/MachineIndependent/LiveTraverser.h>  // internal headers, installed by Debian:
+#include <glslang/MachineIndependent/iomapper.h>       // liveness, the OpenGL IO mapper
+#include <glslang/MachineIndependent/localintermediate.h>
+#include <glslang/Include/InfoSink.h>
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
+#include <spirv-tools/libspirv.hpp>
+#include <spirv-tools/optimizer.hpp>
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <sstream>
+
+#include "shader/glsl_rewrite.h"
+
+namespace tessref::shader {
+
+const char* stage_name(Stage stage) {
+  switch (stage) {
+    case Stage::Vertex: return "vertex shader";
+    case Stage::TessControl: return "tessellation control shader";
+    case Stage::TessEval: return "tessellation evaluation shader";
+    case Stage::Geometry: return "geometry shader";
+    case Stage::Fragment: return "fragment shader";
+  }
+  return "shader";
+}
+
+namespace {
+
+constexpr std::array kPipeline = {Stage::Vertex, Stage::TessControl, Stage::TessEval,
+                                  Stage::Fragment};
+
+// Like glslangValidator -G: OpenGL SPIR-V rules; debug info keeps the source text for OpSource.
+constexpr EShMessages kMessages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgDebugInfo);
+
+EShLanguage language(Stage stage) {
+  switch (stage) {
+    case Stage::Vertex: return EShLangVertex;
+    case Stage::TessControl: return EShLangTessControl;
+    case Stage::TessEval: return EShLangTessEvaluation;
+    case Stage::Geometry: return EShLangGeometry;
+    case Stage::Fragment: return EShLangFragment;
+  }
+  return EShLangVertex;
+}
+
+void throw_if_any(const std::vector<std::string>& errors) {
+  if (errors.empty()) return;
+  std::string what;
+  for (const std::string& e : errors) what += (what.empty() ? "" : "\n") + e;
+  throw CompileError(what);
+}
+
+// ---------------------------------------------------------------------------------------------
+// glslang's info log -> "FILE:LINE: error: MESSAGE". Located messages start with a source's
+// name (setStringsWithLengthsAndNames) and carry the user's line (the rewrite's #line); the
+// others are placed at `file`, with the stage spelled as a GL linker would.
+
+std::string trim(std::string s) {
+  s.erase(s.find_last_not_of(" \t\r") + 1);
+  s.erase(0, std::min(s.find_first_not_of(" \t"), s.size()));
+  return s;
+}
+
+void add_log_errors(const char* log, const std::vector<ShaderSource>& sources,
+                    const std::string& file, std::vector<std::string>& errors) {
+  std::istringstream lines(log);
+  for (std::string line; std::getline(lines, line);) {
+    std::string message;
+    for (const char* prefix : {"ERROR: ", "INTERNAL ERROR: ", "UNIMPLEMENTED: "})
+      if (line.starts_with(prefix)) message = line.substr(std::string_view(prefix).size());
+    if (message.empty() || message.find("compilation errors.") != std::string::npos ||
+        message.find("compilation terminated") != std::string::npos)
+      continue;
+    std::string located;
+    for (const ShaderSource& s : sources) {
+      if (!message.starts_with(s.file + ":")) continue;
+      std::size_t digits = s.file.size() + 1;
+      std::size_t colon = message.find(':', digits);
+      if (colon == std::string::npos || colon == digits ||
+          message.find_first_not_of("0123456789", digits) != colon)
+        continue;
+      located = message.substr(0, colon) + ": error: " + trim(message.substr(colon + 1));
+    }
+    if (located.empty()) {
+      for (Stage s : {Stage::Vertex, Stage::TessControl, Stage::TessEval, Stage::Fragment}) {
+        std::string linking = "Linking " + std::string(stage_name(s));
+        linking.replace(linking.rfind(" shader"), 7, " stage: ");
+        if (message.starts_with(linking))
+          message = "link error: " + std::string(stage_name(s)) + ": " + message.substr(linking.size());
+      }
+      located = file + ": error: " + trim(message);
+    }
+    if (std::find(errors.begin(), errors.end(), located) == errors.end()) errors.push_back(located);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The stage interfaces, for the link check: a GL linker matches an output to the next stage's
+// input by name (the block name for a block) or, where the input has a location, by location.
+// glslang 12 does not report an input without an output, and names no stage in a mismatch.
+
+bool is_builtin(const glslang::TIntermSymbol& symbol) {
+  const glslang::TType& type = symbol.getType();
+  if (type.isBuiltIn() || symbol.getName().compare(0, 3, "gl_") == 0) return true;
+  return type.isStruct() && !type.getStruct()->empty() && (*type.getStruct())[0].type->isBuiltIn();
+}
+
+std::string interface_name(const glslang::TIntermSymbol& symbol) {
+  const glslang::TType& type = symbol.getType();
+  return (type.getBasicType() == glslang::EbtBlock ? type.getTypeName() : symbol.getName()).c_str();
+}
+
+struct IoVariable {
+  bool input;
+  bool arrayed;  // a per-vertex array (TCS in/out, TES in) whose outer size is not compared
+  std::string name;
+  const glslang::TType* type;
+  std::optional<glslang::TSourceLoc> first_use;  // none: not statically used
+  int location;  // explicit, or -1
+};
+
+// The type a linker compares: without the per-vertex array, with `patch`.
+std::string type_text(const IoVariable& v) {
+  const glslang::TType& t = *v.type;
+  std::string text = t.getQualifier().patch ? "patch " : "";
+  const char* prefix = "";
+  switch (t.getBasicType()) {
+    case glslang::EbtDouble: prefix = "d"; break;
+    case glslang::EbtInt: prefix = "i"; break;
+    case glslang::EbtUint: prefix = "u"; break;
+    case glslang::EbtBool: prefix = "b"; break;
+    default: break;
+  }
+  if (t.getBasicType() == glslang::EbtBlock)
+    text += "block " + std::string(t.getTypeName().c_str());
+  else if (t.isStruct())
+    text += "struct " + std::string(t.getTypeName().c_str());
+  else if (t.isMatrix())
+    text += std::string(prefix) + "mat" + std::to_string(t.getMatrixCols()) +
+            (t.getMatrixCols() == t.getMatrixRows() ? "" : "x" + std::to_string(t.getMatrixRows()));
+  else if (t.isVector())
+    text += std::string(prefix) + "vec" + std::to_string(t.getVectorSize());
+  else
+    text += t.getBasicTypeString().c_str();
+  if (const glslang::TArraySizes* sizes = t.getArraySizes())
+    for (int d = v.arrayed ? 1 : 0; d < sizes->getNumDims(); ++d) {
+      text += '[';
+      if (sizes->getDimSize(d) > 0) text += std::to_string(sizes->getDimSize(d));
+      text += ']';
+    }
+  return text;
+}
+
+bool same_type(const IoVariable& a, const IoVariable& b) {
+  if (a.type->getQualifier().patch != b.type->getQualifier().patch) return false;
+  auto equals_b = [&b](const glslang::TType& type) {
+    return b.arrayed ? type == glslang::TType(*b.type, 0) : type == *b.type;
+  };
+  return a.arrayed ? equals_b(glslang::TType(*a.type, 0)) : equals_b(*a.type);
+}
+
+// The symbols that the entry point's call tree references (GL's "statically used": an input
+// nothing reads needs no matching output), each with its first use in the text. glslang keeps
+// no line for a global's declaration, so messages point at that first use.
+class LiveSymbols : public glslang::TLiveTraverser {
+ public:
+  explicit LiveSymbols(const glslang::TIntermediate& intermediate) : TLiveTraverser(intermediate) {
+    pushFunction(intermediate.getEntryPointMangledName().c_str());
+    while (!destinations.empty()) {
+      TIntermNode* function = destinations.back();
+      destinations.pop_back();
+      function->traverse(this);
+    }
+  }
+  void visitSymbol(glslang::TIntermSymbol* symbol) override {
+    auto [it, added] = first_use.emplace(symbol->getName().c_str(), symbol->getLoc());
+    if (symbol->getLoc().line < it->second.line) it->second = symbol->getLoc();
+  }
+  std::map<std::string, glslang::TSourceLoc> first_use;
+};
+
+std::vector<IoVariable> interface_of(Stage stage, const glslang::TIntermediate& intermediate) {
+  const LiveSymbols live(intermediate);
+  const EShLanguage lang = language(stage);
+  std::vector<IoVariable> vars;
+  for (TIntermNode* global : intermediate.getTreeRoot()->getAsAggregate()->getSequence()) {
+    const glslang::TIntermAggregate* objects = global->getAsAggregate();
+    if (!objects || objects->getOp() != glslang::EOpLinkerObjects) continue;
+    for (TIntermNode* object : objects->getSequence()) {
+      const glslang::TIntermSymbol* symbol = object->getAsSymbolNode();
+      if (!symbol || is_builtin(*symbol)) continue;
+      const glslang::TQualifier& q = symbol->getQualifier();
+      if (q.storage != glslang::EvqVaryingIn && q.storage != glslang::EvqVaryingOut) continue;
+      const auto use = live.first_use.find(symbol->getName().c_str());
+      IoVariable v{q.storage == glslang::EvqVaryingIn, q.isArrayedIo(lang),
+                   interface_name(*symbol), &symbol->getType(),
+                   use == live.first_use.end() ? std::nullopt : std::optional(use->second),
+                   q.hasLocation() ? static_cast<int>(q.layoutLocation) : -1};
+      vars.push_back(v);
+    }
+  }
+  return vars;
+}
+
+std::string where(const glslang::TSourceLoc& loc) {
+  return std::string(loc.getFilenameStr()) + ":" + std::to_string(loc.line);
+}
+// " (FILE:LINE)" of a variable's first use, or nothing.
+std::string used_at(const IoVariable& v) { return v.first_use ? " (" + where(*v.first_use) + ")" : ""; }
+
+struct StageInterface {
+  Stage stage;
+  std::vector<IoVariable> vars;
+};
+
+// GL's rules between adjacent stages: every statically used input has an output of the same
+// name (or, for an input with a location, at that location) and type.
+void check_links(const std::vector<StageInterface>& stages, std::vector<std::string>& errors) {
+  for (std::size_t i = 1; i < stages.size(); ++i) {
+    const StageInterface& producer = stages[i - 1];
+    const StageInterface& consumer = stages[i];
+    for (const IoVariable& in : consumer.vars) {
+      if (!in.input || !in.first_use) continue;
+      auto output = [&](auto matches) -> const IoVariable* {
+        for (const IoVariable& out : producer.vars)
+          if (!out.input && matches(out)) return &out;
+        return nullptr;
+      };
+      const IoVariable* out = output([&](const IoVariable& o) { return o.name == in.name; });
+      if (!out && in.location >= 0)
+        out = output([&](const IoVariable& o) { return o.location == in.location; });
+      const std::string head = where(*in.first_use) + ": error: link error: " +
+                               stage_name(consumer.stage) + " input '" + in.name + "'";
+      const std::string other = std::string(stage_name(producer.stage)) + " output";
+      if (!out)
+        errors.push_back(head + " has no matching output in the " + stage_name(producer.stage));
+      else if (!same_type(in, *out))
+        errors.push_back(head + " is " + type_text(in) + " but the " + other + used_at(*out) +
+                         " is " + type_text(*out));
+      else if (in.location >= 0 && out->location >= 0 && in.location != out->location)
+        errors.push_back(head + " has location " + std::to_string(in.location) + " but the " +
+                         other + used_at(*out) + " has location " + std::to_string(out->location));
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// SPIR-V: generated with debug info (OpLine, OpName for every variable, OpSource with the
+// rewritten text), then legalized.
+
+constexpr spv_target_env kTargetEnv = SPV_ENV_OPENGL_4_5;
+
+std::vector<std::uint32_t> to_spirv(const glslang::TIntermediate& intermediate,
+                                    const std::string& file) {
+  glslang::SpvOptions options;
+  options.generateDebugInfo = true;
+  options.disableOptimizer = true;  // legalize() runs its own pass list
+  spv::SpvBuildLogger logger;
+  std::vector<unsigned int> spirv;
+  glslang::GlslangToSpv(intermediate, spirv, &logger, &options);
+  const std::string messages = logger.getAllMessages();
+  if (messages.find("error") != std::string::npos ||
+      messages.find("Missing functionality") != std::string::npos)
+    throw CompileError(file + ": error: glslang cannot generate SPIR-V: " + trim(messages));
+  return {spirv.begin(), spirv.end()};
+}
+
+bool has_function_call(const std::vector<std::uint32_t>& spirv) {
+  constexpr std::uint32_t kOpFunctionCall = 57;
+  for (std::size_t i = 5; i < spirv.size(); i += std::max<std::uint32_t>(spirv[i] >> 16, 1))
+    if ((spirv[i] & 0xffffu) == kOpFunctionCall) return true;
+  return false;
+}
+
+// Optimizer::RegisterLegalizationPasses (SPIRV-Tools 2023.1) without the passes that may change
+// a floating-point result or that only HLSL needs:
+// - no SimplificationPass: its folding rules turn x + 0.0 into x (wrong for -0.0; the twins
+//   write `p += vec3(0.0)` on purpose), x * 1.0 into x and (x * c1) * c2 into x * (c1 * c2);
+// - no CCP: its constant folding is IEEE-exact for + - * /, but it also folds dot(x, 0-vector)
+//   to 0.0 whatever x holds (NaN, inf) and sin/exp/pow... of constants with the host libm in
+//   double, so a result would depend on what inlining happened to make constant;
+// - no LoopUnroll: GLSL needs no unrolling to be legal, and loops stay as written;
+// - no FixStorageClass, ReduceLoadSize, InterpolateFixup: DXC's cases or pure optimizations.
+// What remains moves no arithmetic: it inlines, promotes memory to SSA values, removes dead
+// code. OpLine survives (checked by the tests); instructions these passes create (OpPhi, the
+// values that replace loads) have none.
+void register_passes(spvtools::Optimizer& optimizer) {
+  optimizer
+      .RegisterPass(spvtools::CreateWrapOpKillPass())  // discard in a function: inlinable
+      .RegisterPass(spvtools::CreateDeadBranchElimPass())  // unreachable blocks, for MergeReturn
+      .RegisterPass(spvtools::CreateMergeReturnPass())     // one return per function, to inline
+      .RegisterPass(spvtools::CreateInlineExhaustivePass())
+      .RegisterPass(spvtools::CreateEliminateDeadFunctionsPass())
+      .RegisterPass(spvtools::CreatePrivateToLocalPass())  // globals main alone uses: locals
+      .RegisterPass(spvtools::CreateLocalSingleBlockLoadStoreElimPass())
+      .RegisterPass(spvtools::CreateLocalSingleStoreElimPass())
+      .RegisterPass(spvtools::CreateAggressiveDCEPass())
+      .RegisterPass(spvtools::CreateScalarReplacementPass(0))  // split local arrays/structs
+      .RegisterPass(spvtools::CreateLocalSingleBlockLoadStoreElimPass())
+      .RegisterPass(spvtools::CreateLocalSingleStoreElimPass())
+      .RegisterPass(spvtools::CreateAggressiveDCEPass())
+      .RegisterPass(spvtools::CreateLocalMultiStoreElimPass())  // the rest to SSA (OpPhi)
+      .RegisterPass(spvtools::CreateAggressiveDCEPass())
+      .RegisterPass(spvtools::CreateCopyPropagateArraysPass())
+      .RegisterPass(spvtools::CreateVectorDCEPass())
+      .RegisterPass(spvtools::CreateDeadInsertElimPass())
+      .RegisterPass(spvtools::CreateAggressiveDCEPass())
+      .RegisterPass(spvtools::CreateBlockMergePass());  // the straight-line blocks inlining left
+}
+
+// glslang keeps an OpenGL `uniform bool` as a bool in UniformConstant storage, which the SPIR-V
+// spec reserves for storage that is not externally visible (Mesa's GL SPIR-V path takes it). The
+// validator stops at the first such variable; so the rest is validated on a copy in which the
+// uniforms that hold no opaque type are Private instead.
+std::vector<std::uint32_t> with_private_uniforms(std::vector<std::uint32_t> spirv) {
+  enum : std::uint32_t {
+    OpTypeVector = 23, OpTypeMatrix = 24, OpTypeImage = 25, OpTypeSampler = 26,
+    OpTypeSampledImage = 27, OpTypeArray = 28, OpTypeRuntimeArray = 29, OpTypeStruct = 30,
+    OpTypePointer = 32, OpVariable = 59, UniformConstant = 0, Private = 6
+  };
+  std::set<std::uint32_t> opaque, private_pointers;
+  for (std::size_t i = 5; i < spirv.size(); i += std::max<std::uint32_t>(spirv[i] >> 16, 1)) {
+    const std::uint32_t op = spirv[i] & 0xffffu, count = spirv[i] >> 16;
+    switch (op) {
+      case OpTypeImage: case OpTypeSampler: case OpTypeSampledImage:
+        opaque.insert(spirv[i + 1]);
+        break;
+      case OpTypeVector: case OpTypeMatrix: case OpTypeArray: case OpTypeRuntimeArray:
+      case OpTypeStruct:  // element types: one word, or every member of a struct
+        for (std::uint32_t k = 2; k < (op == OpTypeStruct ? count : 3); ++k)
+          if (opaque.count(spirv[i + k])) opaque.insert(spirv[i + 1]);
+        break;
+      case OpTypePointer:
+        if (spirv[i + 2] == UniformConstant && !opaque.count(spirv[i + 3])) {
+          spirv[i + 2] = Private;
+          private_pointers.insert(spirv[i + 1]);
+        }
+        break;
+      case OpVariable:
+        if (private_pointers.count(spirv[i + 1])) spirv[i + 3] = Private;
+        break;
+      default: break;
+    }
+  }
+  return spirv;
+}
+
+void validate(const std::vector<std::uint32_t>& spirv, const std::string& file, const char* what) {
+  std::string diagnostics;
+  auto valid = [&diagnostics](const std::vector<std::uint32_t>& module) {
+    spvtools::SpirvTools tools(kTargetEnv);
+    diagnostics.clear();
+    tools.SetMessageConsumer([&diagnostics](spv_message_level_t level, const char*,
+                                            const spv_position_t&, const char* message) {
+      if (level <= SPV_MSG_ERROR) diagnostics += std::string(diagnostics.empty() ? "" : "; ") + message;
+    });
+    return tools.Validate(module);
+  };
+  if (valid(spirv)) return;
+  if (diagnostics.find("If OpTypeBool is stored in conjunction with OpVariable") !=
+          std::string::npos &&
+      valid(with_private_uniforms(spirv)))
+    return;
+  throw std::logic_error(file + ": internal error: " + what + " does not validate: " + diagnostics);
+}
+
+std::vector<std::uint32_t> legalize(const std::vector<std::uint32_t>& spirv,
+                                    const std::string& file) {
+  validate(spirv, file, "glslang's SPIR-V");
+  std::string diagnostics;
+  spvtools::Optimizer optimizer(kTargetEnv);
+  optimizer.SetMessageConsumer([&diagnostics](spv_message_level_t level, const char*,
+                                              const spv_position_t&, const char* message) {
+    if (level <= SPV_MSG_ERROR) diagnostics += std::string(diagnostics.empty() ? "" : "; ") + message;
+  });
+  register_passes(optimizer);
+  spvtools::OptimizerOptions options;
+  options.set_run_validator(false);  // validate() did, tolerating glslang's bool uniforms
+  std::vector<std::uint32_t> legal;
+  if (!optimizer.Run(spirv.data(), spirv.size(), &legal, options))
+    throw std::logic_error(file + ": internal error: SPIR-V legalization failed: " + diagnostics);
+  validate(legal, file, "legalized SPIR-V");
+  if (has_function_call(legal))
+    throw CompileError(file + ": error: a function could not be inlined (discard in a loop's "
+                              "continue expression?)");
+  return legal;
+}
+
+const char* first_file(const std::vector<ShaderSource>& sources, Stage stage) {
+  for (const ShaderSource& s : sources)
+    if (s.stage == stage) return s.file.c_str();
+  return sources.front().file.c_str();
+}
+
+void init_glslang() {
+  static const bool initialized = glslang::InitializeProcess();
+  (void)initialized;
+}
+
+}  // namespace
+
+CompiledProgram compile_program(const std::vector<ShaderSource>& sources) {
+  if (sources.empty()) throw CompileError("error: a program needs at least one shader");
+  std::vector<std::string> errors;
+  for (const ShaderSource& s : sources)
+    if (s.stage == Stage::Geometry)
+      errors.push_back(s.file + ":" + std::to_string(s.first_line) +
+                       ": error: geometry shaders are not supported (tessref runs vertex, "
+                       "tessellation and fragment shaders)");
+  // GL 4.5 section 7.3: a (non-separable) program with tessellation shaders needs a vertex shader.
+  const bool has_vertex = std::any_of(sources.begin(), sources.end(),
+                                      [](const ShaderSource& s) { return s.stage == Stage::Vertex; });
+  for (const ShaderSource& s : sources)
+    if (!has_vertex && (s.stage == Stage::TessControl || s.stage == Stage::TessEval)) {
+      errors.push_back(s.file + ":" + std::to_string(s.first_line) + ": error: link error: a " +
+                       stage_name(s.stage) + " needs a vertex shader in the program");
+      break;
+    }
+  throw_if_any(errors);
+
+  std::vector<RewrittenSource> rewritten;
+  for (const ShaderSource& s : sources) rewritten.push_back(rewrite_glsl(s));
+
+  init_glslang();
+  // The program must be destroyed before its shaders: declared after them.
+  std::vector<std::unique_ptr<glslang::TShader>> shaders;
+  for (std::size_t i = 0; i < sources.size(); ++i) {
+    const EShLanguage lang = language(sources[i].stage);
+    auto shader = std::make_unique<glslang::TShader>(lang);
+    const char* text = rewritten[i].text.c_str();
+    const int length = static_cast<int>(rewritten[i].text.size());
+    const char* name = sources[i].file.c_str();
+    shader->setStringsWithLengthsAndNames(&text, &length, &name, 1);
+    shader->setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientOpenGL, 100);
+    shader->setEnvClient(glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450);
+    shader->setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
+    shader->setAutoMapLocations(true);  // default-block uniforms and in/out need locations
+    shader->setAutoMapBindings(true);
+    if (!shader->parse(GetDefaultResources(), 450, ECoreProfile, false, false, kMessages))
+      add_log_errors(shader->getInfoLog(), sources, sources[i].file, errors);
+    shaders.push_back(std::move(shader));
+  }
+  throw_if_any(errors);
+
+  // One TProgram per stage links that stage's compilation units. The stages meet in
+  // check_links and in one IO mapping over all of them, not in TProgram::link: glslang 12's
+  // cross-stage check refuses a TES `patch in` array (it drops the array's dimension as if it
+  // were the per-vertex one), which upstream fixed only in 2025.
+  std::vector<std::pair<Stage, std::unique_ptr<glslang::TProgram>>> programs;
+  for (Stage stage : kPipeline) {
+    auto program = std::make_unique<glslang::TProgram>();
+    for (std::size_t i = 0; i < sources.size(); ++i)
+      if (sources[i].stage == stage) program->addShader(shaders[i].get());
+    if (program->getShaders(language(stage)).empty()) continue;
+    if (!program->link(kMessages))
+      add_log_errors(program->getInfoLog(), sources, first_file(sources, stage), errors);
+    programs.emplace_back(stage, std::move(program));
+  }
+  throw_if_any(errors);
+  auto intermediate = [&programs](Stage stage) -> glslang::TIntermediate& {
+    for (auto& [s, program] : programs)
+      if (s == stage) return *program->getIntermediate(language(stage));
+    throw std::logic_error("no such stage");
+  };
+
+  std::vector<StageInterface> interfaces;
+  for (auto& [stage, program] : programs)
+    interfaces.push_back({stage, interface_of(stage, intermediate(stage))});
+  check_links(interfaces, errors);
+  throw_if_any(errors);
+
+  // TProgram::mapIO over several programs. glslang's OpenGL mapper and resolver (which
+  // glslangValidator does not use: its default mapper numbers each stage on its own) give an
+  // in/out without a location the location that the same name (the block name for a block) has
+  // in the adjacent stage, and a uniform the same location in every stage.
+  glslang::TDefaultGlslIoResolver resolver(*shaders.front()->getIntermediate());
+  glslang::TGlslIoMapper mapper;
+  TInfoSink sink;
+  bool mapped = true;
+  for (auto& [stage, program] : programs)
+    mapped = mapped && mapper.addStage(language(stage), intermediate(stage), sink, &resolver);
+  if (!mapped || !mapper.doMap(&resolver, sink))
+    add_log_errors(sink.info.c_str(), sources, sources.front().file, errors);
+  throw_if_any(errors);
+
+  CompiledProgram compiled;
+  for (const StageInterface& stage : interfaces) {
+    const std::string file = first_file(sources, stage.stage);
+    CompiledStage out{stage.stage, legalize(to_spirv(intermediate(stage.stage), file), file), {}};
+    for (std::size_t i = 0; i < sources.size(); ++i)
+      if (sources[i].stage == stage.stage)
+        out.rewrites.insert(out.rewrites.end(), rewritten[i].notes.begin(), rewritten[i].notes.end());
+    compiled.stages.push_back(std::move(out));
+  }
+  return compiled;
+}
+
+}  // namespace tessref::shader

@@ -1,0 +1,48 @@
+#pragma once
+// The GLSL front-end: a program's shaders (GLSL source, OpenGL semantics) -> one legalized SPIR-V
+// module per stage, ready for the executor. glslang compiles and links (OpenGL SPIR-V 1.0, like
+// `glslangValidator -G --auto-map-locations --auto-map-bindings -g`); SPIRV-Tools validates,
+// inlines every function into the entry point and promotes locals to SSA, keeping OpName and
+// OpLine. What tessref accepts and rewrites is in docs/glsl.md.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "common/error.h"
+
+namespace tessref::shader {
+
+enum class Stage { Vertex, TessControl, TessEval, Geometry, Fragment };
+
+// "vertex shader", "tessellation control shader", ..., as a GL linker names them.
+const char* stage_name(Stage stage);
+
+struct ShaderSource {
+  Stage stage = Stage::Vertex;
+  std::string file;    // for messages and OpLine
+  int first_line = 1;  // the line of `file` where `text` starts (piglit sections start mid-file)
+  std::string text;
+};
+
+struct CompiledStage {
+  Stage stage = Stage::Vertex;
+  std::vector<std::uint32_t> spirv;
+  std::vector<std::string> rewrites;  // "FILE:LINE: what was rewritten", one per rewrite applied
+};
+
+struct CompiledProgram {
+  std::vector<CompiledStage> stages;  // in pipeline order, one per stage present
+};
+
+// Compile and link errors, one "FILE:LINE: error: MESSAGE" line each (FILE: error: ... where no
+// line applies). Bad input, so an InputError.
+class CompileError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
+// Several sources of one stage are compilation units linked into that stage. Interface variables
+// without a location get one by name, the same in every stage (docs/glsl.md, "Locations").
+CompiledProgram compile_program(const std::vector<ShaderSource>& sources);
+
+}  // namespace tessref::shader

@@ -1,0 +1,23 @@
+#pragma once
+// Source rewrites that let glslang's OpenGL SPIR-V path (#version 450 core) take the GLSL that
+// tessellation users write: other #version lines, #extension lines for features core in 4.50,
+// gl_FragColor/gl_FragData, attribute/varying, texture2D() and its kin. Each rewrite applied is
+// recorded as a note. Line numbers stay those of the user's file: the rewrites stay within their
+// lines and a #line directive follows the inserted header. docs/glsl.md lists them all.
+#include <string>
+#include <vector>
+
+#include "shader/glsl_compile.h"
+
+namespace tessref::shader {
+
+struct RewrittenSource {
+  std::string text;                // for glslang: "#version 450 core" (or 460), header, #line
+  std::vector<std::string> notes;  // "FILE:LINE: what was rewritten", one per rewrite
+};
+
+// Throws CompileError for what tessref refuses: an unknown or OpenGL ES #version, and
+// compatibility-profile fixed-function state (gl_ModelViewProjectionMatrix, gl_ClipVertex, ...).
+RewrittenSource rewrite_glsl(const ShaderSource& source);
+
+}  // namespace tessref::shader

@@ -1,0 +1,132 @@
+#include "stages/glsl/glsl_interface.h"
+
+#include <spirv/unified1/spirv.hpp>
+
+namespace tessref::glsl {
+namespace {
+
+using shader::Module;
+using shader::Type;
+using shader::TypeKind;
+
+IoKind kind_of_builtin(std::uint32_t b) {
+  switch (spv::BuiltIn(b)) {
+    case spv::BuiltInPosition: return IoKind::Position;
+    case spv::BuiltInTessLevelOuter: return IoKind::TessLevelOuter;
+    case spv::BuiltInTessLevelInner: return IoKind::TessLevelInner;
+    case spv::BuiltInPrimitiveId: return IoKind::PrimitiveId;
+    case spv::BuiltInInvocationId: return IoKind::InvocationId;
+    case spv::BuiltInPatchVertices: return IoKind::PatchVertices;
+    case spv::BuiltInTessCoord: return IoKind::TessCoord;
+    case spv::BuiltInFragCoord: return IoKind::FragCoord;
+    case spv::BuiltInFrontFacing: return IoKind::FrontFacing;
+    case spv::BuiltInVertexId: case spv::BuiltInVertexIndex: return IoKind::VertexId;
+    case spv::BuiltInInstanceId: case spv::BuiltInInstanceIndex: return IoKind::InstanceId;
+    case spv::BuiltInPointSize: return IoKind::PointSize;
+    case spv::BuiltInClipDistance: return IoKind::ClipDistance;
+    case spv::BuiltInFragDepth: return IoKind::FragDepth;
+    default: return IoKind::Other;
+  }
+}
+
+struct Walker {
+  const Module& m;
+  const std::string& name;
+  int max_slots;
+  std::vector<IoWord>& out;
+
+  // Lays out type t from `location` (component `component`): each scalar or vector starts a new
+  // location unless a Component decoration places it; doubles take two words.
+  void walk(std::uint32_t type_id, std::uint32_t var_word, std::uint32_t& location,
+            std::uint32_t component) {
+    const Type& t = m.type(type_id);
+    switch (t.kind) {
+      case TypeKind::Bool: case TypeKind::Int: case TypeKind::Float: case TypeKind::Vector: {
+        std::uint32_t io = 4 + 4 * location + component;
+        for (const shader::FlatComponent& c : t.flat) {
+          place(var_word + c.word, io, c.scalar);
+          io += std::uint32_t(shader::scalar_words(c.scalar));
+        }
+        location += (component + t.words + 3) / 4;
+        break;
+      }
+      case TypeKind::Matrix: case TypeKind::Array: {
+        const std::uint32_t ew = m.type(t.element).words;
+        for (std::uint32_t i = 0; i < t.count; ++i) walk(t.element, var_word + i * ew, location, 0);
+        break;
+      }
+      case TypeKind::Struct:
+        for (std::size_t i = 0; i < t.members.size(); ++i) walk(t.members[i], var_word + t.member_word[i], location, 0);
+        break;
+      default:
+        throw shader::SpirvError("'" + name + "': an interface variable of this type is not supported");
+    }
+  }
+
+  void place(std::uint32_t var_word, std::uint32_t io_word, shader::Scalar s) {
+    if (io_word + std::uint32_t(shader::scalar_words(s)) > std::uint32_t(4 * max_slots))
+      throw shader::SpirvError("'" + name + "': location " + std::to_string((io_word - 4) / 4) +
+                               " is past tessref's limit of " + std::to_string(max_slots - 1) +
+                               " locations (vec4 slots) between these stages");
+    out.push_back({var_word, io_word, s});
+  }
+};
+
+bool per_vertex_array(const Module& m, const shader::Variable& v, IoKind kind) {
+  if (v.decorations.patch || m.type(v.type).kind != TypeKind::Array) return false;
+  if (kind != IoKind::User && kind != IoKind::Position) return false;
+  if (m.model == shader::ExecutionModel::TessControl) return true;
+  return m.model == shader::ExecutionModel::TessEval && v.storage == spv::StorageClassInput;
+}
+
+}  // namespace
+
+StageInterface read_interface(const shader::Executable& exe, int max_slots) {
+  const Module& m = exe.module();
+  StageInterface si;
+  for (const shader::Variable& v : m.variables) {
+    if (v.storage != spv::StorageClassInput && v.storage != spv::StorageClassOutput) continue;
+    IoVariable io;
+    io.variable = &v;
+    io.slot = exe.slot(v.id);
+    io.patch = v.decorations.patch;
+    // A gl_PerVertex block: its members carry the built-ins; gl_Position is the one carried.
+    bool per_vertex_block = false;
+    for (const shader::Decorations& d : v.member_decorations) per_vertex_block |= d.builtin.has_value();
+    if (v.decorations.builtin) io.kind = kind_of_builtin(*v.decorations.builtin);
+    else if (per_vertex_block) io.kind = IoKind::Position;
+
+    io.arrayed = per_vertex_array(m, v, io.kind);
+    std::uint32_t element = v.type;
+    if (io.arrayed) {
+      const Type& at = m.type(v.type);
+      io.elements = at.count;
+      element = at.element;
+      io.element_words = m.type(element).words;
+    } else {
+      io.element_words = m.type(v.type).words;
+    }
+    if (io.kind == IoKind::Position) {
+      const Type& st = m.type(element);
+      if (per_vertex_block) {
+        for (std::size_t i = 0; i < v.member_decorations.size(); ++i)
+          if (v.member_decorations[i].builtin == std::uint32_t(spv::BuiltInPosition))
+            for (std::uint32_t k = 0; k < 4; ++k) io.words.push_back({st.member_word[i] + k, k, shader::Scalar::F32});
+      } else {
+        for (std::uint32_t k = 0; k < 4; ++k) io.words.push_back({k, k, shader::Scalar::F32});
+      }
+    } else if (io.kind == IoKind::User) {
+      if (!v.decorations.location)
+        throw shader::SpirvError("'" + v.name + "' has no location (the front end assigns them)");
+      std::uint32_t location = *v.decorations.location;
+      Walker w{m, v.name, max_slots, io.words};
+      w.walk(element, 0, location, v.decorations.component.value_or(0));
+    }
+    for (const IoWord& w : io.words)
+      si.io_words_used = std::max(si.io_words_used, w.io_word + std::uint32_t(shader::scalar_words(w.scalar)));
+    (v.storage == spv::StorageClassInput ? si.inputs : si.outputs).push_back(std::move(io));
+  }
+  return si;
+}
+
+}  // namespace tessref::glsl

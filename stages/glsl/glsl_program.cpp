@@ -1,0 +1,261 @@
+#include "stages/glsl/glsl_program.h"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+
+#include <spirv/unified1/spirv.hpp>
+
+#include "stages/glsl/glsl_stages.h"
+
+namespace tessref::glsl {
+namespace {
+
+using shader::Scalar;
+using shader::TypeKind;
+
+// tessref's I/O slot limits (see glsl_interface.h): slot 0 is gl_Position.
+constexpr int kVertexSlots = kMaxStageAttributes;                  // StageVertex::attr
+constexpr int kVaryingSlots = 1 + kMaxVaryings / 4;                // ClipVertex varyings
+constexpr int kPatchSlots = 1 + kMaxPatchAttributes;               // PatchOutput::patch
+
+std::unique_ptr<StageProgram> make_stage(const shader::CompiledStage& cs, shader::ExecLimits limits) {
+  auto sp = std::make_unique<StageProgram>();
+  sp->stage = cs.stage;
+  sp->exe = std::make_unique<shader::Executable>(shader::read_module(cs.spirv), limits);
+  const int slots = cs.stage == shader::Stage::Fragment ? kVaryingSlots
+                    : cs.stage == shader::Stage::Vertex ? kVertexSlots
+                                                        : std::max(kVertexSlots, kPatchSlots);
+  sp->io = read_interface(*sp->exe, slots);
+  const shader::Module& m = sp->exe->module();
+  for (const shader::Variable& v : m.variables) {
+    if (v.storage != spv::StorageClassUniformConstant && v.storage != spv::StorageClassUniform &&
+        v.storage != spv::StorageClassAtomicCounter)
+      continue;
+    const shader::VariableSlot* slot = sp->exe->slot(v.id);
+    sp->uniform_ranges.push_back({slot->base, slot->words});
+  }
+  std::uint32_t words = 0;
+  for (const auto& [first, n] : sp->uniform_ranges) words = std::max(words, first + n);
+  sp->uniforms.assign(words, 0u);
+  // A sampler's value is its texture unit: its binding until the user sets it.
+  for (const shader::Variable& v : m.variables)
+    if (m.type(v.type).kind == TypeKind::SampledImage)
+      sp->uniforms[sp->exe->slot(v.id)->base] = v.decorations.binding.value_or(0);
+  return sp;
+}
+
+// The GLSL shape of a uniform's type: scalar, columns x rows (1 x N for vectors).
+struct Shape {
+  Scalar scalar = Scalar::None;
+  int columns = 1, rows = 1;
+  bool sampler = false;
+};
+
+Shape shape_of(const shader::Module& m, std::uint32_t type) {
+  const shader::Type& t = m.type(type);
+  Shape s;
+  switch (t.kind) {
+    case TypeKind::Bool: case TypeKind::Int: case TypeKind::Float: s.scalar = t.scalar; break;
+    case TypeKind::Vector: s.scalar = t.scalar; s.rows = int(t.count); break;
+    case TypeKind::Matrix:
+      s.scalar = t.scalar;
+      s.columns = int(t.count);
+      s.rows = int(m.type(t.element).count);
+      break;
+    case TypeKind::SampledImage: s.sampler = true; s.scalar = Scalar::I32; break;
+    default: break;
+  }
+  return s;
+}
+
+const char* scalar_name(Scalar s) {
+  switch (s) {
+    case Scalar::Bool: return "bool";
+    case Scalar::I32: return "int";
+    case Scalar::U32: return "uint";
+    case Scalar::F32: return "float";
+    case Scalar::F64: return "double";
+    default: return "?";
+  }
+}
+
+std::string shape_name(const Shape& s) {
+  if (s.sampler) return "sampler";
+  std::string base = scalar_name(s.scalar);
+  if (s.columns == 1 && s.rows == 1) return base;
+  const std::string prefix = s.scalar == Scalar::F32 ? "" : s.scalar == Scalar::F64 ? "d"
+                             : s.scalar == Scalar::I32 ? "i" : s.scalar == Scalar::U32 ? "u" : "b";
+  if (s.columns == 1) return prefix + "vec" + std::to_string(s.rows);
+  return prefix + "mat" + std::to_string(s.columns) + "x" + std::to_string(s.rows);
+}
+
+}  // namespace
+
+shader::Invocations& StageProgram::prepare() const {
+  shader::Invocations& inv = exe->local();
+  inv.zero_shared();
+  for (const auto& [first, n] : uniform_ranges)
+    std::copy_n(uniforms.begin() + first, n, inv.shared_words() + first);
+  if (textures)
+    for (std::uint32_t unit = 0; unit < textures->size(); ++unit) inv.bind_texture(unit, (*textures)[unit]);
+  return inv;
+}
+
+void StageProgram::rethrow(const shader::ShaderRuntimeError& e, const std::string& where) const {
+  std::string msg = std::string(shader::stage_name(stage)) + ", " + where;
+  if (e.line > 0) msg += ", line " + std::to_string(e.line);
+  throw StageError(msg + ": " + e.what());
+}
+
+GlslProgram::GlslProgram(const shader::CompiledProgram& compiled, shader::ExecLimits limits) {
+  for (const shader::CompiledStage& cs : compiled.stages) {
+    switch (cs.stage) {
+      case shader::Stage::Vertex: vs_ = make_stage(cs, limits); break;
+      case shader::Stage::TessControl: tcs_ = make_stage(cs, limits); break;
+      case shader::Stage::TessEval: tes_ = make_stage(cs, limits); break;
+      case shader::Stage::Fragment: fs_ = make_stage(cs, limits); break;
+      default: throw shader::SpirvError(std::string(shader::stage_name(cs.stage)) + "s are not supported");
+    }
+  }
+  if (!vs_) throw shader::SpirvError("the program has no vertex shader");
+  if (!fs_) throw shader::SpirvError("the program has no fragment shader");
+  for (StageProgram* s : {vs_.get(), tcs_.get(), tes_.get(), fs_.get()})
+    if (s) s->textures = &textures_;
+  // Varyings handed to the rasterizer: every word the last geometry stage writes past gl_Position.
+  const StageProgram& last = tes_ ? *tes_ : *vs_;
+  std::uint32_t used = 4;
+  for (const IoVariable& v : last.io.outputs)
+    for (const IoWord& w : v.words)
+      if (v.kind == IoKind::User) used = std::max(used, w.io_word + std::uint32_t(shader::scalar_words(w.scalar)));
+  if (used - 4 > std::uint32_t(kMaxVaryings))
+    throw shader::SpirvError("the " + std::string(shader::stage_name(last.stage)) + " writes " +
+                             std::to_string(used - 4) + " varying components; tessref's limit is " +
+                             std::to_string(kMaxVaryings));
+  num_varyings_ = int(used - 4);
+  // Flat: what the fragment shader declares flat, and every integer or double (which GLSL requires
+  // to be flat, and whose bits must reach the fragment shader unchanged).
+  for (const IoVariable& v : fs_->io.inputs) {
+    if (v.kind != IoKind::User) continue;
+    bool flat = v.variable->decorations.flat;
+    for (const shader::Decorations& d : v.variable->member_decorations) flat |= d.flat;
+    for (const IoWord& w : v.words) {
+      if (!flat && w.scalar == Scalar::F32) continue;
+      for (int h = 0; h < shader::scalar_words(w.scalar); ++h)
+        if (w.io_word + h >= 4 && w.io_word + h - 4 < 32) flat_varyings_ |= 1u << (w.io_word + h - 4);
+    }
+  }
+}
+
+GlslProgram::~GlslProgram() = default;
+
+StageProgram* GlslProgram::find(shader::Stage s) {
+  switch (s) {
+    case shader::Stage::Vertex: return vs_.get();
+    case shader::Stage::TessControl: return tcs_.get();
+    case shader::Stage::TessEval: return tes_.get();
+    case shader::Stage::Fragment: return fs_.get();
+    default: return nullptr;
+  }
+}
+
+void GlslProgram::set_uniform(const std::string& full_name, const UniformValue& value) {
+  // "name" or "name[i]"
+  std::string name = full_name;
+  std::uint32_t index = 0;
+  bool indexed = false;
+  if (auto open = name.find('['); open != std::string::npos && name.back() == ']') {
+    index = std::uint32_t(std::stoul(name.substr(open + 1, name.size() - open - 2)));
+    name = name.substr(0, open);
+    indexed = true;
+  }
+  bool found = false;
+  for (StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), fs_.get()}) {
+    if (!sp) continue;
+    const shader::Module& m = sp->exe->module();
+    for (const shader::Variable& v : m.variables) {
+      if (v.storage != spv::StorageClassUniformConstant || v.name != name) continue;
+      std::uint32_t type = v.type;
+      std::uint32_t offset = 0, count = 1;
+      const shader::Type& t = m.type(type);
+      if (t.kind == TypeKind::Array) {
+        type = t.element;
+        const std::uint32_t ew = m.type(type).words;
+        if (index >= t.count)
+          throw std::invalid_argument("uniform '" + full_name + "': index past the array's " +
+                                      std::to_string(t.count) + " elements");
+        offset = index * ew;
+        count = indexed ? 1 : t.count;
+      } else if (indexed && index != 0) {
+        throw std::invalid_argument("uniform '" + name + "' is not an array");
+      }
+      const Shape want = shape_of(m, type);
+      const Shape got{value.scalar, value.columns, value.rows, false};
+      const bool sampler_ok = want.sampler && value.scalar == Scalar::I32 && value.columns == 1 && value.rows == 1;
+      if (!sampler_ok && (want.scalar != got.scalar || want.columns != got.columns || want.rows != got.rows))
+        throw std::invalid_argument("uniform '" + full_name + "' is a " + shape_name(want) + ", not a " +
+                                    shape_name(got));
+      const std::uint32_t ew = m.type(type).words;
+      const std::uint32_t base = sp->exe->slot(v.id)->base + offset;
+      // Several array elements may be given at once (count values in a row).
+      const std::uint32_t given = std::min<std::uint32_t>(count, std::uint32_t(value.words.size() / ew));
+      for (std::uint32_t k = 0; k < std::max(given, 1u) && k * ew < value.words.size(); ++k)
+        std::copy_n(value.words.begin() + k * ew, std::min<std::size_t>(ew, value.words.size() - k * ew),
+                    sp->uniforms.begin() + base + k * ew);
+      found = true;
+    }
+  }
+  if (!found) throw std::invalid_argument("no active uniform named '" + name + "'");
+}
+
+std::vector<std::string> GlslProgram::uniform_names() const {
+  std::vector<std::string> names;
+  for (const StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), fs_.get()})
+    if (sp)
+      for (const shader::Variable& v : sp->exe->module().variables)
+        if (v.storage == spv::StorageClassUniformConstant && !v.name.empty()) names.push_back(v.name);
+  std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
+  return names;
+}
+
+void GlslProgram::bind_texture(std::uint32_t unit, const shader::Texture* texture) {
+  if (textures_.size() <= unit) textures_.resize(unit + 1, nullptr);
+  textures_[unit] = texture;
+}
+
+std::optional<std::uint32_t> GlslProgram::attribute_location(const std::string& name) const {
+  for (const IoVariable& v : vs_->io.inputs)
+    if (v.kind == IoKind::User && v.variable->name == name) return v.variable->decorations.location;
+  return std::nullopt;
+}
+
+TessLayout GlslProgram::tes_layout() const {
+  if (!tes_) throw std::logic_error("tes_layout: no tessellation evaluation shader");
+  return layout_of(tes_->exe->module().modes);
+}
+
+int GlslProgram::tcs_output_vertices() const { return tcs_ ? tcs_->exe->module().modes.output_vertices : 0; }
+
+void GlslProgram::run_vertices(const std::vector<VertexAttribute>& attributes, std::size_t first,
+                               std::size_t count, int instance, StageVertex* out,
+                               const Parallel& parallel) const {
+  run_vertex_stage(*vs_, attributes, first, count, instance, out, parallel);
+}
+
+std::unique_ptr<TessControlProgram> GlslProgram::control(int patch_vertices, const glm::vec4& default_outer,
+                                                         const glm::vec2& default_inner) const {
+  if (tcs_) return std::make_unique<GlslControl>(*tcs_);
+  return std::make_unique<PassThroughControl>(patch_vertices, default_outer, default_inner);
+}
+
+std::unique_ptr<TessEvalProgram> GlslProgram::evaluation() const {
+  if (!tes_) throw std::logic_error("evaluation: no tessellation evaluation shader");
+  return std::make_unique<GlslEvaluation>(*tes_, num_varyings_, flat_varyings_);
+}
+
+std::unique_ptr<FragmentProgram> GlslProgram::fragment() const {
+  return std::make_unique<GlslFragment>(*fs_, num_varyings_);
+}
+
+}  // namespace tessref::glsl

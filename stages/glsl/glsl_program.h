@@ -1,0 +1,100 @@
+#pragma once
+// A user's GLSL program on tessref's pipeline: the compiled stages on the SPIR-V executor, adapted
+// to the stage interfaces (TessControlProgram, TessEvalProgram, FragmentProgram) and a batched
+// vertex stage. See glsl_interface.h for how values travel between stages.
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "raster/rasterizer.h"
+#include "shader/executor.h"
+#include "shader/glsl_compile.h"
+#include "stages/glsl/glsl_interface.h"
+#include "stages/tess_stage.h"
+
+namespace tessref::glsl {
+
+// A stage failed at run time: the message names the stage, the patch or vertex, the invocation
+// and the source line.
+class StageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// One compiled stage: the executable, its interface and the values of its uniforms.
+struct StageProgram {
+  shader::Stage stage = shader::Stage::Vertex;
+  std::unique_ptr<shader::Executable> exe;
+  StageInterface io;
+  std::vector<std::uint32_t> uniforms;  // an image of the shared words holding uniforms
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> uniform_ranges;  // (first word, words)
+  const std::vector<const shader::Texture*>* textures = nullptr;  // the program's, by unit
+
+  // This thread's invocations with the uniforms loaded.
+  shader::Invocations& prepare() const;
+  [[noreturn]] void rethrow(const shader::ShaderRuntimeError& e, const std::string& where) const;
+};
+
+// A uniform's value as the user gives it: flattened scalars (a double as two words, low first).
+struct UniformValue {
+  shader::Scalar scalar = shader::Scalar::F32;
+  int columns = 1, rows = 1;  // a vecN: 1 x N; a matCxR: C x R
+  std::vector<std::uint32_t> words;
+};
+
+// Vertex attribute arrays for the vertex shader, by location: `components` words per vertex.
+struct VertexAttribute {
+  std::uint32_t location = 0;
+  int components = 4;
+  shader::Scalar scalar = shader::Scalar::F32;
+  std::vector<std::uint32_t> words;  // vertex v's component k at v * components + k (doubles: 2 words)
+};
+
+class GlslProgram {
+ public:
+  // Builds the stages of a compiled program. The program must have vertex, tessellation
+  // evaluation and fragment stages; the control stage is optional (default levels are then used).
+  // Throws shader::SpirvError for what the executor or tessref's limits cannot take.
+  explicit GlslProgram(const shader::CompiledProgram& compiled, shader::ExecLimits limits = {});
+  ~GlslProgram();
+
+  // Sets a uniform by name (optionally "name[i]") in every stage that declares it. Throws
+  // std::invalid_argument if no stage has it or its GLSL type differs from the value's.
+  void set_uniform(const std::string& name, const UniformValue& value);
+  std::vector<std::string> uniform_names() const;
+  // Binds a texture to a sampler's binding (texture unit). The texture must outlive the draws.
+  void bind_texture(std::uint32_t unit, const shader::Texture* texture);
+
+  // The location of the vertex shader input with this name; nullopt if there is none.
+  std::optional<std::uint32_t> attribute_location(const std::string& name) const;
+
+  bool has_tcs() const { return tcs_ != nullptr; }
+  bool has_tes() const { return tes_ != nullptr; }
+  TessLayout tes_layout() const;
+  int tcs_output_vertices() const;
+
+  // Runs the vertex shader for vertices [first, first + count) of the attribute arrays (gl_VertexID
+  // = first + i) of instance `instance`; out receives gl_Position and the outputs as I/O slots.
+  void run_vertices(const std::vector<VertexAttribute>& attributes, std::size_t first, std::size_t count,
+                    int instance, StageVertex* out, const Parallel& parallel) const;
+
+  // Stage programs for tessellate() and draw_triangles(). default_outer/inner: the levels used when
+  // there is no control stage (glPatchParameterfv); patch_vertices: GL_PATCH_VERTICES.
+  std::unique_ptr<TessControlProgram> control(int patch_vertices, const glm::vec4& default_outer,
+                                              const glm::vec2& default_inner) const;
+  std::unique_ptr<TessEvalProgram> evaluation() const;
+  std::unique_ptr<FragmentProgram> fragment() const;
+  int varyings() const { return num_varyings_; }
+
+ private:
+  StageProgram* find(shader::Stage s);
+  std::unique_ptr<StageProgram> vs_, tcs_, tes_, fs_;
+  std::vector<const shader::Texture*> textures_;
+  int num_varyings_ = 0;
+  std::uint32_t flat_varyings_ = 0;  // TriangleBatch::flat_varyings
+};
+
+}  // namespace tessref::glsl

@@ -1,0 +1,368 @@
+#include "stages/glsl/glsl_stages.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include <spirv/unified1/spirv.hpp>
+
+namespace tessref::glsl {
+namespace {
+
+using shader::Invocations;
+using shader::Scalar;
+
+std::uint32_t* words_of(StageVertex& v) { return reinterpret_cast<std::uint32_t*>(v.attr.data()); }
+const std::uint32_t* words_of(const StageVertex& v) { return reinterpret_cast<const std::uint32_t*>(v.attr.data()); }
+constexpr std::uint32_t kVertexWords = 4 * kMaxStageAttributes;
+constexpr std::uint32_t kPatchWords = 4 * kMaxPatchAttributes;
+
+std::uint32_t bits(float f) {
+  std::uint32_t u;
+  std::memcpy(&u, &f, 4);
+  return u;
+}
+float to_float(std::uint32_t u) {
+  float f;
+  std::memcpy(&f, &u, 4);
+  return f;
+}
+
+// Copies one scalar (1 or 2 words) between a plain word array and a lane of a per-lane variable.
+void set_lane(Invocations& inv, const shader::VariableSlot& slot, std::uint32_t word, Scalar s, int lane,
+              const std::uint32_t* src) {
+  std::uint32_t* row = inv.row(slot, word);
+  if (s == Scalar::F64) {
+    row[2 * lane] = src[0];
+    row[2 * lane + 1] = src[1];
+  } else {
+    row[lane] = src[0];
+  }
+}
+void get_lane(Invocations& inv, const shader::VariableSlot& slot, std::uint32_t word, Scalar s, int lane,
+              std::uint32_t* dst) {
+  const std::uint32_t* row = inv.row(slot, word);
+  if (s == Scalar::F64) {
+    dst[0] = row[2 * lane];
+    dst[1] = row[2 * lane + 1];
+  } else {
+    dst[0] = row[lane];
+  }
+}
+
+// Shared (per-patch) variables from and to plain word arrays.
+void copy_in(std::uint32_t* dst, const std::vector<IoWord>& words, const std::uint32_t* src, std::uint32_t limit) {
+  for (const IoWord& w : words) {
+    const int n = shader::scalar_words(w.scalar);
+    for (int h = 0; h < n; ++h)
+      if (w.io_word + h < limit) dst[w.var_word + h] = src[w.io_word + h];
+  }
+}
+void copy_out(std::uint32_t* dst, const std::vector<IoWord>& words, const std::uint32_t* src, std::uint32_t limit) {
+  for (const IoWord& w : words) {
+    const int n = shader::scalar_words(w.scalar);
+    for (int h = 0; h < n; ++h)
+      if (w.io_word + h < limit) dst[w.io_word + h] = src[w.var_word + h];
+  }
+}
+
+// Per-patch built-ins and arrays shared by a TCS's or TES's invocations.
+void fill_patch_inputs(const StageProgram& sp, Invocations& inv, const StageVertex* vertices,
+                       int vertex_count, const std::array<glm::vec4, kMaxPatchAttributes>* patch,
+                       const TessLevels* levels, int primitive_id) {
+  for (const IoVariable& v : sp.io.inputs) {
+    if (!v.slot || v.slot->per_lane) continue;
+    std::uint32_t* dst = inv.shared(*v.slot);
+    switch (v.kind) {
+      case IoKind::User:
+      case IoKind::Position:
+        if (v.arrayed) {
+          const std::uint32_t n = std::min<std::uint32_t>(v.elements, std::uint32_t(vertex_count));
+          for (std::uint32_t k = 0; k < n; ++k)
+            copy_in(dst + k * v.element_words, v.words, words_of(vertices[k]), kVertexWords);
+        } else if (v.patch && patch) {
+          // Patch slots start at location 0: I/O word 4 + 4L is patch[L].
+          const auto* pw = reinterpret_cast<const std::uint32_t*>(patch->data());
+          for (const IoWord& w : v.words)
+            for (int h = 0; h < shader::scalar_words(w.scalar); ++h)
+              if (w.io_word - 4 + h < kPatchWords) dst[w.var_word + h] = pw[w.io_word - 4 + h];
+        }
+        break;
+      case IoKind::PrimitiveId: dst[0] = std::uint32_t(primitive_id); break;
+      case IoKind::PatchVertices: dst[0] = std::uint32_t(vertex_count); break;
+      case IoKind::TessLevelOuter:
+        if (levels)
+          for (int i = 0; i < 4; ++i) dst[i] = bits(levels->outer[i]);
+        break;
+      case IoKind::TessLevelInner:
+        if (levels)
+          for (int i = 0; i < 2; ++i) dst[i] = bits(levels->inner[i]);
+        break;
+      default: break;
+    }
+  }
+}
+
+const IoVariable* find_kind(const std::vector<IoVariable>& vars, IoKind kind) {
+  for (const IoVariable& v : vars)
+    if (v.kind == kind) return &v;
+  return nullptr;
+}
+
+}  // namespace
+
+TessLayout layout_of(const shader::ExecutionModes& modes) {
+  TessLayout l;
+  l.domain = modes.primitive == spv::ExecutionModeQuads      ? TessDomain::Quads
+             : modes.primitive == spv::ExecutionModeIsolines ? TessDomain::Isolines
+                                                             : TessDomain::Triangles;
+  l.spacing = modes.spacing == spv::ExecutionModeSpacingFractionalOdd    ? TessSpacing::FractionalOdd
+              : modes.spacing == spv::ExecutionModeSpacingFractionalEven ? TessSpacing::FractionalEven
+                                                                         : TessSpacing::Equal;
+  l.winding = modes.order == spv::ExecutionModeVertexOrderCw ? TessWinding::Cw : TessWinding::Ccw;
+  l.point_mode = modes.point_mode;
+  return l;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Tessellation control
+
+int GlslControl::output_vertices() const { return sp_.exe->module().modes.output_vertices; }
+
+void GlslControl::run(int, int, const Patch&, PatchOutput&) const {
+  // Never called: run_phase runs all invocations of a patch together.
+}
+
+void GlslControl::run_phase(int, const Patch& in, PatchOutput& out) const {
+  Invocations& inv = sp_.prepare();
+  fill_patch_inputs(sp_, inv, in.vertices.data(), in.vertex_count, nullptr, nullptr, in.primitive_id);
+  const int n = output_vertices();
+  inv.begin(n);
+  if (const IoVariable* id = find_kind(sp_.io.inputs, IoKind::InvocationId))
+    for (int l = 0; l < n; ++l) inv.row(*id->slot, 0)[l] = std::uint32_t(l);
+  try {
+    inv.run();
+  } catch (const shader::ShaderRuntimeError& e) {
+    sp_.rethrow(e, "patch " + std::to_string(in.primitive_id) + ", invocation " + std::to_string(e.lane));
+  }
+  for (const IoVariable& v : sp_.io.outputs) {
+    const std::uint32_t* src = inv.shared(*v.slot);
+    switch (v.kind) {
+      case IoKind::User:
+      case IoKind::Position:
+        if (v.arrayed) {
+          for (std::uint32_t k = 0; k < std::min<std::uint32_t>(v.elements, std::uint32_t(n)); ++k)
+            copy_out(words_of(out.vertices[k]), v.words, src + k * v.element_words, kVertexWords);
+        } else if (v.patch) {
+          auto* pw = reinterpret_cast<std::uint32_t*>(out.patch.data());
+          for (const IoWord& w : v.words)
+            for (int h = 0; h < shader::scalar_words(w.scalar); ++h)
+              if (w.io_word - 4 + h < kPatchWords) pw[w.io_word - 4 + h] = src[w.var_word + h];
+        }
+        break;
+      case IoKind::TessLevelOuter:
+        for (int i = 0; i < 4; ++i) out.levels.outer[i] = to_float(src[i]);
+        break;
+      case IoKind::TessLevelInner:
+        for (int i = 0; i < 2; ++i) out.levels.inner[i] = to_float(src[i]);
+        break;
+      default: break;
+    }
+  }
+}
+
+void PassThroughControl::run(int, int invocation_id, const Patch& in, PatchOutput& out) const {
+  out.vertices[invocation_id] = in.vertices[invocation_id];
+  out.levels.outer = {outer_.x, outer_.y, outer_.z, outer_.w};
+  out.levels.inner = {inner_.x, inner_.y};
+}
+
+// ---------------------------------------------------------------------------------------------
+// Tessellation evaluation
+
+void GlslEvaluation::evaluate_batch(const PatchOutput& patch, int primitive_id, TessEvalBatch& batch) const {
+  Invocations& inv = sp_.prepare();
+  fill_patch_inputs(sp_, inv, patch.vertices.data(), patch.vertex_count, &patch.patch, &patch.levels,
+                    primitive_id);
+  const int n = batch.count;
+  inv.begin(n);
+  if (const IoVariable* tc = find_kind(sp_.io.inputs, IoKind::TessCoord))
+    for (int c = 0; c < 3; ++c) std::memcpy(inv.row(*tc->slot, std::uint32_t(c)), batch.tess_coord[c], 4 * std::size_t(n));
+  try {
+    inv.run();
+  } catch (const shader::ShaderRuntimeError& e) {
+    sp_.rethrow(e, "patch " + std::to_string(primitive_id) + ", invocation " + std::to_string(e.lane));
+  }
+  for (int r = 0; r < varyings_; ++r) std::fill_n(batch.varyings[r], n, 0.0f);
+  for (int c = 0; c < 4; ++c) std::fill_n(batch.position[c], n, 0.0f);
+  for (const IoVariable& v : sp_.io.outputs) {
+    if (v.kind != IoKind::User && v.kind != IoKind::Position) continue;
+    for (const IoWord& w : v.words) {
+      const std::uint32_t* row = inv.row(*v.slot, w.var_word);
+      auto dst = [&](std::uint32_t io) -> float* {
+        return io < 4 ? batch.position[io] : int(io - 4) < varyings_ ? batch.varyings[io - 4] : nullptr;
+      };
+      if (w.scalar == Scalar::F64) {  // a double's lanes are interleaved: two varying rows
+        float* lo = dst(w.io_word);
+        float* hi = dst(w.io_word + 1);
+        for (int l = 0; l < n && lo && hi; ++l) {
+          std::memcpy(lo + l, row + 2 * l, 4);
+          std::memcpy(hi + l, row + 2 * l + 1, 4);
+        }
+      } else if (float* d = dst(w.io_word)) {
+        std::memcpy(d, row, 4 * std::size_t(n));
+      }
+    }
+  }
+}
+
+ClipVertex GlslEvaluation::evaluate(const glm::vec3& tess_coord, const PatchOutput& patch, int primitive_id) const {
+  TessEvalBatch batch;
+  const float u[1] = {tess_coord.x}, v[1] = {tess_coord.y}, w[1] = {tess_coord.z};
+  batch.count = 1;
+  batch.tess_coord[0] = u;
+  batch.tess_coord[1] = v;
+  batch.tess_coord[2] = w;
+  evaluate_batch(patch, primitive_id, batch);
+  ClipVertex out;
+  out.position = glm::vec4(batch.position[0][0], batch.position[1][0], batch.position[2][0], batch.position[3][0]);
+  for (int k = 0; k < varyings_; ++k) out.varyings[k] = batch.varyings[k][0];
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Fragment
+
+void GlslFragment::shade_batch(FragmentBatch& batch) const {
+  Invocations& inv = sp_.prepare();
+  const int n = batch.lanes();
+  inv.begin(n);
+  for (const IoVariable& v : sp_.io.inputs) {
+    switch (v.kind) {
+      case IoKind::FragCoord:
+        for (int c = 0; c < 4; ++c) std::memcpy(inv.row(*v.slot, std::uint32_t(c)), batch.frag_coord[c], 4 * std::size_t(n));
+        break;
+      case IoKind::FrontFacing:
+        for (int l = 0; l < n; ++l) inv.row(*v.slot, 0)[l] = batch.front_facing[l] ? 1u : 0u;
+        break;
+      case IoKind::User:
+        for (const IoWord& w : v.words) {
+          std::uint32_t* row = inv.row(*v.slot, w.var_word);
+          const int k = int(w.io_word) - 4;
+          const int nw = shader::scalar_words(w.scalar);
+          if (k + nw > batch.num_varyings) {
+            std::fill_n(row, n * nw, 0u);
+          } else if (w.scalar == Scalar::F64) {  // two varying rows into interleaved lanes
+            for (int l = 0; l < n; ++l) {
+              std::memcpy(row + 2 * l, batch.varyings[k] + l, 4);
+              std::memcpy(row + 2 * l + 1, batch.varyings[k + 1] + l, 4);
+            }
+          } else {
+            std::memcpy(row, batch.varyings[k], 4 * std::size_t(n));
+          }
+        }
+        break;
+      default: break;
+    }
+  }
+  try {
+    inv.run();
+  } catch (const shader::ShaderRuntimeError& e) {
+    sp_.rethrow(e, "fragment (" + std::to_string(int(batch.frag_coord[0][e.lane])) + ", " +
+                       std::to_string(int(batch.frag_coord[1][e.lane])) + ")");
+  }
+  for (int c = 0; c < 4; ++c) {
+    std::fill_n(batch.color[c], n, 0.0f);
+    std::fill_n(batch.aux[c], n, 0.0f);
+  }
+  for (const IoVariable& v : sp_.io.outputs) {
+    if (v.kind != IoKind::User) continue;
+    for (const IoWord& w : v.words) {
+      if (w.scalar == Scalar::F64 || w.io_word >= 12) continue;
+      float* dst = w.io_word < 8 ? batch.color[w.io_word - 4] : batch.aux[w.io_word - 8];
+      const std::uint32_t* row = inv.row(*v.slot, w.var_word);
+      if (w.scalar == Scalar::F32) std::memcpy(dst, row, 4 * std::size_t(n));
+      else for (int l = 0; l < n; ++l) dst[l] = w.scalar == Scalar::I32 ? float(std::int32_t(row[l])) : float(row[l]);
+    }
+  }
+  const std::uint8_t* killed = inv.discarded();
+  for (int l = 0; l < n; ++l)
+    if (killed[l]) batch.live[l] = 0;
+}
+
+FragmentOutput GlslFragment::shade(const FragmentInput& in) const {
+  FragmentBatch batch;
+  batch.quads = 1;
+  batch.num_varyings = varyings_;
+  for (int l = 0; l < 4; ++l) {
+    batch.live[l] = l == 0;
+    batch.front_facing[l] = in.front_facing;
+    for (int c = 0; c < 4; ++c) batch.frag_coord[c][l] = in.frag_coord[c];
+    for (int k = 0; k < varyings_; ++k) batch.varyings[k][l] = in.varyings[k];
+  }
+  shade_batch(batch);
+  FragmentOutput out;
+  for (int c = 0; c < 4; ++c) {
+    out.color[c] = batch.color[c][0];
+    out.aux[c] = batch.aux[c][0];
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Vertex
+
+void run_vertex_stage(const StageProgram& sp, const std::vector<VertexAttribute>& attributes,
+                      std::size_t first, std::size_t count, int instance, StageVertex* out,
+                      const Parallel& parallel) {
+  const std::size_t batches = (count + shader::kMaxLanes - 1) / shader::kMaxLanes;
+  auto run_batch = [&](std::size_t b) {
+    const std::size_t start = b * shader::kMaxLanes;
+    const int n = int(std::min<std::size_t>(shader::kMaxLanes, count - start));
+    Invocations& inv = sp.prepare();
+    inv.begin(n);
+    for (const IoVariable& v : sp.io.inputs) {
+      if (v.kind == IoKind::VertexId || v.kind == IoKind::InstanceId) {
+        for (int l = 0; l < n; ++l)
+          inv.row(*v.slot, 0)[l] = v.kind == IoKind::VertexId ? std::uint32_t(first + start + l) : std::uint32_t(instance);
+        continue;
+      }
+      if (v.kind != IoKind::User) continue;
+      for (const IoWord& w : v.words) {
+        const std::uint32_t location = (w.io_word - 4) / 4, word = (w.io_word - 4) % 4;
+        const VertexAttribute* a = nullptr;
+        for (const VertexAttribute& candidate : attributes)
+          if (candidate.location == location) a = &candidate;
+        for (int l = 0; l < n; ++l) {
+          // Missing components read as GL's defaults: (0, 0, 0, 1).
+          std::uint32_t value[2] = {word == 3 && w.scalar == Scalar::F32 ? bits(1.0f) : 0u, 0u};
+          const std::size_t vtx = first + start + std::size_t(l);
+          if (a && word < std::uint32_t(a->components) && (vtx + 1) * a->components <= a->words.size()) {
+            value[0] = a->words[vtx * a->components + word];
+            if (w.scalar == Scalar::F64 && word + 1 < std::uint32_t(a->components)) value[1] = a->words[vtx * a->components + word + 1];
+          }
+          set_lane(inv, *v.slot, w.var_word, w.scalar, l, value);
+        }
+      }
+    }
+    try {
+      inv.run();
+    } catch (const shader::ShaderRuntimeError& e) {
+      sp.rethrow(e, "vertex " + std::to_string(first + start + std::size_t(e.lane)));
+    }
+    for (int l = 0; l < n; ++l) out[start + std::size_t(l)] = StageVertex{};
+    for (const IoVariable& v : sp.io.outputs) {
+      if (v.kind != IoKind::User && v.kind != IoKind::Position) continue;
+      for (const IoWord& w : v.words) {
+        if (w.io_word + shader::scalar_words(w.scalar) > kVertexWords) continue;
+        for (int l = 0; l < n; ++l) get_lane(inv, *v.slot, w.var_word, w.scalar, l, words_of(out[start + std::size_t(l)]) + w.io_word);
+      }
+    }
+  };
+  if (batches <= 1) {
+    if (batches == 1) run_batch(0);
+  } else {
+    parallel.for_each(batches, run_batch);
+  }
+}
+
+}  // namespace tessref::glsl

@@ -1,0 +1,68 @@
+#pragma once
+// The stage programs a GlslProgram hands to the pipeline: each fills its executable's inputs from
+// tessref's stage structs, runs a batch of invocations and reads the outputs back.
+#include "stages/glsl/glsl_program.h"
+
+namespace tessref::glsl {
+
+TessLayout layout_of(const shader::ExecutionModes& modes);
+
+// A TCS: all invocations of a patch run as one batch, in lock step (so barrier() holds).
+class GlslControl final : public TessControlProgram {
+ public:
+  explicit GlslControl(const StageProgram& sp) : sp_(sp) {}
+  int output_vertices() const override;
+  void run(int phase, int invocation_id, const Patch& in, PatchOutput& out) const override;
+  void run_phase(int phase, const Patch& in, PatchOutput& out) const override;
+
+ private:
+  const StageProgram& sp_;
+};
+
+// No TCS in the program: the patch's vertices go to the TES as they are, with the default levels
+// (glPatchParameterfv(GL_PATCH_DEFAULT_OUTER_LEVEL / INNER_LEVEL)).
+class PassThroughControl final : public TessControlProgram {
+ public:
+  PassThroughControl(int vertices, const glm::vec4& outer, const glm::vec2& inner)
+      : vertices_(vertices), outer_(outer), inner_(inner) {}
+  int output_vertices() const override { return vertices_; }
+  void run(int phase, int invocation_id, const Patch& in, PatchOutput& out) const override;
+
+ private:
+  int vertices_;
+  glm::vec4 outer_;
+  glm::vec2 inner_;
+};
+
+class GlslEvaluation final : public TessEvalProgram {
+ public:
+  GlslEvaluation(const StageProgram& sp, int varyings, std::uint32_t flat)
+      : sp_(sp), varyings_(varyings), flat_(flat) {}
+  TessLayout layout() const override { return layout_of(sp_.exe->module().modes); }
+  int num_varyings() const override { return varyings_; }
+  std::uint32_t flat_varyings() const override { return flat_; }
+  ClipVertex evaluate(const glm::vec3& tess_coord, const PatchOutput& patch, int primitive_id) const override;
+  void evaluate_batch(const PatchOutput& patch, int primitive_id, TessEvalBatch& batch) const override;
+
+ private:
+  const StageProgram& sp_;
+  int varyings_;
+  std::uint32_t flat_;
+};
+
+class GlslFragment final : public FragmentProgram {
+ public:
+  GlslFragment(const StageProgram& sp, int varyings) : sp_(sp), varyings_(varyings) {}
+  FragmentOutput shade(const FragmentInput& in) const override;
+  void shade_batch(FragmentBatch& batch) const override;
+
+ private:
+  const StageProgram& sp_;
+  int varyings_;
+};
+
+void run_vertex_stage(const StageProgram& sp, const std::vector<VertexAttribute>& attributes,
+                      std::size_t first, std::size_t count, int instance, StageVertex* out,
+                      const Parallel& parallel);
+
+}  // namespace tessref::glsl
