@@ -198,7 +198,7 @@ struct ShaderTestFile {
   std::vector<TestCommand> commands;  // [test]; comment and blank lines left out
 };
 
-// file_name is used in error messages only.
+// file_name names the file in error messages and in ShaderTestFile::file_name; nothing is read.
 ShaderTestFile parse_shader_test(const std::string& text, const std::string& file_name);
 // Reads and parses a file; throws InputError if it cannot be read.
 ShaderTestFile load_shader_test(const std::string& path);

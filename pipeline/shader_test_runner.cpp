@@ -23,11 +23,12 @@ const std::map<std::string, long long>& limits() {
       {"GL_MAX_TESS_CONTROL_INPUT_COMPONENTS", 4 * (kMaxStageAttributes - 1)},
       {"GL_MAX_TESS_CONTROL_OUTPUT_COMPONENTS", 4 * (kMaxStageAttributes - 1)},
       {"GL_MAX_TESS_EVALUATION_INPUT_COMPONENTS", 4 * (kMaxStageAttributes - 1)},
-      {"GL_MAX_TESS_EVALUATION_OUTPUT_COMPONENTS", kMaxVaryings},
+      {"GL_MAX_TESS_EVALUATION_OUTPUT_COMPONENTS", 4 * (kMaxStageAttributes - 1)},
       {"GL_MAX_TESS_PATCH_COMPONENTS", 4 * kMaxPatchAttributes},
       {"GL_MAX_VERTEX_OUTPUT_COMPONENTS", 4 * (kMaxStageAttributes - 1)},
       {"GL_MAX_FRAGMENT_INPUT_COMPONENTS", kMaxVaryings},
       {"GL_MAX_VARYING_COMPONENTS", kMaxVaryings},
+      {"GL_MAX_VARYING_FLOATS", kMaxVaryings},
       {"GL_MAX_VERTEX_ATTRIBS", 16},
   };
   return table;

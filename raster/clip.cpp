@@ -1,5 +1,6 @@
 #include "raster/clip.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -32,10 +33,10 @@ bool finite(const glm::vec4& p) {
 // The cut point of edge in-out, as Mesa's draw clipper computes it (draw_pipe_clip.c, plain float
 // C): out + t (in - out) with t = d_out / (d_out - d_in), always from the outside vertex, so that
 // an edge shared by two triangles is cut at bit-identical points.
-ClipVertex cut(const ClipVertex& in, const ClipVertex& out, float d_in, float d_out,
+ClipRecord cut(const ClipRecord& in, const ClipRecord& out, float d_in, float d_out,
                int num_varyings) {
   const float t = d_out / (d_out - d_in);
-  ClipVertex r;
+  ClipRecord r;
   r.position = out.position + t * (in.position - out.position);
   for (int k = 0; k < num_varyings; ++k)
     r.varyings[k] = out.varyings[k] + t * (in.varyings[k] - out.varyings[k]);
@@ -45,12 +46,12 @@ ClipVertex cut(const ClipVertex& in, const ClipVertex& out, float d_in, float d_
 // One Sutherland-Hodgman pass against plane i.
 // generated[k]: whether vertex k was made by clipping (it then gets Mesa's unfused viewport
 // transform, see setup.cpp).
-int clip_against(const Planes& planes, int i, const ClipVertex* src, const bool* src_generated,
-                 int n, ClipVertex* dst, bool* dst_generated, int num_varyings) {
+int clip_against(const Planes& planes, int i, const ClipRecord* src, const bool* src_generated,
+                 int n, ClipRecord* dst, bool* dst_generated, int num_varyings) {
   int m = 0;
   for (int k = 0; k < n; ++k) {
-    const ClipVertex& cur = src[k];
-    const ClipVertex& next = src[(k + 1) % n];
+    const ClipRecord& cur = src[k];
+    const ClipRecord& next = src[(k + 1) % n];
     float dc = planes.distance(i, cur.position);
     float dn = planes.distance(i, next.position);
     bool cur_in = dc >= 0.0f;
@@ -75,25 +76,28 @@ ClipTest classify_triangle(const glm::vec4& a, const glm::vec4& b, const glm::ve
                            clip_outcode(c, guard_x, guard_y));
 }
 
-ClipResult clip_triangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
-                         int num_varyings, float guard_x, float guard_y, ClipPolygon& out) {
-  if (!finite(a.position) || !finite(b.position) || !finite(c.position))
-    return ClipResult::kInvalid;
+ClipResult clip_triangle(const float* a, const float* b, const float* c, int num_varyings,
+                         float guard_x, float guard_y, ClipPolygon& out) {
+  num_varyings = std::clamp(num_varyings, 0, kMaxVaryings);
+  const float* in[3] = {a, b, c};
+  for (int k = 0; k < 3; ++k) {
+    out.v[k].position = glm::vec4(in[k][0], in[k][1], in[k][2], in[k][3]);
+    std::copy_n(in[k] + 4, num_varyings, out.v[k].varyings.begin());
+  }
+  const glm::vec4 &pa = out.v[0].position, &pb = out.v[1].position, &pc = out.v[2].position;
+  if (!finite(pa) || !finite(pb) || !finite(pc)) return ClipResult::kInvalid;
   const Planes planes{guard_x, guard_y};
   // The plane and viewport-side bits of clip_outcode (w <= 0 is handled after clipping).
-  const std::uint32_t ca = clip_outcode(a.position, guard_x, guard_y) & ~kNonPositiveW;
-  const std::uint32_t cb = clip_outcode(b.position, guard_x, guard_y) & ~kNonPositiveW;
-  const std::uint32_t cc = clip_outcode(c.position, guard_x, guard_y) & ~kNonPositiveW;
+  const std::uint32_t ca = clip_outcode(pa, guard_x, guard_y) & ~kNonPositiveW;
+  const std::uint32_t cb = clip_outcode(pb, guard_x, guard_y) & ~kNonPositiveW;
+  const std::uint32_t cc = clip_outcode(pc, guard_x, guard_y) & ~kNonPositiveW;
   if (ca & cb & cc) return ClipResult::kRejected;
 
   const std::uint32_t to_clip = (ca | cb | cc) & kClipPlanes;
-  out.v[0] = a;
-  out.v[1] = b;
-  out.v[2] = c;
   out.count = 3;
   out.generated = {};
   if (to_clip) {
-    std::array<ClipVertex, kMaxClipVertices> tmp;
+    std::array<ClipRecord, kMaxClipVertices> tmp;
     std::array<bool, kMaxClipVertices> tmp_generated{};
     for (int i = 0; i < kClipPlaneCount && out.count >= 3; ++i) {
       if (!(to_clip & (1u << i))) continue;

@@ -2,6 +2,7 @@
 // Clip-space clipping of one triangle (GL 4.6 section 13.7) against the six planes of the view
 // volume (guard factors 1: Viewport::guard_x/y), with the plane order and float arithmetic of
 // Mesa's draw clipper (draw_pipe_clip.c), so that the cut vertices, and the pixels, are llvmpipe's.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -14,9 +15,15 @@ namespace tessref::raster {
 // Three vertices, each of near, far and the four guard planes can add at most one more.
 inline constexpr int kMaxClipVertices = 3 + 6;
 
+// A vertex of the clipped polygon: position and every varying a vertex can carry.
+struct ClipRecord {
+  glm::vec4 position{0.0f};
+  std::array<float, kMaxVaryings> varyings;
+};
+
 struct ClipPolygon {
   int count = 0;
-  std::array<ClipVertex, kMaxClipVertices> v;
+  std::array<ClipRecord, kMaxClipVertices> v;
   std::array<bool, kMaxClipVertices> generated{};  // made by clipping, not an input vertex
 };
 
@@ -81,7 +88,14 @@ inline bool outcode_projectable(std::uint32_t code) {
 
 // guard_x, guard_y: the guard planes are x = +-guard_x * w and y = +-guard_y * w, in clip space
 // (>= 1; Viewport gives 1: llvmpipe clips at the viewport sides).
-ClipResult clip_triangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
-                         int num_varyings, float guard_x, float guard_y, ClipPolygon& out);
+// a, b, c: each vertex's floats, gl_Position then num_varyings varyings
+// (TriangleBatch::vertex_data).
+ClipResult clip_triangle(const float* a, const float* b, const float* c, int num_varyings,
+                         float guard_x, float guard_y, ClipPolygon& out);
+inline ClipResult clip_triangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
+                                int num_varyings, float guard_x, float guard_y, ClipPolygon& out) {
+  return clip_triangle(&a.position.x, &b.position.x, &c.position.x,
+                       std::min(num_varyings, kRecordVaryings), guard_x, guard_y, out);
+}
 
 }  // namespace tessref::raster

@@ -143,10 +143,10 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
       throw std::invalid_argument("draw_triangles: index count not a multiple of 3");
     std::uint32_t largest = 0;  // a max reduction (vectorizes), then one test
     for (std::uint32_t i : batch.indices) largest = std::max(largest, i);
-    if (!batch.indices.empty() && largest >= batch.vertices.size())
+    if (!batch.indices.empty() && largest >= batch.vertex_count())
       throw std::invalid_argument("draw_triangles: index " + std::to_string(largest) +
                                   " past the vertex array (" +
-                                  std::to_string(batch.vertices.size()) + " vertices)");
+                                  std::to_string(batch.vertex_count()) + " vertices)");
   }
   const raster::Viewport vp{fb.width, fb.height, state.depth_range_near, state.depth_range_far};
   const TileGrid grid{(fb.width + kTileSize - 1) / kTileSize,
@@ -162,12 +162,14 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
 
   // Per-vertex clip-space work once per vertex (shared by the triangles that index it).
   std::vector<raster::ProjectedVertex>& projected = projected_scratch;
-  projected.resize(batch.vertices.size());
-  const std::size_t vertex_tasks = (batch.vertices.size() + kProjectVertices - 1) / kProjectVertices;
+  const std::size_t vertex_count = batch.vertex_count();
+  const int records = batch.records();
+  projected.resize(vertex_count);
+  const std::size_t vertex_tasks = (vertex_count + kProjectVertices - 1) / kProjectVertices;
   auto project = [&](std::size_t c) {
     const std::size_t first = c * kProjectVertices;
-    raster::project_vertices(batch.vertices.data() + first,
-                             std::min(kProjectVertices, batch.vertices.size() - first), vp,
+    raster::project_vertices(batch.vertices.data() + first * std::size_t(records),
+                             std::min(kProjectVertices, vertex_count - first), records, vp,
                              projected.data() + first);
   };
   if (vertex_tasks == 1) project(0);

@@ -30,11 +30,12 @@ struct WindowVertex {
 // exact for every x_w the viewport transform can produce (W >= 1).
 // Vertices made by clipping (generated) go through Mesa's clipper instead, plain C floats:
 // x_ndc * scale + translate rounded twice.
-WindowVertex to_window(const ClipVertex& v, const Viewport& vp, bool generated = false) {
-  const float inv_w = 1.0f / v.position.w;
-  const float x_ndc = v.position.x * inv_w;
-  const float y_ndc = v.position.y * inv_w;
-  const float z_ndc = v.position.z * inv_w;
+WindowVertex to_window(const glm::vec4& position, const float* varyings, const Viewport& vp,
+                       bool generated = false) {
+  const float inv_w = 1.0f / position.w;
+  const float x_ndc = position.x * inv_w;
+  const float y_ndc = position.y * inv_w;
+  const float z_ndc = position.z * inv_w;
   WindowVertex r;
   const float sx = 0.5f * float(vp.width), sy = 0.5f * float(vp.height);
   const float sz = 0.5f * (vp.depth_far - vp.depth_near);
@@ -52,7 +53,7 @@ WindowVertex to_window(const ClipVertex& v, const Viewport& vp, bool generated =
   const float hi = std::max(vp.depth_near, vp.depth_far);
   r.z = std::clamp(z, lo, hi);
   r.inv_w = inv_w;
-  r.varyings = v.varyings.data();
+  r.varyings = varyings;
   return r;
 }
 
@@ -69,8 +70,8 @@ void pixel_range(std::int64_t lo, std::int64_t hi, int size, int& first, int& la
   last = int(std::min<std::int64_t>(size - 1, (hi - half) >> 8));
 }
 
-WindowVertex from_projected(const ProjectedVertex& p, const ClipVertex& v) {
-  return WindowVertex{p.x, p.y, p.xf, p.yf, p.z, p.inv_w, v.varyings.data()};
+WindowVertex from_projected(const ProjectedVertex& p, const float* varyings) {
+  return WindowVertex{p.x, p.y, p.xf, p.yf, p.z, p.inv_w, varyings};
 }
 
 // The snapped area test, culling and the box of candidate pixels, from the snapped positions
@@ -99,7 +100,7 @@ bool piece_box(const V& a, const V& b, const V& c, const Viewport& vp, bool cull
 // covers no center): what remains of setup_piece.
 // Flat varyings (flat.mask) take the provoking vertex's values, with zero differences.
 struct FlatVaryings {
-  std::uint32_t mask = 0;
+  const VaryingMask* mask = nullptr;  // null: none is flat
   const float* provoking = nullptr;
 };
 
@@ -192,7 +193,7 @@ void store_piece(const WindowVertex& a, const WindowVertex& b, const WindowVerte
   }
   if (flat.mask)
     for (int j = 0; j < num_varyings; ++j)
-      if (flat.mask & (1u << j)) {
+      if ((*flat.mask)[std::size_t(j)]) {
         out[j] = flat.provoking[j];
         out[num_varyings + j] = out[2 * num_varyings + j] = 0.0f;
       }
@@ -219,8 +220,8 @@ PieceResult setup_piece(const WindowVertex& a, const WindowVertex& b, const Wind
 float Viewport::guard_x() const { return 1.0f; }
 float Viewport::guard_y() const { return 1.0f; }
 
-void project_vertices(const ClipVertex* vertices, std::size_t count, const Viewport& vp,
-                      ProjectedVertex* out) {
+void project_vertices(const ClipVertex* vertices, std::size_t count, int records,
+                      const Viewport& vp, ProjectedVertex* out) {
   static const bool kernel = project_kernel_available();
   if (kernel && simd_path() == SimdPath::Avx2) {
     static_assert(sizeof(ClipVertex) % sizeof(float) == 0 && offsetof(ClipVertex, position) == 0);
@@ -230,15 +231,16 @@ void project_vertices(const ClipVertex* vertices, std::size_t count, const Viewp
                                0.5f * (vp.depth_far + vp.depth_near),
                                std::min(vp.depth_near, vp.depth_far),
                                std::max(vp.depth_near, vp.depth_far)};
-    project_vertices_avx2(reinterpret_cast<const float*>(vertices), sizeof(ClipVertex) / sizeof(float),
-                          count, params, out);
+    project_vertices_avx2(reinterpret_cast<const float*>(vertices),
+                          std::size_t(records) * sizeof(ClipVertex) / sizeof(float), count, params, out);
     return;
   }
   for (std::size_t i = 0; i < count; ++i) {
     ProjectedVertex& p = out[i];
-    p.code = clip_outcode(vertices[i].position, vp.guard_x(), vp.guard_y());
+    const ClipVertex& v = vertices[i * std::size_t(records)];
+    p.code = clip_outcode(v.position, vp.guard_x(), vp.guard_y());
     if (!outcode_projectable(p.code)) continue;  // only clipped (or dropped) triangles use it
-    const WindowVertex w = to_window(vertices[i], vp);
+    const WindowVertex w = to_window(v.position, nullptr, vp);
     p.x = w.x;
     p.y = w.y;
     p.xf = w.xf;
@@ -256,7 +258,10 @@ SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index,
   const std::size_t i0 = batch.vertex_index(index, 0), i1 = batch.vertex_index(index, 1),
                     i2 = batch.vertex_index(index, 2);
   const int nv = std::clamp(batch.num_varyings, 0, kMaxVaryings);
-  const FlatVaryings flat{batch.flat_varyings, batch.vertices[i2].varyings.data()};
+  const float* d0 = batch.vertex_data(i0);
+  const float* d1 = batch.vertex_data(i1);
+  const float* d2 = batch.vertex_data(i2);
+  const FlatVaryings flat{batch.flat_varyings.any() ? &batch.flat_varyings : nullptr, d2 + 4};
   switch (classify_outcodes(projected[i0].code, projected[i1].code, projected[i2].code)) {
     case ClipTest::kInvalid:
     case ClipTest::kRejected: return SetupOutcome::kClippedAway;
@@ -267,22 +272,20 @@ SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index,
         return SetupOutcome::kCulled;
       pieces_out = 1;
       if (!box.empty())
-        store_piece(from_projected(projected[i0], batch.vertices[i0]),
-                    from_projected(projected[i1], batch.vertices[i1]),
-                    from_projected(projected[i2], batch.vertices[i2]), box, vp, nv, flat, tris,
-                    varyings);
+        store_piece(from_projected(projected[i0], d0 + 4), from_projected(projected[i1], d1 + 4),
+                    from_projected(projected[i2], d2 + 4), box, vp, nv, flat, tris, varyings);
       return SetupOutcome::kRasterized;
     }
     case ClipTest::kNeedsClip: break;
   }
 
-  const ClipVertex* in[3] = {&batch.vertices[i0], &batch.vertices[i1], &batch.vertices[i2]};
   ClipPolygon poly;
-  ClipResult clipped = clip_triangle(*in[0], *in[1], *in[2], nv, vp.guard_x(), vp.guard_y(), poly);
+  ClipResult clipped = clip_triangle(d0, d1, d2, nv, vp.guard_x(), vp.guard_y(), poly);
   if (clipped != ClipResult::kKept) return SetupOutcome::kClippedAway;
 
   WindowVertex w[kMaxClipVertices];
-  for (int k = 0; k < poly.count; ++k) w[k] = to_window(poly.v[k], vp, poly.generated[k]);
+  for (int k = 0; k < poly.count; ++k)
+    w[k] = to_window(poly.v[k].position, poly.v[k].varyings.data(), vp, poly.generated[k]);
   // A planar convex polygon: fan from its first vertex.
   for (int k = 1; k + 1 < poly.count; ++k) {
     if (setup_piece(w[0], w[k], w[k + 1], vp, cull_back_faces, nv, flat, tris, varyings) ==
@@ -299,9 +302,13 @@ SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index, const
   TriangleBatch one;
   one.num_varyings = batch.num_varyings;
   one.flat_varyings = batch.flat_varyings;
-  for (int k = 0; k < 3; ++k) one.vertices.push_back(batch.corner(index, k));
+  const std::size_t r = std::size_t(batch.records());
+  for (int k = 0; k < 3; ++k) {
+    const ClipVertex* v = &batch.corner(index, k);
+    one.vertices.insert(one.vertices.end(), v, v + r);
+  }
   ProjectedVertex projected[3];
-  project_vertices(one.vertices.data(), 3, vp, projected);
+  project_vertices(one.vertices.data(), 3, one.records(), vp, projected);
   return setup_triangle(one, 0, projected, vp, cull_back_faces, tris, varyings, pieces_out);
 }
 

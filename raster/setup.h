@@ -47,8 +47,9 @@ inline constexpr int kSmallTrianglePixels = 8;
 
 // Projects every vertex (ProjectedVertex, project_kernel.h): the AVX2 + FMA kernel where the CPU
 // has it and simd_path() is AVX2, else the portable code; the same bits either way.
-void project_vertices(const ClipVertex* vertices, std::size_t count, const Viewport& vp,
-                      ProjectedVertex* out);
+// `records`: ClipVertex records per vertex (TriangleBatch::records).
+void project_vertices(const ClipVertex* vertices, std::size_t count, int records,
+                      const Viewport& vp, ProjectedVertex* out);
 
 // Sets up triangle `index` of batch, whose vertices were projected into `projected` (indexed like
 // batch.vertices): clips it if needed and appends its pieces (0 to 7 triangles) to tris, their

@@ -7,9 +7,13 @@ TriangleBatch expand_indices(const TriangleBatch& batch) {
   out.num_varyings = batch.num_varyings;
   out.flat_varyings = batch.flat_varyings;
   const std::size_t n = batch.triangle_count();
-  out.vertices.reserve(3 * n);
+  const std::size_t r = std::size_t(batch.records());
+  out.vertices.reserve(3 * n * r);
   for (std::size_t t = 0; t < n; ++t)
-    for (int k = 0; k < 3; ++k) out.vertices.push_back(batch.corner(t, k));
+    for (int k = 0; k < 3; ++k) {
+      const ClipVertex* v = &batch.corner(t, k);
+      out.vertices.insert(out.vertices.end(), v, v + r);
+    }
   return out;
 }
 
@@ -21,11 +25,11 @@ void append_triangles(TriangleBatch& dst, const TriangleBatch& src) {
     return;
   }
   if (!dst.indexed) {  // turn dst's triples into an identity index list
-    dst.indices.resize(dst.vertices.size());
+    dst.indices.resize(dst.vertex_count());
     for (std::size_t k = 0; k < dst.indices.size(); ++k) dst.indices[k] = std::uint32_t(k);
     dst.indexed = true;
   }
-  const auto base = std::uint32_t(dst.vertices.size());
+  const auto base = std::uint32_t(dst.vertex_count());
   const std::size_t n = 3 * src.triangle_count();
   for (std::size_t k = 0; k < n; ++k)
     dst.indices.push_back(base + std::uint32_t(src.vertex_index(k / 3, int(k % 3))));

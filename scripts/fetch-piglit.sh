@@ -63,7 +63,8 @@ log "unpacking piglit $version"
 mkdir "$work/x"
 dpkg-deb --fsys-tarfile "${debs[0]}" |
   tar -x -C "$work/x" --wildcards './usr/lib/*/piglit/tests/spec/*.shader_test' \
-    './usr/lib/*/piglit/tests/spec/arb_tessellation_shader/*'
+    './usr/lib/*/piglit/tests/spec/arb_tessellation_shader/*' ||
+  die "cannot unpack ${debs[0]}"
 found=("$work"/x/usr/lib/*/piglit/tests/spec/arb_tessellation_shader)
 [ -d "${found[0]}" ] || die "the package has no tests/spec/arb_tessellation_shader"
 mkdir -p "$work/new/tests"

@@ -126,7 +126,8 @@ struct Directive {
 
 class Rewriter {
  public:
-  explicit Rewriter(const ShaderSource& source) : source_(source), code_(blank_comments(source.text)) {
+  explicit Rewriter(const ShaderSource& source)
+      : source_(source), code_(blank_comments(source.text)) {
     scan();
   }
 
@@ -198,8 +199,9 @@ class Rewriter {
   // Every shader compiles as #version 450 core (460 stays 460): glslang's OpenGL SPIR-V path
   // needs 330 or later and refuses the compatibility profile.
   int rewrite_version() {
-    auto it = std::find_if(directives_.begin(), directives_.end(),
-                           [](const Directive& d) { return !d.words.empty() && d.words[0] == "version"; });
+    auto it = std::find_if(directives_.begin(), directives_.end(), [](const Directive& d) {
+      return !d.words.empty() && d.words[0] == "version";
+    });
     if (it == directives_.end()) {
       note(0, "no #version (GLSL 1.10): compiled as #version 450 core");
       return 450;
@@ -244,7 +246,8 @@ class Rewriter {
   void rewrite_fragment_outputs() {
     const Word* color = find_word("gl_FragColor");
     const Word* data = find_word("gl_FragData");
-    if (color && data) fail(data->pos, "a fragment shader writes gl_FragColor or gl_FragData, not both");
+    if (color && data)
+      fail(data->pos, "a fragment shader writes gl_FragColor or gl_FragData, not both");
     if (color) {
       rename_all("gl_FragColor", "tessref_FragColor");
       declarations_.push_back("layout(location = 0) out vec4 tessref_FragColor;");
@@ -274,7 +277,8 @@ class Rewriter {
   }
 
   const Word* find_word(std::string_view text) const {
-    auto it = std::find_if(words_.begin(), words_.end(), [&](const Word& w) { return w.text == text; });
+    auto it = std::find_if(words_.begin(), words_.end(),
+                           [&](const Word& w) { return w.text == text; });
     return it == words_.end() ? nullptr : &*it;
   }
   int rename_all(std::string_view from, std::string_view to) {
@@ -291,15 +295,18 @@ class Rewriter {
     const Word* first = find_word(from);
     if (!first) return;
     const int count = rename_all(from, to);
-    note(first->pos, "'" + std::string(from) + "' read as '" + std::string(to) + "'" +
-                         (count > 1 ? " (" + std::to_string(count) + " times)" : ""));
+    std::string what = "'";  // appended piecewise: GCC 12 warns (-Wrestrict) on "..." + string
+    what.append(from).append("' read as '").append(to).append("'");
+    if (count > 1) what.append(" (").append(std::to_string(count)).append(" times)");
+    note(first->pos, what);
   }
 
   // "#version V core", the declarations, then "#line first_line" so that the user's text keeps
   // its line numbers (GLSL 3.30+: #line N numbers the next line N).
   RewrittenSource build(int version) {
     std::string text = source_.text;
-    std::sort(edits_.begin(), edits_.end(), [](const Edit& a, const Edit& b) { return a.pos > b.pos; });
+    std::sort(edits_.begin(), edits_.end(),
+              [](const Edit& a, const Edit& b) { return a.pos > b.pos; });
     for (const Edit& e : edits_) text.replace(e.pos, e.length, e.with);
     std::string header = "#version " + std::to_string(version) + " core\n";
     for (const std::string& d : declarations_) header += d + "\n";

@@ -148,30 +148,39 @@ void control_task(const TessDrawInput& input, std::size_t range_first, std::size
   }
 }
 
-// Evaluates the TES over one patch's pattern into dst (one ClipVertex per domain point).
+// Evaluates the TES over one patch's pattern into dst (vertex_records(num_varyings) ClipVertex
+// records per domain point).
 void evaluate_patch(const TessEvalProgram& tes, const PatchOutput& patch, int primitive_id,
                     const TessPattern& pattern, int num_varyings, ClipVertex* dst) {
   TessEvalBatch batch;
-  // The batch's rows in ClipVertex order; varyings the program does not write are stored as 0.
-  static_assert(sizeof(ClipVertex) == 16 * sizeof(float) && kMaxVaryings == 12);
+  // The batch's rows in the vertex's memory order; varyings the program does not write (and the
+  // last record's padding) are stored as 0.
   static const float zeros[kTessEvalBatch] = {};
-  const float* rows[16];
+  const int records = vertex_records(num_varyings);
+  const int floats = 16 * records;
+  const float* rows[16 * vertex_records(kMaxVaryings)];
   for (int c = 0; c < 4; ++c) rows[c] = batch.position[c];
-  for (int k = 0; k < kMaxVaryings; ++k) rows[4 + k] = k < num_varyings ? batch.varyings[k] : zeros;
+  for (int k = 0; k + 4 < floats; ++k) rows[4 + k] = k < num_varyings ? batch.varyings[k] : zeros;
   const StoreVerticesKernel store = store_vertices_kernel();
   const std::size_t n = pattern.points.coords.size();
   for (std::size_t start = 0; start < n; start += kTessEvalBatch) {
     batch.count = int(std::min<std::size_t>(kTessEvalBatch, n - start));
     for (int c = 0; c < 3; ++c) batch.tess_coord[c] = pattern.coord[c].data() + start;
     tes.evaluate_batch(patch, primitive_id, batch);
-    store(rows, batch.count, reinterpret_cast<float*>(dst + start));
+    float* out = reinterpret_cast<float*>(dst + start * std::size_t(records));
+    if (records == 1) {  // the common case, one 64-byte record: the SIMD kernel
+      store(rows, batch.count, out);
+      continue;
+    }
+    for (int i = 0; i < batch.count; ++i)
+      for (int c = 0; c < floats; ++c) out[std::size_t(floats) * i + c] = rows[c][i];
   }
 }
 
 void append_dump(std::uint32_t patch_id, const TessPattern& pattern, const ClipVertex* v,
-                 std::vector<TessDumpRecord>& dump) {
+                 int records, std::vector<TessDumpRecord>& dump) {
   for (std::size_t i = 0; i < pattern.points.coords.size(); ++i) {
-    const auto& vy = v[i].varyings;
+    const auto& vy = v[i * std::size_t(records)].varyings;
     dump.push_back(TessDumpRecord{
         patch_id, pattern.points.coords[i],
         glm::vec3(vy[kVaryingPosition], vy[kVaryingPosition + 1], vy[kVaryingPosition + 2]),
@@ -185,6 +194,7 @@ void evaluate_task(std::size_t range_first, std::size_t first, std::size_t last,
                    const TessEvalProgram& tes, const TessOptions& options,
                    ExecutorScratch& ex, TaskScratch& task, TriangleBatch& out) {
   const int nv = std::clamp(tes.num_varyings(), 0, kMaxVaryings);
+  const std::size_t records = std::size_t(vertex_records(nv));
   for (std::size_t p = first; p < last; ++p) {
     const PatchSlot& slot = ex.slots[p - range_first];
     if (!slot.pattern) continue;
@@ -196,15 +206,15 @@ void evaluate_task(std::size_t range_first, std::size_t first, std::size_t last,
     auto t0 = Clock::now();
     ClipVertex* evaluated = nullptr;
     if (domain.vertices_per_primitive == 3) {
-      evaluated = out.vertices.data() + slot.first_vertex;
+      evaluated = out.vertices.data() + slot.first_vertex * records;
     } else {
-      task.evaluated.resize(n);
+      task.evaluated.resize(n * records);
       evaluated = task.evaluated.data();
     }
     evaluate_patch(tes, patch, int(p), pattern, nv, evaluated);
     task.stats.tes_seconds += seconds_since(t0);
     task.stats.domain_points += n;
-    if (options.dump) append_dump(std::uint32_t(p), pattern, evaluated, task.dump);
+    if (options.dump) append_dump(std::uint32_t(p), pattern, evaluated, int(records), task.dump);
 
     // Primitive assembly in the generator's emission order.
     const std::size_t prims = domain.primitive_count();
@@ -228,7 +238,8 @@ void evaluate_task(std::size_t range_first, std::size_t first, std::size_t last,
       const std::size_t base = sink->size();
       sink->resize(base + used);  // geometric growth; the task's buffers are reused across chunks
       ClipVertex* dst = sink->data() + base;
-      for (std::size_t i = 0; i < used; ++i) dst[i] = evaluated[domain.indices[i]];
+      // Lines and points keep a vertex's first record (gl_Position and 12 varyings).
+      for (std::size_t i = 0; i < used; ++i) dst[i] = evaluated[domain.indices[i] * records];
     }
   }
 }
@@ -273,17 +284,18 @@ TessStats tessellate_range(const TessDrawInput& input, std::size_t first_patch,
   if (overwrite) out.indexed = true;
   out.num_varyings = tes.num_varyings();
   out.flat_varyings = tes.flat_varyings();
+  const std::size_t records = std::size_t(out.records());
   if (!out.indexed) {  // earlier contents as consecutive triples: index them as they are
-    out.indices.resize(out.vertices.size() / 3 * 3);
+    out.indices.resize(out.vertex_count() / 3 * 3);
     for (std::size_t k = 0; k < out.indices.size(); ++k) out.indices[k] = std::uint32_t(k);
-    out.vertices.resize(out.indices.size());
+    out.vertices.resize(out.indices.size() * records);
     out.indexed = true;
   }
-  const std::size_t first_vertex = overwrite ? 0 : out.vertices.size();
+  const std::size_t first_vertex = overwrite ? 0 : out.vertex_count();
   const std::size_t first_index = overwrite ? 0 : out.indices.size();
   last_patch = std::min(last_patch, input.patch_count());
   if (first_patch >= last_patch) {
-    out.vertices.resize(first_vertex);
+    out.vertices.resize(first_vertex * records);
     out.indices.resize(first_index);
     return TessStats{};
   }
@@ -319,7 +331,7 @@ TessStats tessellate_range(const TessDrawInput& input, std::size_t first_patch,
   }
   if (vertices > std::size_t(UINT32_MAX))
     throw std::length_error("tessellate: more than 2^32 vertices in one batch");
-  out.vertices.resize(vertices);
+  out.vertices.resize(vertices * records);
   out.indices.resize(indices);
 
   parallel.for_each(tasks, [&](std::size_t t) {

@@ -18,9 +18,12 @@
 namespace tessref {
 
 // Limits, at or above GL's minimums where GL names one (MAX_PATCH_VERTICES >= 32).
-inline constexpr int kMaxStageAttributes = 8;   // vec4 slots in one stage's per-vertex out block
+// gl_Position and 32 locations (GL 4.5's minimum MAX_TESS_CONTROL_INPUT_COMPONENTS, 128): vec4 slots
+// in one stage's per-vertex out block.
+inline constexpr int kMaxStageAttributes = 33;
 inline constexpr int kMaxPatchVertices = 32;    // GL_PATCH_VERTICES and layout(vertices = N)
-inline constexpr int kMaxPatchAttributes = 16;  // vec4 'patch out' slots written by a TCS
+// 'patch out' vec4 slots written by a TCS: GL 4.5's minimum MAX_TESS_PATCH_COMPONENTS, 120.
+inline constexpr int kMaxPatchAttributes = 30;
 
 // Attribute slots of the vertex shader output the pipeline hands to the TCS.
 inline constexpr int kAttrPosition = 0;  // world position (xyz, 1)
@@ -94,8 +97,8 @@ class TessEvalProgram {
   virtual ~TessEvalProgram() = default;
   virtual TessLayout layout() const = 0;
   virtual int num_varyings() const { return kBuiltinVaryings; }  // <= kMaxVaryings
-  // Bit j: varying j is flat (TriangleBatch::flat_varyings).
-  virtual std::uint32_t flat_varyings() const { return 0; }
+  // Varyings that are flat (TriangleBatch::flat_varyings).
+  virtual VaryingMask flat_varyings() const { return {}; }
   // tess_coord: gl_TessCoord as generated (triangles: (u, v, w), u weighs gl_in[0], v gl_in[1],
   // w gl_in[2]; quads and isolines: (u, v, 0)).
   virtual ClipVertex evaluate(const glm::vec3& tess_coord, const PatchOutput& patch,

@@ -142,7 +142,7 @@ GlslProgram::GlslProgram(const shader::CompiledProgram& compiled, shader::ExecLi
     for (const IoWord& w : v.words) {
       if (!flat && w.scalar == Scalar::F32) continue;
       for (int h = 0; h < shader::scalar_words(w.scalar); ++h)
-        if (w.io_word + h >= 4 && w.io_word + h - 4 < 32) flat_varyings_ |= 1u << (w.io_word + h - 4);
+        if (w.io_word + h >= 4 && w.io_word + h - 4 < std::uint32_t(kMaxVaryings)) flat_varyings_.set(w.io_word + h - 4);
     }
   }
 }

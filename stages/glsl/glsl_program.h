@@ -94,7 +94,7 @@ class GlslProgram {
   std::unique_ptr<StageProgram> vs_, tcs_, tes_, fs_;
   std::vector<const shader::Texture*> textures_;
   int num_varyings_ = 0;
-  std::uint32_t flat_varyings_ = 0;  // TriangleBatch::flat_varyings
+  VaryingMask flat_varyings_;  // TriangleBatch::flat_varyings
 };
 
 }  // namespace tessref::glsl

@@ -36,18 +36,18 @@ class PassThroughControl final : public TessControlProgram {
 
 class GlslEvaluation final : public TessEvalProgram {
  public:
-  GlslEvaluation(const StageProgram& sp, int varyings, std::uint32_t flat)
+  GlslEvaluation(const StageProgram& sp, int varyings, const VaryingMask& flat)
       : sp_(sp), varyings_(varyings), flat_(flat) {}
   TessLayout layout() const override { return layout_of(sp_.exe->module().modes); }
   int num_varyings() const override { return varyings_; }
-  std::uint32_t flat_varyings() const override { return flat_; }
+  VaryingMask flat_varyings() const override { return flat_; }
   ClipVertex evaluate(const glm::vec3& tess_coord, const PatchOutput& patch, int primitive_id) const override;
   void evaluate_batch(const PatchOutput& patch, int primitive_id, TessEvalBatch& batch) const override;
 
  private:
   const StageProgram& sp_;
   int varyings_;
-  std::uint32_t flat_;
+  VaryingMask flat_;
 };
 
 class GlslFragment final : public FragmentProgram {

@@ -117,9 +117,9 @@ TEST(ProjectVertices, KernelAndPortableCodeAgreeBitForBit) {
   const SimdPath saved = simd_path();
   std::vector<raster::ProjectedVertex> a(vs.size()), b(vs.size());
   set_simd_path(SimdPath::Avx2);
-  raster::project_vertices(vs.data(), vs.size(), vp, a.data());
+  raster::project_vertices(vs.data(), vs.size(), 1, vp, a.data());
   set_simd_path(SimdPath::Scalar);
-  raster::project_vertices(vs.data(), vs.size(), vp, b.data());
+  raster::project_vertices(vs.data(), vs.size(), 1, vp, b.data());
   set_simd_path(saved);
   std::size_t projected = 0;
   for (std::size_t i = 0; i < vs.size(); ++i) {

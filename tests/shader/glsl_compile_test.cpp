@@ -35,7 +35,8 @@ struct Instruction {
 };
 
 struct Module {
-  explicit Module(const std::vector<std::uint32_t>& words) : header(words.begin(), words.begin() + 5) {
+  explicit Module(const std::vector<std::uint32_t>& words)
+      : header(words.begin(), words.begin() + 5) {
     for (std::size_t i = 5; i < words.size();) {
       const std::uint32_t count = words[i] >> 16;
       instructions.push_back({static_cast<spv::Op>(words[i] & 0xffff),
@@ -261,6 +262,22 @@ void main() { out_color = first + second + third + fifth; }
   EXPECT_NE(vs.location("second"), 3u);
 }
 
+TEST(GlslCompile, BoolUniformsAreKept) {
+  // glslang stores them in UniformConstant, which the SPIR-V validator refuses on its own.
+  const char* fragment = R"(#version 450
+in vec4 color;
+uniform bool u_flag;
+uniform bvec2 u_flags[2];
+layout(location = 0) out vec4 out_color;
+void main() { out_color = u_flag && u_flags[1].y ? color : vec4(0.0); }
+)";
+  const Module fs = module(compile_program({{Stage::Vertex, "b.vert", 1, kVertex},
+                                            {Stage::Fragment, "b.frag", 1, fragment}}),
+                           Stage::Fragment);
+  EXPECT_TRUE(fs.location("u_flag"));
+  EXPECT_TRUE(fs.location("u_flags"));
+}
+
 // ---------------------------------------------------------------------------------------------
 // Rewrites
 
@@ -280,6 +297,18 @@ TEST(GlslCompile, FragColorBecomesAnOutputAtLocationZero) {
   EXPECT_EQ(Module(fs.spirv).location("tessref_FragColor"), 0u);
 }
 
+TEST(GlslCompile, CommentsAreNotRewritten) {
+  const char* fragment = R"(#version 450
+// Unlike gl_FragColor, attribute and varying, texture2D() is not here.
+/* #extension GL_ARB_tessellation_shader : require */
+layout(location = 0) out vec4 out_color;
+void main() { out_color = vec4(1.0); }
+)";
+  const CompiledProgram program = compile_program(
+      {{Stage::Vertex, "t.vert", 1, kVertex}, {Stage::Fragment, "t.frag", 1, fragment}});
+  EXPECT_TRUE(stage(program, Stage::Fragment).rewrites.empty());
+}
+
 TEST(GlslCompile, FragDataBecomesAnOutputArray) {
   const char* fragment = "#version 150\nvoid main() { gl_FragData[1] = vec4(1.0); }\n";
   const CompiledProgram program = compile_program(
@@ -291,12 +320,14 @@ TEST(GlslCompile, FragDataBecomesAnOutputArray) {
 
 TEST(GlslCompile, VersionLinesBecome450Core) {
   const char* no_version = "void main() { gl_Position = vec4(0.0); }\n";
-  const char* compatibility = "#version 150 compatibility\nout vec4 o;\nvoid main() { o = vec4(1.0); }\n";
+  const char* compatibility =
+      "#version 150 compatibility\nout vec4 o;\nvoid main() { o = vec4(1.0); }\n";
   const CompiledProgram program =
       compile_program({{Stage::Vertex, "a.vert", 7, no_version},
                        {Stage::Fragment, "a.frag", 12, compatibility}});
   EXPECT_EQ(stage(program, Stage::Vertex).rewrites,
-            std::vector<std::string>{"a.vert:7: no #version (GLSL 1.10): compiled as #version 450 core"});
+            std::vector<std::string>{
+                "a.vert:7: no #version (GLSL 1.10): compiled as #version 450 core"});
   EXPECT_EQ(stage(program, Stage::Fragment).rewrites,
             std::vector<std::string>{
                 "a.frag:12: #version 150 compatibility compiled as #version 450 core"});
@@ -397,7 +428,8 @@ in vec3 color;
 layout(location = 0) out vec4 out_color;
 void main() { out_color = vec4(color, 1.0); }
 )";
-  EXPECT_EQ(error_of({{Stage::Vertex, "m.vert", 1, kVertex}, {Stage::Fragment, "m.frag", 1, fragment}}),
+  EXPECT_EQ(error_of({{Stage::Vertex, "m.vert", 1, kVertex},
+                      {Stage::Fragment, "m.frag", 1, fragment}}),
             "m.frag:4: error: link error: fragment shader input 'color' is vec3 but the vertex "
             "shader output (m.vert:7) is vec4");
 }
@@ -408,7 +440,8 @@ in vec4 never_read;
 layout(location = 0) out vec4 out_color;
 void main() { out_color = vec4(1.0); }
 )";
-  EXPECT_EQ(error_of({{Stage::Vertex, "u.vert", 1, kVertex}, {Stage::Fragment, "u.frag", 1, fragment}}),
+  EXPECT_EQ(error_of({{Stage::Vertex, "u.vert", 1, kVertex},
+                      {Stage::Fragment, "u.frag", 1, fragment}}),
             "");
 }
 
@@ -480,7 +513,9 @@ std::string read_twin(const std::string& path) {
   return text.str();
 }
 
-ShaderSource twin(Stage stage, const std::string& path) { return {stage, path, 1, read_twin(path)}; }
+ShaderSource twin(Stage stage, const std::string& path) {
+  return {stage, path, 1, read_twin(path)};
+}
 
 void expect_twins_link(const std::string& scheme) {
   SCOPED_TRACE(scheme);
