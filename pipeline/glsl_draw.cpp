@@ -25,6 +25,9 @@ DrawStats draw_glsl_patches(const glsl::GlslProgram& program,
     throw std::invalid_argument("draw: GL_PATCHES needs a tessellation evaluation shader");
   if (call.patch_vertices < 1 || call.patch_vertices > kMaxPatchVertices)
     throw std::invalid_argument("draw: GL_PATCH_VERTICES must be 1.." + std::to_string(kMaxPatchVertices));
+  // Atomic counters: one thread, so that the counts each invocation sees are the same every run.
+  const Parallel serial(1);
+  const Parallel& par = program.uses_atomic_counters() ? serial : parallel;
   DrawStats stats;
   const auto tcs = program.control(call.patch_vertices, call.default_outer, call.default_inner);
   const auto tes = program.evaluation();
@@ -32,7 +35,7 @@ DrawStats draw_glsl_patches(const glsl::GlslProgram& program,
   std::vector<StageVertex> shaded(call.count);
   for (int instance = 0; instance < call.instances; ++instance) {
     auto t0 = Clock::now();
-    program.run_vertices(attributes, call.first, call.count, instance, shaded.data(), parallel);
+    program.run_vertices(attributes, call.first, call.count, instance, shaded.data(), par);
     stats.vertices_shaded += call.count;
     stats.vertex_seconds += seconds_since(t0);
 
@@ -40,11 +43,11 @@ DrawStats draw_glsl_patches(const glsl::GlslProgram& program,
     double raster_seconds = 0.0;
     const TessDrawInput input{shaded, {}, call.patch_vertices};
     stats.triangles_in += input.patch_count();
-    stats.tess += tessellate_chunks(input, kChunkPatches, *tcs, *tes, tess_options, parallel,
+    stats.tess += tessellate_chunks(input, kChunkPatches, *tcs, *tes, tess_options, par,
                                     [&](const TriangleBatch& batch) {
                                       const auto r0 = Clock::now();
                                       stats.triangles_generated += batch.triangle_count();
-                                      stats.raster += draw_triangles(batch, raster_state, *fs, fb, parallel);
+                                      stats.raster += draw_triangles(batch, raster_state, *fs, fb, par);
                                       raster_seconds += seconds_since(r0);
                                     });
     stats.raster_seconds += raster_seconds;

@@ -30,6 +30,15 @@ const std::map<std::string, long long>& limits() {
       {"GL_MAX_VARYING_COMPONENTS", kMaxVaryings},
       {"GL_MAX_VARYING_FLOATS", kMaxVaryings},
       {"GL_MAX_VERTEX_ATTRIBS", 16},
+      // Atomic counters: any stage, any binding (counter buffers are plain arrays here).
+      {"GL_MAX_VERTEX_ATOMIC_COUNTER_BUFFERS", 8},
+      {"GL_MAX_TESS_CONTROL_ATOMIC_COUNTER_BUFFERS", 8},
+      {"GL_MAX_TESS_EVALUATION_ATOMIC_COUNTER_BUFFERS", 8},
+      {"GL_MAX_FRAGMENT_ATOMIC_COUNTER_BUFFERS", 8},
+      {"GL_MAX_VERTEX_ATOMIC_COUNTERS", 1024},
+      {"GL_MAX_TESS_CONTROL_ATOMIC_COUNTERS", 1024},
+      {"GL_MAX_TESS_EVALUATION_ATOMIC_COUNTERS", 1024},
+      {"GL_MAX_FRAGMENT_ATOMIC_COUNTERS", 1024},
   };
   return table;
 }
@@ -41,7 +50,8 @@ const std::set<std::string>& extensions() {
       "GL_ARB_explicit_uniform_location", "GL_ARB_gpu_shader5", "GL_ARB_shading_language_420pack",
       "GL_ARB_enhanced_layouts", "GL_ARB_texture_rectangle", "GL_ARB_uniform_buffer_object",
       "GL_ARB_shader_bit_encoding", "GL_ARB_draw_instanced", "GL_ARB_instanced_arrays",
-      "GL_ARB_fragment_coord_conventions", "GL_ARB_vertex_array_object"};
+      "GL_ARB_fragment_coord_conventions", "GL_ARB_vertex_array_object",
+      "GL_ARB_shader_atomic_counters", "GL_EXT_shader_integer_mix"};
   return names;
 }
 
@@ -343,11 +353,17 @@ class Runner {
         t->width = int(n[2]);
         t->height = int(n[3]);
         t->texels.resize(std::size_t(t->width) * t->height * 4);
+        // piglit_checkerboard_texture: 2 x 2 squares, GL_RGBA (8 bits a channel), GL_NEAREST,
+        // GL_CLAMP_TO_BORDER with a red border.
         for (int j = 0; j < t->height; ++j)
           for (int i = 0; i < t->width; ++i) {
             const bool odd = ((i / std::max(1, t->width / 2)) + (j / std::max(1, t->height / 2))) & 1;
-            for (int k = 0; k < 4; ++k) t->texels[(std::size_t(j) * t->width + i) * 4 + k] = float(n[odd ? 8 + k : 4 + k]);
+            for (int k = 0; k < 4; ++k)
+              t->texels[(std::size_t(j) * t->width + i) * 4 + k] =
+                  std::round(std::clamp(float(n[odd ? 8 + k : 4 + k]), 0.0f, 1.0f) * 255.0f) / 255.0f;
           }
+        t->wrap_s = t->wrap_t = shader::Texture::Wrap::ClampToBorder;
+        t->border[0] = t->border[3] = 1.0f;
         const std::uint32_t unit = std::uint32_t(n[0]);
         program_->bind_texture(unit, t.get());
         textures_[unit] = std::move(t);
@@ -358,14 +374,42 @@ class Runner {
         if (!last_texture_ || c.words.size() < 3) break;
         const std::string& name = c.words[1];
         const std::string& value = c.words[2];
-        if (name == "min" || name == "mag") last_texture_->linear = value == "linear";
-        else if (name == "wrap_s" || name == "wrap_t") last_texture_->clamp = value != "repeat";
+        using Wrap = shader::Texture::Wrap;
+        if (name == "min" || name == "mag") {
+          last_texture_->linear = value == "linear";
+        } else if (name == "wrap_s" || name == "wrap_t") {
+          const Wrap w = value == "repeat" ? Wrap::Repeat : value == "mirrored_repeat" ? Wrap::MirroredRepeat
+                         : value == "clamp_to_edge" ? Wrap::ClampToEdge : Wrap::ClampToBorder;
+          (name == "wrap_s" ? last_texture_->wrap_s : last_texture_->wrap_t) = w;
+        }
         break;
       }
       case CommandKind::Enable: case CommandKind::Disable:
         if (!c.words.empty() && c.words[0] == "GL_DEPTH_TEST") state_.depth_test = c.kind == CommandKind::Enable;
         else fail(c, "unsupported GL capability");
         break;
+      case CommandKind::AtomicCounters:
+        program_->counter_buffer(0).assign(std::size_t(n[0]), 0u);
+        break;
+      case CommandKind::AtomicCounterBuffer:
+        program_->counter_buffer(std::uint32_t(n[0])).assign(std::size_t(n[1]), 0u);
+        break;
+      case CommandKind::AtomicCounterSet: {
+        auto& buffer = program_->counter_buffer(std::uint32_t(n[0]));
+        if (std::size_t(n[1]) >= buffer.size()) fail(c, "counter past the buffer");
+        buffer[std::size_t(n[1])] = std::uint32_t(std::llround(n[2]));
+        break;
+      }
+      case CommandKind::ProbeAtomicCounter: case CommandKind::ProbeAtomicCounterBuffer: {
+        const bool in_buffer = c.kind == CommandKind::ProbeAtomicCounterBuffer;
+        const auto& buffer = program_->counter_buffer(in_buffer ? std::uint32_t(n[0]) : 0u);
+        const std::size_t index = in_buffer ? std::size_t(n[1]) / 4 : std::size_t(n[0]);
+        const long long want = std::llround(n[in_buffer ? 2 : 1]);
+        if (index >= buffer.size()) fail(c, "counter past the buffer");
+        if (!compare(buffer[index], c.comparison, want))
+          fail(c, "atomic counter " + std::to_string(index) + " is " + std::to_string(buffer[index]));
+        break;
+      }
       case CommandKind::LinkSuccess: break;
       default: fail(c, "command not supported by tessref's shader-test runner");
     }

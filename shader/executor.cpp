@@ -216,14 +216,23 @@ void Runner::derivative(const XIns& x) {
 
 void Runner::texture(const XIns& x) {
   const std::uint32_t* unit = A + std::size_t(x.a) * L;
-  auto texel = [](const Texture& t, int i, int j, int c) {
-    if (t.clamp) {
-      i = std::clamp(i, 0, t.width - 1);
-      j = std::clamp(j, 0, t.height - 1);
-    } else {
-      i = ((i % t.width) + t.width) % t.width;
-      j = ((j % t.height) + t.height) % t.height;
+  // GL 4.6 section 8.14.2: the texel index after the wrap mode; -1 for the border.
+  auto wrap = [](int i, int size, Texture::Wrap mode) {
+    switch (mode) {
+      case Texture::Wrap::Repeat: return ((i % size) + size) % size;
+      case Texture::Wrap::MirroredRepeat: {
+        const int m = ((i % (2 * size)) + 2 * size) % (2 * size);
+        return m < size ? m : 2 * size - 1 - m;
+      }
+      case Texture::Wrap::ClampToEdge: return std::clamp(i, 0, size - 1);
+      case Texture::Wrap::ClampToBorder: return i < 0 || i >= size ? -1 : i;
     }
+    return 0;
+  };
+  auto texel = [&](const Texture& t, int i, int j, int c) {
+    i = wrap(i, t.width, t.wrap_s);
+    j = wrap(j, t.height, t.wrap_t);
+    if (i < 0 || j < 0) return t.border[c];
     return t.texels[(std::size_t(j) * t.width + i) * 4 + c];
   };
   if (x.op == XOp::QuerySize) {

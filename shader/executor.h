@@ -39,11 +39,14 @@ class ShaderRuntimeError : public std::runtime_error {
 };
 
 // A 2D texture bound to a sampler's binding point: RGBA texels, row 0 at the bottom (GL).
+// One mip level, sampled at level 0 whatever the derivatives (no mipmaps yet).
 struct Texture {
+  enum class Wrap { Repeat, MirroredRepeat, ClampToEdge, ClampToBorder };
   int width = 0, height = 0;
   std::vector<float> texels;  // 4 floats per texel
   bool linear = false;        // GL_LINEAR (else GL_NEAREST) for minification and magnification
-  bool clamp = false;         // GL_CLAMP_TO_EDGE (else GL_REPEAT)
+  Wrap wrap_s = Wrap::Repeat, wrap_t = Wrap::Repeat;
+  float border[4] = {0.0f, 0.0f, 0.0f, 0.0f};  // GL_TEXTURE_BORDER_COLOR
 };
 
 struct ExecLimits {

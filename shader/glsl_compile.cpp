@@ -15,6 +15,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <regex>
 #include <set>
 #include <sstream>
 
@@ -414,6 +415,32 @@ void init_glslang() {
   (void)initialized;
 }
 
+// A TCS of several compilation units: glslang compiles each unit alone, so a unit that indexes
+// gl_out[] without the output vertex count that another unit declares fails to compile. Each such
+// unit gets the declaration too (GLSL lets every unit repeat it with the same count); the line is
+// added before the unit's #line, so its line numbers stay the user's.
+void lend_output_vertices(const std::vector<ShaderSource>& sources, std::vector<RewrittenSource>& rewritten) {
+  static const std::regex declaration(R"(layout\s*\(\s*vertices\s*=\s*(\d+)\s*\)\s*out\s*;)");
+  std::string count;
+  int units = 0;
+  for (const ShaderSource& s : sources) {
+    if (s.stage != Stage::TessControl) continue;
+    ++units;
+    std::smatch m;
+    if (count.empty() && std::regex_search(s.text, m, declaration)) count = m[1];
+  }
+  if (units < 2 || count.empty()) return;
+  for (std::size_t i = 0; i < sources.size(); ++i) {
+    if (sources[i].stage != Stage::TessControl || std::regex_search(sources[i].text, declaration)) continue;
+    std::string& text = rewritten[i].text;
+    const std::size_t eol = text.find('\n');  // after "#version ..."
+    text.insert(eol + 1, "layout(vertices = " + count + ") out;\n");
+    rewritten[i].notes.push_back(sources[i].file + ":" + std::to_string(sources[i].first_line) +
+                                 ": layout(vertices = " + count +
+                                 ") out; added from another unit of the tessellation control shader");
+  }
+}
+
 }  // namespace
 
 CompiledProgram compile_program(const std::vector<ShaderSource>& sources) {
@@ -438,6 +465,7 @@ CompiledProgram compile_program(const std::vector<ShaderSource>& sources) {
 
   std::vector<RewrittenSource> rewritten;
   for (const ShaderSource& s : sources) rewritten.push_back(rewrite_glsl(s));
+  lend_output_vertices(sources, rewritten);
 
   init_glslang();
   // The program must be destroyed before its shaders: declared after them.

@@ -32,7 +32,7 @@ IoKind kind_of_builtin(std::uint32_t b) {
 struct Walker {
   const Module& m;
   const std::string& name;
-  int max_slots;
+  int max_slots;  // I/O slots of 4 words (slot 0: gl_Position)
   std::vector<IoWord>& out;
 
   // Lays out type t from `location` (component `component`): each scalar or vector starts a new
@@ -119,7 +119,8 @@ StageInterface read_interface(const shader::Executable& exe, int max_slots) {
       if (!v.decorations.location)
         throw shader::SpirvError("'" + v.name + "' has no location (the front end assigns them)");
       std::uint32_t location = *v.decorations.location;
-      Walker w{m, v.name, max_slots, io.words};
+      // Per-patch variables have their own slots (GlslProgram maps their locations to them).
+      Walker w{m, v.name, io.patch ? 1 + kMaxPatchLocations : max_slots, io.words};
       w.walk(element, 0, location, v.decorations.component.value_or(0));
     }
     for (const IoWord& w : io.words)

@@ -39,6 +39,9 @@ struct StageInterface {
   std::uint32_t io_words_used = 0;  // 1 + the highest I/O word written or read
 };
 
+// Locations a 'patch' variable may use (before GlslProgram maps them to PatchOutput slots).
+inline constexpr int kMaxPatchLocations = 256;
+
 // Reads the interface of an executable. Throws shader::SpirvError naming the variable when a
 // location is past tessref's limits (max_slots I/O slots of 4 words, slot 0 being gl_Position).
 StageInterface read_interface(const shader::Executable& exe, int max_slots);

@@ -1,6 +1,7 @@
 #include "stages/glsl/glsl_program.h"
 
 #include <algorithm>
+#include <map>
 #include <cstring>
 #include <stdexcept>
 
@@ -29,19 +30,31 @@ std::unique_ptr<StageProgram> make_stage(const shader::CompiledStage& cs, shader
   sp->io = read_interface(*sp->exe, slots);
   const shader::Module& m = sp->exe->module();
   for (const shader::Variable& v : m.variables) {
-    if (v.storage != spv::StorageClassUniformConstant && v.storage != spv::StorageClassUniform &&
-        v.storage != spv::StorageClassAtomicCounter)
-      continue;
     const shader::VariableSlot* slot = sp->exe->slot(v.id);
+    if (v.storage == spv::StorageClassAtomicCounter) {
+      const std::uint32_t binding = v.decorations.binding.value_or(0);
+      const std::uint32_t offset = v.decorations.offset.value_or(0) / 4;
+      for (std::uint32_t w = 0; w < slot->words; ++w) sp->counters.push_back({slot->base + w, binding, offset + w});
+      continue;
+    }
+    if (v.storage != spv::StorageClassUniformConstant && v.storage != spv::StorageClassUniform) continue;
     sp->uniform_ranges.push_back({slot->base, slot->words});
   }
   std::uint32_t words = 0;
   for (const auto& [first, n] : sp->uniform_ranges) words = std::max(words, first + n);
   sp->uniforms.assign(words, 0u);
-  // A sampler's value is its texture unit: its binding until the user sets it.
-  for (const shader::Variable& v : m.variables)
+  for (const shader::Variable& v : m.variables) {
+    const shader::VariableSlot* slot = sp->exe->slot(v.id);
+    if (slot->per_lane) continue;
+    // A sampler's value is its texture unit: its binding until the user sets it.
     if (m.type(v.type).kind == TypeKind::SampledImage)
-      sp->uniforms[sp->exe->slot(v.id)->base] = v.decorations.binding.value_or(0);
+      sp->uniforms[slot->base] = v.decorations.binding.value_or(0);
+    // 'uniform T x = initializer;' (GLSL 1.20+): the value until the user sets it.
+    if (v.initializer && (v.storage == spv::StorageClassUniformConstant || v.storage == spv::StorageClassUniform)) {
+      const auto& words = m.constants.at(*v.initializer);
+      std::copy(words.begin(), words.end(), sp->uniforms.begin() + slot->base);
+    }
+  }
   return sp;
 }
 
@@ -99,7 +112,19 @@ shader::Invocations& StageProgram::prepare() const {
     std::copy_n(uniforms.begin() + first, n, inv.shared_words() + first);
   if (textures)
     for (std::uint32_t unit = 0; unit < textures->size(); ++unit) inv.bind_texture(unit, (*textures)[unit]);
+  for (const auto& [word, binding, offset] : counters) {
+    const std::vector<std::uint32_t>& buffer = (*counter_buffers)[binding];
+    inv.shared_words()[word] = offset < buffer.size() ? buffer[offset] : 0u;
+  }
   return inv;
+}
+
+void StageProgram::finish(shader::Invocations& inv) const {
+  for (const auto& [word, binding, offset] : counters) {
+    std::vector<std::uint32_t>& buffer = (*counter_buffers)[binding];
+    if (buffer.size() <= offset) buffer.resize(offset + 1, 0u);
+    buffer[offset] = inv.shared_words()[word];
+  }
 }
 
 void StageProgram::rethrow(const shader::ShaderRuntimeError& e, const std::string& where) const {
@@ -121,7 +146,10 @@ GlslProgram::GlslProgram(const shader::CompiledProgram& compiled, shader::ExecLi
   if (!vs_) throw shader::SpirvError("the program has no vertex shader");
   if (!fs_) throw shader::SpirvError("the program has no fragment shader");
   for (StageProgram* s : {vs_.get(), tcs_.get(), tes_.get(), fs_.get()})
-    if (s) s->textures = &textures_;
+    if (s) {
+      s->textures = &textures_;
+      s->counter_buffers = &counter_buffers_;
+    }
   // Varyings handed to the rasterizer: every word the last geometry stage writes past gl_Position.
   const StageProgram& last = tes_ ? *tes_ : *vs_;
   std::uint32_t used = 4;
@@ -133,6 +161,15 @@ GlslProgram::GlslProgram(const shader::CompiledProgram& compiled, shader::ExecLi
                              std::to_string(used - 4) + " varying components; tessref's limit is " +
                              std::to_string(kMaxVaryings));
   num_varyings_ = int(used - 4);
+  map_patch_locations();
+  // gl_PrimitiveID in the fragment shader: the patch's, carried as one more (flat) varying.
+  for (const IoVariable& v : fs_->io.inputs)
+    if (v.kind == IoKind::PrimitiveId) {
+      if (num_varyings_ == kMaxVaryings)
+        throw shader::SpirvError("the fragment shader reads gl_PrimitiveID, and every varying component is in use");
+      primitive_id_varying_ = num_varyings_++;
+      flat_varyings_.set(std::size_t(primitive_id_varying_));
+    }
   // Flat: what the fragment shader declares flat, and every integer or double (which GLSL requires
   // to be flat, and whose bits must reach the fragment shader unchanged).
   for (const IoVariable& v : fs_->io.inputs) {
@@ -148,6 +185,28 @@ GlslProgram::GlslProgram(const shader::CompiledProgram& compiled, shader::ExecLi
 }
 
 GlslProgram::~GlslProgram() = default;
+
+void GlslProgram::map_patch_locations() {
+  // A TCS's patch outputs meet the TES's patch inputs by location: the locations in use, in
+  // increasing order, take PatchOutput::patch[0], [1], ...
+  std::vector<IoVariable*> vars;
+  for (StageProgram* sp : {tcs_.get(), tes_.get()})
+    if (sp)
+      for (auto* list : {&sp->io.inputs, &sp->io.outputs})
+        for (IoVariable& v : *list)
+          if (v.patch && v.kind == IoKind::User) vars.push_back(&v);
+  std::map<std::uint32_t, std::uint32_t> slot;
+  for (const IoVariable* v : vars)
+    for (const IoWord& w : v->words) slot[(w.io_word - 4) / 4] = 0;
+  std::uint32_t next = 0;
+  for (auto& [location, s] : slot) s = next++;
+  if (next > std::uint32_t(kMaxPatchAttributes))
+    throw shader::SpirvError("the patch variables use " + std::to_string(next) +
+                             " locations; tessref's limit is " + std::to_string(kMaxPatchAttributes) +
+                             " (120 components)");
+  for (IoVariable* v : vars)
+    for (IoWord& w : v->words) w.io_word = 4 + 4 * slot[(w.io_word - 4) / 4] + (w.io_word - 4) % 4;
+}
 
 StageProgram* GlslProgram::find(shader::Stage s) {
   switch (s) {
@@ -219,6 +278,12 @@ std::vector<std::string> GlslProgram::uniform_names() const {
   return names;
 }
 
+bool GlslProgram::uses_atomic_counters() const {
+  for (const StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), fs_.get()})
+    if (sp && !sp->counters.empty()) return true;
+  return false;
+}
+
 void GlslProgram::bind_texture(std::uint32_t unit, const shader::Texture* texture) {
   if (textures_.size() <= unit) textures_.resize(unit + 1, nullptr);
   textures_[unit] = texture;
@@ -251,11 +316,11 @@ std::unique_ptr<TessControlProgram> GlslProgram::control(int patch_vertices, con
 
 std::unique_ptr<TessEvalProgram> GlslProgram::evaluation() const {
   if (!tes_) throw std::logic_error("evaluation: no tessellation evaluation shader");
-  return std::make_unique<GlslEvaluation>(*tes_, num_varyings_, flat_varyings_);
+  return std::make_unique<GlslEvaluation>(*tes_, num_varyings_, flat_varyings_, primitive_id_varying_);
 }
 
 std::unique_ptr<FragmentProgram> GlslProgram::fragment() const {
-  return std::make_unique<GlslFragment>(*fs_, num_varyings_);
+  return std::make_unique<GlslFragment>(*fs_, num_varyings_, primitive_id_varying_);
 }
 
 }  // namespace tessref::glsl

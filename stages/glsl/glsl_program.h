@@ -2,6 +2,7 @@
 // A user's GLSL program on tessref's pipeline: the compiled stages on the SPIR-V executor, adapted
 // to the stage interfaces (TessControlProgram, TessEvalProgram, FragmentProgram) and a batched
 // vertex stage. See glsl_interface.h for how values travel between stages.
+#include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -32,9 +33,15 @@ struct StageProgram {
   std::vector<std::uint32_t> uniforms;  // an image of the shared words holding uniforms
   std::vector<std::pair<std::uint32_t, std::uint32_t>> uniform_ranges;  // (first word, words)
   const std::vector<const shader::Texture*>* textures = nullptr;  // the program's, by unit
+  // Atomic counters: (shared word, binding, word offset in the binding's buffer), and the
+  // program's buffers (binding -> words), which every run reads and writes back.
+  std::vector<std::array<std::uint32_t, 3>> counters;
+  std::map<std::uint32_t, std::vector<std::uint32_t>>* counter_buffers = nullptr;
 
-  // This thread's invocations with the uniforms loaded.
+  // This thread's invocations with the uniforms and counters loaded.
   shader::Invocations& prepare() const;
+  // After a run: the counters back into the program's buffers.
+  void finish(shader::Invocations& inv) const;
   [[noreturn]] void rethrow(const shader::ShaderRuntimeError& e, const std::string& where) const;
 };
 
@@ -67,6 +74,11 @@ class GlslProgram {
   std::vector<std::string> uniform_names() const;
   // Binds a texture to a sampler's binding (texture unit). The texture must outlive the draws.
   void bind_texture(std::uint32_t unit, const shader::Texture* texture);
+  // Atomic counter buffers (binding -> 32-bit counters). A program that uses atomic counters is
+  // drawn on one thread, in patch and tile order, so the counts and the values each invocation
+  // sees do not depend on the thread count.
+  bool uses_atomic_counters() const;
+  std::vector<std::uint32_t>& counter_buffer(std::uint32_t binding) { return counter_buffers_[binding]; }
 
   // The location of the vertex shader input with this name; nullopt if there is none.
   std::optional<std::uint32_t> attribute_location(const std::string& name) const;
@@ -91,10 +103,13 @@ class GlslProgram {
 
  private:
   StageProgram* find(shader::Stage s);
+  void map_patch_locations();
   std::unique_ptr<StageProgram> vs_, tcs_, tes_, fs_;
   std::vector<const shader::Texture*> textures_;
+  std::map<std::uint32_t, std::vector<std::uint32_t>> counter_buffers_;
   int num_varyings_ = 0;
   VaryingMask flat_varyings_;  // TriangleBatch::flat_varyings
+  int primitive_id_varying_ = -1;  // the varying carrying gl_PrimitiveID to the FS, -1: none
 };
 
 }  // namespace tessref::glsl

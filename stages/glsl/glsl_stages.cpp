@@ -1,6 +1,7 @@
 #include "stages/glsl/glsl_stages.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 
 #include <spirv/unified1/spirv.hpp>
@@ -144,6 +145,7 @@ void GlslControl::run_phase(int, const Patch& in, PatchOutput& out) const {
   } catch (const shader::ShaderRuntimeError& e) {
     sp_.rethrow(e, "patch " + std::to_string(in.primitive_id) + ", invocation " + std::to_string(e.lane));
   }
+  sp_.finish(inv);
   for (const IoVariable& v : sp_.io.outputs) {
     const std::uint32_t* src = inv.shared(*v.slot);
     switch (v.kind) {
@@ -192,6 +194,7 @@ void GlslEvaluation::evaluate_batch(const PatchOutput& patch, int primitive_id, 
   } catch (const shader::ShaderRuntimeError& e) {
     sp_.rethrow(e, "patch " + std::to_string(primitive_id) + ", invocation " + std::to_string(e.lane));
   }
+  sp_.finish(inv);
   for (int r = 0; r < varyings_; ++r) std::fill_n(batch.varyings[r], n, 0.0f);
   for (int c = 0; c < 4; ++c) std::fill_n(batch.position[c], n, 0.0f);
   for (const IoVariable& v : sp_.io.outputs) {
@@ -213,6 +216,8 @@ void GlslEvaluation::evaluate_batch(const PatchOutput& patch, int primitive_id, 
       }
     }
   }
+  if (primitive_id_varying_ >= 0)
+    std::fill_n(batch.varyings[primitive_id_varying_], n, std::bit_cast<float>(std::uint32_t(primitive_id)));
 }
 
 ClipVertex GlslEvaluation::evaluate(const glm::vec3& tess_coord, const PatchOutput& patch, int primitive_id) const {
@@ -244,6 +249,10 @@ void GlslFragment::shade_batch(FragmentBatch& batch) const {
       case IoKind::FrontFacing:
         for (int l = 0; l < n; ++l) inv.row(*v.slot, 0)[l] = batch.front_facing[l] ? 1u : 0u;
         break;
+      case IoKind::PrimitiveId:
+        if (primitive_id_varying_ >= 0)
+          std::memcpy(inv.row(*v.slot, 0), batch.varyings[primitive_id_varying_], 4 * std::size_t(n));
+        break;
       case IoKind::User:
         for (const IoWord& w : v.words) {
           std::uint32_t* row = inv.row(*v.slot, w.var_word);
@@ -270,6 +279,7 @@ void GlslFragment::shade_batch(FragmentBatch& batch) const {
     sp_.rethrow(e, "fragment (" + std::to_string(int(batch.frag_coord[0][e.lane])) + ", " +
                        std::to_string(int(batch.frag_coord[1][e.lane])) + ")");
   }
+  sp_.finish(inv);
   for (int c = 0; c < 4; ++c) {
     std::fill_n(batch.color[c], n, 0.0f);
     std::fill_n(batch.aux[c], n, 0.0f);
@@ -349,6 +359,7 @@ void run_vertex_stage(const StageProgram& sp, const std::vector<VertexAttribute>
     } catch (const shader::ShaderRuntimeError& e) {
       sp.rethrow(e, "vertex " + std::to_string(first + start + std::size_t(e.lane)));
     }
+    sp.finish(inv);
     for (int l = 0; l < n; ++l) out[start + std::size_t(l)] = StageVertex{};
     for (const IoVariable& v : sp.io.outputs) {
       if (v.kind != IoKind::User && v.kind != IoKind::Position) continue;

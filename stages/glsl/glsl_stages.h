@@ -36,8 +36,9 @@ class PassThroughControl final : public TessControlProgram {
 
 class GlslEvaluation final : public TessEvalProgram {
  public:
-  GlslEvaluation(const StageProgram& sp, int varyings, const VaryingMask& flat)
-      : sp_(sp), varyings_(varyings), flat_(flat) {}
+  // primitive_id_varying: the varying that carries gl_PrimitiveID to the fragment shader (-1: none).
+  GlslEvaluation(const StageProgram& sp, int varyings, const VaryingMask& flat, int primitive_id_varying)
+      : sp_(sp), varyings_(varyings), flat_(flat), primitive_id_varying_(primitive_id_varying) {}
   TessLayout layout() const override { return layout_of(sp_.exe->module().modes); }
   int num_varyings() const override { return varyings_; }
   VaryingMask flat_varyings() const override { return flat_; }
@@ -48,17 +49,20 @@ class GlslEvaluation final : public TessEvalProgram {
   const StageProgram& sp_;
   int varyings_;
   VaryingMask flat_;
+  int primitive_id_varying_;
 };
 
 class GlslFragment final : public FragmentProgram {
  public:
-  GlslFragment(const StageProgram& sp, int varyings) : sp_(sp), varyings_(varyings) {}
+  GlslFragment(const StageProgram& sp, int varyings, int primitive_id_varying)
+      : sp_(sp), varyings_(varyings), primitive_id_varying_(primitive_id_varying) {}
   FragmentOutput shade(const FragmentInput& in) const override;
   void shade_batch(FragmentBatch& batch) const override;
 
  private:
   const StageProgram& sp_;
   int varyings_;
+  int primitive_id_varying_;
 };
 
 void run_vertex_stage(const StageProgram& sp, const std::vector<VertexAttribute>& attributes,
