@@ -15,12 +15,14 @@ struct ShaderTestArgs {
   std::vector<std::string> files;
   int threads = 0;
   std::uint64_t max_instructions = shader::ExecLimits{}.max_instructions;
+  int batch_lanes = shader::ExecLimits{}.batch_lanes;
 };
 
 void run(const ShaderTestArgs& a) {
   const Parallel parallel(a.threads);
   ShaderTestOptions options;
   options.limits.max_instructions = a.max_instructions;
+  options.limits.batch_lanes = a.batch_lanes;
   int passed = 0, failed = 0, skipped = 0;
   for (const std::string& path : a.files) {
     ShaderTestResult r;
@@ -53,6 +55,9 @@ void add_shader_test_command(CLI::App& app) {
   cmd->add_option("--max-shader-instructions", args->max_instructions,
                   "instructions one shader invocation may run before it is stopped as a runaway")
       ->check(CLI::Range(std::uint64_t(1), std::uint64_t(1) << 50));
+  cmd->add_option("--batch-lanes", args->batch_lanes,
+                  "shader invocations per executor batch (results do not depend on it)")
+      ->check(CLI::Range(1, shader::kMaxLanes));
   cmd->callback([args] { run(*args); });
 }
 

@@ -11,47 +11,101 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-// Patches per tessellated chunk: bounds the memory of one chunk's triangles.
-constexpr std::size_t kChunkPatches = 256;
+// Patches per tessellated chunk when the caller sets none: a user's control shader may write any
+// level, so chunks are sized for the largest (64: about 6,000 triangles a patch).
+constexpr std::size_t kChunkPatches = 64;
+constexpr std::size_t kTrianglesPerBatch = 65536;  // GL_TRIANGLES draws
+
+// GL_TRIANGLES: the vertex shader's gl_Position and outputs become the rasterizer's vertices.
+void draw_triangle_list(const glsl::GlslProgram& program, const std::vector<StageVertex>& shaded,
+                        const GlslDrawCall& call, const RasterState& state, const FragmentProgram& fs,
+                        Framebuffer& fb, const Parallel& parallel, DrawStats& stats) {
+  const std::size_t corners = call.indices.empty() ? call.count : call.indices.size();
+  const std::size_t triangles = corners / 3;
+  TriangleBatch batch;
+  batch.num_varyings = program.varyings();
+  batch.flat_varyings = program.flat_varyings();
+  const std::size_t records = std::size_t(batch.records());
+  for (std::size_t first = 0; first < triangles; first += kTrianglesPerBatch) {
+    const std::size_t n = std::min(kTrianglesPerBatch, triangles - first);
+    batch.vertices.assign(3 * n * records, ClipVertex{});
+    for (std::size_t k = 0; k < 3 * n; ++k) {
+      const std::size_t v = call.indices.empty() ? 3 * first + k : call.indices[3 * first + k];
+      if (v >= shaded.size()) throw std::invalid_argument("draw: index " + std::to_string(v) + " past the vertex arrays");
+      // I/O slot words (glsl_interface.h): gl_Position, then location L at 4 + 4L = varying 4L.
+      const auto* src = reinterpret_cast<const float*>(shaded[v].attr.data());
+      auto* dst = reinterpret_cast<float*>(batch.vertices.data() + k * records);
+      std::copy_n(src, 4 + std::min(batch.num_varyings, 4 * (kMaxStageAttributes - 1)), dst);
+    }
+    const auto t = Clock::now();
+    stats.triangles_generated += n;
+    stats.raster += draw_triangles(batch, state, fs, fb, parallel);
+    stats.raster_seconds += seconds_since(t);
+  }
+}
 
 }  // namespace
 
-DrawStats draw_glsl_patches(const glsl::GlslProgram& program,
-                            const std::vector<glsl::VertexAttribute>& attributes,
-                            const GlslDrawCall& call, const RasterState& raster_state,
-                            Framebuffer& fb, const Parallel& parallel,
-                            const TessOptions& tess_options) {
-  if (!program.has_tes())
-    throw std::invalid_argument("draw: GL_PATCHES needs a tessellation evaluation shader");
-  if (call.patch_vertices < 1 || call.patch_vertices > kMaxPatchVertices)
+DrawStats draw_glsl(const glsl::GlslProgram& program,
+                    const std::vector<glsl::VertexAttribute>& attributes, const GlslDrawCall& call,
+                    const RasterState& raster_state, Framebuffer& fb, const Parallel& parallel,
+                    const DrawOptions& options) {
+  if (call.patches != program.has_tes())
+    throw std::invalid_argument(call.patches
+                                    ? "draw: GL_PATCHES needs a tessellation evaluation shader"
+                                    : "draw: a program with tessellation shaders draws GL_PATCHES only");
+  if (call.patches && (call.patch_vertices < 1 || call.patch_vertices > kMaxPatchVertices))
     throw std::invalid_argument("draw: GL_PATCH_VERTICES must be 1.." + std::to_string(kMaxPatchVertices));
-  // Atomic counters: one thread, so that the counts each invocation sees are the same every run.
+  // Atomic counters: one thread, so that the values each invocation sees are the same every run.
   const Parallel serial(1);
   const Parallel& par = program.uses_atomic_counters() ? serial : parallel;
+  const bool indexed = !call.indices.empty();
+  const std::size_t shade_first = indexed ? 0 : call.first;
+  const std::size_t shade_count = indexed ? call.vertex_count : call.count;
+
   DrawStats stats;
-  const auto tcs = program.control(call.patch_vertices, call.default_outer, call.default_inner);
-  const auto tes = program.evaluation();
+  const auto tcs = call.patches ? program.control(call.patch_vertices, call.default_outer, call.default_inner) : nullptr;
+  const auto tes = call.patches ? program.evaluation() : nullptr;
   const auto fs = program.fragment();
-  std::vector<StageVertex> shaded(call.count);
+  std::vector<StageVertex> shaded(shade_count);
+  std::vector<TessDumpRecord> records;
+  TessOptions tess_options;
+  tess_options.patches_per_task = 4;
+  if (options.dump_tess) tess_options.dump = &records;
+  const std::size_t chunk = options.tess_chunk_patches ? options.tess_chunk_patches : kChunkPatches;
+
   for (int instance = 0; instance < call.instances; ++instance) {
     auto t0 = Clock::now();
-    program.run_vertices(attributes, call.first, call.count, instance, shaded.data(), par);
-    stats.vertices_shaded += call.count;
+    program.run_vertices(attributes, shade_first, shade_count, instance, shaded.data(), par);
+    stats.vertices_shaded += shade_count;
     stats.vertex_seconds += seconds_since(t0);
+    if (!call.patches) {
+      stats.triangles_in += (indexed ? call.indices.size() : call.count) / 3;
+      draw_triangle_list(program, shaded, call, raster_state, *fs, fb, par, stats);
+      continue;
+    }
 
     t0 = Clock::now();
-    double raster_seconds = 0.0;
-    const TessDrawInput input{shaded, {}, call.patch_vertices};
-    stats.triangles_in += input.patch_count();
-    stats.tess += tessellate_chunks(input, kChunkPatches, *tcs, *tes, tess_options, par,
-                                    [&](const TriangleBatch& batch) {
-                                      const auto r0 = Clock::now();
-                                      stats.triangles_generated += batch.triangle_count();
-                                      stats.raster += draw_triangles(batch, raster_state, *fs, fb, par);
-                                      raster_seconds += seconds_since(r0);
-                                    });
-    stats.raster_seconds += raster_seconds;
-    stats.tessellation_seconds += seconds_since(t0) - raster_seconds;
+    const double raster_before = stats.raster_seconds;
+    const TessDrawInput input{shaded, call.indices, call.patch_vertices};
+    const std::size_t patches = input.patch_count();
+    stats.triangles_in += patches;
+    std::size_t done = 0;
+    stats.tess += tessellate_chunks(input, chunk, *tcs, *tes, tess_options, par, [&](const TriangleBatch& batch) {
+      const auto r0 = Clock::now();
+      stats.triangles_generated += batch.triangle_count();
+      stats.raster += draw_triangles(batch, raster_state, *fs, fb, par);
+      stats.raster_seconds += seconds_since(r0);
+      if (options.dump_tess) {
+        options.dump_tess(records);
+        records.clear();
+      }
+      done = std::min(patches, done + chunk);
+      if (options.progress)
+        options.progress((double(instance) + double(done) / double(std::max<std::size_t>(1, patches))) /
+                         double(call.instances));
+    });
+    stats.tessellation_seconds += seconds_since(t0) - (stats.raster_seconds - raster_before);
   }
   return stats;
 }

@@ -1,7 +1,9 @@
 #pragma once
-// A draw call with a user's GLSL program: vertex shader over the attribute arrays, then
-// TCS -> primitive generator -> TES -> rasterizer -> fragment shader, instance by instance.
+// A draw call with a user's GLSL program: vertex shader over the attribute arrays, then, for
+// GL_PATCHES, TCS -> primitive generator -> TES, then rasterizer -> fragment shader, instance by
+// instance.
 #include <cstddef>
+#include <span>
 
 #include "pipeline/draw.h"
 #include "stages/glsl/glsl_program.h"
@@ -9,20 +11,27 @@
 namespace tessref {
 
 struct GlslDrawCall {
-  std::size_t first = 0, count = 0;  // vertices, as glDrawArrays
+  // glDrawArrays: vertices [first, first + count). glDrawElements (indices not empty): the vertex
+  // shader runs once for each of the attribute arrays' vertex_count vertices, and the primitives
+  // take their vertices by index.
+  std::size_t first = 0, count = 0;
+  std::span<const std::uint32_t> indices;
+  std::size_t vertex_count = 0;
   int instances = 1;
+  bool patches = true;               // GL_PATCHES; false: GL_TRIANGLES, no tessellation stages
   int patch_vertices = 3;            // GL_PATCH_VERTICES
   glm::vec4 default_outer{1.0f};     // GL_PATCH_DEFAULT_OUTER_LEVEL (no control shader)
   glm::vec2 default_inner{1.0f};     // GL_PATCH_DEFAULT_INNER_LEVEL
 };
 
-// Draws count / patch_vertices patches (a partial last patch is ignored, as in GL) of each
-// instance into fb. Throws glsl::StageError when a shader fails at run time (instruction budget,
-// ...). The bytes of fb do not depend on parallel.threads().
-DrawStats draw_glsl_patches(const glsl::GlslProgram& program,
-                            const std::vector<glsl::VertexAttribute>& attributes,
-                            const GlslDrawCall& call, const RasterState& raster_state,
-                            Framebuffer& fb, const Parallel& parallel,
-                            const TessOptions& tess_options = {});
+// Draws into fb. A partial last primitive is ignored, as in GL. Throws glsl::StageError when a
+// shader fails at run time (instruction budget) and std::invalid_argument for a call GL would
+// refuse (GL_PATCHES without a tessellation evaluation shader, or the reverse). options: progress,
+// tess_chunk_patches (0: 64 patches a chunk) and dump_tess as for draw_mesh. The bytes of fb do not
+// depend on parallel.threads() nor on the program's batch size.
+DrawStats draw_glsl(const glsl::GlslProgram& program,
+                    const std::vector<glsl::VertexAttribute>& attributes, const GlslDrawCall& call,
+                    const RasterState& raster_state, Framebuffer& fb, const Parallel& parallel,
+                    const DrawOptions& options = {});
 
 }  // namespace tessref

@@ -1,6 +1,7 @@
 #include "pipeline/render.h"
 
 #include "pipeline/camera.h"
+#include "pipeline/glsl_scene.h"
 #include "stages/programs/normals.h"
 #include "stages/programs/phong.h"
 
@@ -34,6 +35,11 @@ RenderResult render_scene(const Scene& scene, const Mesh& mesh, const Parallel& 
 
 DrawStats render_scene(const Scene& scene, const Mesh& mesh, const Parallel& parallel,
                        Framebuffer& fb, const DrawOptions& options) {
+  if (scene.shaders.program != ShaderProgram::Builtin) {
+    const auto program = build_scene_program(scene);
+    fb.reset(scene.width, scene.height, scene.background, parallel);
+    return draw_glsl_scene(scene, *program, mesh, fb, parallel, options);
+  }
   const glm::mat4 view_projection =
       projection_matrix(scene.camera, scene.width, scene.height) * view_matrix(scene.camera);
   const auto vs = programs::TransformVertexShader::from(model_matrix(scene.transform), view_projection);

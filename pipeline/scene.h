@@ -2,8 +2,10 @@
 // A scene as read from JSON (scenes/*.json; format in README.md): what to draw and how.
 // Scene files take every value they omit from scenes/default.json (scene_loader.h); the
 // initializers below only serve code that builds a Scene by hand.
+#include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -57,6 +59,29 @@ struct Material {
 
 enum class Shading { Phong, Normals };
 
+// Which programs draw the scene: the built-in C++ programs (the fast default), their GLSL twins on
+// tessref's SPIR-V executor, or the user's GLSL files on the executor.
+enum class ShaderProgram { Builtin, Twins, Custom };
+
+// A uniform value given in the scene: its numbers (a matrix column after column, an array element
+// after element) or booleans, checked against the GLSL type when the program is built.
+struct UniformSetting {
+  std::string name;  // "u_color", or "u_lights[2]"
+  std::vector<double> values;
+  bool boolean = false;
+};
+
+struct ShaderSettings {
+  ShaderProgram program = ShaderProgram::Builtin;
+  // Custom: GLSL files, resolved against the scene file's folder (tess_control may be empty).
+  std::filesystem::path vertex, tess_control, tess_evaluation, fragment;
+  std::vector<UniformSetting> uniforms;
+  // Vertex shader input name -> the mesh attribute that feeds it: "position" or "normal".
+  std::vector<std::pair<std::string, std::string>> attributes;
+  int batch_lanes = 64;                         // shader::ExecLimits::batch_lanes
+  std::uint64_t max_instructions = 50'000'000;  // shader::ExecLimits::max_instructions
+};
+
 struct Scene {
   std::string source;  // the scene file, or "<default scene>": prefixes error messages
   MeshSettings mesh;
@@ -69,6 +94,7 @@ struct Scene {
   Shading shading = Shading::Phong;
   bool cull_back_faces = true;
   TessellationSettings tessellation;
+  ShaderSettings shaders;
 };
 
 inline constexpr int kMaxLights = programs::kMaxLights;  // phong.frag's arrays

@@ -147,6 +147,65 @@ TessellationSettings read_tessellation(JsonObject o) {
   return t;
 }
 
+ShaderSettings read_shaders(JsonObject o, const std::filesystem::path& base_dir) {
+  ShaderSettings s;
+  const std::string program = o.string("program");
+  if (program == "builtin") s.program = ShaderProgram::Builtin;
+  else if (program == "twins") s.program = ShaderProgram::Twins;
+  else if (program == "custom") s.program = ShaderProgram::Custom;
+  else o.fail("program", "expected one of builtin, twins, custom, got \"" + program + "\"");
+  auto path = [&](const char* key) -> std::filesystem::path {
+    if (!o.has(key)) return {};
+    std::filesystem::path p = o.string(key);
+    return p.is_relative() ? base_dir / p : p;
+  };
+  s.vertex = path("vertex");
+  s.tess_control = path("tess_control");
+  s.tess_evaluation = path("tess_evaluation");
+  s.fragment = path("fragment");
+  if (s.program == ShaderProgram::Custom)
+    for (const char* key : {"vertex", "fragment"})
+      if (path(key).empty())
+        o.fail(key, "required when shaders.program is \"custom\" (a GLSL file relative to the scene file)");
+  const nlohmann::json& uniforms = o.value("uniforms");
+  if (!uniforms.is_object()) o.fail("uniforms", "expected an object of name: value, got " + describe_json(uniforms));
+  for (const auto& [name, value] : uniforms.items()) {
+    UniformSetting u{name, {}, false};
+    auto add = [&](const nlohmann::json& v) {
+      if (v.is_boolean()) {
+        u.boolean = true;
+        u.values.push_back(v.get<bool>() ? 1.0 : 0.0);
+      } else if (v.is_number() && std::isfinite(v.get<double>())) {
+        u.values.push_back(v.get<double>());
+      } else {
+        o.fail("uniforms." + name, "expected numbers or booleans (a vector as an array, a matrix as an "
+                                   "array of columns), got " + describe_json(v));
+      }
+    };
+    if (value.is_array()) {
+      for (const auto& e : value) {
+        if (e.is_array()) for (const auto& x : e) add(x);
+        else add(e);
+      }
+    } else {
+      add(value);
+    }
+    if (u.values.empty()) o.fail("uniforms." + name, "has no value");
+    s.uniforms.push_back(std::move(u));
+  }
+  const nlohmann::json& attributes = o.value("attributes");
+  if (!attributes.is_object()) o.fail("attributes", "expected an object of input name: attribute, got " + describe_json(attributes));
+  for (const auto& [name, value] : attributes.items()) {
+    if (!value.is_string() || (value != "position" && value != "normal"))
+      o.fail("attributes." + name, "expected \"position\" or \"normal\", got " + describe_json(value));
+    s.attributes.push_back({name, value.get<std::string>()});
+  }
+  s.batch_lanes = o.integer("batch_lanes", 1, 64);
+  s.max_instructions = std::uint64_t(o.integer("max_instructions", 1, std::numeric_limits<int>::max()));
+  o.finish();
+  return s;
+}
+
 }  // namespace
 
 Scene scene_from_json(const json& root_json, const JsonSource& source,
@@ -172,6 +231,7 @@ Scene scene_from_json(const json& root_json, const JsonSource& source,
   s.shading = enum_value<Shading>(root, "shading", "phong, normals");
   s.cull_back_faces = root.boolean("cull_back_faces");
   s.tessellation = read_tessellation(root.object("tessellation"));
+  s.shaders = read_shaders(root.object("shaders"), mesh_base_dir);
   root.finish();
   return s;
 }

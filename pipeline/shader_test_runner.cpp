@@ -223,7 +223,7 @@ class Runner {
     call.default_outer = default_outer_;
     call.default_inner = default_inner_;
     try {
-      draw_glsl_patches(*program_, attributes, call, state_, fb_, parallel_);
+      draw_glsl(*program_, attributes, call, state_, fb_, parallel_);
     } catch (const glsl::StageError& e) {
       fail(c, e.what());
     }

@@ -52,6 +52,10 @@ struct Texture {
 struct ExecLimits {
   // Instructions one invocation may execute before it is stopped as a runaway (infinite loop).
   std::uint64_t max_instructions = 50'000'000;
+  // Invocations the stage programs run per batch, 1..kMaxLanes (a fragment shader's batches are
+  // whole 2x2 quads, so at least 4; a TCS runs a patch's invocations together). Results never
+  // depend on it: it exists to show that, and to measure what batching gains.
+  int batch_lanes = kMaxLanes;
 };
 
 // Where an interface variable lives (see above).

@@ -178,13 +178,12 @@ void evaluate_patch(const TessEvalProgram& tes, const PatchOutput& patch, int pr
 }
 
 void append_dump(std::uint32_t patch_id, const TessPattern& pattern, const ClipVertex* v,
-                 int records, std::vector<TessDumpRecord>& dump) {
+                 int records, std::array<int, 2> at, std::vector<TessDumpRecord>& dump) {
   for (std::size_t i = 0; i < pattern.points.coords.size(); ++i) {
-    const auto& vy = v[i * std::size_t(records)].varyings;
-    dump.push_back(TessDumpRecord{
-        patch_id, pattern.points.coords[i],
-        glm::vec3(vy[kVaryingPosition], vy[kVaryingPosition + 1], vy[kVaryingPosition + 2]),
-        glm::vec3(vy[kVaryingNormal], vy[kVaryingNormal + 1], vy[kVaryingNormal + 2])});
+    const float* vy = reinterpret_cast<const float*>(v + i * std::size_t(records)) + 4;
+    dump.push_back(TessDumpRecord{patch_id, pattern.points.coords[i],
+                                  glm::vec3(vy[at[0]], vy[at[0] + 1], vy[at[0] + 2]),
+                                  glm::vec3(vy[at[1]], vy[at[1] + 1], vy[at[1] + 2])});
   }
 }
 
@@ -195,6 +194,9 @@ void evaluate_task(std::size_t range_first, std::size_t first, std::size_t last,
                    ExecutorScratch& ex, TaskScratch& task, TriangleBatch& out) {
   const int nv = std::clamp(tes.num_varyings(), 0, kMaxVaryings);
   const std::size_t records = std::size_t(vertex_records(nv));
+  // Varyings past the program's count read as the zeros the store writes, within the records.
+  std::array<int, 2> dump_at = tes.dump_varyings();
+  for (int& at : dump_at) at = std::clamp(at, 0, int(16 * records) - 4 - 3);
   for (std::size_t p = first; p < last; ++p) {
     const PatchSlot& slot = ex.slots[p - range_first];
     if (!slot.pattern) continue;
@@ -214,7 +216,8 @@ void evaluate_task(std::size_t range_first, std::size_t first, std::size_t last,
     evaluate_patch(tes, patch, int(p), pattern, nv, evaluated);
     task.stats.tes_seconds += seconds_since(t0);
     task.stats.domain_points += n;
-    if (options.dump) append_dump(std::uint32_t(p), pattern, evaluated, int(records), task.dump);
+    if (options.dump)
+      append_dump(std::uint32_t(p), pattern, evaluated, int(records), dump_at, task.dump);
 
     // Primitive assembly in the generator's emission order.
     const std::size_t prims = domain.primitive_count();

@@ -99,6 +99,8 @@ class TessEvalProgram {
   virtual int num_varyings() const { return kBuiltinVaryings; }  // <= kMaxVaryings
   // Varyings that are flat (TriangleBatch::flat_varyings).
   virtual VaryingMask flat_varyings() const { return {}; }
+  // The first varyings of the world position and normal that --dump-tess records (TessDumpRecord).
+  virtual std::array<int, 2> dump_varyings() const { return {kVaryingPosition, kVaryingNormal}; }
   // tess_coord: gl_TessCoord as generated (triangles: (u, v, w), u weighs gl_in[0], v gl_in[1],
   // w gl_in[2]; quads and isolines: (u, v, 0)).
   virtual ClipVertex evaluate(const glm::vec3& tess_coord, const PatchOutput& patch,

@@ -267,6 +267,29 @@ void GlslProgram::set_uniform(const std::string& full_name, const UniformValue& 
   if (!found) throw std::invalid_argument("no active uniform named '" + name + "'");
 }
 
+std::optional<UniformShape> GlslProgram::uniform_shape(const std::string& full_name) const {
+  const std::string name = full_name.substr(0, full_name.find('['));
+  const bool element = name.size() != full_name.size();
+  for (const StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), fs_.get()}) {
+    if (!sp) continue;
+    const shader::Module& m = sp->exe->module();
+    for (const shader::Variable& v : m.variables) {
+      if (v.storage != spv::StorageClassUniformConstant || v.name != name) continue;
+      std::uint32_t type = v.type;
+      int elements = 1;
+      if (m.type(type).kind == TypeKind::Array) {
+        elements = element ? 1 : int(m.type(type).count);
+        type = m.type(type).element;
+      }
+      const Shape s = shape_of(m, type);
+      UniformShape u{s.scalar, s.columns, s.rows, elements, shape_name(s)};
+      if (elements > 1) u.glsl_name += "[" + std::to_string(elements) + "]";
+      return u;
+    }
+  }
+  return std::nullopt;
+}
+
 std::vector<std::string> GlslProgram::uniform_names() const {
   std::vector<std::string> names;
   for (const StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), fs_.get()})
@@ -297,7 +320,7 @@ std::optional<std::uint32_t> GlslProgram::attribute_location(const std::string& 
 
 TessLayout GlslProgram::tes_layout() const {
   if (!tes_) throw std::logic_error("tes_layout: no tessellation evaluation shader");
-  return layout_of(tes_->exe->module().modes);
+  return tes_layout_override_ ? *tes_layout_override_ : layout_of(tes_->exe->module().modes);
 }
 
 int GlslProgram::tcs_output_vertices() const { return tcs_ ? tcs_->exe->module().modes.output_vertices : 0; }
@@ -316,7 +339,8 @@ std::unique_ptr<TessControlProgram> GlslProgram::control(int patch_vertices, con
 
 std::unique_ptr<TessEvalProgram> GlslProgram::evaluation() const {
   if (!tes_) throw std::logic_error("evaluation: no tessellation evaluation shader");
-  return std::make_unique<GlslEvaluation>(*tes_, num_varyings_, flat_varyings_, primitive_id_varying_);
+  return std::make_unique<GlslEvaluation>(*tes_, tes_layout(), num_varyings_, flat_varyings_,
+                                          primitive_id_varying_);
 }
 
 std::unique_ptr<FragmentProgram> GlslProgram::fragment() const {

@@ -60,6 +60,14 @@ struct VertexAttribute {
   std::vector<std::uint32_t> words;  // vertex v's component k at v * components + k (doubles: 2 words)
 };
 
+// A default-block uniform's GLSL type: columns x rows of scalar (1 x N for a vector), elements
+// for an array.
+struct UniformShape {
+  shader::Scalar scalar = shader::Scalar::F32;
+  int columns = 1, rows = 1, elements = 1;
+  std::string glsl_name;  // "vec3", "mat4", "int[8]", "sampler"
+};
+
 class GlslProgram {
  public:
   // Builds the stages of a compiled program. The program must have vertex, tessellation
@@ -71,7 +79,9 @@ class GlslProgram {
   // Sets a uniform by name (optionally "name[i]") in every stage that declares it. Throws
   // std::invalid_argument if no stage has it or its GLSL type differs from the value's.
   void set_uniform(const std::string& name, const UniformValue& value);
-  std::vector<std::string> uniform_names() const;
+  std::vector<std::string> uniform_names() const;  // sorted, without duplicates
+  // The type of the uniform `name` (or of an element, for "name[i]"); nullopt if no stage has it.
+  std::optional<UniformShape> uniform_shape(const std::string& name) const;
   // Binds a texture to a sampler's binding (texture unit). The texture must outlive the draws.
   void bind_texture(std::uint32_t unit, const shader::Texture* texture);
   // Atomic counter buffers (binding -> 32-bit counters). A program that uses atomic counters is
@@ -100,6 +110,11 @@ class GlslProgram {
   std::unique_ptr<TessEvalProgram> evaluation() const;
   std::unique_ptr<FragmentProgram> fragment() const;
   int varyings() const { return num_varyings_; }
+  const VaryingMask& flat_varyings() const { return flat_varyings_; }
+  // Draw the tessellation evaluation shader's patches with this layout instead of the one it
+  // declares (the GLSL twins take the scene's spacing and winding, as the real-GL runner rewrites
+  // their layout line).
+  void override_tes_layout(const TessLayout& layout) { tes_layout_override_ = layout; }
 
  private:
   StageProgram* find(shader::Stage s);
@@ -109,7 +124,8 @@ class GlslProgram {
   std::map<std::uint32_t, std::vector<std::uint32_t>> counter_buffers_;
   int num_varyings_ = 0;
   VaryingMask flat_varyings_;  // TriangleBatch::flat_varyings
-  int primitive_id_varying_ = -1;  // the varying carrying gl_PrimitiveID to the FS, -1: none
+  int primitive_id_varying_ = -1;
+  std::optional<TessLayout> tes_layout_override_;  // the varying carrying gl_PrimitiveID to the FS, -1: none
 };
 
 }  // namespace tessref::glsl

@@ -182,27 +182,35 @@ void PassThroughControl::run(int, int invocation_id, const Patch& in, PatchOutpu
 // Tessellation evaluation
 
 void GlslEvaluation::evaluate_batch(const PatchOutput& patch, int primitive_id, TessEvalBatch& batch) const {
+  const int step = std::clamp(sp_.exe->limits().batch_lanes, 1, shader::kMaxLanes);
+  for (int first = 0; first < batch.count; first += step)
+    evaluate_lanes(patch, primitive_id, batch, first, std::min(step, batch.count - first));
+}
+
+void GlslEvaluation::evaluate_lanes(const PatchOutput& patch, int primitive_id, TessEvalBatch& batch,
+                                    int first, int n) const {
   Invocations& inv = sp_.prepare();
   fill_patch_inputs(sp_, inv, patch.vertices.data(), patch.vertex_count, &patch.patch, &patch.levels,
                     primitive_id);
-  const int n = batch.count;
   inv.begin(n);
   if (const IoVariable* tc = find_kind(sp_.io.inputs, IoKind::TessCoord))
-    for (int c = 0; c < 3; ++c) std::memcpy(inv.row(*tc->slot, std::uint32_t(c)), batch.tess_coord[c], 4 * std::size_t(n));
+    for (int c = 0; c < 3; ++c)
+      std::memcpy(inv.row(*tc->slot, std::uint32_t(c)), batch.tess_coord[c] + first, 4 * std::size_t(n));
   try {
     inv.run();
   } catch (const shader::ShaderRuntimeError& e) {
-    sp_.rethrow(e, "patch " + std::to_string(primitive_id) + ", invocation " + std::to_string(e.lane));
+    sp_.rethrow(e, "patch " + std::to_string(primitive_id) + ", invocation " + std::to_string(first + e.lane));
   }
   sp_.finish(inv);
-  for (int r = 0; r < varyings_; ++r) std::fill_n(batch.varyings[r], n, 0.0f);
-  for (int c = 0; c < 4; ++c) std::fill_n(batch.position[c], n, 0.0f);
+  for (int r = 0; r < varyings_; ++r) std::fill_n(batch.varyings[r] + first, n, 0.0f);
+  for (int c = 0; c < 4; ++c) std::fill_n(batch.position[c] + first, n, 0.0f);
   for (const IoVariable& v : sp_.io.outputs) {
     if (v.kind != IoKind::User && v.kind != IoKind::Position) continue;
     for (const IoWord& w : v.words) {
       const std::uint32_t* row = inv.row(*v.slot, w.var_word);
       auto dst = [&](std::uint32_t io) -> float* {
-        return io < 4 ? batch.position[io] : int(io - 4) < varyings_ ? batch.varyings[io - 4] : nullptr;
+        float* r = io < 4 ? batch.position[io] : int(io - 4) < varyings_ ? batch.varyings[io - 4] : nullptr;
+        return r ? r + first : nullptr;
       };
       if (w.scalar == Scalar::F64) {  // a double's lanes are interleaved: two varying rows
         float* lo = dst(w.io_word);
@@ -217,7 +225,7 @@ void GlslEvaluation::evaluate_batch(const PatchOutput& patch, int primitive_id, 
     }
   }
   if (primitive_id_varying_ >= 0)
-    std::fill_n(batch.varyings[primitive_id_varying_], n, std::bit_cast<float>(std::uint32_t(primitive_id)));
+    std::fill_n(batch.varyings[primitive_id_varying_] + first, n, std::bit_cast<float>(std::uint32_t(primitive_id)));
 }
 
 ClipVertex GlslEvaluation::evaluate(const glm::vec3& tess_coord, const PatchOutput& patch, int primitive_id) const {
@@ -238,20 +246,26 @@ ClipVertex GlslEvaluation::evaluate(const glm::vec3& tess_coord, const PatchOutp
 // Fragment
 
 void GlslFragment::shade_batch(FragmentBatch& batch) const {
+  // Whole quads per run: derivatives difference the lanes of a quad.
+  const int step = std::max(4, std::clamp(sp_.exe->limits().batch_lanes, 1, shader::kMaxLanes) & ~3);
+  for (int first = 0; first < batch.lanes(); first += step)
+    shade_lanes(batch, first, std::min(step, batch.lanes() - first));
+}
+
+void GlslFragment::shade_lanes(FragmentBatch& batch, int first, int n) const {
   Invocations& inv = sp_.prepare();
-  const int n = batch.lanes();
   inv.begin(n);
   for (const IoVariable& v : sp_.io.inputs) {
     switch (v.kind) {
       case IoKind::FragCoord:
-        for (int c = 0; c < 4; ++c) std::memcpy(inv.row(*v.slot, std::uint32_t(c)), batch.frag_coord[c], 4 * std::size_t(n));
+        for (int c = 0; c < 4; ++c) std::memcpy(inv.row(*v.slot, std::uint32_t(c)), batch.frag_coord[c] + first, 4 * std::size_t(n));
         break;
       case IoKind::FrontFacing:
-        for (int l = 0; l < n; ++l) inv.row(*v.slot, 0)[l] = batch.front_facing[l] ? 1u : 0u;
+        for (int l = 0; l < n; ++l) inv.row(*v.slot, 0)[l] = batch.front_facing[first + l] ? 1u : 0u;
         break;
       case IoKind::PrimitiveId:
         if (primitive_id_varying_ >= 0)
-          std::memcpy(inv.row(*v.slot, 0), batch.varyings[primitive_id_varying_], 4 * std::size_t(n));
+          std::memcpy(inv.row(*v.slot, 0), batch.varyings[primitive_id_varying_] + first, 4 * std::size_t(n));
         break;
       case IoKind::User:
         for (const IoWord& w : v.words) {
@@ -262,11 +276,11 @@ void GlslFragment::shade_batch(FragmentBatch& batch) const {
             std::fill_n(row, n * nw, 0u);
           } else if (w.scalar == Scalar::F64) {  // two varying rows into interleaved lanes
             for (int l = 0; l < n; ++l) {
-              std::memcpy(row + 2 * l, batch.varyings[k] + l, 4);
-              std::memcpy(row + 2 * l + 1, batch.varyings[k + 1] + l, 4);
+              std::memcpy(row + 2 * l, batch.varyings[k] + first + l, 4);
+              std::memcpy(row + 2 * l + 1, batch.varyings[k + 1] + first + l, 4);
             }
           } else {
-            std::memcpy(row, batch.varyings[k], 4 * std::size_t(n));
+            std::memcpy(row, batch.varyings[k] + first, 4 * std::size_t(n));
           }
         }
         break;
@@ -276,19 +290,19 @@ void GlslFragment::shade_batch(FragmentBatch& batch) const {
   try {
     inv.run();
   } catch (const shader::ShaderRuntimeError& e) {
-    sp_.rethrow(e, "fragment (" + std::to_string(int(batch.frag_coord[0][e.lane])) + ", " +
-                       std::to_string(int(batch.frag_coord[1][e.lane])) + ")");
+    sp_.rethrow(e, "fragment (" + std::to_string(int(batch.frag_coord[0][first + e.lane])) + ", " +
+                       std::to_string(int(batch.frag_coord[1][first + e.lane])) + ")");
   }
   sp_.finish(inv);
   for (int c = 0; c < 4; ++c) {
-    std::fill_n(batch.color[c], n, 0.0f);
-    std::fill_n(batch.aux[c], n, 0.0f);
+    std::fill_n(batch.color[c] + first, n, 0.0f);
+    std::fill_n(batch.aux[c] + first, n, 0.0f);
   }
   for (const IoVariable& v : sp_.io.outputs) {
     if (v.kind != IoKind::User) continue;
     for (const IoWord& w : v.words) {
       if (w.scalar == Scalar::F64 || w.io_word >= 12) continue;
-      float* dst = w.io_word < 8 ? batch.color[w.io_word - 4] : batch.aux[w.io_word - 8];
+      float* dst = (w.io_word < 8 ? batch.color[w.io_word - 4] : batch.aux[w.io_word - 8]) + first;
       const std::uint32_t* row = inv.row(*v.slot, w.var_word);
       if (w.scalar == Scalar::F32) std::memcpy(dst, row, 4 * std::size_t(n));
       else for (int l = 0; l < n; ++l) dst[l] = w.scalar == Scalar::I32 ? float(std::int32_t(row[l])) : float(row[l]);
@@ -296,7 +310,7 @@ void GlslFragment::shade_batch(FragmentBatch& batch) const {
   }
   const std::uint8_t* killed = inv.discarded();
   for (int l = 0; l < n; ++l)
-    if (killed[l]) batch.live[l] = 0;
+    if (killed[l]) batch.live[first + l] = 0;
 }
 
 FragmentOutput GlslFragment::shade(const FragmentInput& in) const {
@@ -324,10 +338,11 @@ FragmentOutput GlslFragment::shade(const FragmentInput& in) const {
 void run_vertex_stage(const StageProgram& sp, const std::vector<VertexAttribute>& attributes,
                       std::size_t first, std::size_t count, int instance, StageVertex* out,
                       const Parallel& parallel) {
-  const std::size_t batches = (count + shader::kMaxLanes - 1) / shader::kMaxLanes;
+  const std::size_t step = std::size_t(std::clamp(sp.exe->limits().batch_lanes, 1, shader::kMaxLanes));
+  const std::size_t batches = (count + step - 1) / step;
   auto run_batch = [&](std::size_t b) {
-    const std::size_t start = b * shader::kMaxLanes;
-    const int n = int(std::min<std::size_t>(shader::kMaxLanes, count - start));
+    const std::size_t start = b * step;
+    const int n = int(std::min<std::size_t>(step, count - start));
     Invocations& inv = sp.prepare();
     inv.begin(n);
     for (const IoVariable& v : sp.io.inputs) {

@@ -37,16 +37,22 @@ class PassThroughControl final : public TessControlProgram {
 class GlslEvaluation final : public TessEvalProgram {
  public:
   // primitive_id_varying: the varying that carries gl_PrimitiveID to the fragment shader (-1: none).
-  GlslEvaluation(const StageProgram& sp, int varyings, const VaryingMask& flat, int primitive_id_varying)
-      : sp_(sp), varyings_(varyings), flat_(flat), primitive_id_varying_(primitive_id_varying) {}
-  TessLayout layout() const override { return layout_of(sp_.exe->module().modes); }
+  GlslEvaluation(const StageProgram& sp, const TessLayout& layout, int varyings, const VaryingMask& flat,
+                 int primitive_id_varying)
+      : sp_(sp), layout_(layout), varyings_(varyings), flat_(flat), primitive_id_varying_(primitive_id_varying) {}
+  TessLayout layout() const override { return layout_; }
   int num_varyings() const override { return varyings_; }
   VaryingMask flat_varyings() const override { return flat_; }
+  // --dump-tess: locations 0 and 1 (the twins' v_world_position and v_world_normal).
+  std::array<int, 2> dump_varyings() const override { return {0, 4}; }
   ClipVertex evaluate(const glm::vec3& tess_coord, const PatchOutput& patch, int primitive_id) const override;
   void evaluate_batch(const PatchOutput& patch, int primitive_id, TessEvalBatch& batch) const override;
 
  private:
+  // Points [first, first + n) of the batch as one run of the executor.
+  void evaluate_lanes(const PatchOutput& patch, int primitive_id, TessEvalBatch& batch, int first, int n) const;
   const StageProgram& sp_;
+  TessLayout layout_;
   int varyings_;
   VaryingMask flat_;
   int primitive_id_varying_;
@@ -60,6 +66,7 @@ class GlslFragment final : public FragmentProgram {
   void shade_batch(FragmentBatch& batch) const override;
 
  private:
+  void shade_lanes(FragmentBatch& batch, int first, int n) const;  // lanes [first, first + n)
   const StageProgram& sp_;
   int varyings_;
   int primitive_id_varying_;

@@ -1,0 +1,230 @@
+#include "pipeline/glsl_scene.h"
+
+#include <bit>
+#include <fstream>
+#include <sstream>
+
+#include "common/error.h"
+#include "pipeline/camera.h"
+#include "pipeline/glsl_draw.h"
+#include "shader/glsl_compile.h"
+#include "stages/glsl/twins.h"
+#include "stages/programs/transform.h"
+#include "stages/tess_levels_adaptive.h"
+
+namespace tessref {
+namespace {
+
+using shader::Scalar;
+using shader::Stage;
+
+std::string read_file(const Scene& scene, const char* key, const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  if (!in || !(text << in.rdbuf()))
+    throw InputError(scene.source + ": shaders." + key + ": cannot read '" + path.string() + "'");
+  return text.str();
+}
+
+std::vector<shader::ShaderSource> scene_sources(const Scene& scene) {
+  const ShaderSettings& s = scene.shaders;
+  std::vector<shader::ShaderSource> out;
+  if (s.program == ShaderProgram::Twins) {
+    auto twin = [&](Stage stage, const std::string& name) {
+      out.push_back({stage, name, 1, glsl::twin_source(name)});
+    };
+    const std::string scheme = scene.tessellation.scheme == SurfaceScheme::PN ? "pn_triangles" : "flat";
+    twin(Stage::Vertex, "transform.vert");
+    if (scene.tessellation.enabled) {
+      twin(Stage::TessControl, scheme + ".tesc");
+      twin(Stage::TessEval, scheme + ".tese");
+    }
+    twin(Stage::Fragment, scene.shading == Shading::Phong ? "phong.frag" : "normals.frag");
+    return out;
+  }
+  auto file = [&](Stage stage, const char* key, const std::filesystem::path& path) {
+    if (!path.empty()) out.push_back({stage, path.string(), 1, read_file(scene, key, path)});
+  };
+  file(Stage::Vertex, "vertex", s.vertex);
+  file(Stage::TessControl, "tess_control", s.tess_control);
+  file(Stage::TessEval, "tess_evaluation", s.tess_evaluation);
+  file(Stage::Fragment, "fragment", s.fragment);
+  return out;
+}
+
+glsl::UniformValue floats(std::initializer_list<float> v, int columns = 1, int rows = 0) {
+  glsl::UniformValue u;
+  u.scalar = Scalar::F32;
+  u.columns = columns;
+  u.rows = rows ? rows : int(v.size()) / columns;
+  for (float x : v) u.words.push_back(std::bit_cast<std::uint32_t>(x));
+  return u;
+}
+glsl::UniformValue vec(const float* p, int n) {
+  glsl::UniformValue u;
+  u.rows = n;
+  for (int i = 0; i < n; ++i) u.words.push_back(std::bit_cast<std::uint32_t>(p[i]));
+  return u;
+}
+glsl::UniformValue mat(const float* p, int columns, int rows) {
+  glsl::UniformValue u = vec(p, columns * rows);
+  u.columns = columns;
+  u.rows = rows;
+  return u;
+}
+glsl::UniformValue integer(int v, Scalar s = Scalar::I32) {
+  glsl::UniformValue u;
+  u.scalar = s;
+  u.words.push_back(std::uint32_t(v));
+  return u;
+}
+
+int normal_mode_index(NormalMode m) {
+  switch (m) {
+    case NormalMode::Linear: return 0;
+    case NormalMode::Quadratic: return 1;
+    case NormalMode::QuadraticCorrected: return 2;
+    case NormalMode::Analytic: return 3;
+  }
+  return 1;
+}
+
+// The scene uniforms: every uniform the GLSL twins read, with the values render_scene gives the
+// C++ programs (as the real-GL runner sets them, glref/scene_renderer.cpp).
+void set_scene_uniforms(const Scene& scene, glsl::GlslProgram& program) {
+  const std::vector<std::string> names = program.uniform_names();
+  auto set = [&](const std::string& name, const glsl::UniformValue& v) {
+    const std::string base = name.substr(0, name.find('['));
+    if (std::binary_search(names.begin(), names.end(), base)) program.set_uniform(name, v);
+  };
+  const glm::mat4 view_proj =
+      projection_matrix(scene.camera, scene.width, scene.height) * view_matrix(scene.camera);
+  const auto vs = programs::TransformVertexShader::from(model_matrix(scene.transform), view_proj);
+  set("u_model", mat(&vs.u_model[0][0], 4, 4));
+  set("u_view_projection", mat(&vs.u_view_projection[0][0], 4, 4));
+  set("u_normal_matrix", mat(&vs.u_normal_matrix[0][0], 3, 3));
+  set("u_view_proj", mat(&vs.u_view_projection[0][0], 4, 4));
+  const TessellationSettings& t = scene.tessellation;
+  const AdaptiveLevelSettings screen;
+  set("u_normal_mode", integer(normal_mode_index(t.normal_mode)));
+  set("u_adaptive", integer(t.adaptive.enabled ? 1 : 0, Scalar::Bool));
+  set("u_outer", vec(t.levels.outer.data(), 4));
+  set("u_inner", vec(t.levels.inner.data(), 2));
+  set("u_viewport", floats({float(scene.width), float(scene.height)}));
+  set("u_pixels_per_segment", floats({t.adaptive.pixels_per_segment}));
+  set("u_min_level", floats({screen.min_level}));
+  set("u_max_level", floats({screen.max_level}));
+  set("u_inner_rule", integer(screen.inner_rule == InnerLevelRule::Max ? 0 : 1));
+  set("u_eye", vec(&scene.camera.eye.x, 3));
+  set("u_num_lights", integer(int(scene.lights.size())));
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    set("u_light_position[" + std::to_string(i) + "]", vec(&scene.lights[i].position.x, 3));
+    set("u_light_intensity[" + std::to_string(i) + "]", vec(&scene.lights[i].intensity.x, 3));
+  }
+  set("u_ka", floats({scene.material.ka}));
+  set("u_kd", floats({scene.material.kd}));
+  set("u_ks", floats({scene.material.ks}));
+  set("u_shininess", floats({scene.material.shininess}));
+  set("u_color", vec(&scene.material.color.x, 3));
+}
+
+// shaders.uniforms: the scene's numbers in the uniform's own GLSL type.
+void set_user_uniforms(const Scene& scene, glsl::GlslProgram& program) {
+  for (const UniformSetting& u : scene.shaders.uniforms) {
+    const std::string key = scene.source + ": shaders.uniforms." + u.name;
+    const auto shape = program.uniform_shape(u.name);
+    if (!shape) {
+      std::string active;
+      for (const std::string& n : program.uniform_names()) active += (active.empty() ? "" : ", ") + n;
+      throw InputError(key + ": the program has no active uniform of that name (active: " +
+                       (active.empty() ? "none" : active) + ")");
+    }
+    glsl::UniformValue v;
+    v.scalar = shape->scalar;
+    v.columns = shape->columns;
+    v.rows = shape->rows;
+    const std::size_t want = std::size_t(shape->columns * shape->rows * shape->elements);
+    if (u.values.size() != want && u.values.size() != std::size_t(shape->columns * shape->rows))
+      throw InputError(key + ": the uniform is a " + shape->glsl_name + ", which takes " + std::to_string(want) +
+                       " values, got " + std::to_string(u.values.size()));
+    if (u.boolean != (shape->scalar == Scalar::Bool))
+      throw InputError(key + ": the uniform is a " + shape->glsl_name + (u.boolean ? ", not a bool" : ", give true or false"));
+    for (double x : u.values) {
+      switch (shape->scalar) {
+        case Scalar::F32: v.words.push_back(std::bit_cast<std::uint32_t>(float(x))); break;
+        case Scalar::F64: {
+          const auto b = std::bit_cast<std::uint64_t>(x);
+          v.words.push_back(std::uint32_t(b));
+          v.words.push_back(std::uint32_t(b >> 32));
+          break;
+        }
+        case Scalar::Bool: v.words.push_back(x != 0.0 ? 1u : 0u); break;
+        default: {
+          const bool is_unsigned = shape->scalar == Scalar::U32;
+          if (x != std::floor(x) || x < (is_unsigned ? 0.0 : -2147483648.0) || x > (is_unsigned ? 4294967295.0 : 2147483647.0))
+            throw InputError(key + ": the uniform is a " + shape->glsl_name + "; " + std::to_string(x) +
+                             " is not a 32-bit " + (is_unsigned ? "unsigned " : "") + "integer");
+          v.words.push_back(is_unsigned ? std::uint32_t(x) : std::uint32_t(std::int32_t(x)));
+        }
+      }
+    }
+    program.set_uniform(u.name, v);
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<glsl::GlslProgram> build_scene_program(const Scene& scene) {
+  const std::vector<shader::ShaderSource> sources = scene_sources(scene);
+  shader::ExecLimits limits;
+  limits.batch_lanes = scene.shaders.batch_lanes;
+  limits.max_instructions = scene.shaders.max_instructions;
+  std::unique_ptr<glsl::GlslProgram> program;
+  try {
+    program = std::make_unique<glsl::GlslProgram>(shader::compile_program(sources), limits);
+  } catch (const shader::SpirvError& e) {
+    throw InputError(scene.source + ": shaders: " + e.what());
+  }
+  if (scene.tessellation.enabled != program->has_tes())
+    throw InputError(scene.source + (program->has_tes()
+                                         ? ": shaders: the program has tessellation shaders but tessellation.enabled is false"
+                                         : ": shaders: tessellation.enabled is true but the program has no tessellation evaluation shader"));
+  // The twins' TES layout line names one spacing and winding; the scene chooses them (the
+  // real-GL runner rewrites the line the same way).
+  if (scene.shaders.program == ShaderProgram::Twins && program->has_tes())
+    program->override_tes_layout(TessLayout{TessDomain::Triangles, scene.tessellation.spacing,
+                                            scene.tessellation.winding, false});
+  set_scene_uniforms(scene, *program);
+  set_user_uniforms(scene, *program);
+  return program;
+}
+
+DrawStats draw_glsl_scene(const Scene& scene, const glsl::GlslProgram& program, const Mesh& mesh,
+                          Framebuffer& fb, const Parallel& parallel, const DrawOptions& options) {
+  std::vector<glsl::VertexAttribute> attributes;
+  for (const auto& [input, source] : scene.shaders.attributes) {
+    const auto location = program.attribute_location(input);
+    if (!location) continue;  // an input this program does not have (or does not use)
+    const std::vector<glm::vec3>& data = source == "position" ? mesh.positions : mesh.normals;
+    glsl::VertexAttribute a;
+    a.location = *location;
+    a.components = 3;
+    for (const glm::vec3& v : data)
+      for (int c = 0; c < 3; ++c) a.words.push_back(std::bit_cast<std::uint32_t>(v[c]));
+    attributes.push_back(std::move(a));
+  }
+  GlslDrawCall call;
+  call.indices = mesh.indices;
+  call.vertex_count = mesh.vertex_count();
+  call.patches = scene.tessellation.enabled;
+  call.patch_vertices = 3;
+  RasterState state;
+  state.cull_back_faces = scene.cull_back_faces;
+  try {
+    return draw_glsl(program, attributes, call, state, fb, parallel, options);
+  } catch (const glsl::StageError& e) {
+    throw InputError(scene.source + ": " + e.what());
+  }
+}
+
+}  // namespace tessref

@@ -1,0 +1,24 @@
+#pragma once
+// A scene drawn with GLSL on tessref's executor (scene key `shaders`): the built-in programs' GLSL
+// twins, or the user's files. The scene's matrices, lights, material and tessellation settings
+// reach the program as the uniforms the twins declare (the "scene uniforms", README), set whenever
+// the program has one of that name; `shaders.uniforms` sets any other (or overrides them).
+#include <memory>
+
+#include "pipeline/draw.h"
+#include "pipeline/mesh.h"
+#include "pipeline/scene.h"
+#include "stages/glsl/glsl_program.h"
+
+namespace tessref {
+
+// Compiles the scene's program (InputError: a file that cannot be read, compile and link errors
+// with file and line, a uniform value whose type does not fit) with its uniforms set for a
+// width x height image.
+std::unique_ptr<glsl::GlslProgram> build_scene_program(const Scene& scene);
+
+// Draws the mesh with the scene's GLSL program into fb (already cleared).
+DrawStats draw_glsl_scene(const Scene& scene, const glsl::GlslProgram& program, const Mesh& mesh,
+                          Framebuffer& fb, const Parallel& parallel, const DrawOptions& options);
+
+}  // namespace tessref
