@@ -136,13 +136,23 @@ void Runner::store(const XIns& x) {
 }
 
 void Runner::matrix(const XIns& x) {
-  // Columns of a: x.aux, rows of a: x.m; columns of b: x.d. Sums run in index order, as glm's.
+  // Columns of a: x.aux, rows of a: x.m; columns of b: x.d. Sums run in index order, as glm's,
+  // except mat4 * vec4, which glm (and so the built-in programs) sums as (c0 + c1) + (c2 + c3).
   auto go = [&](auto zero) {
     using T = decltype(zero);
     const std::uint32_t ca = x.aux, ra = x.m;
     auto a = [&](std::uint32_t col, std::uint32_t r) { return row<T>(x.a, col * ra + r); };
     switch (x.op) {
       case XOp::MatTimesVec:  // (ra x ca) * vec(ca) -> vec(ra)
+        if (ca == 4 && ra == 4) {
+          for (std::uint32_t r = 0; r < 4; ++r)
+            put(row<T>(x.dst, r), [&](int l) {
+              const T p0 = a(0, r)[l] * row<T>(x.b, 0)[l], p1 = a(1, r)[l] * row<T>(x.b, 1)[l];
+              const T p2 = a(2, r)[l] * row<T>(x.b, 2)[l], p3 = a(3, r)[l] * row<T>(x.b, 3)[l];
+              return (p0 + p1) + (p2 + p3);
+            });
+          break;
+        }
         for (std::uint32_t r = 0; r < ra; ++r)
           put(row<T>(x.dst, r), [&](int l) {
             T s = a(0, r)[l] * row<T>(x.b, 0)[l];
