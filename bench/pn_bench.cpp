@@ -12,15 +12,25 @@
 //             discard = PatchMesh::draw with rasterizer discard and a GL_PRIMITIVES_GENERATED
 //             query, nothing captured (llvmpipe still runs VS/TCS/TPG/TES on one thread);
 //             the flat twins under the same conditions give llvmpipe's floor without PN's TES.
+//   executor: the same GLSL twins (transform.vert + pn_triangles.tesc/.tese, normals.frag to make
+//             a whole program) on tessref's SPIR-V executor, through tessellate_chunks exactly as
+//             BM_TessrefPn (same control points, chunks and options), at batch_lanes 64 and 1
+//             (one invocation at a time).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <bit>
 #include <cstdio>
+#include <cstring>
 #include <map>
 #include <memory>
 #include <string>
 
 #include "common/parallel.h"
 #include "pipeline/procedural.h"
+#include "shader/glsl_compile.h"
+#include "stages/glsl/glsl_program.h"
+#include "stages/glsl/twins.h"
 #include "stages/programs/transform.h"
 #include "stages/schemes/pn_triangles.h"
 #include "stages/tess_stage.h"
@@ -107,6 +117,142 @@ void BM_TessrefPn(benchmark::State& state) {
   state.counters["threads"] = parallel().threads();
 }
 BENCHMARK(BM_TessrefPn)->ArgsProduct({{12, 64}, {256, 16}})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The GLSL twins compiled once (glslang + SPIR-V); each benchmark builds its GlslProgram from them.
+const shader::CompiledProgram& twins_compiled() {
+  static const shader::CompiledProgram p = [] {
+    std::vector<shader::ShaderSource> sources;
+    for (const auto& [stage, name] : {std::pair{shader::Stage::Vertex, "transform.vert"},
+                                      std::pair{shader::Stage::TessControl, "pn_triangles.tesc"},
+                                      std::pair{shader::Stage::TessEval, "pn_triangles.tese"},
+                                      std::pair{shader::Stage::Fragment, "normals.frag"}})
+      sources.push_back({stage, name, 1, glsl::twin_source(name)});
+    return shader::compile_program(sources);
+  }();
+  return p;
+}
+
+glsl::UniformValue uniform_floats(const float* p, int columns, int rows) {
+  glsl::UniformValue u;
+  u.columns = columns;
+  u.rows = rows;
+  for (int i = 0; i < columns * rows; ++i) u.words.push_back(std::bit_cast<std::uint32_t>(p[i]));
+  return u;
+}
+glsl::UniformValue uniform_int(int v, shader::Scalar s = shader::Scalar::I32) {
+  glsl::UniformValue u;
+  u.scalar = s;
+  u.words.push_back(std::uint32_t(v));
+  return u;
+}
+
+// The twins on the executor: the same draw as Tessref. Control points: the twins' vertex stage
+// (transform.vert, identity matrices) run on the mesh, so world position and normal sit in I/O
+// slots 1 and 2 (locations 0 and 1; slot 0 is gl_Position), where the twins' TCS reads them; they
+// are checked bit for bit against Tessref's control points.
+struct Executor {
+  std::unique_ptr<glsl::GlslProgram> program;
+  std::unique_ptr<TessControlProgram> tcs;
+  std::unique_ptr<TessEvalProgram> tes;
+  std::vector<StageVertex> cp;
+  std::size_t chunk;
+  Executor(float level, std::size_t chunk_patches, int batch_lanes) : chunk(chunk_patches) {
+    shader::ExecLimits limits;
+    limits.batch_lanes = batch_lanes;
+    program = std::make_unique<glsl::GlslProgram>(twins_compiled(), limits);
+    program->override_tes_layout(kLayout);
+    // The uniforms the twins declare, with the values Tessref gives PnTcs/PnTes (set_scene_uniforms
+    // in pipeline/glsl_scene.cpp names them all); the adaptive-level ones are unused (u_adaptive false).
+    const std::vector<std::string> names = program->uniform_names();
+    auto set = [&](const std::string& name, const glsl::UniformValue& v) {
+      if (std::binary_search(names.begin(), names.end(), name)) program->set_uniform(name, v);
+    };
+    const auto vs = programs::TransformVertexShader::from(glm::mat4(1.0f), glm::mat4(1.0f));
+    const PnTes reference;  // its view_proj, the matrix Tessref's PnTes uses
+    const TessLevelSettings levels = TessLevelSettings::uniform(level, level);
+    const AdaptiveLevelSettings screen;
+    set("u_model", uniform_floats(&vs.u_model[0][0], 4, 4));
+    set("u_view_projection", uniform_floats(&vs.u_view_projection[0][0], 4, 4));
+    set("u_normal_matrix", uniform_floats(&vs.u_normal_matrix[0][0], 3, 3));
+    set("u_view_proj", uniform_floats(&reference.view_proj[0][0], 4, 4));
+    set("u_normal_mode", uniform_int(1));  // quadratic
+    set("u_adaptive", uniform_int(0, shader::Scalar::Bool));
+    set("u_outer", uniform_floats(levels.constant.outer.data(), 1, 4));
+    set("u_inner", uniform_floats(levels.constant.inner.data(), 1, 2));
+    set("u_viewport", uniform_floats(&screen.viewport_pixels[0], 1, 2));
+    set("u_pixels_per_segment", uniform_floats(&screen.pixels_per_segment, 1, 1));
+    set("u_min_level", uniform_floats(&screen.min_level, 1, 1));
+    set("u_max_level", uniform_floats(&screen.max_level, 1, 1));
+    set("u_inner_rule", uniform_int(screen.inner_rule == InnerLevelRule::Max ? 0 : 1));
+    tcs = program->control(3, glm::vec4(level), glm::vec2(level));
+    tes = program->evaluation();
+
+    std::vector<glsl::VertexAttribute> attributes;
+    for (const auto& [input, data] : {std::pair{"in_position", &mesh().positions}, std::pair{"in_normal", &mesh().normals}}) {
+      glsl::VertexAttribute a;
+      a.location = program->attribute_location(input).value();
+      a.components = 3;
+      for (const glm::vec3& v : *data)
+        for (int c = 0; c < 3; ++c) a.words.push_back(std::bit_cast<std::uint32_t>(v[c]));
+      attributes.push_back(std::move(a));
+    }
+    cp.resize(mesh().positions.size());
+    program->run_vertices(attributes, 0, cp.size(), 0, cp.data(), parallel());
+  }
+  // Whether the executor's control points are Tessref's (xyz of position and normal, bit for bit).
+  bool same_control_points() const {
+    const std::vector<StageVertex>& ref = control_points();
+    for (std::size_t i = 0; i < cp.size(); ++i)
+      if (std::memcmp(&cp[i].attr[1], &ref[i].attr[kAttrPosition], 12) != 0 ||
+          std::memcmp(&cp[i].attr[2], &ref[i].attr[kAttrNormal], 12) != 0)
+        return false;
+    return true;
+  }
+  TessStats run(std::size_t& triangles) const {
+    const TessDrawInput input{cp, mesh().indices, 3};
+    return tessellate_chunks(input, chunk, *tcs, *tes, {}, parallel(),
+                             [&](const TriangleBatch& b) { triangles += b.triangle_count(); });
+  }
+};
+
+// Arguments: level, patches per chunk, batch_lanes (64: the executor's batch; 1: one invocation
+// at a time). One untimed draw first checks the control points and that the domain-point and
+// triangle counts are those of the C++ programs (the label gives them).
+void BM_ExecutorPn(benchmark::State& state) {
+  const float level = float(state.range(0));
+  const Executor e(level, std::size_t(state.range(1)), int(state.range(2)));
+  if (!e.same_control_points()) return state.SkipWithError("the twins' vertex stage gave other control points");
+  const TessStats expected = reference_stats(level);
+  std::size_t check_triangles = 0;
+  const TessStats check = e.run(check_triangles);
+  if (check.domain_points != expected.domain_points || check.triangles_out != expected.triangles_out ||
+      check_triangles != expected.triangles_out)
+    return state.SkipWithError(("executor: " + std::to_string(check.domain_points) + " points, " +
+                                std::to_string(check.triangles_out) + " triangles; C++ programs: " +
+                                std::to_string(expected.domain_points) + ", " +
+                                std::to_string(expected.triangles_out))
+                                   .c_str());
+  state.SetLabel(std::to_string(check.domain_points) + " points, " + std::to_string(check.triangles_out) +
+                 " triangles per draw (= C++ programs)");
+  std::uint64_t points = 0;
+  std::size_t triangles = 0;
+  TessStats last;
+  for (auto _ : state) {
+    last = e.run(triangles);
+    points += last.domain_points;
+  }
+  bench::set_work_counters(state, bench::work::pn_tessellation(last.domain_points, last.triangles_out));
+  state.counters["vertices_per_s"] = benchmark::Counter(double(points), benchmark::Counter::kIsRate);
+  state.counters["triangles_per_s"] = benchmark::Counter(double(triangles), benchmark::Counter::kIsRate);
+  state.counters["points_per_draw"] = double(check.domain_points);
+  state.counters["triangles_per_draw"] = double(check.triangles_out);
+  state.counters["threads"] = parallel().threads();
+  state.counters["batch_lanes"] = double(state.range(2));
+}
+BENCHMARK(BM_ExecutorPn)
+    ->ArgsProduct({{12, 64}, {256, 16}, {64, 1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 #ifdef TESSREF_HAVE_GLREF
 
@@ -213,6 +359,29 @@ class RatioReporter : public bench::RateReporter {
         std::printf("\n");
       }
     }
+    bool header = false;
+    for (int level : {12, 64})
+      for (int chunk : {256, 16}) {
+        const std::string lc = std::to_string(level) + "/" + std::to_string(chunk);
+        const double e64 = rate("BM_ExecutorPn/" + lc + "/64/real_time"), e1 = rate("BM_ExecutorPn/" + lc + "/1/real_time");
+        if (e64 == 0.0 && e1 == 0.0) continue;
+        if (!header) {
+          std::printf("\nGLSL twins on the executor (Mvertices/s) and ratios of batch 64 to the others\n");
+          std::printf("level  chunk  batch 64  batch 1  C++ programs  llvmpipe discard  /llvmpipe  /C++  /batch 1\n");
+          header = true;
+        }
+        const double t = rate("BM_TessrefPn/" + lc + "/real_time");
+        const double d = rate("BM_LlvmpipePnDiscard/" + std::to_string(level) + "/real_time");
+        auto text = [](const char* f, double v) {
+          char buf[32];
+          std::snprintf(buf, sizeof buf, f, v);
+          return std::string(buf);
+        };
+        auto mv = [&](double r) { return r > 0.0 ? text("%.2f", r / 1e6) : std::string("n/a"); };
+        auto q = [&](double r) { return e64 > 0.0 && r > 0.0 ? text("%.2fx", e64 / r) : std::string("n/a"); };
+        std::printf("%5d  %5d  %8s  %7s  %12s  %16s  %9s  %5s  %8s\n", level, chunk, mv(e64).c_str(), mv(e1).c_str(),
+                    mv(t).c_str(), mv(d).c_str(), q(d).c_str(), q(t).c_str(), q(e1).c_str());
+      }
     for (int level : {12, 64}) {
       const double f = rate("BM_LlvmpipeFlatDiscard/" + std::to_string(level) + "/real_time");
       if (f > 0.0) std::printf("level %d, llvmpipe flat twins, discard (no PN): %.2f Mvertices/s\n", level, f / 1e6);

@@ -43,7 +43,17 @@ std::vector<shader::ShaderSource> scene_sources(const Scene& scene) {
     return out;
   }
   auto file = [&](Stage stage, const char* key, const std::filesystem::path& path) {
-    if (!path.empty()) out.push_back({stage, path.string(), 1, read_file(scene, key, path)});
+    if (path.empty()) return;
+    const std::string name = path.string();
+    if (name.rfind("twin:", 0) == 0) {
+      try {
+        out.push_back({stage, name.substr(5), 1, glsl::twin_source(name.substr(5))});
+      } catch (const std::invalid_argument& e) {
+        throw InputError(scene.source + ": shaders." + key + ": " + e.what());
+      }
+      return;
+    }
+    out.push_back({stage, name, 1, read_file(scene, key, path)});
   };
   file(Stage::Vertex, "vertex", s.vertex);
   file(Stage::TessControl, "tess_control", s.tess_control);

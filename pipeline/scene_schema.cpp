@@ -156,7 +156,9 @@ ShaderSettings read_shaders(JsonObject o, const std::filesystem::path& base_dir)
   else o.fail("program", "expected one of builtin, twins, custom, got \"" + program + "\"");
   auto path = [&](const char* key) -> std::filesystem::path {
     if (!o.has(key)) return {};
-    std::filesystem::path p = o.string(key);
+    const std::string s = o.string(key);
+    if (s.rfind("twin:", 0) == 0) return s;  // a built-in program's GLSL twin (stages/glsl/twins.h)
+    std::filesystem::path p = s;
     return p.is_relative() ? base_dir / p : p;
   };
   s.vertex = path("vertex");

@@ -2,7 +2,8 @@
 # tessref against Mesa llvmpipe, in one run, and the machine's limits (issue 7; docs/benchmarks.md,
 # bench/README.md):
 #   1. frame time at 1024x1024 (frame_bench): default scene (PN 12), icosphere PN 64, Wuson PN 12/64;
-#   2. the primitive generator alone (tpg_bench) and PN patch evaluation alone (pn_bench);
+#   2. the primitive generator alone (tpg_bench) and PN patch evaluation alone (pn_bench), also with
+#      the GLSL twins on tessref's SPIR-V executor (batch 64 and 1);
 #   3. the rasterizer alone on a seeded triangle soup (raster_bench);
 #   4. memory bandwidth and fp32 FMA peak (machine_limits), and every figure as a share of them.
 # Each benchmark program alternates tessref and llvmpipe (random interleaving of repetitions) and
@@ -22,7 +23,7 @@ for arg in "$@"; do
   case "$arg" in
     --quick) quick=1 ;;
     --no-build) build_step=0 ;;
-    -h|--help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "bench.sh: unknown argument '$arg' (try --help)" >&2; exit 2 ;;
   esac
 done
@@ -92,7 +93,7 @@ run frames_wuson64 frame_bench "$r_heavy" \
   --benchmark_filter='^BM_(TessrefFrame/wuson64|LlvmpipeFrame/wuson64/rgba32f)/'
 run tpg tpg_bench "$r_tpg"
 run pn pn_bench "$r_pn" \
-  --benchmark_filter='^BM_(TessrefPn/(12/256|64/16)|LlvmpipePnDiscard/(12|64)|LlvmpipeFlatDiscard/(12|64))/'
+  --benchmark_filter='^BM_(TessrefPn/(12/256|64/16)|ExecutorPn/(12/256|64/16)/(64|1)|LlvmpipePnDiscard/(12|64)|LlvmpipeFlatDiscard/(12|64))/'
 run raster raster_bench "$r_raster"
 
 load_after=$(cut -d' ' -f1-3 /proc/loadavg)

@@ -724,7 +724,9 @@ void Invocations::run() {
       r.steps[l] += b.count + 1;
       if (r.steps[l] > budget)
         r.fail("instruction budget of " + std::to_string(budget) +
-               " exceeded (an infinite loop?); raise it with --max-shader-instructions", l, t.line);
+                   " exceeded (an infinite loop?); raise it with --max-shader-instructions or the "
+                   "scene's shaders.max_instructions",
+               l, t.line);
       r.prev[l] = block;
       switch (t.kind) {
         case TermKind::Branch: r.pc[l] = t.target; break;

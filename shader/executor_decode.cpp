@@ -7,14 +7,16 @@
 #include <spirv/unified1/spirv.hpp>
 
 #include "shader/executor_program.h"
+#include "shader/opcode_names.h"
 
 namespace tessref::shader {
 namespace {
 
 [[noreturn]] void unsupported(const Module& m, const Instruction& ins, const std::string& what) {
   std::string where = ins.line > 0 ? " (line " + std::to_string(ins.line) + ")" : "";
-  throw SpirvError("unsupported construct" + where + ": " + what + " (SPIR-V opcode " +
-                   std::to_string(ins.opcode) + ")");
+  const char* name = opcode_name(ins.opcode);
+  throw SpirvError("unsupported construct" + where + ": " + what + " (" +
+                   (name ? std::string(name) : "SPIR-V opcode " + std::to_string(ins.opcode)) + ")");
 }
 
 bool is_shared(const Module& m, const Variable& v) {

@@ -1,5 +1,7 @@
 #include "shader/spirv_module.h"
 
+#include "shader/opcode_names.h"
+
 #define SPV_ENABLE_UTILITY_CODE
 #include <spirv/unified1/spirv.hpp>
 
@@ -393,7 +395,8 @@ Module read_module(std::span<const std::uint32_t> words) {
 
       default: {
         if (!in_function || !block)
-          throw SpirvError("SPIR-V: unsupported module-level opcode " + std::to_string(op));
+          throw SpirvError(std::string("SPIR-V: unsupported module-level instruction ") +
+                           (opcode_name(op) ? opcode_name(op) : std::to_string(op).c_str()));
         // Generic instruction: does it have a result type and id?
         bool has_result = false, has_type = false;
         spv::HasResultAndType(spv::Op(op), &has_result, &has_type);

@@ -1,0 +1,91 @@
+// Scenes with the user's GLSL (shaders.program = custom): the example scene renders with exact
+// counts, and bad settings and bad shaders are errors that name the key, file and line.
+#include <gtest/gtest.h>
+
+#include "common/error.h"
+#include "pipeline/mesh_source.h"
+#include "pipeline/render.h"
+#include "pipeline/scene_loader.h"
+#include "test_util.h"
+
+namespace tessref {
+namespace {
+
+const std::filesystem::path kExample = std::filesystem::path(TESSREF_SOURCE_DIR) / "scenes/displacement.json";
+
+DrawStats render(const std::filesystem::path& file, std::vector<std::string> sets) {
+  sets.push_back("image.width=128");
+  sets.push_back("image.height=128");
+  const Scene scene = load_scene(file, sets);
+  std::vector<std::string> warnings;
+  return render_scene(scene, build_mesh(scene.mesh, warnings), Parallel(2)).stats;
+}
+
+std::string error_of(const std::filesystem::path& file, const std::vector<std::string>& sets) {
+  try {
+    render(file, sets);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(GlslScene, DisplacementExampleRenders) {
+  const DrawStats s = render(kExample, {});
+  // 256 torus patches at level 24, fractional_odd: 937 triangles each (tessref tpg).
+  EXPECT_EQ(s.tess.patches_in, 256u);
+  EXPECT_EQ(s.triangles_generated, 256u * 937u);
+  EXPECT_GT(s.raster.fragments_shaded, 3000u);
+  // The displacement moves the silhouette: the same scene without it covers other pixels.
+  const DrawStats flat = render(kExample, {"shaders.uniforms.u_amplitude=0"});
+  EXPECT_NE(flat.raster.fragments_shaded, s.raster.fragments_shaded);
+}
+
+TEST(GlslScene, BadUniformsNameTheKey) {
+  EXPECT_NE(error_of(kExample, {"shaders.uniforms.u_amplitude=true"})
+                .find("shaders.uniforms.u_amplitude: the uniform is a float, not a bool"),
+            std::string::npos);
+  EXPECT_NE(error_of(kExample, {"shaders.uniforms.u_amplitude=[1,2]"})
+                .find("shaders.uniforms.u_amplitude: the uniform is a float, which takes 1 values, got 2"),
+            std::string::npos);
+  const std::string unknown = error_of(kExample, {"shaders.uniforms.u_nope=1"});
+  EXPECT_NE(unknown.find("shaders.uniforms.u_nope: the program has no active uniform of that name"), std::string::npos)
+      << unknown;
+  EXPECT_NE(unknown.find("u_frequency"), std::string::npos) << unknown;
+  EXPECT_NE(error_of(kExample, {"shaders.uniforms.u_num_lights=1.5"}).find("is not a 32-bit integer"),
+            std::string::npos);
+}
+
+TEST(GlslScene, BadFilesAndShadersNameFileAndLine) {
+  test::TempDir dir;
+  EXPECT_NE(error_of(kExample, {"shaders.tess_evaluation=/nonexistent/x.tese"})
+                .find("shaders.tess_evaluation: cannot read '/nonexistent/x.tese'"),
+            std::string::npos);
+  EXPECT_NE(error_of(kExample, {"shaders.vertex=twin:nope.vert"}).find("no built-in GLSL twin named 'nope.vert'"),
+            std::string::npos);
+  const auto bad = dir.write("bad.tese",
+                             "#version 450\nlayout(triangles) in;\nvoid main() {\n  gl_Position = vec4(oops);\n}\n");
+  const std::string e = error_of(kExample, {"shaders.tess_evaluation=" + bad.string()});
+  EXPECT_NE(e.find(bad.string() + ":4: error:"), std::string::npos) << e;
+  EXPECT_NE(e.find("oops"), std::string::npos) << e;
+  EXPECT_NE(error_of(kExample, {"tessellation.enabled=false"}).find("tessellation.enabled is false"),
+            std::string::npos);
+}
+
+TEST(GlslScene, RunawayShaderStopsAtTheBudget) {
+  test::TempDir dir;
+  const auto loop = dir.write("loop.tese",
+                              "#version 450\nlayout(triangles) in;\nuniform int u_n;\n"
+                              "layout(location = 0) out vec3 v_world_position;\n"
+                              "layout(location = 1) out vec3 v_world_normal;\n"
+                              "void main() {\n  float x = 0.0;\n  for (int i = 0; i != u_n; i += 2) x += 1.0;\n"
+                              "  v_world_position = gl_TessCoord;\n  v_world_normal = vec3(x);\n"
+                              "  gl_Position = vec4(gl_TessCoord, 1.0);\n}\n");
+  const std::string e = error_of(kExample, {"shaders.tess_evaluation=" + loop.string(), "shaders.uniforms={\"u_n\": 1}",
+                                            "shaders.max_instructions=100000"});
+  EXPECT_NE(e.find("tessellation evaluation shader, patch 0, invocation 0, line 8:"), std::string::npos) << e;
+  EXPECT_NE(e.find("instruction budget of 100000 exceeded"), std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace tessref
