@@ -1,6 +1,9 @@
 #include "common/parallel.h"
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
 
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
@@ -25,12 +28,27 @@ void Parallel::for_each(std::size_t n, const std::function<void(std::size_t)>& f
     for (std::size_t i = 0; i < n; ++i) fn(i);
     return;
   }
+  std::mutex mutex;
+  std::atomic<std::size_t> first_failed{n};
+  std::exception_ptr error;
   arena_->execute([&] {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1),
                       [&](const tbb::blocked_range<std::size_t>& r) {
-                        for (std::size_t i = r.begin(); i != r.end(); ++i) fn(i);
+                        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                          if (i > first_failed.load(std::memory_order_relaxed)) return;
+                          try {
+                            fn(i);
+                          } catch (...) {
+                            const std::lock_guard<std::mutex> lock(mutex);
+                            if (i < first_failed) {
+                              first_failed = i;
+                              error = std::current_exception();
+                            }
+                          }
+                        }
                       });
   });
+  if (error) std::rethrow_exception(error);
 }
 
 }  // namespace tessref

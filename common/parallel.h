@@ -17,7 +17,9 @@ class Parallel {
   // threads <= 0: all hardware threads.
   explicit Parallel(int threads = 0);
   int threads() const { return threads_; }
-  // Calls fn(i) for every i in [0, n), on up to threads() threads, in no particular order.
+  // Calls fn(i) for every i in [0, n), on up to threads() threads, in no particular order. If calls
+  // throw, the exception of the lowest such i is rethrown, whatever the thread count (calls past a
+  // failed i are skipped once it failed), so errors are as deterministic as results.
   void for_each(std::size_t n, const std::function<void(std::size_t)>& fn) const;
 
  private:

@@ -7,6 +7,7 @@
 #include "common/error.h"
 #include "pipeline/camera.h"
 #include "pipeline/glsl_draw.h"
+#include "pipeline/image_output.h"
 #include "shader/glsl_compile.h"
 #include "stages/glsl/twins.h"
 #include "stages/programs/transform.h"
@@ -182,9 +183,47 @@ void set_user_uniforms(const Scene& scene, glsl::GlslProgram& program) {
   }
 }
 
+// shaders.textures: each image (RGBA; fewer channels: gray, gray + alpha, RGB with alpha 1) on its
+// own texture unit, the sampler uniform set to that unit.
+void bind_textures(const Scene& scene, glsl::GlslProgram& program, SceneProgram& out) {
+  std::uint32_t unit = 0;
+  for (const TextureSetting& t : scene.shaders.textures) {
+    const std::string key = scene.source + ": shaders.textures." + t.sampler;
+    const auto shape = program.uniform_shape(t.sampler);
+    if (!shape || shape->glsl_name != "sampler")
+      throw InputError(key + ": the program has no active sampler2D uniform of that name");
+    FloatImage image;
+    try {
+      image = read_float_image(t.path);
+    } catch (const InputError& e) {
+      throw InputError(key + ": " + e.what());
+    }
+    auto tex = std::make_unique<shader::Texture>();
+    tex->width = image.width;
+    tex->height = image.height;
+    tex->linear = t.linear;
+    using Wrap = shader::Texture::Wrap;
+    tex->wrap_s = tex->wrap_t = t.wrap == "repeat" ? Wrap::Repeat : t.wrap == "mirrored_repeat" ? Wrap::MirroredRepeat
+                                                                                                  : Wrap::ClampToEdge;
+    tex->texels.resize(std::size_t(image.width) * image.height * 4);
+    const int ch = image.channels;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        const float* src = image.pixels.data() + (std::size_t(image.height - 1 - y) * image.width + x) * ch;
+        float* dst = tex->texels.data() + (std::size_t(y) * image.width + x) * 4;
+        for (int c = 0; c < 3; ++c) dst[c] = src[ch >= 3 ? c : 0];
+        dst[3] = ch == 4 ? src[3] : ch == 2 ? src[1] : 1.0f;
+      }
+    program.bind_texture(unit, tex.get());
+    program.set_uniform(t.sampler, integer(int(unit)));
+    out.textures.push_back(std::move(tex));
+    ++unit;
+  }
+}
+
 }  // namespace
 
-std::unique_ptr<glsl::GlslProgram> build_scene_program(const Scene& scene) {
+SceneProgram build_scene_program(const Scene& scene) {
   const std::vector<shader::ShaderSource> sources = scene_sources(scene);
   shader::ExecLimits limits;
   limits.batch_lanes = scene.shaders.batch_lanes;
@@ -206,7 +245,10 @@ std::unique_ptr<glsl::GlslProgram> build_scene_program(const Scene& scene) {
                                             scene.tessellation.winding, false});
   set_scene_uniforms(scene, *program);
   set_user_uniforms(scene, *program);
-  return program;
+  SceneProgram out;
+  bind_textures(scene, *program, out);
+  out.program = std::move(program);
+  return out;
 }
 
 DrawStats draw_glsl_scene(const Scene& scene, const glsl::GlslProgram& program, const Mesh& mesh,

@@ -12,10 +12,16 @@
 
 namespace tessref {
 
+// The scene's program and the textures bound to it.
+struct SceneProgram {
+  std::unique_ptr<glsl::GlslProgram> program;
+  std::vector<std::unique_ptr<shader::Texture>> textures;
+};
+
 // Compiles the scene's program (InputError: a file that cannot be read, compile and link errors
-// with file and line, a uniform value whose type does not fit) with its uniforms set for a
-// width x height image.
-std::unique_ptr<glsl::GlslProgram> build_scene_program(const Scene& scene);
+// with file and line, a uniform value whose type does not fit, an unreadable texture) with its
+// uniforms set and its textures bound.
+SceneProgram build_scene_program(const Scene& scene);
 
 // Draws the mesh with the scene's GLSL program into fb (already cleared).
 DrawStats draw_glsl_scene(const Scene& scene, const glsl::GlslProgram& program, const Mesh& mesh,

@@ -36,9 +36,9 @@ RenderResult render_scene(const Scene& scene, const Mesh& mesh, const Parallel& 
 DrawStats render_scene(const Scene& scene, const Mesh& mesh, const Parallel& parallel,
                        Framebuffer& fb, const DrawOptions& options) {
   if (scene.shaders.program != ShaderProgram::Builtin) {
-    const auto program = build_scene_program(scene);
+    const SceneProgram program = build_scene_program(scene);
     fb.reset(scene.width, scene.height, scene.background, parallel);
-    return draw_glsl_scene(scene, *program, mesh, fb, parallel, options);
+    return draw_glsl_scene(scene, *program.program, mesh, fb, parallel, options);
   }
   const glm::mat4 view_projection =
       projection_matrix(scene.camera, scene.width, scene.height) * view_matrix(scene.camera);

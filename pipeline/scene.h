@@ -71,6 +71,14 @@ struct UniformSetting {
   bool boolean = false;
 };
 
+// shaders.textures: an image bound to a sampler2D uniform.
+struct TextureSetting {
+  std::string sampler;  // the uniform's name
+  std::filesystem::path path;
+  bool linear = true;   // GL_LINEAR, else GL_NEAREST
+  std::string wrap = "repeat";  // repeat | mirrored_repeat | clamp_to_edge
+};
+
 struct ShaderSettings {
   ShaderProgram program = ShaderProgram::Builtin;
   // Custom: GLSL files, resolved against the scene file's folder (tess_control may be empty).
@@ -78,6 +86,7 @@ struct ShaderSettings {
   std::vector<UniformSetting> uniforms;
   // Vertex shader input name -> the mesh attribute that feeds it: "position" or "normal".
   std::vector<std::pair<std::string, std::string>> attributes;
+  std::vector<TextureSetting> textures;
   int batch_lanes = 64;                         // shader::ExecLimits::batch_lanes
   std::uint64_t max_instructions = 50'000'000;  // shader::ExecLimits::max_instructions
 };

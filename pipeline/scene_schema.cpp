@@ -147,7 +147,7 @@ TessellationSettings read_tessellation(JsonObject o) {
   return t;
 }
 
-ShaderSettings read_shaders(JsonObject o, const std::filesystem::path& base_dir) {
+ShaderSettings read_shaders(JsonObject o, const JsonSource& source, const std::filesystem::path& base_dir) {
   ShaderSettings s;
   const std::string program = o.string("program");
   if (program == "builtin") s.program = ShaderProgram::Builtin;
@@ -202,6 +202,35 @@ ShaderSettings read_shaders(JsonObject o, const std::filesystem::path& base_dir)
       o.fail("attributes." + name, "expected \"position\" or \"normal\", got " + describe_json(value));
     s.attributes.push_back({name, value.get<std::string>()});
   }
+  if (o.has("textures")) {
+    const nlohmann::json& textures = o.value("textures");
+    if (!textures.is_object())
+      o.fail("textures", "expected an object of sampler name: image file, got " + describe_json(textures));
+    for (const auto& [name, value] : textures.items()) {
+      TextureSetting t;
+      t.sampler = name;
+      std::string file;
+      if (value.is_string()) {
+        file = value.get<std::string>();
+      } else {
+        JsonObject to(value, o.path_of("textures") + "." + name, source);
+        file = to.string("path");
+        if (to.has("filter")) {
+          const std::string f = to.string("filter");
+          if (f != "linear" && f != "nearest") to.fail("filter", "expected linear or nearest, got \"" + f + "\"");
+          t.linear = f == "linear";
+        }
+        if (to.has("wrap")) {
+          t.wrap = to.string("wrap");
+          if (t.wrap != "repeat" && t.wrap != "mirrored_repeat" && t.wrap != "clamp_to_edge")
+            to.fail("wrap", "expected repeat, mirrored_repeat or clamp_to_edge, got \"" + t.wrap + "\"");
+        }
+        to.finish();
+      }
+      t.path = std::filesystem::path(file).is_relative() ? base_dir / file : std::filesystem::path(file);
+      s.textures.push_back(std::move(t));
+    }
+  }
   s.batch_lanes = o.integer("batch_lanes", 1, 64);
   s.max_instructions = std::uint64_t(o.integer("max_instructions", 1, std::numeric_limits<int>::max()));
   o.finish();
@@ -233,7 +262,7 @@ Scene scene_from_json(const json& root_json, const JsonSource& source,
   s.shading = enum_value<Shading>(root, "shading", "phong, normals");
   s.cull_back_faces = root.boolean("cull_back_faces");
   s.tessellation = read_tessellation(root.object("tessellation"));
-  s.shaders = read_shaders(root.object("shaders"), mesh_base_dir);
+  s.shaders = read_shaders(root.object("shaders"), source, mesh_base_dir);
   root.finish();
   return s;
 }

@@ -45,6 +45,9 @@ struct FragmentProgram {
   // What the rasterizer calls: a whole batch. The default runs shade() for each live lane; an
   // override (SIMD kernels, the GLSL executor) must give the same bits for live lanes.
   virtual void shade_batch(FragmentBatch& batch) const;
+  // Whether shade_batch may clear a lane's live flag (GLSL discard). The rasterizer then tests
+  // depth again and writes it only after shading, in arrival order.
+  virtual bool may_discard() const { return false; }
 };
 
 struct RasterState {

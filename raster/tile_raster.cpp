@@ -154,6 +154,7 @@ FragmentSink::FragmentSink(const FragmentProgram& fs, Framebuffer& fb, int num_v
       fb_(fb),
       write_aux_(!fb.aux.empty()),
       depth_test_(depth_test),
+      late_depth_(depth_test && fs.may_discard()),
       lanes_(thread_lanes(num_varyings)),
       batch_(lanes_.batch),
       pixel_(lanes_.pixel),
@@ -167,6 +168,11 @@ void FragmentSink::flush() {
   for (int l = 0; l < lanes; ++l) {
     if (!batch_.live[l]) continue;
     const std::size_t idx = pixel_[l];
+    if (late_depth_) {  // lanes in arrival order: the test against fragments shaded before
+      const float z = batch_.frag_coord[2][l];
+      if (!(z < fb_.depth[idx])) continue;
+      fb_.depth[idx] = z;
+    }
     fb_.color[idx] = glm::vec4(batch_.color[0][l], batch_.color[1][l], batch_.color[2][l],
                                batch_.color[3][l]);
     if (write_aux_)
@@ -204,7 +210,7 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
       const std::size_t idx = fb.index(x, y);
       if (sink.depth_test_) {
         if (!(z < fb.depth[idx])) continue;
-        fb.depth[idx] = z;
+        if (!sink.late_depth_) fb.depth[idx] = z;
       }
       if ((x & ~1) != quad_x || (y & ~1) != quad_y) {
         if (batch.quads == kFragmentQuads) sink.flush();
@@ -266,7 +272,7 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
         for (int i = 0; i < n; ++i) {
           if (sink.depth_test_) {
             if (!(z[i] < depth[i])) continue;
-            depth[i] = z[i];  // programs do not discard: the depth write is final
+            if (!sink.late_depth_) depth[i] = z[i];  // no discard: the depth write is final
           }
           const int x = xs + i;
           const int lane = base + 2 * (x - seg_x) - (x & 1) + 2 * r;  // 4 * quad + (x & 1) + 2r

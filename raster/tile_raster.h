@@ -11,7 +11,8 @@ struct PixelRect {
 };
 
 // Collects the fragments of one tile's triangles into quad batches and shades them batch by
-// batch. Depth is tested and written as fragments arrive (programs do not discard), so a later
+// batch. Depth is tested and written as fragments arrive (for programs that may discard: tested
+// on arrival against what is written, tested again and written after shading), so a later
 // triangle is tested against an earlier one's depth even in the same batch; colors are written in
 // arrival order when a batch is shaded, so the last fragment to pass wins, as in submission order.
 class FragmentSink {
@@ -31,6 +32,7 @@ class FragmentSink {
   Framebuffer& fb_;
   bool write_aux_;
   bool depth_test_;
+  bool late_depth_;  // depth written after shading (the program may discard)
   std::uint64_t shaded_ = 0;
   // The lanes live in per-thread storage, set up once per thread rather than once per tile (a
   // thread scans one tile at a time, so one sink per thread is alive at a time).

@@ -764,6 +764,15 @@ Invocations& Executable::local() const {
 
 Executable::~Executable() = default;
 
+bool Executable::may_discard() const {
+  for (const XBlock& b : program_->blocks) {
+    if (b.term.kind == TermKind::Kill) return true;
+    for (std::uint32_t i = 0; i < b.count; ++i)
+      if (program_->code[b.first + i].op == XOp::Kill) return true;
+  }
+  return false;
+}
+
 const VariableSlot* Executable::slot(std::uint32_t id) const {
   if (id >= program_->slot_of_id.size() || program_->slot_of_id[id] == kNone) return nullptr;
   return &program_->slots[program_->slot_of_id[id]];

@@ -123,6 +123,8 @@ class Executable {
   // The slot of a module-level variable; nullptr if there is none with that id.
   const VariableSlot* slot(std::uint32_t variable_id) const;
   const ExecLimits& limits() const { return limits_; }
+  // Whether the entry point can discard (OpKill, OpTerminateInvocation, OpDemoteToHelperInvocation).
+  bool may_discard() const;
   // This thread's Invocations of this executable, made on first use and kept for the thread's
   // life (stage programs are shared by the worker threads; each thread runs its own batches).
   Invocations& local() const;

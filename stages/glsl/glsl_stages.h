@@ -64,6 +64,7 @@ class GlslFragment final : public FragmentProgram {
       : sp_(sp), varyings_(varyings), primitive_id_varying_(primitive_id_varying) {}
   FragmentOutput shade(const FragmentInput& in) const override;
   void shade_batch(FragmentBatch& batch) const override;
+  bool may_discard() const override { return sp_.exe->may_discard(); }
 
  private:
   void shade_lanes(FragmentBatch& batch, int first, int n) const;  // lanes [first, first + n)

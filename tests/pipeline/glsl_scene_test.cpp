@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
+#include "pipeline/image_output.h"
 #include "pipeline/mesh_source.h"
 #include "pipeline/render.h"
 #include "pipeline/scene_loader.h"
@@ -85,6 +86,61 @@ TEST(GlslScene, RunawayShaderStopsAtTheBudget) {
                                             "shaders.max_instructions=100000"});
   EXPECT_NE(e.find("tessellation evaluation shader, patch 0, invocation 0, line 8:"), std::string::npos) << e;
   EXPECT_NE(e.find("instruction budget of 100000 exceeded"), std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace tessref
+
+namespace tessref {
+namespace {
+
+RenderResult render_full(const std::filesystem::path& file, std::vector<std::string> sets) {
+  sets.push_back("image.width=64");
+  sets.push_back("image.height=64");
+  const Scene scene = load_scene(file, sets);
+  std::vector<std::string> warnings;
+  return render_scene(scene, build_mesh(scene.mesh, warnings), Parallel(2));
+}
+
+TEST(GlslScene, TexturesFromImageFilesAndDiscard) {
+  test::TempDir dir;
+  // A 2 x 2 image, top row first in the file: (red, green / blue, white); GL's row 0 is the bottom.
+  Rgb8Image img;
+  img.width = img.height = 2;
+  img.pixels = {255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255};
+  write_rgb8_image(img, dir.path() / "t.png");
+  const auto fs = dir.write("tex.frag",
+                            "#version 450\nuniform sampler2D u_tex;\nuniform vec2 u_at;\n"
+                            "layout(location = 0) out vec4 color;\n"
+                            "void main() {\n  if (gl_FragCoord.x < 32.0) discard;\n"
+                            "  color = texture(u_tex, u_at);\n}\n");
+  const std::vector<std::string> base = {
+      "shaders.program=custom", "shaders.vertex=twin:transform.vert", "shaders.tess_control=twin:pn_triangles.tesc",
+      "shaders.tess_evaluation=twin:pn_triangles.tese", "shaders.fragment=" + fs.string(),
+      "shaders.textures={\"u_tex\": {\"path\": \"" + (dir.path() / "t.png").string() + "\", \"filter\": \"nearest\"}}"};
+  auto with_at = [&](const char* at) {
+    auto sets = base;
+    sets.push_back(std::string("shaders.uniforms={\"u_at\": ") + at + "}");
+    return sets;
+  };
+  const RenderResult bottom_left = render_full("", with_at("[0.25, 0.25]"));
+  const RenderResult top_right = render_full("", with_at("[0.75, 0.75]"));
+  const Framebuffer& fb = bottom_left.framebuffer;
+  std::size_t left_drawn = 0, right_drawn = 0;
+  for (int y = 0; y < fb.height; ++y)
+    for (int x = 0; x < fb.width; ++x) {
+      const std::size_t i = fb.index(x, y);
+      if (fb.depth[i] == 1.0f) continue;
+      (x < 32 ? left_drawn : right_drawn)++;
+      // The image's bottom-left texel is blue, its top-right one green.
+      EXPECT_EQ(fb.color[i], glm::vec4(0.0f, 0.0f, 1.0f, 1.0f)) << x << "," << y;
+      EXPECT_EQ(top_right.framebuffer.color[i], glm::vec4(0.0f, 1.0f, 0.0f, 1.0f)) << x << "," << y;
+    }
+  // Discarded fragments write neither color nor depth.
+  EXPECT_EQ(left_drawn, 0u);
+  EXPECT_GT(right_drawn, 200u);
+  const std::string e = error_of(kExample, {"shaders.textures={\"u_amplitude\": \"x.png\"}"});
+  EXPECT_NE(e.find("shaders.textures.u_amplitude: the program has no active sampler2D uniform"), std::string::npos) << e;
 }
 
 }  // namespace
