@@ -20,7 +20,8 @@ class FragmentSink {
   // depth_test false: every covered fragment is shaded and depth is neither tested nor written
   // (glDisable(GL_DEPTH_TEST)).
   FragmentSink(const FragmentProgram& fs, Framebuffer& fb, int num_varyings, bool depth_test = true);
-  ~FragmentSink() { flush(); }
+  // Callers flush() when done: a fragment program may throw (a runaway shader), which a
+  // destructor must not.
   void flush();
   std::uint64_t shaded() const { return shaded_; }
 

@@ -84,12 +84,12 @@ void Runner::load(const XIns& x) {
       double* d = row<double>(x.dst + c.word);
       if (v.per_lane) {
         put(d, [&](int l) {
-          const std::uint32_t o = (off ? off[l] : 0u) + c.word;
+          const std::uint32_t o = (off ? off[l] : 0u) + a.offset + c.word;
           return reinterpret_cast<const double*>(A + std::size_t(v.base + o) * L)[l];
         });
       } else {
         put(d, [&](int l) {
-          const std::uint32_t o = v.base + (off ? off[l] : 0u) + c.word;
+          const std::uint32_t o = v.base + (off ? off[l] : 0u) + a.offset + c.word;
           double r;
           std::memcpy(&r, inv.shared_.data() + o, 8);
           return r;
@@ -100,13 +100,13 @@ void Runner::load(const XIns& x) {
     std::uint32_t* d = A + std::size_t(x.dst + c.word) * L;
     if (v.per_lane) {
       if (!off) {
-        const std::uint32_t* s = A + std::size_t(v.base + c.word) * L;
+        const std::uint32_t* s = A + std::size_t(v.base + a.offset + c.word) * L;
         put(d, [&](int l) { return s[l]; });
       } else {
-        put(d, [&](int l) { return A[std::size_t(v.base + off[l] + c.word) * L + l]; });
+        put(d, [&](int l) { return A[std::size_t(v.base + off[l] + a.offset + c.word) * L + l]; });
       }
     } else {
-      const std::uint32_t* s = inv.shared_.data() + v.base + c.word;
+      const std::uint32_t* s = inv.shared_.data() + v.base + a.offset + c.word;
       if (!off) {
         const std::uint32_t value = *s;
         put(d, [&](int) { return value; });
@@ -121,11 +121,16 @@ void Runner::store(const XIns& x) {
   const Access& a = p.accesses[x.aux];
   const VariableSlot& v = p.slots[a.slot];
   const std::uint32_t* off = a.offset_reg == kNone ? nullptr : A + std::size_t(a.offset_reg) * L;
+  // A per-lane variable at a constant offset: row copies.
+  if (!off && v.per_lane) {
+    copy_rows(A + std::size_t(v.base + a.offset) * L, A + std::size_t(x.a) * L, a.words, doubles_of(a.doubles));
+    return;
+  }
   for (const FlatComponent& c : a.flat) {
     const int w = scalar_words(c.scalar);
     for (int l = 0; l < n; ++l) {
       if (!mask[l]) continue;
-      const std::uint32_t o = (off ? off[l] : 0u) + c.word;
+      const std::uint32_t o = (off ? off[l] : 0u) + a.offset + c.word;
       const std::uint32_t* src = A + std::size_t(x.a + c.word) * L + std::size_t(l) * w;
       std::uint32_t* dst = v.per_lane ? A + std::size_t(v.base + o) * L + std::size_t(l) * w
                                       : inv.shared_.data() + v.base + o;
@@ -285,7 +290,7 @@ void Runner::atomic(const XIns& x) {
   std::uint32_t* result = x.dst == kNone ? nullptr : A + std::size_t(x.dst) * L;
   for (int l = 0; l < n; ++l) {
     if (!mask[l]) continue;
-    const std::uint32_t o = off ? off[l] : 0u;
+    const std::uint32_t o = (off ? off[l] : 0u) + a.offset;
     std::uint32_t* cell = v.per_lane ? A + std::size_t(v.base + o) * L + l : inv.shared_.data() + v.base + o;
     const std::uint32_t before = *cell;
     const std::uint32_t operand = x.a == kNone ? 0u : A[std::size_t(x.a) * L + l];
@@ -304,10 +309,13 @@ void Runner::atomic(const XIns& x) {
 void Runner::exec(const XIns& x) {
   switch (x.op) {
     case XOp::Nop: break;
-    case XOp::Copy: words_copy(x.dst, x.a, x.n); break;
-    case XOp::Undef:
-      for (std::uint32_t w = 0; w < x.n; ++w) put(A + std::size_t(x.dst + w) * L, [](int) { return 0u; });
+    case XOp::Copy: words_copy(x.dst, x.a, x.n, x.doubles); break;
+    case XOp::Undef: {
+      static const std::uint32_t zeros[4 * L] = {};  // copied from, a few rows at a time
+      for (std::uint32_t w = 0; w < x.n; w += 2)
+        copy_rows(A + std::size_t(x.dst + w) * L, zeros, std::min(2u, x.n - w), nullptr);
       break;
+    }
     case XOp::Neg:
       arith(x, [&](auto z) {
         using T = decltype(z);
@@ -382,12 +390,23 @@ void Runner::exec(const XIns& x) {
       compare(x);
       break;
     case XOp::Select:
-      if (x.s == Scalar::None) {  // one condition, whole value
+      if (x.s == Scalar::None) {  // one condition, whole value (a double's lanes span two rows)
         const std::uint32_t* cond = A + std::size_t(x.a) * L;
-        for (std::uint32_t w = 0; w < x.n; ++w) {
+        const std::vector<std::uint32_t>* doubles = doubles_of(x.doubles);
+        std::size_t k = 0;
+        for (std::uint32_t w = 0; w < x.n;) {
+          if (doubles && k < doubles->size() && (*doubles)[k] == w) {
+            const double* t = row<double>(x.b + w);
+            const double* f = row<double>(x.c + w);
+            put(row<double>(x.dst + w), [&](int l) { return cond[l] ? t[l] : f[l]; });
+            ++k;
+            w += 2;
+            continue;
+          }
           const std::uint32_t* t = A + std::size_t(x.b + w) * L;
           const std::uint32_t* f = A + std::size_t(x.c + w) * L;
           put(A + std::size_t(x.dst + w) * L, [&](int l) { return cond[l] ? t[l] : f[l]; });
+          ++w;
         }
       } else {  // per component
         for (std::uint32_t c = 0; c < x.n; ++c) {
@@ -455,8 +474,15 @@ void Runner::exec(const XIns& x) {
       break;
     case XOp::Bitcast:
       // Same words, but a double's rows are interleaved lane by lane: regroup when widths differ.
-      if (x.aux == 0) {
-        words_copy(x.dst, x.a, x.n * (x.s == Scalar::F64 ? 2u : 1u));
+      if (x.aux == 0) {  // same widths: a copy (doubles stay doubles)
+        if (x.s == Scalar::F64) {
+          for (std::uint32_t c = 0; c < x.n; ++c) {
+            const double* s = row<double>(x.a, c);
+            put(row<double>(x.dst, c), [&](int l) { return s[l]; });
+          }
+        } else {
+          words_copy(x.dst, x.a, x.n, kNone);
+        }
       } else if (x.s == Scalar::F64) {  // double(s) -> 2n words
         for (std::uint32_t c = 0; c < x.m; ++c) {
           const std::uint32_t* s = A + std::size_t(x.a + 2 * c) * L;
@@ -497,10 +523,8 @@ void Runner::exec(const XIns& x) {
       break;
     case XOp::Composite:
       for (const WordCopy& c : p.copies[x.aux])
-        for (std::uint32_t w = 0; w < c.words; ++w) {
-          const std::uint32_t* s = A + std::size_t(c.src + c.src_word + w) * L;
-          put(A + std::size_t(x.dst + c.dst_word + w) * L, [&](int l) { return s[l]; });
-        }
+        copy_rows(A + std::size_t(x.dst + c.dst_word) * L, A + std::size_t(c.src + c.src_word) * L, c.words,
+                  doubles_of(c.doubles));
       break;
     case XOp::ExtractDyn: case XOp::InsertDyn: {
       const bool insert = x.op == XOp::InsertDyn;
@@ -518,7 +542,7 @@ void Runner::exec(const XIns& x) {
           put(A + std::size_t(x.dst) * L, [&](int l) { return A[std::size_t(x.a + clamp_index(l)) * L + l]; });
         }
       } else {
-        words_copy(x.dst, x.a, x.m * w);
+        words_copy(x.dst, x.a, x.m * w, x.doubles);
         if (w == 2) {
           const double* v = row<double>(x.b);
           for (int l = 0; l < n; ++l)
@@ -601,38 +625,53 @@ void Runner::exec(const XIns& x) {
 }
 
 void Runner::run_block(const XBlock& b) {
-  // Phis are parallel copies: read every incoming value before writing any.
-  if (!b.phis.empty()) {
-    std::vector<std::uint32_t> staged;
-    for (const Phi& phi : b.phis) {
-      for (int l = 0; l < n; ++l) {
-        if (!mask[l]) continue;
-        std::uint32_t src = kNone;
-        for (const auto& [value, pred] : phi.incoming)
-          if (pred == prev[l]) src = value;
-        if (src == kNone) fail("internal: phi without an incoming value for its predecessor", l, 0);
-        for (const FlatComponent& c : phi.flat) {
-          const int w = scalar_words(c.scalar);
-          const std::uint32_t* s = A + std::size_t(src + c.word) * L + std::size_t(l) * w;
-          staged.push_back(s[0]);
-          if (w == 2) staged.push_back(s[1]);
-        }
-      }
-    }
-    std::size_t k = 0;
-    for (const Phi& phi : b.phis)
-      for (int l = 0; l < n; ++l) {
-        if (!mask[l]) continue;
-        for (const FlatComponent& c : phi.flat) {
-          const int w = scalar_words(c.scalar);
-          std::uint32_t* d = A + std::size_t(phi.dst + c.word) * L + std::size_t(l) * w;
-          d[0] = staged[k++];
-          if (w == 2) d[1] = staged[k++];
-        }
-      }
-  }
+  if (!b.phis.empty()) run_phis(b);
   const XIns* code = p.code.data() + b.first;
   for (std::uint32_t i = 0; i < b.count; ++i) exec(code[i]);
+}
+
+// Phis are parallel copies: every incoming value is read (into the staging rows) before any phi
+// is written. When all active lanes came from the same block (the common case), whole rows move.
+void Runner::run_phis(const XBlock& b) {
+  std::uint32_t from = kNone;
+  bool same = true;
+  for (int l = 0; l < n && same; ++l)
+    if (mask[l]) {
+      if (from == kNone) from = prev[l];
+      else same = prev[l] == from;
+    }
+  std::uint32_t* staging = inv.staging_.data();
+  std::size_t at = 0;
+  for (const Phi& phi : b.phis) {
+    for (int l = 0; l < n; ++l) {
+      if (!mask[l]) continue;
+      std::uint32_t src = kNone;
+      for (const auto& [value, pred] : phi.incoming)
+        if (pred == prev[l]) src = value;
+      if (src == kNone) fail("internal: phi without an incoming value for its predecessor", l, 0);
+      if (same) {  // every active lane reads the same row: copy the whole rows
+        std::copy_n(A + std::size_t(src) * L, std::size_t(phi.words) * L, staging + at);
+        break;
+      }
+      for (const FlatComponent& c : phi.flat) {
+        const int w = scalar_words(c.scalar);
+        const std::uint32_t* s = A + std::size_t(src + c.word) * L + std::size_t(l) * w;
+        std::uint32_t* d = staging + at + std::size_t(c.word) * L + std::size_t(l) * w;
+        d[0] = s[0];
+        if (w == 2) d[1] = s[1];
+      }
+    }
+    at += std::size_t(phi.words) * L;
+  }
+  at = 0;
+  std::vector<std::uint32_t>& doubles = inv.phi_doubles_;
+  for (const Phi& phi : b.phis) {
+    doubles.clear();
+    for (const FlatComponent& c : phi.flat)
+      if (c.scalar == Scalar::F64) doubles.push_back(c.word);
+    copy_rows(A + std::size_t(phi.dst) * L, staging + at, phi.words, doubles.empty() ? nullptr : &doubles);
+    at += std::size_t(phi.words) * L;
+  }
 }
 
 Invocations::Invocations(const Executable& exe) : exe_(exe) {
@@ -640,6 +679,13 @@ Invocations::Invocations(const Executable& exe) : exe_(exe) {
   arena_.assign(std::size_t(p.arena_rows) * kMaxLanes, 0u);
   shared_.assign(p.shared_words, 0u);
   killed_.assign(kMaxLanes, 0);
+  std::size_t phi_words = 0;
+  for (const XBlock& b : p.blocks) {
+    std::size_t words = 0;
+    for (const Phi& phi : b.phis) words += phi.words;
+    phi_words = std::max(phi_words, words);
+  }
+  staging_.assign(phi_words * kMaxLanes, 0u);
   // Constants: the same value in every lane, set once.
   for (const auto& [row, words] : p.constant_init) {
     for (std::uint32_t w = 0; w < words.size(); ++w) {
@@ -706,10 +752,16 @@ void Invocations::run() {
     r.prev[l] = kNone;
     r.steps[l] = 0;
   }
-  for (;;) {
-    std::uint32_t block = kNone;
-    for (int l = 0; l < lanes_; ++l) block = std::min(block, r.pc[l]);
-    if (block == kNone) break;
+  // converged: every lane still running waits at the same block (no scan needed), which is the
+  // case until a branch sends lanes different ways.
+  bool converged = true;
+  std::uint32_t block = 0;
+  int running = lanes_;
+  while (running > 0) {
+    if (!converged) {
+      block = kNone;
+      for (int l = 0; l < lanes_; ++l) block = std::min(block, r.pc[l]);
+    }
     int active = 0;
     for (int l = 0; l < lanes_; ++l) {
       r.mask[l] = r.pc[l] == block;
@@ -719,6 +771,8 @@ void Invocations::run() {
     const XBlock& b = p.blocks[block];
     r.run_block(b);
     const Terminator& t = b.term;
+    std::uint32_t next = kNone;
+    bool same = active == running;
     for (int l = 0; l < lanes_; ++l) {
       if (!r.mask[l]) continue;
       r.steps[l] += b.count + 1;
@@ -728,22 +782,28 @@ void Invocations::run() {
                    "scene's shaders.max_instructions",
                l, t.line);
       r.prev[l] = block;
+      std::uint32_t to = kNone;
       switch (t.kind) {
-        case TermKind::Branch: r.pc[l] = t.target; break;
-        case TermKind::Cond: r.pc[l] = arena_[std::size_t(t.reg) * kMaxLanes + l] ? t.target : t.other; break;
+        case TermKind::Branch: to = t.target; break;
+        case TermKind::Cond: to = arena_[std::size_t(t.reg) * kMaxLanes + l] ? t.target : t.other; break;
         case TermKind::Switch: {
           const std::uint32_t sel = arena_[std::size_t(t.reg) * kMaxLanes + l];
-          std::uint32_t to = t.other;
+          to = t.other;
           for (const auto& [lit, target] : t.cases)
             if (lit == sel) to = target;
-          r.pc[l] = to;
           break;
         }
-        case TermKind::Kill: killed_[l] = 1; r.pc[l] = kNone; break;
+        case TermKind::Kill: killed_[l] = 1; break;
         case TermKind::Return:
-        case TermKind::Unreachable: r.pc[l] = kNone; break;
+        case TermKind::Unreachable: break;
       }
+      r.pc[l] = to;
+      if (to == kNone) --running;
+      else if (next == kNone) next = to;
+      else same &= to == next;
     }
+    converged = same;
+    block = next;
   }
 }
 

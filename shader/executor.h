@@ -15,7 +15,8 @@
 //
 // Out-of-range array indices are clamped into the array (GL robust access: "a value from within
 // the buffer"), integer division by zero gives 0, and float-to-integer conversion of NaN or of a
-// value out of range gives INT_MIN (or 0 for unsigned), as x86 does: never undefined behaviour.
+// value out of range gives INT_MIN (as x86 does; unsigned: 0 below the range and for NaN,
+// 0xffffffff above it): never undefined behaviour (docs/executor.md).
 #include <cstdint>
 #include <memory>
 #include <stdexcept>
@@ -106,6 +107,8 @@ class Invocations {
   std::vector<std::uint32_t> arena_;   // registers and per-lane variables
   std::vector<std::uint32_t> shared_;  // shared variables
   std::vector<std::uint8_t> killed_;
+  std::vector<std::uint32_t> staging_;  // phi values between reading and writing
+  std::vector<std::uint32_t> phi_doubles_;  // scratch for Runner::run_phis
   std::vector<const Texture*> textures_;
   int lanes_ = 0;
 };

@@ -121,8 +121,16 @@ struct Decoder {
       unsupported(m, ins, "a pointer that is not a variable or an access chain");
     a.slot = chain_slot[pointer];
     a.offset_reg = chain_of[pointer];
+    if (a.offset_reg == kNone) a.offset = static_offset[pointer];
     a.flat = pointee.flat;
     a.words = pointee.words;
+    std::vector<std::uint32_t> starts;
+    for (const FlatComponent& c : pointee.flat)
+      if (c.scalar == Scalar::F64) starts.push_back(c.word);
+    if (!starts.empty()) {
+      p.doubles.push_back(std::move(starts));
+      a.doubles = std::uint32_t(p.doubles.size() - 1);
+    }
     p.accesses.push_back(std::move(a));
     return std::uint32_t(p.accesses.size() - 1);
   }
@@ -144,6 +152,8 @@ struct Decoder {
       }
       if (k + 1 == b.body.size()) {
         decode_terminator(ins, xb.term);
+        // A branch often has no line of its own: the block's last statement names the spot.
+        for (std::size_t j = k; xb.term.line == 0 && j-- > 0;) xb.term.line = b.body[j].line;
         break;
       }
       decode(ins);
@@ -233,28 +243,43 @@ struct Decoder {
         if (o.at(0) != m.glsl_std450) return;  // NonSemantic debug info: nothing to run
         XIns x = base(ins, XOp::Ext);
         x.aux = o.at(1);
-        if (o.size() > 2) x.a = V(2);
-        if (o.size() > 3) {
-          if (x.aux == GLSLstd450Modf || x.aux == GLSLstd450Frexp) {
-            const Type& pt = m.type(m.type(value_type.at(o[3])).element);
-            x.b = chain_access(ins, o[3], pt);
-          } else {
-            x.b = V(3);
-          }
+        switch (x.aux) {
+          case GLSLstd450InterpolateAtCentroid:
+          case GLSLstd450InterpolateAtSample:
+          case GLSLstd450InterpolateAtOffset:
+            unsupported(m, ins, "interpolateAtCentroid/Sample/Offset");
+          default: break;
         }
-        if (o.size() > 4) x.c = V(4);
         if (o.size() > 2) {
+          x.a = V(2);
           x.s = scalar_of(o[2]);
           x.m = comps_of(o[2]);
         }
-        if (x.aux == GLSLstd450ModfStruct || x.aux == GLSLstd450FrexpStruct)
-          unsupported(m, ins, "modf/frexp returning a struct");
+        const bool pointer_form = x.aux == GLSLstd450Modf || x.aux == GLSLstd450Frexp;
+        const bool struct_form = x.aux == GLSLstd450ModfStruct || x.aux == GLSLstd450FrexpStruct;
+        if (pointer_form || struct_form) {
+          // Second result: a struct's second member, or staging rows stored through the pointer.
+          x.n = x.m;
+          const std::uint32_t first_words = x.n * std::uint32_t(scalar_words(x.s));
+          if (struct_form) {
+            x.c = x.dst + first_words;
+          } else {
+            const Type& pt = m.type(m.type(value_type.at(o[3])).element);
+            x.b = chain_access(ins, o[3], pt);
+            x.c = alloc_rows(pt.words);
+          }
+          emit(x);
+          return;
+        }
+        if (o.size() > 3) x.b = V(3);
+        if (o.size() > 4) x.c = V(4);
         emit(x);
         return;
       }
       case spv::OpUndef: {
         XIns x = base(ins, XOp::Undef);
         x.n = m.type(ins.type).words;
+        x.doubles = doubles_in(ins.type, 0, x.n);
         emit(x);
         return;
       }
@@ -262,6 +287,7 @@ struct Decoder {
         XIns x = base(ins, XOp::Copy);
         x.a = V(0);
         x.n = m.type(ins.type).words;
+        x.doubles = doubles_in(ins.type, 0, x.n);
         emit(x);
         return;
       }
@@ -331,6 +357,7 @@ struct Decoder {
         } else {
           x.m = 1;
           x.s = Scalar::None;  // whole-value select, word by word
+          x.doubles = doubles_in(ins.type, 0, x.n);
         }
         emit(x);
         return;
@@ -393,7 +420,7 @@ struct Decoder {
         std::uint32_t w = 0;
         for (std::size_t i = 0; i < o.size(); ++i) {
           const std::uint32_t words = m.type(value_type.at(o[i])).words;
-          cs.push_back({w, V(i), 0, words});
+          cs.push_back({w, V(i), 0, words, doubles_in(value_type.at(o[i]), 0, words)});
           w += words;
         }
         x.n = w;
@@ -419,14 +446,16 @@ struct Decoder {
         const std::uint32_t part = m.type(t).words;
         XIns x = base(ins, XOp::Composite);
         std::vector<WordCopy> cs;
+        const std::uint32_t ct = value_type.at(composite);
         if (insert) {
-          const std::uint32_t all = m.type(value_type.at(composite)).words;
-          cs.push_back({0, V(1), 0, offset});
-          cs.push_back({offset, V(0), 0, part});
-          cs.push_back({offset + part, V(1), offset + part, all - offset - part});
+          const std::uint32_t all = m.type(ct).words;
+          cs.push_back({0, V(1), 0, offset, doubles_in(ct, 0, offset)});
+          cs.push_back({offset, V(0), 0, part, doubles_in(ct, offset, part)});
+          cs.push_back({offset + part, V(1), offset + part, all - offset - part,
+                        doubles_in(ct, offset + part, all - offset - part)});
           x.n = all;
         } else {
-          cs.push_back({0, V(0), offset, part});
+          cs.push_back({0, V(0), offset, part, doubles_in(ct, offset, part)});
           x.n = part;
         }
         x.aux = add_copies(std::move(cs));
@@ -443,8 +472,9 @@ struct Decoder {
           const std::uint32_t sel = o[i];
           const std::uint32_t dw = std::uint32_t(i - 2) * cw;
           if (sel == 0xffffffffu) continue;  // undefined component: left as it was
-          if (sel < n1) cs.push_back({dw, V(0), sel * cw, cw});
-          else cs.push_back({dw, V(1), (sel - n1) * cw, cw});
+          const std::uint32_t d = cw == 2 ? doubles_in(value_type.at(o[0]), 0, 2) : kNone;
+          if (sel < n1) cs.push_back({dw, V(0), sel * cw, cw, d});
+          else cs.push_back({dw, V(1), (sel - n1) * cw, cw, d});
         }
         x.n = std::uint32_t(o.size() - 2) * cw;
         x.aux = add_copies(std::move(cs));
@@ -461,6 +491,7 @@ struct Decoder {
         x.s = vt.scalar;
         x.m = vt.count;
         x.aux = std::uint32_t(scalar_of(o[insert ? 2 : 1]));  // index scalar
+        if (insert) x.doubles = doubles_in(value_type.at(o[0]), 0, m.type(value_type.at(o[0])).words);
         emit(x);
         return;
       }
@@ -497,13 +528,20 @@ struct Decoder {
             chain.steps.push_back(s);
           }
         }
+        pointee_of[ins.result] = t;
+        if (chain_of[base_ptr] == kNone) {
+          constant.offset += static_offset[base_ptr];
+          if (chain.steps.empty()) {  // constant indices only: folded, nothing to run
+            static_offset[ins.result] = constant.offset;
+            return;
+          }
+        }
         chain.steps.insert(chain.steps.begin(), constant);
         XIns x = base(ins, XOp::AccessChain);
         x.a = chain_of[base_ptr];  // kNone: the variable itself
         x.aux = std::uint32_t(p.chains.size());
         p.chains.push_back(std::move(chain));
         chain_of[ins.result] = x.dst;
-        pointee_of[ins.result] = t;
         emit(x);
         return;
       }
@@ -609,10 +647,21 @@ struct Decoder {
   }
 
   std::vector<std::uint32_t> pointee_of;  // access chain result id -> pointee type id
+  std::vector<std::uint32_t> static_offset;  // pointer id -> constant word offset (no register)
   std::uint32_t pointee(std::uint32_t ptr) const {
     if (ptr < pointee_of.size() && pointee_of[ptr]) return pointee_of[ptr];
     return m.type(value_type.at(ptr)).element;
   }
+  // The doubles of type `type` that start in words [first, first + words), relative to first.
+  std::uint32_t doubles_in(std::uint32_t type, std::uint32_t first, std::uint32_t words) {
+    std::vector<std::uint32_t> starts;
+    for (const FlatComponent& c : m.type(type).flat)
+      if (c.scalar == Scalar::F64 && c.word >= first && c.word < first + words) starts.push_back(c.word - first);
+    if (starts.empty()) return kNone;
+    p.doubles.push_back(std::move(starts));
+    return std::uint32_t(p.doubles.size() - 1);
+  }
+
   std::uint32_t add_copies(std::vector<WordCopy> cs) {
     p.copies.push_back(std::move(cs));
     return std::uint32_t(p.copies.size() - 1);
@@ -621,6 +670,7 @@ struct Decoder {
   void run() {
     value_type.assign(m.bound, 0);
     pointee_of.assign(m.bound, 0);
+    static_offset.assign(m.bound, 0);
     add_constants();
     for (const auto& [id, t] : m.constant_types) value_type[id] = t;
     add_variables();

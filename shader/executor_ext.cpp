@@ -160,44 +160,43 @@ void Runner::ext(const XIns& x) {
       }
       break;
     }
-    case GLSLstd450Modf: case GLSLstd450Frexp: {
-      // Result: fraction (or mantissa); the whole part (or exponent) goes through the pointer.
-      const Access& acc = p.accesses[x.b];
-      std::vector<std::uint32_t> out(std::size_t(x.n) * L * 2, 0u);
+    case GLSLstd450Modf: case GLSLstd450Frexp: case GLSLstd450ModfStruct: case GLSLstd450FrexpStruct: {
+      // The fraction (mantissa) goes to dst, the whole part (exponent) to the rows at x.c: the
+      // result struct's second member, or staging rows stored through the pointer operand x.b.
+      const bool modf = op == GLSLstd450Modf || op == GLSLstd450ModfStruct;
       for (std::uint32_t c = 0; c < x.n; ++c) {
         auto go = [&](auto zero) {
           using T = decltype(zero);
           const T* a = row<T>(x.a, c);
-          put(row<T>(x.dst, c), [&](int l) {
-            if (op == GLSLstd450Modf) {
-              const T whole = std::trunc(a[l]);
-              std::memcpy(&out[(std::size_t(c) * L + l) * 2], &whole, sizeof(T));
-              return std::isinf(a[l]) ? std::copysign(T(0), a[l]) : a[l] - whole;
-            }
-            int e = 0;
-            const T mant = std::frexp(a[l], &e);
-            out[(std::size_t(c) * L + l) * 2] = std::uint32_t(e);
-            return mant;
-          });
+          if (modf) {
+            T* whole = row<T>(x.c, c);
+            put(whole, [&](int l) { return std::trunc(a[l]); });
+            // Both parts have x's sign: -1.0 gives -0.0 and -1.0; +-inf gives +-0.0.
+            put(row<T>(x.dst, c), [&](int l) {
+              return std::isinf(a[l]) ? std::copysign(T(0), a[l]) : std::copysign(a[l] - whole[l], a[l]);
+            });
+          } else {
+            std::int32_t* exponent = row<std::int32_t>(x.c, c);
+            put(exponent, [&](int l) {
+              int e = 0;
+              std::frexp(a[l], &e);
+              return std::int32_t(e);
+            });
+            put(row<T>(x.dst, c), [&](int l) {
+              int e = 0;
+              return std::frexp(a[l], &e);
+            });
+          }
         };
         if (x.s == Scalar::F64) go(double{});
         else go(float{});
       }
-      // Stage the second result in scratch rows shaped like the pointee, then store it.
-      const std::uint32_t w = op == GLSLstd450Modf ? std::uint32_t(scalar_words(x.s)) : 1u;
-      std::vector<std::uint32_t> saved(std::size_t(acc.words) * L);
-      std::uint32_t* scratch = A + std::size_t(x.dst) * L;  // reuse after copying dst away
-      std::vector<std::uint32_t> dst_copy(scratch, scratch + std::size_t(x.n) * w * L);
-      for (std::uint32_t c = 0; c < x.n; ++c)
-        for (int l = 0; l < n; ++l) {
-          std::uint32_t* r = A + std::size_t(x.dst + c * w) * L + std::size_t(l) * w;
-          std::memcpy(r, &out[(std::size_t(c) * L + l) * 2], 4 * w);
-        }
-      XIns st;
-      st.aux = x.b;
-      st.a = x.dst;
-      store(st);
-      std::copy(dst_copy.begin(), dst_copy.end(), scratch);
+      if (x.b != kNone) {
+        XIns st;
+        st.aux = x.b;
+        st.a = x.c;
+        store(st);
+      }
       break;
     }
     case GLSLstd450FindILsb: map1<std::uint32_t, std::uint32_t>(x, find_lsb); break;
@@ -370,6 +369,7 @@ void Runner::ext(const XIns& x) {
         std::uint32_t r = 0;
         for (int c = 0; c < parts; ++c) {
           float v = row<float>(x.a, std::uint32_t(c))[l];
+          if (std::isnan(v)) v = 0.0f;  // GLSL leaves it undefined; 0, not a NaN conversion
           v = snorm ? std::clamp(v, -1.0f, 1.0f) : std::clamp(v, 0.0f, 1.0f);
           const std::int32_t q = std::int32_t(std::nearbyint(v * scale));
           r |= (std::uint32_t(q) & ((1u << bits) - 1u)) << (c * bits);

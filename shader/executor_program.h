@@ -41,13 +41,17 @@ struct XIns {
   std::uint32_t a = kNone, b = kNone, c = kNone, d = kNone;
   std::uint32_t n = 0;        // result components (or words, for copies)
   std::uint32_t aux = 0;      // side table index or a literal
+  // Copy, Undef, Select of a whole value, InsertDyn: DecodedProgram::doubles index (kNone: none).
+  std::uint32_t doubles = kNone;
   std::uint32_t m = 0;        // second dimension: matrix rows, vector size of an operand
   int line = 0;
 };
 
-// dst word w := src row's word sw, `words` rows in a row.
+// dst word w := src row's word sw, `words` rows in a row. doubles: index into
+// DecodedProgram::doubles of the words where a double starts (kNone: none).
 struct WordCopy {
   std::uint32_t dst_word, src, src_word, words;
+  std::uint32_t doubles = kNone;
 };
 
 struct ChainStep {
@@ -62,12 +66,15 @@ struct Chain {
   std::vector<ChainStep> steps;
 };
 
-// A memory access: the variable's slot and a per-lane offset register (or none: offset 0).
+// A memory access: the variable's slot, a per-lane offset register (or none) and a constant offset
+// (access chains with constant indices are folded into it when decoding).
 struct Access {
   std::uint32_t slot = 0;           // index into DecodedProgram::slots
   std::uint32_t offset_reg = kNone;
+  std::uint32_t offset = 0;         // words
   std::vector<FlatComponent> flat;  // the accessed value's components
   std::uint32_t words = 0;
+  std::uint32_t doubles = kNone;    // DecodedProgram::doubles of the value
 };
 
 struct Phi {
@@ -98,6 +105,9 @@ struct DecodedProgram {
   std::vector<VariableSlot> slots;  // every variable (module-level, then Function)
   std::vector<std::uint32_t> slot_of_id;  // id -> slot index, kNone if not a variable
   std::vector<std::vector<WordCopy>> copies;
+  // Word offsets (within a copied value) where a double starts: its two rows hold the lanes
+  // interleaved, so a masked copy must move whole doubles (Runner::copy_rows).
+  std::vector<std::vector<std::uint32_t>> doubles;
   std::vector<Chain> chains;
   std::vector<Access> accesses;
   std::vector<std::vector<std::uint32_t>> shuffles;  // not used by copies: extra literal lists

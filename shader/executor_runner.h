@@ -91,15 +91,35 @@ struct Runner {
     }
   }
 
-  void words_copy(std::uint32_t dst, std::uint32_t src, std::uint32_t words) {
-    for (std::uint32_t w = 0; w < words; ++w) {
-      const std::uint32_t* s = A + std::size_t(src + w) * L;
-      put(A + std::size_t(dst + w) * L, [&](int l) { return s[l]; });
+  // Rows [0, words) of src into dst for the active lanes. A double's two rows hold its lanes
+  // interleaved (lane l at words 2l, 2l + 1), so where one starts (`doubles`, relative word
+  // offsets; null: none) whole doubles move.
+  void copy_rows(std::uint32_t* dst, const std::uint32_t* src, std::uint32_t words,
+                 const std::vector<std::uint32_t>* doubles) {
+    std::size_t k = 0;
+    for (std::uint32_t w = 0; w < words;) {
+      if (doubles && k < doubles->size() && (*doubles)[k] == w) {
+        const double* s = reinterpret_cast<const double*>(src + std::size_t(w) * L);
+        put(reinterpret_cast<double*>(dst + std::size_t(w) * L), [&](int l) { return s[l]; });
+        ++k;
+        w += 2;
+        continue;
+      }
+      const std::uint32_t* s = src + std::size_t(w) * L;
+      put(dst + std::size_t(w) * L, [&](int l) { return s[l]; });
+      ++w;
     }
+  }
+  const std::vector<std::uint32_t>* doubles_of(std::uint32_t index) const {
+    return index == kNone ? nullptr : &p.doubles[index];
+  }
+  void words_copy(std::uint32_t dst, std::uint32_t src, std::uint32_t words, std::uint32_t doubles) {
+    copy_rows(A + std::size_t(dst) * L, A + std::size_t(src) * L, words, doubles_of(doubles));
   }
 
   void exec(const XIns& x);
   void run_block(const XBlock& b);
+  void run_phis(const XBlock& b);
   void load(const XIns& x);
   void store(const XIns& x);
   void access_chain(const XIns& x);

@@ -46,6 +46,7 @@ void apply_decoration(Decorations& d, std::uint32_t decoration, std::span<const 
     case spv::DecorationFlat: d.flat = true; break;
     case spv::DecorationNoPerspective: d.noperspective = true; break;
     case spv::DecorationBlock: d.block = true; break;
+    case spv::DecorationBufferBlock: d.buffer_block = true; break;
     default: break;
   }
 }
@@ -437,6 +438,13 @@ Module read_module(std::span<const std::uint32_t> words) {
   };
   for (Variable& v : m.variables) attach(v);
   for (Variable& v : m.function_variables) attach(v);
+  for (const Variable& v : m.variables) {
+    std::uint32_t t = v.type;
+    while (m.type(t).kind == TypeKind::Array) t = m.type(t).element;
+    const auto d = decorations.find(t);
+    if (v.storage == spv::StorageClassStorageBuffer || (d != decorations.end() && d->second.buffer_block))
+      throw SpirvError("shader storage buffers ('buffer' blocks) are not supported: '" + v.name + "'");
+  }
   return m;
 }
 

@@ -51,7 +51,7 @@ struct Type {
 
 struct Decorations {
   std::optional<std::uint32_t> location, component, binding, builtin, offset;
-  bool patch = false, flat = false, noperspective = false, block = false;
+  bool patch = false, flat = false, noperspective = false, block = false, buffer_block = false;
 };
 
 struct Variable {

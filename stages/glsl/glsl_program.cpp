@@ -20,10 +20,46 @@ constexpr int kVertexSlots = kMaxStageAttributes;                  // StageVerte
 constexpr int kVaryingSlots = 1 + kMaxVaryings / 4;                // ClipVertex varyings
 constexpr int kPatchSlots = 1 + kMaxPatchAttributes;               // PatchOutput::patch
 
+// What the executor runs but the pipeline does not carry, refused by name rather than ignored.
+void refuse_unsupported_outputs(const shader::Module& m, shader::Stage stage) {
+  for (const shader::Variable& v : m.variables) {
+    if (v.storage != spv::StorageClassOutput) continue;
+    const auto b = v.decorations.builtin;
+    if (b == std::uint32_t(spv::BuiltInClipDistance) || b == std::uint32_t(spv::BuiltInCullDistance))
+      throw shader::SpirvError("gl_ClipDistance and gl_CullDistance (user clip planes) are not supported");
+    if (b == std::uint32_t(spv::BuiltInFragDepth) || m.modes.depth_replacing)
+      throw shader::SpirvError("gl_FragDepth is not supported (the depth written is the interpolated one)");
+    if (stage == shader::Stage::Fragment && v.decorations.location && *v.decorations.location > 1)
+      throw shader::SpirvError("fragment output '" + v.name + "' at location " + std::to_string(*v.decorations.location) +
+                               ": tessref keeps locations 0 (color) and 1 (the --normals image)");
+  }
+  // gl_ClipDistance inside gl_PerVertex: an access chain into that member.
+  for (const shader::Block& block : m.blocks)
+    for (const shader::Instruction& ins : block.body) {
+      if (ins.opcode != spv::OpAccessChain && ins.opcode != spv::OpInBoundsAccessChain) continue;
+      const shader::Variable* v = m.variable(ins.operands.at(0));
+      if (!v || v->storage != spv::StorageClassOutput || v->member_decorations.empty()) continue;
+      std::size_t first = 1;
+      if (m.type(v->type).kind == TypeKind::Array) ++first;  // gl_out[i].member
+      if (ins.operands.size() <= first) continue;
+      const auto c = m.constants.find(ins.operands[first]);
+      if (c == m.constants.end() || c->second.at(0) >= v->member_decorations.size()) continue;
+      const auto b = v->member_decorations[c->second[0]].builtin;
+      if (b == std::uint32_t(spv::BuiltInClipDistance) || b == std::uint32_t(spv::BuiltInCullDistance))
+        throw shader::SpirvError("gl_ClipDistance and gl_CullDistance (user clip planes) are not supported");
+    }
+}
+
 std::unique_ptr<StageProgram> make_stage(const shader::CompiledStage& cs, shader::ExecLimits limits) {
   auto sp = std::make_unique<StageProgram>();
   sp->stage = cs.stage;
-  sp->exe = std::make_unique<shader::Executable>(shader::read_module(cs.spirv), limits);
+  try {
+    shader::Module module = shader::read_module(cs.spirv);
+    refuse_unsupported_outputs(module, cs.stage);
+    sp->exe = std::make_unique<shader::Executable>(std::move(module), limits);
+  } catch (const shader::SpirvError& e) {
+    throw shader::SpirvError(std::string(shader::stage_name(cs.stage)) + ": " + e.what());
+  }
   const int slots = cs.stage == shader::Stage::Fragment ? kVaryingSlots
                     : cs.stage == shader::Stage::Vertex ? kVertexSlots
                                                         : std::max(kVertexSlots, kPatchSlots);
