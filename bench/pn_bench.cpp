@@ -51,6 +51,16 @@ using namespace tessref;
 constexpr int kRefinements = 2;  // 320 triangles
 constexpr TessLayout kLayout{TessDomain::Triangles, TessSpacing::FractionalOdd, TessWinding::Ccw, false};
 
+// Patches per parallel task as the pipeline sizes them (draw.cpp: about 4,096 triangles a task),
+// so that a 16-patch chunk at level 64 still spreads over the threads.
+TessOptions task_options(float level) {
+  TessOptions o;
+  const std::size_t per_patch = std::max<std::size_t>(
+      1, generate_tessellation(kLayout, TessLevelSettings::uniform(level, level).constant).primitive_count());
+  o.patches_per_task = std::clamp<std::size_t>(4096 / per_patch, 1, 64);
+  return o;
+}
+
 const Mesh& mesh() {
   static const Mesh m = make_icosphere(kRefinements);
   return m;
@@ -80,7 +90,8 @@ struct Tessref {
   PnTcs tcs;
   PnTes tes;
   std::size_t chunk;
-  Tessref(float level, std::size_t chunk_patches) : chunk(chunk_patches) {
+  float level;
+  Tessref(float level, std::size_t chunk_patches) : chunk(chunk_patches), level(level) {
     tcs.normal_mode = PnNormalMode::Quadratic;
     tcs.levels = TessLevelSettings::uniform(level, level);
     tes.normal_mode = PnNormalMode::Quadratic;
@@ -88,7 +99,7 @@ struct Tessref {
   }
   TessStats run(std::size_t& triangles) const {
     const TessDrawInput input{control_points(), mesh().indices, 3};
-    return tessellate_chunks(input, chunk, tcs, tes, {}, parallel(),
+    return tessellate_chunks(input, chunk, tcs, tes, task_options(level), parallel(),
                              [&](const TriangleBatch& b) { triangles += b.triangle_count(); });
   }
 };
@@ -156,7 +167,8 @@ struct Executor {
   std::unique_ptr<TessEvalProgram> tes;
   std::vector<StageVertex> cp;
   std::size_t chunk;
-  Executor(float level, std::size_t chunk_patches, int batch_lanes) : chunk(chunk_patches) {
+  float level;
+  Executor(float level, std::size_t chunk_patches, int batch_lanes) : chunk(chunk_patches), level(level) {
     shader::ExecLimits limits;
     limits.batch_lanes = batch_lanes;
     program = std::make_unique<glsl::GlslProgram>(twins_compiled(), limits);
@@ -210,7 +222,7 @@ struct Executor {
   }
   TessStats run(std::size_t& triangles) const {
     const TessDrawInput input{cp, mesh().indices, 3};
-    return tessellate_chunks(input, chunk, *tcs, *tes, {}, parallel(),
+    return tessellate_chunks(input, chunk, *tcs, *tes, task_options(level), parallel(),
                              [&](const TriangleBatch& b) { triangles += b.triangle_count(); });
   }
 };

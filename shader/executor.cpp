@@ -61,25 +61,72 @@ void Runner::access_chain(const XIns& x) {
   std::uint32_t* dst = A + std::size_t(x.dst) * L;
   const std::uint32_t* base = x.a == kNone ? nullptr : A + std::size_t(x.a) * L;
   const std::uint32_t constant = ch.steps[0].offset;
+  auto step_offset = [&](const ChainStep& s, std::uint32_t raw) {
+    // Robust access: an index outside the array reads or writes its last (or first) element.
+    std::int64_t k = s.index_scalar == Scalar::I32 ? std::int64_t(std::int32_t(raw)) : std::int64_t(raw);
+    k = std::clamp<std::int64_t>(k, 0, s.length ? s.length - 1 : 0);
+    return std::uint32_t(k) * s.stride;
+  };
+  // The same indices in every active lane (the common case): one offset for all.
+  std::uint32_t uniform = base ? uniform_offset(base) : 0u;
+  for (std::size_t i = 1; i < ch.steps.size() && uniform != kNone; ++i) {
+    const std::uint32_t index = uniform_offset(A + std::size_t(ch.steps[i].index_reg) * L);
+    uniform = index == kNone ? kNone : uniform + step_offset(ch.steps[i], index);
+  }
+  if (uniform != kNone) {
+    const std::uint32_t value = uniform + constant;
+    put(dst, [&](int) { return value; });
+    return;
+  }
   put(dst, [&](int l) {
     std::uint32_t off = (base ? base[l] : 0u) + constant;
-    for (std::size_t i = 1; i < ch.steps.size(); ++i) {
-      const ChainStep& s = ch.steps[i];
-      const std::uint32_t raw = A[std::size_t(s.index_reg) * L + l];
-      // Robust access: an index outside the array reads or writes its last (or first) element.
-      std::int64_t k = s.index_scalar == Scalar::I32 ? std::int64_t(std::int32_t(raw)) : std::int64_t(raw);
-      k = std::clamp<std::int64_t>(k, 0, s.length ? s.length - 1 : 0);
-      off += std::uint32_t(k) * s.stride;
-    }
+    for (std::size_t i = 1; i < ch.steps.size(); ++i)
+      off += step_offset(ch.steps[i], A[std::size_t(ch.steps[i].index_reg) * L + l]);
     return off;
   });
 }
 
+// The offset every active lane has in a pointer row, or kNone when they differ. Dynamic indices
+// are mostly the same in all lanes of a batch (a TES batch is one patch), and a constant offset
+// makes a load a row copy or a broadcast instead of a gather.
+std::uint32_t Runner::uniform_offset(const std::uint32_t* off) const {
+  const int count = n;
+  if (full) {  // a min and max reduction, which vectorizes
+    std::uint32_t lo = off[0], hi = off[0];
+    for (int l = 1; l < count; ++l) {
+      lo = std::min(lo, off[l]);
+      hi = std::max(hi, off[l]);
+    }
+    return lo == hi ? lo : kNone;
+  }
+  std::uint32_t first = kNone;
+  bool same = true;
+  for (int l = 0; l < n; ++l)
+    if (mask[l]) {
+      if (first == kNone) first = off[l];
+      same &= off[l] == first;
+    }
+  return same ? first : kNone;
+}
+
 void Runner::load(const XIns& x) {
-  const Access& a = p.accesses[x.aux];
-  const VariableSlot& v = p.slots[a.slot];
-  const std::uint32_t* off = a.offset_reg == kNone ? nullptr : A + std::size_t(a.offset_reg) * L;
-  for (const FlatComponent& c : a.flat) {
+  const Access& base_access = p.accesses[x.aux];
+  const VariableSlot& v = p.slots[base_access.slot];
+  const std::uint32_t* off = base_access.offset_reg == kNone ? nullptr : A + std::size_t(base_access.offset_reg) * L;
+  Access uniform_access;
+  const Access* ap = &base_access;
+  if (off) {
+    if (const std::uint32_t u = uniform_offset(off); u != kNone) {
+      uniform_access.slot = base_access.slot;
+      uniform_access.offset = base_access.offset + u;
+      uniform_access.flat = {};
+      off = nullptr;
+      ap = &uniform_access;
+    }
+  }
+  const Access& a = *ap;
+  const std::vector<FlatComponent>& flat = base_access.flat;
+  for (const FlatComponent& c : flat) {
     if (c.scalar == Scalar::F64) {
       double* d = row<double>(x.dst + c.word);
       if (v.per_lane) {
@@ -633,9 +680,9 @@ void Runner::run_block(const XBlock& b) {
 // Phis are parallel copies: every incoming value is read (into the staging rows) before any phi
 // is written. When all active lanes came from the same block (the common case), whole rows move.
 void Runner::run_phis(const XBlock& b) {
-  std::uint32_t from = kNone;
+  std::uint32_t from = uniform_prev;
   bool same = true;
-  for (int l = 0; l < n && same; ++l)
+  for (int l = 0; l < n && same && uniform_prev == kNone; ++l)
     if (mask[l]) {
       if (from == kNone) from = prev[l];
       else same = prev[l] == from;
@@ -645,9 +692,10 @@ void Runner::run_phis(const XBlock& b) {
   for (const Phi& phi : b.phis) {
     for (int l = 0; l < n; ++l) {
       if (!mask[l]) continue;
+      const std::uint32_t came_from = uniform_prev != kNone ? uniform_prev : prev[l];
       std::uint32_t src = kNone;
       for (const auto& [value, pred] : phi.incoming)
-        if (pred == prev[l]) src = value;
+        if (pred == came_from) src = value;
       if (src == kNone) fail("internal: phi without an incoming value for its predecessor", l, 0);
       if (same) {  // every active lane reads the same row: copy the whole rows
         std::copy_n(A + std::size_t(src) * L, std::size_t(phi.words) * L, staging + at);
@@ -747,27 +795,100 @@ void Invocations::run() {
   const DecodedProgram& p = *exe_.program_;
   Runner r{*this, p, arena_.data(), lanes_, {}, false, {}, {}, {}};
   const std::uint64_t budget = exe_.limits().max_instructions;
+  const std::string budget_message =
+      "instruction budget of " + std::to_string(budget) +
+      " exceeded (an infinite loop?); raise it with --max-shader-instructions or the scene's "
+      "shaders.max_instructions";
   for (int l = 0; l < lanes_; ++l) {
     r.pc[l] = 0;
     r.prev[l] = kNone;
     r.steps[l] = 0;
+    r.mask[l] = 1;
   }
-  // converged: every lane still running waits at the same block (no scan needed), which is the
-  // case until a branch sends lanes different ways.
+  // A lane's instruction count is common (counted once while the lanes run together) plus its
+  // own steps (counted per lane while they diverge).
+  std::uint64_t common = 0, most_steps = 0;
+  auto over_budget = [&](const Terminator& t) {
+    for (int l = 0; l < lanes_; ++l)
+      if (r.mask[l] && common + r.steps[l] > budget) r.fail(budget_message, l, t.line);
+  };
+  // Converged: every lane still running is at `block` (r.mask holds them), so nothing is scanned
+  // per lane until a branch sends lanes different ways. r.uniform_prev: the block they all came
+  // from (kNone right after they meet again, when each lane's prev[] says).
   bool converged = true;
   std::uint32_t block = 0;
   int running = lanes_;
+  r.uniform_prev = kNone;
   while (running > 0) {
-    if (!converged) {
-      block = kNone;
-      for (int l = 0; l < lanes_; ++l) block = std::min(block, r.pc[l]);
+    if (converged) {
+      r.full = running == lanes_;
+      const XBlock& b = p.blocks[block];
+      r.run_block(b);
+      const Terminator& t = b.term;
+      common += b.count + 1;
+      if (common + most_steps > budget) over_budget(t);
+      std::uint32_t to = kNone;
+      bool uniform = true;
+      switch (t.kind) {
+        case TermKind::Branch: to = t.target; break;
+        case TermKind::Return:
+        case TermKind::Unreachable: running = 0; break;
+        case TermKind::Kill:
+          for (int l = 0; l < lanes_; ++l) killed_[l] |= r.mask[l];
+          running = 0;
+          break;
+        case TermKind::Cond:
+        case TermKind::Switch: {
+          if (t.kind == TermKind::Cond && r.full) {  // all lanes one way? (reductions, vectorized)
+            const std::uint32_t* c = arena_.data() + std::size_t(t.reg) * kMaxLanes;
+            std::uint32_t any = 0, all = 1;
+            for (int l = 0; l < lanes_; ++l) {
+              any |= c[l];
+              all &= c[l];
+            }
+            if (all || !any) {
+              to = all ? t.target : t.other;
+              break;
+            }
+          }
+          for (int l = 0; l < lanes_; ++l) {
+            if (!r.mask[l]) continue;
+            const std::uint32_t v = arena_[std::size_t(t.reg) * kMaxLanes + l];
+            std::uint32_t lane_to = t.other;
+            if (t.kind == TermKind::Cond) {
+              lane_to = v ? t.target : t.other;
+            } else {
+              for (const auto& [lit, target] : t.cases)
+                if (lit == v) lane_to = target;
+            }
+            r.pc[l] = lane_to;
+            if (to == kNone) to = lane_to;
+            else uniform &= lane_to == to;
+          }
+          break;
+        }
+      }
+      if (running == 0) break;
+      if (uniform) {
+        r.uniform_prev = block;
+        block = to;
+        continue;
+      }
+      for (int l = 0; l < lanes_; ++l)  // the lanes part: each at its own block from here
+        if (r.mask[l]) r.prev[l] = block;
+      converged = false;
+      continue;
     }
+
+    block = kNone;
+    for (int l = 0; l < lanes_; ++l) block = std::min(block, r.pc[l]);
     int active = 0;
     for (int l = 0; l < lanes_; ++l) {
       r.mask[l] = r.pc[l] == block;
       active += r.mask[l];
     }
     r.full = active == lanes_;
+    r.uniform_prev = kNone;
     const XBlock& b = p.blocks[block];
     r.run_block(b);
     const Terminator& t = b.term;
@@ -776,11 +897,8 @@ void Invocations::run() {
     for (int l = 0; l < lanes_; ++l) {
       if (!r.mask[l]) continue;
       r.steps[l] += b.count + 1;
-      if (r.steps[l] > budget)
-        r.fail("instruction budget of " + std::to_string(budget) +
-                   " exceeded (an infinite loop?); raise it with --max-shader-instructions or the "
-                   "scene's shaders.max_instructions",
-               l, t.line);
+      most_steps = std::max(most_steps, r.steps[l]);
+      if (common + r.steps[l] > budget) r.fail(budget_message, l, t.line);
       r.prev[l] = block;
       std::uint32_t to = kNone;
       switch (t.kind) {
@@ -802,8 +920,11 @@ void Invocations::run() {
       else if (next == kNone) next = to;
       else same &= to == next;
     }
-    converged = same;
-    block = next;
+    if (same && running > 0) {  // every running lane meets at `next`: together again
+      converged = true;
+      block = next;
+      for (int l = 0; l < lanes_; ++l) r.mask[l] = r.pc[l] == next;
+    }
   }
 }
 

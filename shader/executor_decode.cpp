@@ -219,6 +219,7 @@ struct Decoder {
   void emit(XIns x) { p.code.push_back(x); }
 
   void decode(const Instruction& ins) {
+    if (ins.result && aliased[ins.result]) return;  // nothing to run: see alias_of
     const auto& o = ins.operands;
     auto V = [&](std::size_t i) { return value(ins, o.at(i)); };
     auto simple = [&](XOp op, int nargs, Scalar s = Scalar::None) {
@@ -648,6 +649,7 @@ struct Decoder {
 
   std::vector<std::uint32_t> pointee_of;  // access chain result id -> pointee type id
   std::vector<std::uint32_t> static_offset;  // pointer id -> constant word offset (no register)
+  std::vector<bool> aliased;                 // value id -> its rows are another value's (alias_of)
   std::uint32_t pointee(std::uint32_t ptr) const {
     if (ptr < pointee_of.size() && pointee_of[ptr]) return pointee_of[ptr];
     return m.type(value_type.at(ptr)).element;
@@ -671,6 +673,7 @@ struct Decoder {
     value_type.assign(m.bound, 0);
     pointee_of.assign(m.bound, 0);
     static_offset.assign(m.bound, 0);
+    aliased.assign(m.bound, false);
     add_constants();
     for (const auto& [id, t] : m.constant_types) value_type[id] = t;
     add_variables();
@@ -683,10 +686,41 @@ struct Decoder {
         if (ins.result && ins.type) {
           value_type[ins.result] = ins.type;
           const Type& t = m.type(ins.type);
+          if (const std::uint32_t rows = alias_of(ins); rows != kNone) {
+            reg[ins.result] = rows;
+            aliased[ins.result] = true;
+            continue;
+          }
           reg[ins.result] = alloc_rows(std::max<std::uint32_t>(t.words, 1));
         }
     p.blocks.resize(m.blocks.size());
     for (std::size_t i = 0; i < m.blocks.size(); ++i) decode_block(m.blocks[i], p.blocks[i]);
+  }
+
+  // A copy or a part of another SSA value (OpCopyObject, OpCompositeExtract with constant indices)
+  // needs no rows and no instruction: it is the source's rows. SSA values never change once
+  // written for a lane, and blocks come in dominance order, so the source's rows are final here.
+  // Returns the rows, or kNone.
+  std::uint32_t alias_of(const Instruction& ins) {
+    const auto& o = ins.operands;
+    if (ins.opcode == spv::OpCopyObject && !o.empty() && o[0] < reg.size() && reg[o[0]] != kNone &&
+        m.constants.find(o[0]) == m.constants.end())
+      return reg[o[0]];
+    if (ins.opcode != spv::OpCompositeExtract || o.empty() || o[0] >= reg.size() || reg[o[0]] == kNone)
+      return kNone;
+    std::uint32_t t = value_type[o[0]];
+    std::uint32_t offset = 0;
+    for (std::size_t i = 1; i < o.size(); ++i) {
+      const Type& ct = m.type(t);
+      if (ct.kind == TypeKind::Struct) {
+        offset += ct.member_word.at(o[i]);
+        t = ct.members.at(o[i]);
+      } else {
+        t = ct.element;
+        offset += o[i] * m.type(t).words;
+      }
+    }
+    return reg[o[0]] + offset;
   }
 
   // A pointer type id whose element is the variable's type (for value_type lookups).

@@ -36,6 +36,7 @@ struct Runner {
   std::uint32_t pc[L];
   std::uint32_t prev[L];
   std::uint64_t steps[L];
+  std::uint32_t uniform_prev = kNone;  // the block every active lane came from; kNone: see prev[]
 
   template <class T>
   T* row(std::uint32_t r, std::uint32_t comp = 0) {
@@ -45,12 +46,16 @@ struct Runner {
   // Writes f(l) into dst for the active lanes; inactive lanes keep their values (a value defined in
   // a loop stays valid for lanes that left the loop).
   template <class T, class F>
-  void put(T* dst, F f) {
+  void put(T* __restrict dst, F f) {
+    // The count in a local: a store through dst may alias this->n (an int), which would keep
+    // the loop from being vectorized.
+    const int count = n;
     if (full) {
-      for (int l = 0; l < n; ++l) dst[l] = f(l);
+      for (int l = 0; l < count; ++l) dst[l] = f(l);
     } else {
-      for (int l = 0; l < n; ++l)
-        if (mask[l]) dst[l] = f(l);
+      const std::uint8_t* m = mask;
+      for (int l = 0; l < count; ++l)
+        if (m[l]) dst[l] = f(l);
     }
   }
 
@@ -121,6 +126,7 @@ struct Runner {
   void run_block(const XBlock& b);
   void run_phis(const XBlock& b);
   void load(const XIns& x);
+  std::uint32_t uniform_offset(const std::uint32_t* off) const;
   void store(const XIns& x);
   void access_chain(const XIns& x);
   void ext(const XIns& x);
