@@ -262,7 +262,7 @@ void BM_ExecutorPn(benchmark::State& state) {
   state.counters["batch_lanes"] = double(state.range(2));
 }
 BENCHMARK(BM_ExecutorPn)
-    ->ArgsProduct({{12, 64}, {256, 16}, {64, 1}})
+    ->ArgsProduct({{12, 64}, {256, 16}, {256, 64, 1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -87,7 +87,7 @@ struct ShaderSettings {
   // Vertex shader input name -> the mesh attribute that feeds it: "position" or "normal".
   std::vector<std::pair<std::string, std::string>> attributes;
   std::vector<TextureSetting> textures;
-  int batch_lanes = 64;                         // shader::ExecLimits::batch_lanes
+  int batch_lanes = 256;                        // shader::ExecLimits::batch_lanes
   std::uint64_t max_instructions = 50'000'000;  // shader::ExecLimits::max_instructions
 };
 

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "shader/executor.h"
+
 namespace tessref {
 namespace {
 
@@ -231,7 +233,7 @@ ShaderSettings read_shaders(JsonObject o, const JsonSource& source, const std::f
       s.textures.push_back(std::move(t));
     }
   }
-  s.batch_lanes = o.integer("batch_lanes", 1, 64);
+  s.batch_lanes = o.integer("batch_lanes", 1, shader::kMaxLanes);
   s.max_instructions = std::uint64_t(o.integer("max_instructions", 1, std::numeric_limits<int>::max()));
   o.finish();
   return s;

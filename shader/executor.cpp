@@ -89,6 +89,17 @@ void Runner::access_chain(const XIns& x) {
 // The offset every active lane has in a pointer row, or kNone when they differ. Dynamic indices
 // are mostly the same in all lanes of a batch (a TES batch is one patch), and a constant offset
 // makes a load a row copy or a broadcast instead of a gather.
+// The value every active lane in [lo, hi) has in row, or kNone (also when none is active).
+std::uint32_t Runner::uniform_in(const std::uint32_t* row, int lo, int hi) const {
+  std::uint32_t value = kNone;
+  for (int l = lo; l < hi; ++l)
+    if (full || mask[l]) {
+      if (value == kNone) value = row[l];
+      else if (row[l] != value) return kNone;
+    }
+  return value;
+}
+
 std::uint32_t Runner::uniform_offset(const std::uint32_t* off) const {
   const int count = n;
   if (full) {  // a min and max reduction, which vectorizes
@@ -138,7 +149,7 @@ void Runner::load(const XIns& x) {
         put(d, [&](int l) {
           const std::uint32_t o = v.base + (off ? off[l] : 0u) + a.offset + c.word;
           double r;
-          std::memcpy(&r, inv.shared_.data() + o, 8);
+          std::memcpy(&r, inv.shared_.data() + (v.per_group ? inv.group_base_[l] : 0u) + o, 8);
           return r;
         });
       }
@@ -154,6 +165,23 @@ void Runner::load(const XIns& x) {
       }
     } else {
       const std::uint32_t* s = inv.shared_.data() + v.base + a.offset + c.word;
+      if (v.per_group && inv.groups_ > 1) {  // each lane its group's copy
+        // A broadcast per group where the group's lanes share the offset (a group's lanes are
+        // consecutive), else a gather.
+        const std::uint32_t* g = inv.group_base_;
+        for (int k = 0; k < num_group_runs; ++k) {
+          const auto [lo, hi] = group_runs[k];
+          const std::uint32_t u = off ? uniform_in(off, lo, hi) : 0u;
+          if (u != kNone) {
+            put_range(d, lo, hi, s[g[lo] + u]);
+          } else {
+            for (int l = lo; l < hi; ++l)
+              if (full || mask[l]) d[l] = s[g[l] + off[l]];
+          }
+        }
+        continue;
+      }
+      if (v.per_group) s += inv.group_base_[0];
       if (!off) {
         const std::uint32_t value = *s;
         put(d, [&](int) { return value; });
@@ -180,7 +208,7 @@ void Runner::store(const XIns& x) {
       const std::uint32_t o = (off ? off[l] : 0u) + a.offset + c.word;
       const std::uint32_t* src = A + std::size_t(x.a + c.word) * L + std::size_t(l) * w;
       std::uint32_t* dst = v.per_lane ? A + std::size_t(v.base + o) * L + std::size_t(l) * w
-                                      : inv.shared_.data() + v.base + o;
+                                      : inv.shared_.data() + (v.per_group ? inv.group_base_[l] : 0u) + v.base + o;
       dst[0] = src[0];
       if (w == 2) dst[1] = src[1];
     }
@@ -338,7 +366,8 @@ void Runner::atomic(const XIns& x) {
   for (int l = 0; l < n; ++l) {
     if (!mask[l]) continue;
     const std::uint32_t o = (off ? off[l] : 0u) + a.offset;
-    std::uint32_t* cell = v.per_lane ? A + std::size_t(v.base + o) * L + l : inv.shared_.data() + v.base + o;
+    std::uint32_t* cell = v.per_lane ? A + std::size_t(v.base + o) * L + l
+                                     : inv.shared_.data() + (v.per_group ? inv.group_base_[l] : 0u) + v.base + o;
     const std::uint32_t before = *cell;
     const std::uint32_t operand = x.a == kNone ? 0u : A[std::size_t(x.a) * L + l];
     switch (x.op) {
@@ -681,6 +710,34 @@ void Runner::run_block(const XBlock& b) {
 // is written. When all active lanes came from the same block (the common case), whole rows move.
 void Runner::run_phis(const XBlock& b) {
   std::uint32_t from = uniform_prev;
+  if (!b.phis_overlap) {
+    // No phi reads another's rows: when every active lane came from one block, each phi copies
+    // straight from its incoming value, with no staging.
+    bool same = true;
+    if (from == kNone) {
+      for (int l = 0; l < n && same; ++l)
+        if (mask[l]) {
+          if (from == kNone) from = prev[l];
+          else same = prev[l] == from;
+        }
+    }
+    if (same && from != kNone) {
+      std::vector<std::uint32_t>& doubles = inv.phi_doubles_;
+      for (const Phi& phi : b.phis) {
+        std::uint32_t src = kNone;
+        for (const auto& [value, pred] : phi.incoming)
+          if (pred == from) src = value;
+        if (src == kNone) fail("internal: phi without an incoming value for its predecessor", 0, 0);
+        doubles.clear();
+        for (const FlatComponent& c : phi.flat)
+          if (c.scalar == Scalar::F64) doubles.push_back(c.word);
+        copy_rows(A + std::size_t(phi.dst) * L, A + std::size_t(src) * L, phi.words,
+                  doubles.empty() ? nullptr : &doubles);
+      }
+      return;
+    }
+    from = uniform_prev;
+  }
   bool same = true;
   for (int l = 0; l < n && same && uniform_prev == kNone; ++l)
     if (mask[l]) {
@@ -725,7 +782,8 @@ void Runner::run_phis(const XBlock& b) {
 Invocations::Invocations(const Executable& exe) : exe_(exe) {
   const DecodedProgram& p = *exe.program_;
   arena_.assign(std::size_t(p.arena_rows) * kMaxLanes, 0u);
-  shared_.assign(p.shared_words, 0u);
+  shared_.assign(p.shared_words + std::size_t(kMaxLanes) * p.group_words, 0u);
+  for (std::uint32_t& g : group_base_) g = p.shared_words;
   killed_.assign(kMaxLanes, 0);
   std::size_t phi_words = 0;
   for (const XBlock& b : p.blocks) {
@@ -757,15 +815,29 @@ Invocations::Invocations(const Executable& exe) : exe_(exe) {
 
 Invocations::~Invocations() = default;
 
-void Invocations::zero_shared() { std::fill(shared_.begin(), shared_.end(), 0u); }
+std::uint32_t Invocations::group_word(int group) const {
+  const DecodedProgram& p = *exe_.program_;
+  return p.shared_words + std::uint32_t(group) * p.group_words;
+}
+
+void Invocations::zero_shared(int groups) {
+  const DecodedProgram& p = *exe_.program_;
+  const std::size_t used = p.shared_words + std::size_t(std::clamp(groups, 1, kMaxLanes)) * p.group_words;
+  std::fill(shared_.begin(), shared_.begin() + std::ptrdiff_t(used), 0u);
+}
+
+void Invocations::set_group(int lane, int group) { group_base_[lane] = group_word(group); }
 
 void Invocations::bind_texture(std::uint32_t binding, const Texture* t) {
   if (textures_.size() <= binding) textures_.resize(binding + 1, nullptr);
   textures_[binding] = t;
 }
 
-void Invocations::begin(int lanes) {
+void Invocations::begin(int lanes, int groups) {
   lanes_ = std::clamp(lanes, 0, kMaxLanes);
+  groups_ = std::clamp(groups, 1, kMaxLanes);
+  const std::uint32_t first = group_word(0);
+  for (std::uint32_t& g : group_base_) g = first;
   const DecodedProgram& p = *exe_.program_;
   const Module& m = exe_.module();
   std::fill(killed_.begin(), killed_.end(), 0);
@@ -804,6 +876,12 @@ void Invocations::run() {
     r.prev[l] = kNone;
     r.steps[l] = 0;
     r.mask[l] = 1;
+  }
+  for (int l = 0; l < lanes_;) {  // the groups' runs of lanes
+    int end = l + 1;
+    while (end < lanes_ && group_base_[end] == group_base_[l]) ++end;
+    r.group_runs[r.num_group_runs++] = {l, end};
+    l = end;
   }
   // A lane's instruction count is common (counted once while the lanes run together) plus its
   // own steps (counted per lane while they diverge).

@@ -27,7 +27,7 @@
 
 namespace tessref::shader {
 
-inline constexpr int kMaxLanes = 64;
+inline constexpr int kMaxLanes = 256;
 
 // A runaway or failed invocation: what() names the cause; the stage adapters add the stage, patch
 // and invocation.
@@ -59,12 +59,16 @@ struct ExecLimits {
   int batch_lanes = kMaxLanes;
 };
 
-// Where an interface variable lives (see above).
+// Where a variable lives (see above). Shared variables are either common to the batch (uniforms)
+// or per group: a TCS batch can hold several patches, each a group of lanes with its own copy of
+// the patch's inputs and outputs.
 struct VariableSlot {
   std::uint32_t id = 0;
-  std::uint32_t base = 0;   // per lane: first row in the arena; shared: first word
+  std::uint32_t base = 0;   // per lane: first row in the arena; shared: first word (per group:
+                            // within the group's block)
   std::uint32_t words = 0;  // flattened size
   bool per_lane = true;
+  bool per_group = false;
 };
 
 struct DecodedProgram;  // executor.cpp
@@ -80,18 +84,24 @@ class Invocations {
   Invocations(const Invocations&) = delete;
   Invocations& operator=(const Invocations&) = delete;
 
-  // Starts a batch of `lanes` invocations: per-lane Function/Private variables are reset to their
-  // initializers (or zero) and outputs to zero; shared memory keeps what was written into it.
-  void begin(int lanes);
+  // Starts a batch of `lanes` invocations in `groups` groups (all lanes in group 0 until
+  // set_group): per-lane Function/Private variables are reset to their initializers (or zero) and
+  // outputs to zero; shared memory keeps what was written into it.
+  void begin(int lanes, int groups = 1);
+  void set_group(int lane, int group);
   int lanes() const { return lanes_; }
 
   // Per-lane rows and shared words of a variable (by slot, see Executable::slot).
   std::uint32_t* row(const VariableSlot& v, std::uint32_t word) {
     return arena_.data() + std::size_t(v.base + word) * kMaxLanes;
   }
-  std::uint32_t* shared(const VariableSlot& v) { return shared_.data() + v.base; }
-  std::uint32_t* shared_words() { return shared_.data(); }
-  void zero_shared();
+  // A shared variable's words (of group 0, or of `group`).
+  std::uint32_t* shared(const VariableSlot& v, int group = 0) {
+    return shared_.data() + (v.per_group ? group_word(group) : 0) + v.base;
+  }
+  std::uint32_t* shared_words() { return shared_.data(); }  // the common words
+  // Zeroes the common words and the first `groups` groups' blocks.
+  void zero_shared(int groups = 1);
 
   void bind_texture(std::uint32_t binding, const Texture* t);
 
@@ -105,7 +115,10 @@ class Invocations {
   friend struct Runner;
   const Executable& exe_;
   std::vector<std::uint32_t> arena_;   // registers and per-lane variables
-  std::vector<std::uint32_t> shared_;  // shared variables
+  std::vector<std::uint32_t> shared_;  // shared variables: the common words, then one block per group
+  std::uint32_t group_word(int group) const;
+  std::uint32_t group_base_[kMaxLanes] = {};  // each lane's group block (first word in shared_)
+  int groups_ = 1;
   std::vector<std::uint8_t> killed_;
   std::vector<std::uint32_t> staging_;  // phi values between reading and writing
   std::vector<std::uint32_t> phi_doubles_;  // scratch for Runner::run_phis

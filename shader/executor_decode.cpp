@@ -74,8 +74,12 @@ struct Decoder {
       s.id = v.id;
       s.words = m.type(v.type).words;
       s.per_lane = !is_shared(m, v);
+      s.per_group = !s.per_lane && (v.storage == spv::StorageClassInput || v.storage == spv::StorageClassOutput);
       if (s.per_lane) {
         s.base = alloc_rows(s.words);
+      } else if (s.per_group) {
+        s.base = p.group_words;
+        p.group_words += s.words;
       } else {
         s.base = p.shared_words;
         p.shared_words += s.words;
@@ -94,7 +98,7 @@ struct Decoder {
                           v.storage == spv::StorageClassPrivate ||
                           v.storage == spv::StorageClassOutput;
       if (s.per_lane && resets) p.lane_resets.push_back({index, init});
-      if (!s.per_lane && !init.empty()) p.shared_inits.push_back({index, init});
+      if (!s.per_lane && !s.per_group && !init.empty()) p.shared_inits.push_back({index, init});
     };
     for (const Variable& v : m.variables) add(v);
     for (const Variable& v : m.function_variables) add(v);
@@ -159,6 +163,10 @@ struct Decoder {
       decode(ins);
     }
     xb.count = std::uint32_t(p.code.size()) - xb.first;
+    for (const Phi& a : xb.phis)
+      for (const Phi& b : xb.phis)
+        for (const auto& [value, pred] : b.incoming)
+          if (value < a.dst + a.words && a.dst < value + b.words) xb.phis_overlap = true;
   }
 
   std::uint32_t block_index(const Instruction& ins, std::uint32_t label) {

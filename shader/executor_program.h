@@ -95,6 +95,7 @@ struct Terminator {
 
 struct XBlock {
   std::vector<Phi> phis;
+  bool phis_overlap = false;  // a phi reads another phi's rows of this block: stage the copies
   std::uint32_t first = 0, count = 0;  // instructions in DecodedProgram::code
   Terminator term;
 };
@@ -114,7 +115,8 @@ struct DecodedProgram {
   // Arena layout: rows [0, constant_rows) hold constants, set once per Invocations; then SSA
   // registers; then per-lane variables.
   std::uint32_t arena_rows = 0;
-  std::uint32_t shared_words = 0;
+  std::uint32_t shared_words = 0;  // common
+  std::uint32_t group_words = 0;   // one group's block
   std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>> constant_init;  // row, words
   std::vector<std::pair<std::uint32_t, Scalar>> constant_scalars;  // per constant word: its scalar
   // Per-lane variables to reset at begin(): (slot index, initializer words or empty for zero).

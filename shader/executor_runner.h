@@ -37,6 +37,8 @@ struct Runner {
   std::uint32_t prev[L];
   std::uint64_t steps[L];
   std::uint32_t uniform_prev = kNone;  // the block every active lane came from; kNone: see prev[]
+  std::pair<int, int> group_runs[L];  // [first, end) lanes of each group, in order
+  int num_group_runs = 0;
 
   template <class T>
   T* row(std::uint32_t r, std::uint32_t comp = 0) {
@@ -56,6 +58,17 @@ struct Runner {
       const std::uint8_t* m = mask;
       for (int l = 0; l < count; ++l)
         if (m[l]) dst[l] = f(l);
+    }
+  }
+
+  // value into dst[lo, hi) for the active lanes.
+  void put_range(std::uint32_t* __restrict dst, int lo, int hi, std::uint32_t value) {
+    const std::uint8_t* m = mask;
+    if (full) {
+      for (int l = lo; l < hi; ++l) dst[l] = value;
+    } else {
+      for (int l = lo; l < hi; ++l)
+        if (m[l]) dst[l] = value;
     }
   }
 
@@ -127,6 +140,7 @@ struct Runner {
   void run_phis(const XBlock& b);
   void load(const XIns& x);
   std::uint32_t uniform_offset(const std::uint32_t* off) const;
+  std::uint32_t uniform_in(const std::uint32_t* row, int lo, int hi) const;
   void store(const XIns& x);
   void access_chain(const XIns& x);
   void ext(const XIns& x);

@@ -42,6 +42,11 @@ void TessControlProgram::run_phase(int phase, const Patch& in, PatchOutput& out)
   for (int id = 0; id < output_vertices(); ++id) run(phase, id, in, out);
 }
 
+void TessControlProgram::run_patches(const Patch* const* in, PatchOutput* const* out, int count) const {
+  for (int k = 0; k < count; ++k)
+    for (int phase = 0; phase < phases(); ++phase) run_phase(phase, *in[k], *out[k]);
+}
+
 void TessEvalProgram::evaluate_batch(const PatchOutput& patch, int primitive_id,
                                      TessEvalBatch& batch) const {
   const int nv = num_varyings();
@@ -77,6 +82,7 @@ struct TaskScratch {
   std::vector<ClipVertex> points;
   std::vector<TessDumpRecord> dump;
   TessStats stats;
+  std::vector<Patch> patches;  // gl_in[] of up to kControlBatch patches for one run_patches
   // The last lookup: neighbouring patches usually share their levels.
   TessLevels memo_levels;
   std::shared_ptr<const TessPattern> memo;
@@ -107,44 +113,58 @@ bool gather_patch(const TessDrawInput& input, std::size_t p, Patch& patch) {
 }
 
 // Control stage and primitive generation for patches [first, last) of the range starting at
-// range_first: fills their slots and TCS outputs.
+// range_first: fills their slots and TCS outputs. The control program runs kControlBatch valid
+// patches at a time (run_patches), in patch order.
 void control_task(const TessDrawInput& input, std::size_t range_first, std::size_t first,
                   std::size_t last, const TessControlProgram& tcs, const TessLayout& layout,
                   const TessOptions& options, TessPatternCache& cache, ExecutorScratch& ex,
                   TaskScratch& task) {
-  Patch in;
   const int n_out = tcs.output_vertices();
-  const int n_phases = tcs.phases();
-  for (std::size_t p = first; p < last; ++p) {
-    PatchSlot& slot = ex.slots[p - range_first];
-    slot.pattern.reset();
-    ++task.stats.patches_in;
-    if (!gather_patch(input, p, in)) {
-      ++task.stats.patches_invalid;
-      continue;
+  task.patches.resize(kControlBatch);
+  const Patch* in[kControlBatch];
+  PatchOutput* out[kControlBatch];
+  std::size_t index[kControlBatch];
+  for (std::size_t p = first; p < last;) {
+    // Gather up to kControlBatch valid patches; invalid ones get no pattern and are counted.
+    int count = 0;
+    for (; p < last && count < kControlBatch; ++p) {
+      PatchSlot& slot = ex.slots[p - range_first];
+      slot.pattern.reset();
+      ++task.stats.patches_in;
+      Patch& patch = task.patches[std::size_t(count)];
+      if (!gather_patch(input, p, patch)) {
+        ++task.stats.patches_invalid;
+        continue;
+      }
+      // Outputs an invocation does not write read as zero.
+      PatchOutput& o = ex.outputs[p - range_first];
+      for (int v = 0; v < n_out; ++v) o.vertices[v] = StageVertex{};
+      o.patch = {};
+      o.levels = TessLevels{};
+      o.vertex_count = n_out;
+      in[count] = &patch;
+      out[count] = &o;
+      index[count] = p;
+      ++count;
     }
-    // TCS: every invocation finishes phase k before any starts phase k + 1 (barrier()). Outputs
-    // an invocation does not write read as zero.
+    // TCS: every invocation finishes phase k before any starts phase k + 1 (barrier()).
     auto t0 = Clock::now();
-    PatchOutput& out = ex.outputs[p - range_first];
-    for (int v = 0; v < n_out; ++v) out.vertices[v] = StageVertex{};
-    out.patch = {};
-    out.levels = TessLevels{};
-    out.vertex_count = n_out;
-    for (int phase = 0; phase < n_phases; ++phase) tcs.run_phase(phase, in, out);
+    tcs.run_patches(in, out, count);
     task.stats.tcs_seconds += seconds_since(t0);
 
     t0 = Clock::now();
-    if (!task.memo || !same_levels(task.memo_levels, out.levels)) {
-      task.memo = cache.get(layout, out.levels, options.profile);
-      task.memo_levels = out.levels;
+    for (int k = 0; k < count; ++k) {
+      if (!task.memo || !same_levels(task.memo_levels, out[k]->levels)) {
+        task.memo = cache.get(layout, out[k]->levels, options.profile);
+        task.memo_levels = out[k]->levels;
+      }
+      if (task.memo->points.discarded) {
+        ++task.stats.patches_discarded;
+        continue;
+      }
+      ex.slots[index[k] - range_first].pattern = task.memo;
     }
     task.stats.tpg_seconds += seconds_since(t0);
-    if (task.memo->points.discarded) {
-      ++task.stats.patches_discarded;
-      continue;
-    }
-    slot.pattern = task.memo;
   }
 }
 

@@ -77,11 +77,16 @@ class TessControlProgram {
   // The default runs run() for each invocation in increasing order; a batched program (the GLSL
   // executor) overrides it to run all invocations together.
   virtual void run_phase(int phase, const Patch& in, PatchOutput& out) const;
+  // Every phase of several patches: what the executor calls, with up to kControlBatch patches
+  // whose outputs are zeroed. The default runs run_phase per patch, phase by phase; the GLSL
+  // executor runs several patches in one batch.
+  virtual void run_patches(const Patch* const* in, PatchOutput* const* out, int count) const;
 };
+inline constexpr int kControlBatch = 16;
 
 // A batch of domain points of one patch for the TES, as structure of arrays: gl_TessCoord in,
 // gl_Position and varyings out, point i in column i. The batch is at most kTessEvalBatch points.
-inline constexpr int kTessEvalBatch = 64;
+inline constexpr int kTessEvalBatch = 256;
 struct TessEvalBatch {
   int count = 0;
   const float* tess_coord[3] = {};  // gl_TessCoord.x, .y, .z: count values each

@@ -141,9 +141,9 @@ std::string shape_name(const Shape& s) {
 
 }  // namespace
 
-shader::Invocations& StageProgram::prepare() const {
+shader::Invocations& StageProgram::prepare(int groups) const {
   shader::Invocations& inv = exe->local();
-  inv.zero_shared();
+  inv.zero_shared(groups);
   for (const auto& [first, n] : uniform_ranges)
     std::copy_n(uniforms.begin() + first, n, inv.shared_words() + first);
   if (textures)

@@ -38,8 +38,9 @@ struct StageProgram {
   std::vector<std::array<std::uint32_t, 3>> counters;
   std::map<std::uint32_t, std::vector<std::uint32_t>>* counter_buffers = nullptr;
 
-  // This thread's invocations with the uniforms and counters loaded.
-  shader::Invocations& prepare() const;
+  // This thread's invocations with the uniforms and counters loaded and the shared memory of
+  // `groups` groups (patches) zeroed.
+  shader::Invocations& prepare(int groups = 1) const;
   // After a run: the counters back into the program's buffers.
   void finish(shader::Invocations& inv) const;
   [[noreturn]] void rethrow(const shader::ShaderRuntimeError& e, const std::string& where) const;

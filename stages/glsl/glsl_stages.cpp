@@ -67,12 +67,12 @@ void copy_out(std::uint32_t* dst, const std::vector<IoWord>& words, const std::u
 }
 
 // Per-patch built-ins and arrays shared by a TCS's or TES's invocations.
-void fill_patch_inputs(const StageProgram& sp, Invocations& inv, const StageVertex* vertices,
+void fill_patch_inputs(const StageProgram& sp, Invocations& inv, int group, const StageVertex* vertices,
                        int vertex_count, const std::array<glm::vec4, kMaxPatchAttributes>* patch,
                        const TessLevels* levels, int primitive_id) {
   for (const IoVariable& v : sp.io.inputs) {
     if (!v.slot || v.slot->per_lane) continue;
-    std::uint32_t* dst = inv.shared(*v.slot);
+    std::uint32_t* dst = inv.shared(*v.slot, group);
     switch (v.kind) {
       case IoKind::User:
       case IoKind::Position:
@@ -134,20 +134,48 @@ void GlslControl::run(int, int, const Patch&, PatchOutput&) const {
 }
 
 void GlslControl::run_phase(int, const Patch& in, PatchOutput& out) const {
-  Invocations& inv = sp_.prepare();
-  fill_patch_inputs(sp_, inv, in.vertices.data(), in.vertex_count, nullptr, nullptr, in.primitive_id);
+  const Patch* i = &in;
+  PatchOutput* o = &out;
+  run_patches(&i, &o, 1);
+}
+
+void GlslControl::run_patches(const Patch* const* in, PatchOutput* const* out, int count) const {
+  // As many whole patches per batch as the lanes hold: lane l is invocation l % n of patch l / n,
+  // each patch a group with its own gl_in[], gl_out[] and patch variables.
   const int n = output_vertices();
-  inv.begin(n);
-  if (const IoVariable* id = find_kind(sp_.io.inputs, IoKind::InvocationId))
-    for (int l = 0; l < n; ++l) inv.row(*id->slot, 0)[l] = std::uint32_t(l);
-  try {
-    inv.run();
-  } catch (const shader::ShaderRuntimeError& e) {
-    sp_.rethrow(e, "patch " + std::to_string(in.primitive_id) + ", invocation " + std::to_string(e.lane));
+  const int lanes = std::clamp(sp_.exe->limits().batch_lanes, 1, shader::kMaxLanes);
+  // With atomic counters, one patch a batch: the counters then count in patch order whatever the
+  // batch size.
+  const int per_batch =
+      sp_.counters.empty() ? std::max(1, std::min(shader::kMaxLanes, std::max(lanes, n)) / n) : 1;
+  for (int first = 0; first < count; first += per_batch) {
+    const int groups = std::min(per_batch, count - first);
+    Invocations& inv = sp_.prepare(groups);
+    for (int g = 0; g < groups; ++g) {
+      const Patch& p = *in[first + g];
+      fill_patch_inputs(sp_, inv, g, p.vertices.data(), p.vertex_count, nullptr, nullptr, p.primitive_id);
+    }
+    inv.begin(groups * n, groups);
+    const IoVariable* id = find_kind(sp_.io.inputs, IoKind::InvocationId);
+    for (int l = 0; l < groups * n; ++l) {
+      inv.set_group(l, l / n);
+      if (id) inv.row(*id->slot, 0)[l] = std::uint32_t(l % n);
+    }
+    try {
+      inv.run();
+    } catch (const shader::ShaderRuntimeError& e) {
+      sp_.rethrow(e, "patch " + std::to_string(in[first + e.lane / n]->primitive_id) + ", invocation " +
+                         std::to_string(e.lane % n));
+    }
+    sp_.finish(inv);
+    for (int g = 0; g < groups; ++g) read_outputs(inv, g, *out[first + g]);
   }
-  sp_.finish(inv);
+}
+
+void GlslControl::read_outputs(Invocations& inv, int group, PatchOutput& out) const {
+  const int n = output_vertices();
   for (const IoVariable& v : sp_.io.outputs) {
-    const std::uint32_t* src = inv.shared(*v.slot);
+    const std::uint32_t* src = inv.shared(*v.slot, group);
     switch (v.kind) {
       case IoKind::User:
       case IoKind::Position:
@@ -190,7 +218,7 @@ void GlslEvaluation::evaluate_batch(const PatchOutput& patch, int primitive_id, 
 void GlslEvaluation::evaluate_lanes(const PatchOutput& patch, int primitive_id, TessEvalBatch& batch,
                                     int first, int n) const {
   Invocations& inv = sp_.prepare();
-  fill_patch_inputs(sp_, inv, patch.vertices.data(), patch.vertex_count, &patch.patch, &patch.levels,
+  fill_patch_inputs(sp_, inv, 0, patch.vertices.data(), patch.vertex_count, &patch.patch, &patch.levels,
                     primitive_id);
   inv.begin(n);
   if (const IoVariable* tc = find_kind(sp_.io.inputs, IoKind::TessCoord))

@@ -14,8 +14,10 @@ class GlslControl final : public TessControlProgram {
   int output_vertices() const override;
   void run(int phase, int invocation_id, const Patch& in, PatchOutput& out) const override;
   void run_phase(int phase, const Patch& in, PatchOutput& out) const override;
+  void run_patches(const Patch* const* in, PatchOutput* const* out, int count) const override;
 
  private:
+  void read_outputs(shader::Invocations& inv, int group, PatchOutput& out) const;
   const StageProgram& sp_;
 };
 

@@ -99,10 +99,10 @@ TEST(GlslTwins, FlatSchemeNormalsShadingAndNoTessellation) {
 
 TEST(GlslTwins, ImagesAndDumpsDoNotDependOnThreadsOrBatchSize) {
   const std::vector<std::string> sets = {"shaders.program=twins"};
-  const Frame base = render(with(sets, "shaders.batch_lanes=64"), 1);
+  const Frame base = render(with(sets, "shaders.batch_lanes=256"), 1);
   for (int threads : {1, 2, 8})
-    for (int lanes : {1, 7, 64}) {
-      if (threads == 1 && lanes == 64) continue;
+    for (int lanes : {1, 7, 64, 256}) {
+      if (threads == 1 && lanes == 256) continue;
       const Frame f = render(with(sets, "shaders.batch_lanes=" + std::to_string(lanes)), threads);
       const std::string what = std::to_string(threads) + " threads, batch " + std::to_string(lanes);
       EXPECT_EQ(0, std::memcmp(base.fb.color.data(), f.fb.color.data(), base.fb.color.size() * sizeof(glm::vec4))) << what;
