@@ -274,8 +274,8 @@ int main(int argc, char** argv) {
     const std::string lc = std::to_string(level) + "/" + std::to_string(chunk);
     rows.push_back({"PN Mvertices/s, level " + std::to_string(level) +
                         ", the same draw with the GLSL twins (pn_triangles.tesc/.tese) on tessref's executor, "
-                        "batch 64",
-                    "BM_ExecutorPn/" + lc + "/64/real_time", "BM_LlvmpipePnDiscard/" + std::to_string(level) + "/real_time",
+                        "batch 256",
+                    "BM_ExecutorPn/" + lc + "/256/real_time", "BM_LlvmpipePnDiscard/" + std::to_string(level) + "/real_time",
                     Kind::Rate, "vertices_per_s", 1e6, true, false, false, ">= 1",
                     {{"C++ programs", "BM_TessrefPn/" + lc + "/real_time"},
                      {"batch 1", "BM_ExecutorPn/" + lc + "/1/real_time"}}});

@@ -43,16 +43,6 @@ TessLayout tes_layout(const TessellationSettings& t) {
   return TessLayout{TessDomain::Triangles, t.spacing, t.winding, false};
 }
 
-int normal_mode_index(NormalMode m) {  // u_normal_mode in pn_triangles.tesc/.tese
-  switch (m) {
-    case NormalMode::Linear: return 0;
-    case NormalMode::Quadratic: return 1;
-    case NormalMode::QuadraticCorrected: return 2;
-    case NormalMode::Analytic: return 3;
-  }
-  return 1;
-}
-
 // Runs the twin's main, then records gl_TessCoord and the mesh-wide patch index for capture.
 std::string wrap_tes_for_capture(const std::string& tes) {
   const std::string decl = "void main()";
@@ -163,7 +153,7 @@ void SceneRenderer::set_uniforms(const Program& program) const {
     glUniformMatrix3fv(l, 1, GL_FALSE, glm::value_ptr(vs.u_normal_matrix));
   // One name in TCS and TES: the adaptive levels' matrix and gl_Position's, both the camera's.
   if ((l = loc("u_view_proj")) >= 0) glUniformMatrix4fv(l, 1, GL_FALSE, glm::value_ptr(vs.u_view_projection));
-  if ((l = loc("u_normal_mode")) >= 0) glUniform1i(l, normal_mode_index(t.normal_mode));
+  if ((l = loc("u_normal_mode")) >= 0) glUniform1i(l, glsl_index(t.normal_mode));
   if ((l = loc("u_adaptive")) >= 0) glUniform1i(l, lv.adaptive ? 1 : 0);
   if ((l = loc("u_outer")) >= 0) glUniform4fv(l, 1, lv.constant.outer.data());
   if ((l = loc("u_inner")) >= 0) glUniform2fv(l, 1, lv.constant.inner.data());

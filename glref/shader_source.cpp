@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "glref/gl_error.h"
+#include "stages/glsl/twins.h"
 
 namespace tessref::glref {
 
@@ -20,6 +21,8 @@ std::string shader_source(const std::string& name) {
   }
   for (const EmbeddedShader* s = kEmbeddedShaders; s->name; ++s)
     if (name == s->name) return s->source;
+  for (const glsl::Twin* t = glsl::kTwins; t->name; ++t)  // the built-in programs' twins
+    if (name == t->name) return t->source;
   throw GlError("no embedded shader named " + name + " (glref/shaders/; re-run cmake after adding one)");
 }
 

@@ -90,16 +90,6 @@ glsl::UniformValue integer(int v, Scalar s = Scalar::I32) {
   return u;
 }
 
-int normal_mode_index(NormalMode m) {
-  switch (m) {
-    case NormalMode::Linear: return 0;
-    case NormalMode::Quadratic: return 1;
-    case NormalMode::QuadraticCorrected: return 2;
-    case NormalMode::Analytic: return 3;
-  }
-  return 1;
-}
-
 // The scene uniforms: every uniform the GLSL twins read, with the values render_scene gives the
 // C++ programs (as the real-GL runner sets them, glref/scene_renderer.cpp).
 void set_scene_uniforms(const Scene& scene, glsl::GlslProgram& program) {
@@ -117,7 +107,7 @@ void set_scene_uniforms(const Scene& scene, glsl::GlslProgram& program) {
   set("u_view_proj", mat(&vs.u_view_projection[0][0], 4, 4));
   const TessellationSettings& t = scene.tessellation;
   const AdaptiveLevelSettings screen;
-  set("u_normal_mode", integer(normal_mode_index(t.normal_mode)));
+  set("u_normal_mode", integer(glsl_index(t.normal_mode)));
   set("u_adaptive", integer(t.adaptive.enabled ? 1 : 0, Scalar::Bool));
   set("u_outer", vec(t.levels.outer.data(), 4));
   set("u_inner", vec(t.levels.inner.data(), 2));

@@ -26,6 +26,10 @@ struct TessellationSettings {
   AdaptiveTessellation adaptive;
 };
 
+// The GLSL twins' u_normal_mode (pn_triangles.tesc/.tese): 0 linear, 1 quadratic,
+// 2 quadratic_corrected, 3 analytic (the enum's order).
+inline int glsl_index(NormalMode m) { return static_cast<int>(m); }
+
 const char* to_string(SurfaceScheme s);  // "flat" | "pn"
 const char* to_string(NormalMode m);     // "linear" | "quadratic" | ...
 bool parse(const std::string& s, SurfaceScheme& out);

@@ -93,7 +93,7 @@ run frames_wuson64 frame_bench "$r_heavy" \
   --benchmark_filter='^BM_(TessrefFrame/wuson64|LlvmpipeFrame/wuson64/rgba32f)/'
 run tpg tpg_bench "$r_tpg"
 run pn pn_bench "$r_pn" \
-  --benchmark_filter='^BM_(TessrefPn/(12/256|64/16)|ExecutorPn/(12/256|64/16)/(64|1)|LlvmpipePnDiscard/(12|64)|LlvmpipeFlatDiscard/(12|64))/'
+  --benchmark_filter='^BM_(TessrefPn/(12/256|64/16)|ExecutorPn/(12/256|64/16)/(256|1)|LlvmpipePnDiscard/(12|64)|LlvmpipeFlatDiscard/(12|64))/'
 run raster raster_bench "$r_raster"
 
 load_after=$(cut -d' ' -f1-3 /proc/loadavg)

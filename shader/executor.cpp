@@ -687,7 +687,6 @@ void Runner::exec(const XIns& x) {
     case XOp::FwidthFine:
       derivative(x);
       break;
-    case XOp::SampledImage: break;
     case XOp::Sample: case XOp::SampleLod: case XOp::Fetch: case XOp::QuerySize: texture(x); break;
     case XOp::AtomicInc: case XOp::AtomicDec: case XOp::AtomicLoad: case XOp::AtomicAdd:
     case XOp::AtomicSub: case XOp::AtomicStore:
@@ -840,12 +839,16 @@ void Invocations::begin(int lanes, int groups) {
   for (std::uint32_t& g : group_base_) g = first;
   const DecodedProgram& p = *exe_.program_;
   const Module& m = exe_.module();
-  std::fill(killed_.begin(), killed_.end(), 0);
+  std::fill_n(killed_.begin(), lanes_, 0);
   for (const auto& [slot, init] : p.lane_resets) {
     const VariableSlot& v = p.slots[slot];
     std::uint32_t* base = arena_.data() + std::size_t(v.base) * kMaxLanes;
     if (init.empty()) {
-      std::fill(base, base + std::size_t(v.words) * kMaxLanes, 0u);
+      // Only the running lanes' words: min(2n, L) words of each row cover n lanes of a 32-bit row
+      // and of both rows of a double (whose lane l is at words 2l and 2l + 1 of the two).
+      const std::size_t words = std::size_t(std::min(2 * lanes_, kMaxLanes));
+      for (std::uint32_t w = 0; w < v.words; ++w)
+        std::fill_n(base + std::size_t(w) * kMaxLanes, words, 0u);
       continue;
     }
     const Type& t = m.type(m.variable(v.id)->type);

@@ -114,7 +114,6 @@ struct Decoder {
     }
   }
 
-  const Type& type_of_value(std::uint32_t id) const;
 
   // Composite helpers: the type of a value id (result types are recorded while decoding).
   std::vector<std::uint32_t> value_type;

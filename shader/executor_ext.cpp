@@ -67,11 +67,7 @@ void Runner::ext(const XIns& x) {
     if (x.s == Scalar::F64) fail("GLSL.std.450 transcendental function on doubles", 0, x.line);
     map1<float, float>(x, f);
   };
-  // Vector-wide operations read every component: a(c) is operand a's row c.
-  auto vec = [&](auto zero, auto body) {
-    using T = decltype(zero);
-    body(T{});
-  };
+
   const int op = int(x.aux);
   switch (op) {
     case GLSLstd450Round: f1([](auto a) { return std::round(a); }); break;
@@ -409,7 +405,6 @@ void Runner::ext(const XIns& x) {
     default:
       fail("GLSL.std.450 instruction " + std::to_string(op) + " is not supported", 0, x.line);
   }
-  (void)vec;
 }
 
 }  // namespace tessref::shader

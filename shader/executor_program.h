@@ -28,7 +28,7 @@ enum class XOp : std::uint16_t {
   Ext,  // GLSL.std.450: aux = instruction number, operands a, b, c
   BitCount, BitReverse, BitFieldInsert, BitFieldSExtract, BitFieldUExtract,
   DPdx, DPdy, Fwidth, DPdxFine, DPdyFine, FwidthFine,
-  SampledImage, Sample, SampleLod, Fetch, QuerySize,
+  Sample, SampleLod, Fetch, QuerySize,
   AtomicInc, AtomicDec, AtomicLoad, AtomicAdd, AtomicSub, AtomicStore,
   Kill,
 };
@@ -111,7 +111,6 @@ struct DecodedProgram {
   std::vector<std::vector<std::uint32_t>> doubles;
   std::vector<Chain> chains;
   std::vector<Access> accesses;
-  std::vector<std::vector<std::uint32_t>> shuffles;  // not used by copies: extra literal lists
   // Arena layout: rows [0, constant_rows) hold constants, set once per Invocations; then SSA
   // registers; then per-lane variables.
   std::uint32_t arena_rows = 0;
