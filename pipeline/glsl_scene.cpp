@@ -2,6 +2,7 @@
 
 #include <bit>
 #include <fstream>
+#include <mutex>
 #include <sstream>
 
 #include "common/error.h"
@@ -211,6 +212,23 @@ void bind_textures(const Scene& scene, glsl::GlslProgram& program, SceneProgram&
   }
 }
 
+// The last program compiled, by its sources: repeated frames (--repeat, benchmarks) of one scene
+// compile once.
+shader::CompiledProgram compile_cached(const std::vector<shader::ShaderSource>& sources) {
+  static std::mutex mutex;
+  static std::string last_key;
+  static shader::CompiledProgram last;
+  std::string key;
+  for (const shader::ShaderSource& s : sources)
+    key += std::to_string(int(s.stage)) + '\0' + s.file + '\0' + std::to_string(s.first_line) + '\0' + s.text + '\0';
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (key != last_key) {
+    last = shader::compile_program(sources);
+    last_key = std::move(key);
+  }
+  return last;
+}
+
 }  // namespace
 
 SceneProgram build_scene_program(const Scene& scene) {
@@ -220,7 +238,7 @@ SceneProgram build_scene_program(const Scene& scene) {
   limits.max_instructions = scene.shaders.max_instructions;
   std::unique_ptr<glsl::GlslProgram> program;
   try {
-    program = std::make_unique<glsl::GlslProgram>(shader::compile_program(sources), limits);
+    program = std::make_unique<glsl::GlslProgram>(compile_cached(sources), limits);
   } catch (const shader::SpirvError& e) {
     throw InputError(scene.source + ": shaders: " + e.what());
   }
