@@ -3,6 +3,7 @@
 #include <bit>
 #include <fstream>
 #include <mutex>
+#include <optional>
 #include <sstream>
 
 #include "common/error.h"
@@ -263,7 +264,8 @@ DrawStats draw_glsl_scene(const Scene& scene, const glsl::GlslProgram& program, 
                           Framebuffer& fb, const Parallel& parallel, const DrawOptions& options) {
   std::vector<glsl::VertexAttribute> attributes;
   for (const auto& [input, source] : scene.shaders.attributes) {
-    const auto location = program.attribute_location(input);
+    const bool by_location = !input.empty() && input.find_first_not_of("0123456789") == std::string::npos;
+    const auto location = by_location ? std::optional<std::uint32_t>(std::stoul(input)) : program.attribute_location(input);
     if (!location) continue;  // an input this program does not have (or does not use)
     const std::vector<glm::vec3>& data = source == "position" ? mesh.positions : mesh.normals;
     glsl::VertexAttribute a;
@@ -277,7 +279,7 @@ DrawStats draw_glsl_scene(const Scene& scene, const glsl::GlslProgram& program, 
   call.indices = mesh.indices;
   call.vertex_count = mesh.vertex_count();
   call.patches = scene.tessellation.enabled;
-  call.patch_vertices = 3;
+  call.patch_vertices = scene.shaders.program == ShaderProgram::Twins ? 3 : scene.shaders.patch_vertices;
   RasterState state;
   state.cull_back_faces = scene.cull_back_faces;
   try {

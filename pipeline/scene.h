@@ -84,9 +84,11 @@ struct ShaderSettings {
   // Custom: GLSL files, resolved against the scene file's folder (tess_control may be empty).
   std::filesystem::path vertex, tess_control, tess_evaluation, fragment;
   std::vector<UniformSetting> uniforms;
-  // Vertex shader input name -> the mesh attribute that feeds it: "position" or "normal".
+  // Vertex shader input (a name, or a location as digits) -> the mesh attribute that feeds it:
+  // "position" or "normal".
   std::vector<std::pair<std::string, std::string>> attributes;
   std::vector<TextureSetting> textures;
+  int patch_vertices = 3;  // GL_PATCH_VERTICES: the mesh's index list taken this many at a time
   int batch_lanes = 256;                        // shader::ExecLimits::batch_lanes
   std::uint64_t max_instructions = 50'000'000;  // shader::ExecLimits::max_instructions
 };

@@ -233,6 +233,7 @@ ShaderSettings read_shaders(JsonObject o, const JsonSource& source, const std::f
       s.textures.push_back(std::move(t));
     }
   }
+  s.patch_vertices = o.integer("patch_vertices", 1, 32);
   s.batch_lanes = o.integer("batch_lanes", 1, shader::kMaxLanes);
   s.max_instructions = std::uint64_t(o.integer("max_instructions", 1, std::numeric_limits<int>::max()));
   o.finish();

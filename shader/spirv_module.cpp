@@ -153,7 +153,6 @@ Module read_module(std::span<const std::uint32_t> words) {
       case spv::OpSourceContinued:
       case spv::OpSourceExtension:
       case spv::OpModuleProcessed:
-      case spv::OpMemberName:
       case spv::OpDecorationGroup:
       case spv::OpNoLine:
         if (op == spv::OpNoLine) line = 0;
@@ -199,6 +198,12 @@ Module read_module(std::span<const std::uint32_t> words) {
         need(1);
         std::size_t p = 1;
         m.files[w[0]] = read_string(w, p);
+        break;
+      }
+      case spv::OpMemberName: {
+        need(2);
+        std::size_t p = 2;
+        m.member_names[{w[0], w[1]}] = read_string(w, p);
         break;
       }
       case spv::OpName: {

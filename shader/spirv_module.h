@@ -99,6 +99,7 @@ struct Module {
   std::map<std::uint32_t, std::uint32_t> constant_types;
   std::vector<Variable> variables;                                 // every OpVariable
   std::map<std::uint32_t, std::string> names;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::string> member_names;  // (struct, member)
   std::map<std::uint32_t, std::string> files;                      // OpString id -> file name
   std::uint32_t glsl_std450 = 0;                                   // OpExtInstImport id, 0 if none
   std::vector<Block> blocks;                                       // the entry function, in order

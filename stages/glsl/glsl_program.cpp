@@ -139,6 +139,37 @@ std::string shape_name(const Shape& s) {
   return prefix + "mat" + std::to_string(s.columns) + "x" + std::to_string(s.rows);
 }
 
+// A default-block uniform by its name, or a uniform block's member by "member" or "Block.member"
+// (its value lives in the block's words: tessref has no buffer layout to follow): the type and
+// word offset in the variable, or nullopt.
+std::optional<std::pair<std::uint32_t, std::uint32_t>> find_uniform(const shader::Module& m, const shader::Variable& v,
+                                                                    const std::string& name) {
+  if (v.storage == spv::StorageClassUniformConstant) {
+    if (v.name == name) return std::pair{v.type, 0u};
+    return std::nullopt;
+  }
+  if (v.storage != spv::StorageClassUniform || m.type(v.type).kind != TypeKind::Struct) return std::nullopt;
+  const shader::Type& block = m.type(v.type);
+  const auto block_name = m.names.find(v.type);
+  for (std::uint32_t k = 0; k < block.members.size(); ++k) {
+    const auto mn = m.member_names.find({v.type, k});
+    if (mn == m.member_names.end()) continue;
+    if (name == mn->second || (block_name != m.names.end() && name == block_name->second + "." + mn->second))
+      return std::pair{block.members[k], block.member_word[k]};
+  }
+  return std::nullopt;
+}
+
+// Every name find_uniform knows in the module.
+void uniform_names_of(const shader::Module& m, std::vector<std::string>& out) {
+  for (const shader::Variable& v : m.variables) {
+    if (v.storage == spv::StorageClassUniformConstant && !v.name.empty()) out.push_back(v.name);
+    if (v.storage != spv::StorageClassUniform || m.type(v.type).kind != TypeKind::Struct) continue;
+    for (std::uint32_t k = 0; k < m.type(v.type).members.size(); ++k)
+      if (const auto mn = m.member_names.find({v.type, k}); mn != m.member_names.end()) out.push_back(mn->second);
+  }
+}
+
 }  // namespace
 
 shader::Invocations& StageProgram::prepare(int groups) const {
@@ -269,9 +300,9 @@ void GlslProgram::set_uniform(const std::string& full_name, const UniformValue& 
     if (!sp) continue;
     const shader::Module& m = sp->exe->module();
     for (const shader::Variable& v : m.variables) {
-      if (v.storage != spv::StorageClassUniformConstant || v.name != name) continue;
-      std::uint32_t type = v.type;
-      std::uint32_t offset = 0, count = 1;
+      const auto found_at = find_uniform(m, v, name);
+      if (!found_at) continue;
+      std::uint32_t type = found_at->first, offset = found_at->second, count = 1;
       const shader::Type& t = m.type(type);
       if (t.kind == TypeKind::Array) {
         type = t.element;
@@ -279,7 +310,7 @@ void GlslProgram::set_uniform(const std::string& full_name, const UniformValue& 
         if (index >= t.count)
           throw std::invalid_argument("uniform '" + full_name + "': index past the array's " +
                                       std::to_string(t.count) + " elements");
-        offset = index * ew;
+        offset += index * ew;
         count = indexed ? 1 : t.count;
       } else if (indexed && index != 0) {
         throw std::invalid_argument("uniform '" + name + "' is not an array");
@@ -310,8 +341,9 @@ std::optional<UniformShape> GlslProgram::uniform_shape(const std::string& full_n
     if (!sp) continue;
     const shader::Module& m = sp->exe->module();
     for (const shader::Variable& v : m.variables) {
-      if (v.storage != spv::StorageClassUniformConstant || v.name != name) continue;
-      std::uint32_t type = v.type;
+      const auto found = find_uniform(m, v, name);
+      if (!found) continue;
+      std::uint32_t type = found->first;
       int elements = 1;
       if (m.type(type).kind == TypeKind::Array) {
         elements = element ? 1 : int(m.type(type).count);
@@ -329,9 +361,7 @@ std::optional<UniformShape> GlslProgram::uniform_shape(const std::string& full_n
 std::vector<std::string> GlslProgram::uniform_names() const {
   std::vector<std::string> names;
   for (const StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), fs_.get()})
-    if (sp)
-      for (const shader::Variable& v : sp->exe->module().variables)
-        if (v.storage == spv::StorageClassUniformConstant && !v.name.empty()) names.push_back(v.name);
+    if (sp) uniform_names_of(sp->exe->module(), names);
   std::sort(names.begin(), names.end());
   names.erase(std::unique(names.begin(), names.end()), names.end());
   return names;

@@ -145,3 +145,36 @@ TEST(GlslScene, TexturesFromImageFilesAndDiscard) {
 
 }  // namespace
 }  // namespace tessref
+
+namespace tessref {
+namespace {
+
+// A uniform block's member set by name, an attribute fed by location, one-vertex patches.
+TEST(GlslScene, UniformBlockMembersAttributeLocationsAndPatchVertices) {
+  test::TempDir dir;
+  const auto vs = dir.write("p.vert", "#version 450\nlayout(location = 3) in vec3 p;\n"
+                                      "void main() { gl_Position = vec4(p, 1.0); }\n");
+  // Each one-vertex patch becomes a small quad around its vertex, in the block's color.
+  const auto tcs = dir.write("p.tesc", "#version 450\nlayout(vertices = 1) out;\nvoid main() {\n"
+                                       "  gl_out[gl_InvocationID].gl_Position = gl_in[gl_InvocationID].gl_Position;\n"
+                                       "  gl_TessLevelOuter = float[4](1.0, 1.0, 1.0, 1.0);\n"
+                                       "  gl_TessLevelInner = float[2](1.0, 1.0);\n}\n");
+  const auto tes = dir.write("p.tese", "#version 450\nlayout(quads) in;\nuniform mat4 u_view_projection;\n"
+                                       "void main() {\n  vec4 c = u_view_projection * gl_in[0].gl_Position;\n"
+                                       "  gl_Position = c + vec4((gl_TessCoord.xy - 0.5) * 0.2 * c.w, 0.0, 0.0);\n}\n");
+  const auto fs = dir.write("p.frag", "#version 450\nlayout(std140) uniform Tint { vec4 tint; float unused; };\n"
+                                      "layout(location = 0) out vec4 color;\nvoid main() { color = tint; }\n");
+  const RenderResult r = render_full(
+      "", {"shaders.program=custom", "shaders.vertex=" + vs.string(), "shaders.tess_control=" + tcs.string(),
+           "shaders.tess_evaluation=" + tes.string(), "shaders.fragment=" + fs.string(), "shaders.patch_vertices=1",
+           "shaders.attributes={\"3\": \"position\"}", "shaders.uniforms={\"Tint.tint\": [0, 1, 0, 1]}",
+           "cull_back_faces=false"});
+  // The torus's 256 triangles' 768 indices, one patch each.
+  EXPECT_EQ(r.stats.tess.patches_in, 768u);
+  std::size_t green = 0;
+  for (const glm::vec4& c : r.framebuffer.color) green += c == glm::vec4(0.0f, 1.0f, 0.0f, 1.0f);
+  EXPECT_GT(green, 100u);
+}
+
+}  // namespace
+}  // namespace tessref
