@@ -205,7 +205,7 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
       const raster::PixelRect rect{tx * kTileSize, ty * kTileSize,
                                    std::min(fb.width, (tx + 1) * kTileSize) - 1,
                                    std::min(fb.height, (ty + 1) * kTileSize) - 1};
-      raster::FragmentSink sink(fs, fb, num_varyings, state.depth_test);
+      raster::FragmentSink sink(fs, fb, num_varyings, state.depth_test, &batch.flat_varyings);
       for (std::size_t c = 0; c < num_chunks; ++c) {
         const Chunk& chunk = chunks[c];
         for (std::uint32_t k = chunk.tile_begin[tile]; k < chunk.tile_begin[tile + 1]; ++k) {

@@ -149,8 +149,9 @@ FragmentSink::Lanes& FragmentSink::thread_lanes(int num_varyings) {
 }
 
 FragmentSink::FragmentSink(const FragmentProgram& fs, Framebuffer& fb, int num_varyings,
-                           bool depth_test)
-    : fs_(fs),
+                           bool depth_test, const VaryingMask* flat)
+    : flat_(flat && flat->any() ? flat : nullptr),
+      fs_(fs),
       fb_(fb),
       write_aux_(!fb.aux.empty()),
       depth_test_(depth_test),
@@ -223,7 +224,7 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
       float w1, w2;
       batch.frag_coord[3][lane] = float(ip.perspective(b1, b2, w1, w2));
       for (int j = 0; j < num_varyings; ++j)
-        batch.varyings[j][lane] = PixelInterpolation::varying(a0[j], d1[j], d2[j], w1, w2);
+        batch.varyings[j][lane] = sink.is_flat(j) ? a0[j] : PixelInterpolation::varying(a0[j], d1[j], d2[j], w1, w2);
       batch.frag_coord[0][lane] = float(x) + 0.5f;
       batch.frag_coord[1][lane] = float(y) + 0.5f;
       batch.frag_coord[2][lane] = z;
@@ -294,6 +295,10 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
       for (int j = 0; j < num_varyings; ++j) {
         float* __restrict out = batch.varyings[j];
         const float a = a0[j], e1 = d1[j], e2 = d2[j];
+        if (sink.is_flat(j)) {  // the provoking vertex's bits, not a sum (see FragmentSink)
+          for (int l = base; l < base + lanes; ++l) out[l] = a;
+          continue;
+        }
         for (int l = base; l < base + lanes; ++l) out[l] = PixelInterpolation::varying(a, e1, e2, w1[l], w2[l]);
       }
       for (int l = base; l < base + lanes; ++l) batch.front_facing[l] = t.front_facing;

@@ -19,16 +19,21 @@ class FragmentSink {
  public:
   // depth_test false: every covered fragment is shaded and depth is neither tested nor written
   // (glDisable(GL_DEPTH_TEST)).
-  FragmentSink(const FragmentProgram& fs, Framebuffer& fb, int num_varyings, bool depth_test = true);
+  // flat: varyings passed to the fragments as the provoking vertex's bits, not interpolated (an
+  // integer's bit pattern could be a NaN or -0.0 as a float); null: none.
+  FragmentSink(const FragmentProgram& fs, Framebuffer& fb, int num_varyings, bool depth_test = true,
+               const VaryingMask* flat = nullptr);
   // Callers flush() when done: a fragment program may throw (a runaway shader), which a
   // destructor must not.
   void flush();
   std::uint64_t shaded() const { return shaded_; }
+  bool is_flat(int varying) const { return flat_ && (*flat_)[std::size_t(varying)]; }
 
  private:
   friend std::uint64_t raster_triangle(const SetupTriangle&, const float*, int, const PixelRect&,
                                        FragmentSink&);
   void move_quad(int src_lane, int dst_lane);  // lanes src..src+3 to dst..dst+3
+  const VaryingMask* flat_;
   const FragmentProgram& fs_;
   Framebuffer& fb_;
   bool write_aux_;

@@ -637,6 +637,34 @@ void main() { gl_FragColor = color; }
   EXPECT_TRUE(passed(run_text(text, "doubles.shader_test")));
 }
 
+// Flat integers reach the fragment shader bit for bit, also those whose pattern is a float -0.0
+// (INT_MIN) or a signalling NaN (0x7f800001), which interpolation arithmetic would change.
+TEST(GlslErrors, FlatIntegersKeepEveryBitPattern) {
+  const std::string text = std::string(kRequire) + kVertex + kControl + kEvaluationHead + R"(flat out ivec2 v;
+uniform int a;
+uniform int b;
+void main() {
+  gl_Position = corner_mix();
+  v = ivec2(a, b);
+}
+
+[fragment shader]
+flat in ivec2 v;
+void main() {
+  gl_FragColor = v == ivec2(int(0x80000000), 0x7f800001) ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);
+}
+
+[test]
+uniform int a -2147483648
+uniform int b 2139095041
+clear color 0.2 0.2 0.2 0.2
+clear
+draw rect patch -1 -1 2 2
+probe all rgba 0.0 1.0 0.0 1.0
+)";
+  EXPECT_TRUE(passed(run_text(text, "flat.shader_test")));
+}
+
 // The control shader's levels come from `mode` (uniform zero is 0.0, so that nothing folds).
 std::string levels_file(const std::string& commands) {
   return std::string(kRequire) + kVertex + R"([tessellation control shader]
