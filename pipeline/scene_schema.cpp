@@ -128,15 +128,10 @@ TessellationSettings read_tessellation(JsonObject o) {
       enum_value<NormalMode>(o, "normal_mode", "linear, quadratic, quadratic_corrected, analytic");
   t.spacing = enum_value<TessSpacing>(o, "spacing", "equal, fractional_odd, fractional_even");
   t.winding = enum_value<TessWinding>(o, "winding", "ccw, cw");
-  // The GL spec defines every outer level (NaN or <= 0 discards the patch, large values clamp)
-  // and every inner level but NaN (negative and large values clamp).
+  // Every level is allowed, as a control shader may write any (docs/tpg.md: NaN or <= 0 outer
+  // levels discard the patch; inner levels clamp, NaN to the lower bound).
   std::vector<float> inner = o.levels("inner", 1, 2);
-  for (std::size_t i = 0; i < inner.size(); ++i) {
-    if (std::isnan(inner[i]))
-      o.fail("inner", "NaN inner levels are not allowed: the GL spec defines no clamping of NaN "
-                      "(NaN outer levels are, and discard the patch)");
-    t.levels.inner[i] = inner[i];
-  }
+  for (std::size_t i = 0; i < inner.size(); ++i) t.levels.inner[i] = inner[i];
   if (inner.size() == 1) t.levels.inner[1] = inner[0];
   std::vector<float> outer = o.levels("outer", 3, 4);
   for (std::size_t i = 0; i < outer.size(); ++i) t.levels.outer[i] = outer[i];

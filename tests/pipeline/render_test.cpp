@@ -245,3 +245,25 @@ TEST(Golden, DefaultScene) {
 
 }  // namespace
 }  // namespace tessref
+
+namespace tessref {
+namespace {
+
+// A NaN inner level clamps to the lower bound (docs/tpg.md), in a scene as in a control shader:
+// the frame is that of inner level 1.
+TEST(Render, NanInnerLevelDrawsAsTheLowerBound) {
+  auto render_with = [](const std::string& inner) {
+    const Scene scene = load_scene("", {"image.width=64", "image.height=64", "tessellation.inner=" + inner});
+    std::vector<std::string> warnings;
+    const RenderResult r = render_scene(scene, build_mesh(scene.mesh, warnings), Parallel(2));
+    return std::pair{r.framebuffer.color, r.stats.tess.domain_points};
+  };
+  const auto nan = render_with("nan");
+  const auto one = render_with("1");
+  EXPECT_EQ(nan.second, one.second);
+  EXPECT_GT(nan.second, 0u);
+  EXPECT_TRUE(nan.first == one.first);
+}
+
+}  // namespace
+}  // namespace tessref
