@@ -1,6 +1,9 @@
 #pragma once
 // Subcommand registration. Each add_*_command registers its options and a callback that runs
 // the command; callbacks throw InputError for bad input and set the exit code for other failures.
+#include <exception>
+#include <string>
+
 #include <CLI/CLI.hpp>
 
 namespace tessref::cli {
@@ -8,6 +11,20 @@ namespace tessref::cli {
 void add_render_command(CLI::App& app);  // cli/render_command.cpp
 void add_tpg_command(CLI::App& app);     // cli/tpg_command.cpp
 void add_shader_test_command(CLI::App& app);  // cli/shader_test_command.cpp
+
+// Checks that an option's value is an integer before a range check runs (CLI11's Range would call
+// a word "not in range"): "expected an integer, got 'abc'".
+inline const CLI::Validator kInteger(
+    [](std::string& s) -> std::string {
+      std::size_t used = 0;
+      try {
+        (void)std::stoll(s, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      return used != 0 && used == s.size() ? std::string() : "expected an integer, got '" + s + "'";
+    },
+    "INTEGER");
 
 // Exit status set by a command callback (0 unless it failed without throwing).
 int exit_code();

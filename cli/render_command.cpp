@@ -218,6 +218,7 @@ void add_render_command(CLI::App& app) {
                   "color image; the extension picks the format (.png: 8-bit, .exr: float)")
       ->capture_default_str();
   cmd->add_option("--threads", opts->threads, "worker threads (0: all hardware threads)")
+      ->check(kInteger)
       ->check(CLI::Range(0, 4096))
       ->capture_default_str();
   cmd->add_option("--set", opts->sets,

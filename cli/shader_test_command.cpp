@@ -51,12 +51,14 @@ void add_shader_test_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "shader-test", "Run piglit .shader_test files on the CPU pipeline (the files' own GLSL on tessref's executor)");
   cmd->add_option("files", args->files, "piglit .shader_test files")->required();
-  cmd->add_option("--threads", args->threads, "worker threads (0: all hardware threads)")->check(CLI::Range(0, 1024));
+  cmd->add_option("--threads", args->threads, "worker threads (0: all hardware threads)")->check(kInteger)->check(CLI::Range(0, 1024));
   cmd->add_option("--max-shader-instructions", args->max_instructions,
                   "instructions one shader invocation may run before it is stopped as a runaway")
+      ->check(kInteger)
       ->check(CLI::Range(std::uint64_t(1), std::uint64_t(1) << 50));
   cmd->add_option("--batch-lanes", args->batch_lanes,
                   "shader invocations per executor batch (results do not depend on it)")
+      ->check(kInteger)
       ->check(CLI::Range(1, shader::kMaxLanes));
   cmd->callback([args] { run(*args); });
 }

@@ -85,6 +85,7 @@ void add_tpg_command(CLI::App& app) {
                   "implementation profile: llvmpipe | spec-literal")
       ->capture_default_str();
   cmd->add_option("--max-level", opts->max_level, "GL_MAX_TESS_GEN_LEVEL (2..64)")
+      ->check(kInteger)
       ->check(CLI::Range(2, 64))
       ->capture_default_str();
   cmd->callback([opts] { run_tpg(*opts); });

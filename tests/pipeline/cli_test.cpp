@@ -274,6 +274,15 @@ TEST_F(Cli, BadOptions) {
     EXPECT_NE(r.exit_code, 0);
     EXPECT_NE(r.exit_code, 3) << r.output;  // not an internal error
   }
+  // A word where a number goes is said to be no number, not "out of range" (issue 11, defect 10).
+  for (const std::string args : {"render --threads abc", "shader-test --threads abc x.shader_test",
+                                 "shader-test --batch-lanes two x.shader_test", "tpg --outer 1,1,1 --max-level x"}) {
+    SCOPED_TRACE(args);
+    const CliRun r = run(args);
+    EXPECT_GE(r.exit_code, 100) << r.output;  // a malformed command line
+    EXPECT_THAT(r.output, HasSubstr("expected an integer, got '")) << r.output;
+    EXPECT_THAT(r.output, ::testing::Not(HasSubstr("not in range"))) << r.output;
+  }
 }
 
 }  // namespace
