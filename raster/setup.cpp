@@ -186,7 +186,7 @@ void store_piece(const WindowVertex& a, const WindowVertex& b, const WindowVerte
   const float* __restrict a0 = v[0]->varyings;
   const float* __restrict a1 = v[1]->varyings;
   const float* __restrict a2 = v[2]->varyings;
-  std::memcpy(out, a0, sizeof(float) * std::size_t(num_varyings));
+  if (num_varyings > 0) std::memcpy(out, a0, sizeof(float) * std::size_t(num_varyings));
   for (int j = 0; j < num_varyings; ++j) {
     out[num_varyings + j] = a1[j] - a0[j];
     out[2 * num_varyings + j] = a2[j] - a0[j];
