@@ -113,19 +113,25 @@ TessStats reference_stats(float level) {
 // Second argument: patches per chunk. 256 is the pipeline's default (DrawOptions); at level 64 a
 // chunk's batch is then ~290 MB (256 x 5,953 triangles x 3 x 64-byte vertices) plus the tasks'
 // buffers, allocated afresh by every tessellate_chunks call, so 16 is measured beside it.
-void BM_TessrefPn(benchmark::State& state) {
-  const Tessref t(float(state.range(0)), std::size_t(state.range(1)));
+// The benchmark loop over draws (TessStats draw(std::size_t& triangles)) and its rate counters.
+template <class Draw>
+void measure(benchmark::State& state, const Draw& draw) {
   std::uint64_t points = 0;
   std::size_t triangles = 0;
   TessStats last;
   for (auto _ : state) {
-    last = t.run(triangles);
+    last = draw(triangles);
     points += last.domain_points;
   }
   bench::set_work_counters(state, bench::work::pn_tessellation(last.domain_points, last.triangles_out));
   state.counters["vertices_per_s"] = benchmark::Counter(double(points), benchmark::Counter::kIsRate);
   state.counters["triangles_per_s"] = benchmark::Counter(double(triangles), benchmark::Counter::kIsRate);
   state.counters["threads"] = parallel().threads();
+}
+
+void BM_TessrefPn(benchmark::State& state) {
+  const Tessref t(float(state.range(0)), std::size_t(state.range(1)));
+  measure(state, [&](std::size_t& triangles) { return t.run(triangles); });
 }
 BENCHMARK(BM_TessrefPn)->ArgsProduct({{12, 64}, {256, 16}})->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -246,19 +252,9 @@ void BM_ExecutorPn(benchmark::State& state) {
                                    .c_str());
   state.SetLabel(std::to_string(check.domain_points) + " points, " + std::to_string(check.triangles_out) +
                  " triangles per draw (= C++ programs)");
-  std::uint64_t points = 0;
-  std::size_t triangles = 0;
-  TessStats last;
-  for (auto _ : state) {
-    last = e.run(triangles);
-    points += last.domain_points;
-  }
-  bench::set_work_counters(state, bench::work::pn_tessellation(last.domain_points, last.triangles_out));
-  state.counters["vertices_per_s"] = benchmark::Counter(double(points), benchmark::Counter::kIsRate);
-  state.counters["triangles_per_s"] = benchmark::Counter(double(triangles), benchmark::Counter::kIsRate);
+  measure(state, [&](std::size_t& triangles) { return e.run(triangles); });
   state.counters["points_per_draw"] = double(check.domain_points);
   state.counters["triangles_per_draw"] = double(check.triangles_out);
-  state.counters["threads"] = parallel().threads();
   state.counters["batch_lanes"] = double(state.range(2));
 }
 BENCHMARK(BM_ExecutorPn)

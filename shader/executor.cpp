@@ -110,44 +110,30 @@ std::uint32_t Runner::uniform_offset(const std::uint32_t* off) const {
     }
     return lo == hi ? lo : kNone;
   }
-  std::uint32_t first = kNone;
-  bool same = true;
-  for (int l = 0; l < n; ++l)
-    if (mask[l]) {
-      if (first == kNone) first = off[l];
-      same &= off[l] == first;
-    }
-  return same ? first : kNone;
+  return uniform_in(off, 0, count);
 }
 
 void Runner::load(const XIns& x) {
-  const Access& base_access = p.accesses[x.aux];
-  const VariableSlot& v = p.slots[base_access.slot];
-  const std::uint32_t* off = base_access.offset_reg == kNone ? nullptr : A + std::size_t(base_access.offset_reg) * L;
-  Access uniform_access;
-  const Access* ap = &base_access;
-  if (off) {
+  const Access& a = p.accesses[x.aux];
+  const VariableSlot& v = p.slots[a.slot];
+  const std::uint32_t* off = a.offset_reg == kNone ? nullptr : A + std::size_t(a.offset_reg) * L;
+  std::uint32_t offset = a.offset;  // the constant part; a dynamic offset all lanes share joins it
+  if (off)
     if (const std::uint32_t u = uniform_offset(off); u != kNone) {
-      uniform_access.slot = base_access.slot;
-      uniform_access.offset = base_access.offset + u;
-      uniform_access.flat = {};
+      offset += u;
       off = nullptr;
-      ap = &uniform_access;
     }
-  }
-  const Access& a = *ap;
-  const std::vector<FlatComponent>& flat = base_access.flat;
-  for (const FlatComponent& c : flat) {
+  for (const FlatComponent& c : a.flat) {
     if (c.scalar == Scalar::F64) {
       double* d = row<double>(x.dst + c.word);
       if (v.per_lane) {
         put(d, [&](int l) {
-          const std::uint32_t o = (off ? off[l] : 0u) + a.offset + c.word;
+          const std::uint32_t o = (off ? off[l] : 0u) + offset + c.word;
           return reinterpret_cast<const double*>(A + std::size_t(v.base + o) * L)[l];
         });
       } else {
         put(d, [&](int l) {
-          const std::uint32_t o = v.base + (off ? off[l] : 0u) + a.offset + c.word;
+          const std::uint32_t o = v.base + (off ? off[l] : 0u) + offset + c.word;
           double r;
           std::memcpy(&r, inv.shared_.data() + (v.per_group ? inv.group_base_[l] : 0u) + o, 8);
           return r;
@@ -158,13 +144,13 @@ void Runner::load(const XIns& x) {
     std::uint32_t* d = A + std::size_t(x.dst + c.word) * L;
     if (v.per_lane) {
       if (!off) {
-        const std::uint32_t* s = A + std::size_t(v.base + a.offset + c.word) * L;
+        const std::uint32_t* s = A + std::size_t(v.base + offset + c.word) * L;
         put(d, [&](int l) { return s[l]; });
       } else {
-        put(d, [&](int l) { return A[std::size_t(v.base + off[l] + a.offset + c.word) * L + l]; });
+        put(d, [&](int l) { return A[std::size_t(v.base + off[l] + offset + c.word) * L + l]; });
       }
     } else {
-      const std::uint32_t* s = inv.shared_.data() + v.base + a.offset + c.word;
+      const std::uint32_t* s = inv.shared_.data() + v.base + offset + c.word;
       if (v.per_group && inv.groups_ > 1) {  // each lane its group's copy
         // A broadcast per group where the group's lanes share the offset (a group's lanes are
         // consecutive), else a gather.
@@ -550,15 +536,8 @@ void Runner::exec(const XIns& x) {
       break;
     case XOp::Bitcast:
       // Same words, but a double's rows are interleaved lane by lane: regroup when widths differ.
-      if (x.aux == 0) {  // same widths: a copy (doubles stay doubles)
-        if (x.s == Scalar::F64) {
-          for (std::uint32_t c = 0; c < x.n; ++c) {
-            const double* s = row<double>(x.a, c);
-            put(row<double>(x.dst, c), [&](int l) { return s[l]; });
-          }
-        } else {
-          words_copy(x.dst, x.a, x.n, kNone);
-        }
+      if (x.aux == 0) {  // same widths: a copy
+        words_copy(x.dst, x.a, x.n * std::uint32_t(scalar_words(x.s)), x.doubles);
       } else if (x.s == Scalar::F64) {  // double(s) -> 2n words
         for (std::uint32_t c = 0; c < x.m; ++c) {
           const std::uint32_t* s = A + std::size_t(x.a + 2 * c) * L;
@@ -866,6 +845,26 @@ void Invocations::begin(int lanes, int groups) {
   }
 }
 
+namespace {
+
+// The block a lane goes to after terminator t; kNone when it stops (return, discard).
+std::uint32_t successor(const Terminator& t, const std::uint32_t* arena, int lane) {
+  const std::uint32_t value = t.reg == kNone ? 0u : arena[std::size_t(t.reg) * kMaxLanes + lane];
+  switch (t.kind) {
+    case TermKind::Branch: return t.target;
+    case TermKind::Cond: return value ? t.target : t.other;
+    case TermKind::Switch: {
+      std::uint32_t to = t.other;
+      for (const auto& [literal, target] : t.cases)
+        if (literal == value) to = target;
+      return to;
+    }
+    default: return kNone;
+  }
+}
+
+}  // namespace
+
 void Invocations::run() {
   const DecodedProgram& p = *exe_.program_;
   Runner r{*this, p, arena_.data(), lanes_, {}, false, {}, {}, {}};
@@ -934,14 +933,7 @@ void Invocations::run() {
           }
           for (int l = 0; l < lanes_; ++l) {
             if (!r.mask[l]) continue;
-            const std::uint32_t v = arena_[std::size_t(t.reg) * kMaxLanes + l];
-            std::uint32_t lane_to = t.other;
-            if (t.kind == TermKind::Cond) {
-              lane_to = v ? t.target : t.other;
-            } else {
-              for (const auto& [lit, target] : t.cases)
-                if (lit == v) lane_to = target;
-            }
+            const std::uint32_t lane_to = successor(t, arena_.data(), l);
             r.pc[l] = lane_to;
             if (to == kNone) to = lane_to;
             else uniform &= lane_to == to;
@@ -981,21 +973,8 @@ void Invocations::run() {
       most_steps = std::max(most_steps, r.steps[l]);
       if (common + r.steps[l] > budget) r.fail(budget_message, l, t.line);
       r.prev[l] = block;
-      std::uint32_t to = kNone;
-      switch (t.kind) {
-        case TermKind::Branch: to = t.target; break;
-        case TermKind::Cond: to = arena_[std::size_t(t.reg) * kMaxLanes + l] ? t.target : t.other; break;
-        case TermKind::Switch: {
-          const std::uint32_t sel = arena_[std::size_t(t.reg) * kMaxLanes + l];
-          to = t.other;
-          for (const auto& [lit, target] : t.cases)
-            if (lit == sel) to = target;
-          break;
-        }
-        case TermKind::Kill: killed_[l] = 1; break;
-        case TermKind::Return:
-        case TermKind::Unreachable: break;
-      }
+      if (t.kind == TermKind::Kill) killed_[l] = 1;
+      const std::uint32_t to = successor(t, arena_.data(), l);
       r.pc[l] = to;
       if (to == kNone) --running;
       else if (next == kNone) next = to;

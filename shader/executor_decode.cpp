@@ -387,6 +387,7 @@ struct Decoder {
         x.aux = scalar_words(m.type(ins.type).scalar) != scalar_words(scalar_of(o[0])) ? 1u : 0u;
         x.s = scalar_of(o[0]);
         x.m = comps_of(o[0]);
+        if (x.aux == 0) x.doubles = doubles_in(ins.type, 0, m.type(ins.type).words);
         emit(x);
         return;
       }

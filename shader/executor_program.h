@@ -41,7 +41,8 @@ struct XIns {
   std::uint32_t a = kNone, b = kNone, c = kNone, d = kNone;
   std::uint32_t n = 0;        // result components (or words, for copies)
   std::uint32_t aux = 0;      // side table index or a literal
-  // Copy, Undef, Select of a whole value, InsertDyn: DecodedProgram::doubles index (kNone: none).
+  // Copy, Undef, Select of a whole value, InsertDyn, same-width Bitcast: DecodedProgram::doubles
+  // index (kNone: none).
   std::uint32_t doubles = kNone;
   std::uint32_t m = 0;        // second dimension: matrix rows, vector size of an operand
   int line = 0;

@@ -51,18 +51,22 @@ void get_lane(Invocations& inv, const shader::VariableSlot& slot, std::uint32_t 
 }
 
 // Shared (per-patch) variables from and to plain word arrays.
-void copy_in(std::uint32_t* dst, const std::vector<IoWord>& words, const std::uint32_t* src, std::uint32_t limit) {
+// src / dst hold I/O words [first, first + limit): a vertex's slots (first 0) or a patch's
+// (first 4: patch slot L is I/O word 4 + 4L, as glsl_interface.h lays patch locations out).
+void copy_in(std::uint32_t* dst, const std::vector<IoWord>& words, const std::uint32_t* src, std::uint32_t limit,
+             std::uint32_t first = 0) {
   for (const IoWord& w : words) {
     const int n = shader::scalar_words(w.scalar);
     for (int h = 0; h < n; ++h)
-      if (w.io_word + h < limit) dst[w.var_word + h] = src[w.io_word + h];
+      if (w.io_word + h - first < limit) dst[w.var_word + h] = src[w.io_word + h - first];
   }
 }
-void copy_out(std::uint32_t* dst, const std::vector<IoWord>& words, const std::uint32_t* src, std::uint32_t limit) {
+void copy_out(std::uint32_t* dst, const std::vector<IoWord>& words, const std::uint32_t* src, std::uint32_t limit,
+              std::uint32_t first = 0) {
   for (const IoWord& w : words) {
     const int n = shader::scalar_words(w.scalar);
     for (int h = 0; h < n; ++h)
-      if (w.io_word + h < limit) dst[w.io_word + h] = src[w.var_word + h];
+      if (w.io_word + h - first < limit) dst[w.io_word + h - first] = src[w.var_word + h];
   }
 }
 
@@ -81,11 +85,7 @@ void fill_patch_inputs(const StageProgram& sp, Invocations& inv, int group, cons
           for (std::uint32_t k = 0; k < n; ++k)
             copy_in(dst + k * v.element_words, v.words, words_of(vertices[k]), kVertexWords);
         } else if (v.patch && patch) {
-          // Patch slots start at location 0: I/O word 4 + 4L is patch[L].
-          const auto* pw = reinterpret_cast<const std::uint32_t*>(patch->data());
-          for (const IoWord& w : v.words)
-            for (int h = 0; h < shader::scalar_words(w.scalar); ++h)
-              if (w.io_word - 4 + h < kPatchWords) dst[w.var_word + h] = pw[w.io_word - 4 + h];
+          copy_in(dst, v.words, reinterpret_cast<const std::uint32_t*>(patch->data()), kPatchWords, 4);
         }
         break;
       case IoKind::PrimitiveId: dst[0] = std::uint32_t(primitive_id); break;
@@ -183,10 +183,7 @@ void GlslControl::read_outputs(Invocations& inv, int group, PatchOutput& out) co
           for (std::uint32_t k = 0; k < std::min<std::uint32_t>(v.elements, std::uint32_t(n)); ++k)
             copy_out(words_of(out.vertices[k]), v.words, src + k * v.element_words, kVertexWords);
         } else if (v.patch) {
-          auto* pw = reinterpret_cast<std::uint32_t*>(out.patch.data());
-          for (const IoWord& w : v.words)
-            for (int h = 0; h < shader::scalar_words(w.scalar); ++h)
-              if (w.io_word - 4 + h < kPatchWords) pw[w.io_word - 4 + h] = src[w.var_word + h];
+          copy_out(reinterpret_cast<std::uint32_t*>(out.patch.data()), v.words, src, kPatchWords, 4);
         }
         break;
       case IoKind::TessLevelOuter:

@@ -23,23 +23,9 @@ namespace {
 using ::testing::HasSubstr;
 using test::TempDir;
 
-const std::string kBinary = std::string(TESSREF_BINARY_DIR) + "/cli/tessref";
-
-struct CliRun {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-CliRun run(const std::string& args) {
-  CliRun r;
-  FILE* pipe = popen((kBinary + " " + args + " 2>&1").c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf;
-  for (std::size_t n; (n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0;) r.output.append(buf.data(), n);
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  return r;
-}
+using test::CliRun;
+using test::kBinary;
+CliRun run(const std::string& args) { return test::run_cli(args); }
 
 class Cli : public ::testing::Test {
  protected:

@@ -728,23 +728,9 @@ TEST(GlslErrors, InfiniteAndHugeLevelsAreClampedTo64) {
 // ---------------------------------------------------------------------------------------------
 // The command line: one verdict line per file, exit 1 when any failed, never a crash
 
-const std::string kBinary = std::string(TESSREF_BINARY_DIR) + "/cli/tessref";
-
-struct CliRun {
-  int exit_code = -1;
-  std::string output;
-};
-
-CliRun run_cli(const std::string& args) {
-  CliRun r;
-  FILE* pipe = popen((kBinary + " " + args + " 2>&1").c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf;
-  for (std::size_t n; (n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0;) r.output.append(buf.data(), n);
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  return r;
-}
+using test::kBinary;
+using test::CliRun;
+using test::run_cli;
 
 TEST(GlslErrors, CommandLineReportsEachFileAndExitsWithOne) {
   if (!std::filesystem::exists(kBinary)) GTEST_SKIP() << kBinary << " not built";

@@ -1,10 +1,13 @@
 #pragma once
 // Helpers shared by the pipeline tests.
+#include <array>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace tessref::test {
@@ -31,6 +34,25 @@ class TempDir {
  private:
   std::filesystem::path path_;
 };
+
+// The tessref binary of this build, and one run of it: exit status and stdout + stderr.
+inline const std::string kBinary = std::string(TESSREF_BINARY_DIR) + "/cli/tessref";
+
+struct CliRun {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr
+};
+
+inline CliRun run_cli(const std::string& args) {
+  CliRun r;
+  FILE* pipe = popen((kBinary + " " + args + " 2>&1").c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buf;
+  for (std::size_t n; (n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0;) r.output.append(buf.data(), n);
+  const int status = pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return r;
+}
 
 inline std::string read_file(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);
