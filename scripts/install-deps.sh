@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages tessref builds, tests and compares against. Idempotent: it asks
-# apt only for what is missing. Needs root or sudo.
+# Installs the Debian 12 packages tessref builds, tests and compares against, or only the packages
+# named as arguments. Idempotent: it asks apt only for what is missing. Needs root or sudo.
+#
+#   scripts/install-deps.sh [PACKAGE...]
 set -euo pipefail
-pkgs=(build-essential cmake pkg-config
+pkgs=("$@")
+[ ${#pkgs[@]} -gt 0 ] || pkgs=(build-essential cmake pkg-config
       libglm-dev libopenimageio-dev openimageio-tools libembree-dev libtbb-dev libassimp-dev
       assimp-testmodels libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
       libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri time faketime

@@ -58,19 +58,8 @@ as_root() {
 }
 
 # The runtime: piglit's binaries link waffle; llvmpipe comes with Mesa's EGL and DRI packages.
-pkgs=(libwaffle-1-0 libegl-mesa0 libgl1-mesa-dri)
-missing=()
-for p in "${pkgs[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2> /dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  log "installing ${missing[*]}"
-  export DEBIAN_FRONTEND=noninteractive
-  as_root apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2 ||
-    { as_root apt-get update -qq >&2 &&
-      as_root apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2; } ||
-    die "cannot install ${missing[*]}"
-fi
+"$root/scripts/install-deps.sh" libwaffle-1-0 libegl-mesa0 libgl1-mesa-dri >&2 ||
+  die "cannot install libwaffle-1-0, libegl-mesa0 and libgl1-mesa-dri"
 
 # The test files, as piglit-tess.sh runs them.
 spec=$("$root/scripts/fetch-piglit.sh" | tail -n1) || die "scripts/fetch-piglit.sh failed"
