@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 
 #include "common/error.h"
@@ -16,23 +18,43 @@ bool starts_with_path(const std::string& path, const std::string& prefix) {
          path[prefix.size()] == '.';
 }
 
-std::string format_number(double v) {
-  if (std::isnan(v)) return "nan";
-  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  if (v == std::floor(v) && std::abs(v) < 1e15) return std::to_string(static_cast<long long>(v));
-  return json(v).dump();  // shortest round-trip form
+// The one message for a finite JSON number that a float cannot hold.
+std::string overflow_message(double d) {
+  return format_number(d) + " overflows single precision (the largest float is 3.4028235e38)";
 }
 
 }  // namespace
 
-void JsonSource::fail(const std::string& key_path, const std::string& what) const {
+std::string format_number(double v) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  if (v == std::floor(v) && std::abs(v) < 1e15) return std::to_string(static_cast<long long>(v));
+  std::string s = json(v).dump();  // shortest round-trip form
+  if (const std::size_t e = s.find("e+"); e != std::string::npos) s.erase(e + 1, 1);  // 1e38
+  return s;
+}
+
+// A value read as a float, echoed as written (-0.1, not -0.10000000149011612): the shortest
+// double that rounds to the same float, which is what the user typed when it came from JSON.
+std::string format_float(float f) {
+  for (int digits = 1; digits <= 9; ++digits) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.*g", digits, static_cast<double>(f));
+    if (std::strtof(buf, nullptr) == f) return format_number(std::strtod(buf, nullptr));
+  }
+  return format_number(f);
+}
+
+void JsonSource::fail(const std::string& key_path, const std::string& what,
+                      const std::vector<std::string>& related) const {
   std::string where = name + ": ";
   if (!key_path.empty()) where += key_path + ": ";
   std::string from;
   for (const std::string& k : overridden)
-    if (key_path == k || starts_with_path(key_path, k) || starts_with_path(k, key_path))
-      from = " (from --set " + k + ")";
-  throw InputError(where + what + from);
+    for (const std::string& path : related.empty() ? std::vector<std::string>{key_path} : related)
+      if (path == k || starts_with_path(path, k) || starts_with_path(k, path))
+        if (from.find(k) == std::string::npos) from += (from.empty() ? "" : ", ") + ("--set " + k);
+  throw InputError(where + what + (from.empty() ? "" : " (from " + from + ")"));
 }
 
 std::string describe_json(const json& j) {
@@ -71,8 +93,14 @@ std::string JsonObject::path_of(const std::string& key) const {
   return path_.empty() ? key : path_ + "." + key;
 }
 
-void JsonObject::fail(const std::string& key, const std::string& what) const {
-  source_.fail(path_of(key), what);
+void JsonObject::fail(const std::string& key, const std::string& what,
+                      const std::vector<std::string>& also) const {
+  std::vector<std::string> related;
+  if (!also.empty()) {
+    related.push_back(path_of(key));
+    for (const std::string& k : also) related.push_back(path_of(k));
+  }
+  source_.fail(path_of(key), what, related);
 }
 
 const json& JsonObject::value(const std::string& key) {
@@ -102,8 +130,8 @@ float JsonObject::number(const std::string& key) {
   const json& v = value(key);
   if (!v.is_number()) fail(key, "expected a number, got " + describe_json(v));
   double d = v.get<double>();
-  if (!std::isfinite(d) || std::abs(d) > std::numeric_limits<float>::max())
-    fail(key, "expected a finite number, got " + format_number(d));
+  if (!std::isfinite(d)) fail(key, "expected a finite number, got " + format_number(d));
+  if (std::abs(d) > std::numeric_limits<float>::max()) fail(key, overflow_message(d));
   return static_cast<float>(d);
 }
 
@@ -115,7 +143,7 @@ float JsonObject::number_in(const std::string& key, float lo, float hi, bool lo_
     std::string range = std::string(lo_open ? "(" : "[") + format_number(lo) + ", " +
                         (std::isinf(hi) ? std::string("inf") : format_number(hi)) +
                         (hi_open ? ")" : "]");
-    fail(key, "expected a number in " + range + ", got " + format_number(f));
+    fail(key, "expected a number in " + range + ", got " + format_float(f));
   }
   return f;
 }
@@ -142,8 +170,10 @@ void finite_numbers(const json& v, std::size_t min_n, std::size_t max_n, float* 
     if (!v[i].is_number())
       fail(expected + ", got " + describe_json(v[i]) + " at index " + std::to_string(i));
     double d = v[i].get<double>();
-    if (!std::isfinite(d) || std::abs(d) > std::numeric_limits<float>::max())
+    if (!std::isfinite(d))
       fail("expected finite numbers, got " + format_number(d) + " at index " + std::to_string(i));
+    if (std::abs(d) > std::numeric_limits<float>::max())
+      fail(overflow_message(d) + " at index " + std::to_string(i));
     out[i] = static_cast<float>(d);
   }
 }

@@ -13,8 +13,17 @@ namespace tessref {
 struct JsonSource {
   std::string name;
   std::vector<std::string> overridden;
-  [[noreturn]] void fail(const std::string& key_path, const std::string& what) const;
+  // `related`: the key paths the failed rule reads (for camera.far > camera.near, both); a --set
+  // of any of them is named. Empty: just key_path.
+  [[noreturn]] void fail(const std::string& key_path, const std::string& what,
+                         const std::vector<std::string>& related = {}) const;
 };
+
+// Numbers for messages: integers without a fraction, others in the shortest form that reads back
+// the same ("nan", "inf" spelled out); format_float echoes a float as typed (-0.1, not
+// -0.10000000149011612).
+std::string format_number(double v);
+std::string format_float(float f);
 
 // "a string (\"abc\")", "an array", "null", ...: for "expected X, got Y" messages.
 std::string describe_json(const nlohmann::json& j);
@@ -27,7 +36,9 @@ class JsonObject {
   bool has(const std::string& key);  // an optional key: known, read only if present
   std::string path_of(const std::string& key) const;
   const nlohmann::json& value(const std::string& key);  // required; marks the key as read
-  [[noreturn]] void fail(const std::string& key, const std::string& what) const;
+  // `also`: sibling keys the failed rule reads besides `key` (named when --set changed them).
+  [[noreturn]] void fail(const std::string& key, const std::string& what,
+                         const std::vector<std::string>& also = {}) const;
 
   JsonObject object(const std::string& key);
   bool boolean(const std::string& key);

@@ -1,6 +1,8 @@
 #include "pipeline/scene_loader.h"
 
 #include <fstream>
+#include <functional>
+#include <set>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -25,9 +27,51 @@ std::string json_reason(const std::string& what) {
   return s;
 }
 
+// Refuses a key given twice in one object: JSON parsers keep the last silently, so a typo'd copy
+// would override the intended value without a word. Names the key path ("[]" for array elements).
+class DuplicateKeyCheck {
+ public:
+  bool operator()(int, json::parse_event_t event, json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start: frames_.push_back({false, {}, {}}); break;
+      case json::parse_event_t::array_start: frames_.push_back({true, {}, {}}); break;
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end: frames_.pop_back(); break;
+      case json::parse_event_t::key: {
+        Frame& f = frames_.back();
+        f.key = parsed.get<std::string>();
+        if (!f.keys.insert(f.key).second && duplicate_.empty()) duplicate_ = path();
+        break;
+      }
+      case json::parse_event_t::value: break;
+    }
+    return true;
+  }
+  const std::string& duplicate() const { return duplicate_; }
+
+ private:
+  struct Frame {
+    bool array;
+    std::string key;
+    std::set<std::string> keys;
+  };
+  std::string path() const {
+    std::string p;
+    for (const Frame& f : frames_) p += f.array ? "[]" : (p.empty() ? "" : ".") + f.key;
+    return p;
+  }
+  std::vector<Frame> frames_;
+  std::string duplicate_;
+};
+
 json parse_json(const std::string& text, const std::string& name) {
   try {
-    return json::parse(text, nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
+    DuplicateKeyCheck duplicates;
+    json j = json::parse(text, std::ref(duplicates), /*allow_exceptions=*/true, /*ignore_comments=*/true);
+    if (!duplicates.duplicate().empty())
+      throw InputError(name + ": " + duplicates.duplicate() +
+                       ": the key is given twice in one object (JSON keeps only the last; remove one)");
+    return j;
   } catch (const json::parse_error& e) {
     // e.byte is 1-based, the byte after the last one read.
     std::size_t end = std::min<std::size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());
@@ -43,22 +87,13 @@ json parse_json(const std::string& text, const std::string& name) {
   }
 }
 
-// Objects merge key by key; anything else in `over` replaces what `base` has.
-void merge_into(json& base, const json& over) {
-  if (!base.is_object() || !over.is_object()) {
-    base = over;
-    return;
-  }
-  for (auto it = over.begin(); it != over.end(); ++it) merge_into(base[it.key()], it.value());
-}
-
 }  // namespace
 
 Scene parse_scene(const std::string& text, const std::string& name,
                   const std::filesystem::path& base_dir,
                   const std::vector<std::string>& overrides) {
   json merged = parse_json(default_scene_json(), "<default scene>");
-  merge_into(merged, parse_json(text, name));
+  merge_json(merged, parse_json(text, name));
   JsonSource source{name, {}};
   std::filesystem::path mesh_base = base_dir;
   for (const std::string& text_override : overrides) {

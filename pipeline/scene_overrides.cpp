@@ -1,6 +1,6 @@
 #include "pipeline/scene_overrides.h"
 
-#include <cerrno>
+#include <charconv>
 #include <cstdlib>
 #include <sstream>
 #include <vector>
@@ -18,14 +18,18 @@ std::string trim(const std::string& s) {
   return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
 }
 
-// strtod over the whole piece; false if anything is left over.
+// A decimal number over the whole piece (no hexadecimal: 0x40 is not a number in a scene, as JSON
+// has none either); false if anything is left over. Out-of-range values become +-inf or 0 as
+// strtod's would, for the validation to name.
 bool parse_double(const std::string& piece, double& out) {
   std::string s = trim(piece);
+  if (!s.empty() && s[0] == '+') s.erase(0, 1);
   if (s.empty()) return false;
-  char* end = nullptr;
-  errno = 0;
-  out = std::strtod(s.c_str(), &end);  // ERANGE overflow gives +-inf: validation rejects it
-  return end == s.c_str() + s.size();
+  const char* end = s.data() + s.size();
+  const auto [ptr, ec] = std::from_chars(s.data(), end, out, std::chars_format::general);
+  if (ec == std::errc::result_out_of_range) out = std::strtod(s.c_str(), nullptr);
+  else if (ec != std::errc()) return false;
+  return ptr == end;
 }
 
 std::vector<std::string> split(const std::string& s, char sep) {
@@ -90,7 +94,15 @@ void apply_override(json& root, const SceneOverride& o) {
     }
     path += (path.empty() ? "" : ".") + seg;
   }
-  *node = o.value;
+  merge_json(*node, o.value);
+}
+
+void merge_json(json& base, const json& over) {
+  if (!base.is_object() || !over.is_object()) {
+    base = over;
+    return;
+  }
+  for (auto it = over.begin(); it != over.end(); ++it) merge_json(base[it.key()], it.value());
 }
 
 }  // namespace tessref

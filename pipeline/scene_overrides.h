@@ -13,13 +13,18 @@ struct SceneOverride {
 };
 
 // The value is JSON if it parses as JSON, else a comma-separated list of numbers (one number:
-// a scalar; strtod syntax, so "nan", "inf" and 1e999 reach validation as such), else a string.
+// a scalar; decimal only, so 0x40 is a string, while "nan", "inf" and 1e999 reach validation as
+// such), else a string.
 nlohmann::json parse_override_value(const std::string& text);
 
 // Splits "key=value"; InputError for a missing '=' or an empty key segment.
 SceneOverride parse_override(const std::string& text);
 
-// Sets root[key] = value, creating missing object members (validation then reports them if they
+// Merges `over` into `base`: objects key by key, anything else replaces what `base` has. Scene
+// files merge over the default scene this way, and so does --set with an object value.
+void merge_json(nlohmann::json& base, const nlohmann::json& over);
+
+// Merges value into root[key] (merge_json), creating missing object members (validation then reports them if they
 // are unknown). An array index may be one past the end, which appends. InputError when the path
 // runs through a value that is neither an object nor an array, or past an array's end.
 void apply_override(nlohmann::json& root, const SceneOverride& o);

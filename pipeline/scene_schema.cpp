@@ -35,6 +35,17 @@ Enum enum_value(JsonObject& o, const std::string& key, const char* choices) {
   return e;
 }
 
+// A procedural mesh's size: positive, and small enough that its triangles' edge cross products
+// (about size^2) stay within single precision.
+constexpr float kMaxExtent = 1e18f;
+float extent(JsonObject& o, const std::string& key) {
+  const float v = o.number_in(key, 0.0f, kInf, true, true);
+  if (v > kMaxExtent)
+    o.fail(key, format_float(v) + " is too large: the mesh's triangle areas (about its square) "
+                "would overflow single precision; use at most 1e18");
+  return v;
+}
+
 MeshSettings read_mesh(JsonObject o, const std::filesystem::path& base_dir) {
   MeshSettings m;
   m.type = enum_value<MeshType>(o, "type", "icosphere, torus, cube, file");
@@ -46,16 +57,21 @@ MeshSettings read_mesh(JsonObject o, const std::filesystem::path& base_dir) {
     o.fail("path", "required when mesh.type is \"file\" (a path relative to the scene file)");
   JsonObject ico = o.object("icosphere");
   m.icosphere_refinements = ico.integer("refinements", 0, 8);
-  m.icosphere_radius = ico.number_in("radius", 0.0f, kInf, true, true);
+  m.icosphere_radius = extent(ico, "radius");
   ico.finish();
   JsonObject torus = o.object("torus");
-  m.torus_major_radius = torus.number_in("major_radius", 0.0f, kInf, true, true);
-  m.torus_minor_radius = torus.number_in("minor_radius", 0.0f, m.torus_major_radius, true, true);
+  m.torus_major_radius = extent(torus, "major_radius");
+  m.torus_minor_radius = extent(torus, "minor_radius");
+  if (!(m.torus_minor_radius < m.torus_major_radius))
+    torus.fail("minor_radius", "must be less than mesh.torus.major_radius (" +
+                                   format_float(m.torus_major_radius) + "), got " +
+                                   format_float(m.torus_minor_radius),
+               {"major_radius"});
   m.torus_major_segments = torus.integer("major_segments", 3, 4096);
   m.torus_minor_segments = torus.integer("minor_segments", 3, 4096);
   torus.finish();
   JsonObject cube = o.object("cube");
-  m.cube_size = cube.number_in("size", 0.0f, kInf, true, true);
+  m.cube_size = extent(cube, "size");
   cube.finish();
   o.finish();
   return m;
@@ -79,12 +95,23 @@ Camera read_camera(JsonObject o) {
   c.up = o.vec3("up");
   c.fov_y_deg = o.number_in("fov_y_deg", 0.0f, 180.0f, true, true);
   c.near = o.number_in("near", 0.0f, kInf, true, true);
-  c.far = o.number_in("far", c.near, kInf, true, true);
+  c.far = o.number_in("far", 0.0f, kInf, true, true);
+  if (!(c.far > c.near))
+    o.fail("far", "must be greater than camera.near (" + format_float(c.near) + "), got " +
+                      format_float(c.far), {"near"});
   glm::vec3 forward = c.target - c.eye;
-  if (glm::dot(forward, forward) == 0.0f) o.fail("target", "must differ from camera.eye");
-  glm::vec3 side = glm::cross(forward, c.up);
-  if (!(glm::dot(side, side) > 1e-12f * glm::dot(forward, forward) * glm::dot(c.up, c.up)))
-    o.fail("up", "must not be zero or parallel to the view direction (target - eye)");
+  // lookAt normalizes target - eye and up in single precision: their squared lengths must fit.
+  const float forward2 = glm::dot(forward, forward), up2 = glm::dot(c.up, c.up);
+  if (!std::isfinite(forward2))
+    o.fail("eye", "the distance from camera.eye to camera.target overflows single precision when "
+                  "squared (keep it below 1e19)", {"target"});
+  if (!std::isfinite(up2))
+    o.fail("up", "its length overflows single precision when squared (keep it below 1e19)");
+  if (forward2 == 0.0f) o.fail("target", "must differ from camera.eye", {"eye"});
+  // In double: the test must not overflow where lookAt itself would not.
+  const glm::dvec3 side = glm::cross(glm::dvec3(forward), glm::dvec3(c.up));
+  if (!(glm::dot(side, side) > 1e-12 * double(forward2) * double(up2)))
+    o.fail("up", "must not be zero or parallel to the view direction (target - eye)", {"eye", "target"});
   o.finish();
   return c;
 }

@@ -148,9 +148,62 @@ TEST(Scene, NonFiniteValuesFromOverrides) {
   EXPECT_EQ(scene_error("{}", {"camera.fov_y_deg=1e999"}),
             "scenes/x.json: camera.fov_y_deg: expected a finite number, got inf (from --set "
             "camera.fov_y_deg)");
-  // Finite in double, not in float.
-  EXPECT_THAT(scene_error("{}", {"transform.translate=1e300,0,0"}),
-              HasSubstr("transform.translate: expected finite numbers"));
+  // Finite in double, not in float: said as such, with the key (issue 11, defect 7).
+  EXPECT_EQ(scene_error("{}", {"transform.translate=1e300,0,0"}),
+            "scenes/x.json: transform.translate: 1e300 overflows single precision (the largest "
+            "float is 3.4028235e38) at index 0 (from --set transform.translate)");
+  EXPECT_EQ(scene_error(R"({"material": {"ka": 1e39}})"),
+            "scenes/x.json: material.ka: 1e39 overflows single precision (the largest float is "
+            "3.4028235e38)");
+}
+
+// Issue 11, defect 7: values that fit a float but overflow what is computed from them are blamed
+// on themselves, as an overflow.
+TEST(Scene, FloatOverflowNamesTheKey) {
+  EXPECT_EQ(scene_error("{}", {"camera.eye=1e30,1e30,1e30"}),
+            "scenes/x.json: camera.eye: the distance from camera.eye to camera.target overflows "
+            "single precision when squared (keep it below 1e19) (from --set camera.eye)");
+  EXPECT_THAT(scene_error("{}", {"camera.target=0,3e19,0"}),
+              HasSubstr("camera.eye: the distance from camera.eye to camera.target overflows "
+                        "single precision when squared (keep it below 1e19) (from --set camera.target)"));
+  EXPECT_THAT(scene_error("{}", {"camera.up=0,1e20,0"}),
+              HasSubstr("camera.up: its length overflows single precision"));
+  // Large but representable: fine.
+  EXPECT_EQ(scene_error("{}", {"camera.eye=1e18,1e18,1e18", "camera.far=1e19"}), "");
+  EXPECT_EQ(scene_error("{}", {"mesh.icosphere.radius=1e38"}),
+            "scenes/x.json: mesh.icosphere.radius: 1e38 is too large: the mesh's triangle areas "
+            "(about its square) would overflow single precision; use at most 1e18 (from --set "
+            "mesh.icosphere.radius)");
+  EXPECT_THAT(scene_error("{}", {"mesh.cube.size=1e20"}), HasSubstr("mesh.cube.size: 1e20 is too large"));
+}
+
+// Issue 11, defect 10: messages echo values as typed and name the --set behind a rule that
+// spans two keys; duplicate keys, hexadecimal numbers and --set objects behave as in files.
+TEST(Scene, MessageDetails) {
+  EXPECT_EQ(scene_error("{}", {"material.ka=-0.1"}),
+            "scenes/x.json: material.ka: expected a number in [0, inf), got -0.1 (from --set "
+            "material.ka)");
+  EXPECT_EQ(scene_error("{}", {"camera.near=60"}),
+            "scenes/x.json: camera.far: must be greater than camera.near (60), got 50 (from --set "
+            "camera.near)");
+  EXPECT_EQ(scene_error("{}", {"camera.near=60", "camera.far=0.5"}),
+            "scenes/x.json: camera.far: must be greater than camera.near (60), got 0.5 (from --set "
+            "camera.near, --set camera.far)");
+  EXPECT_EQ(scene_error("{}", {"mesh.torus.major_radius=0.2"}),
+            "scenes/x.json: mesh.torus.minor_radius: must be less than mesh.torus.major_radius "
+            "(0.2), got 0.45 (from --set mesh.torus.major_radius)");
+  EXPECT_EQ(scene_error(R"({"image": {"width": 64, "width": 32}})"),
+            "scenes/x.json: image.width: the key is given twice in one object (JSON keeps only the "
+            "last; remove one)");
+  EXPECT_THAT(scene_error(R"({"lights": [{"position": [1, 2, 3], "position": [0, 0, 0]}]})"),
+              HasSubstr("scenes/x.json: lights[].position: the key is given twice"));
+  EXPECT_EQ(scene_error("{}", {"image.width=0x40"}),
+            "scenes/x.json: image.width: expected an integer in [1, 16384], got a string "
+            "(\"0x40\") (from --set image.width)");
+  // An object given with --set merges key by key, as a scene file does over the default scene.
+  const Scene s = parse_scene("{}", "x", ".", {R"(image={"width": 64})"});
+  EXPECT_EQ(s.width, 64);
+  EXPECT_EQ(s.height, 1024);
 }
 
 TEST(Scene, ImageSize) {
@@ -223,6 +276,9 @@ TEST(Scene, OverrideValues) {
   EXPECT_EQ(parse_override_value(""), json(""));
   EXPECT_TRUE(std::isnan(parse_override_value("nan").get<double>()));
   EXPECT_EQ(parse_override_value("1e999").get<double>(), INFINITY);
+  EXPECT_EQ(parse_override_value("+2,-3"), json::array({2.0, -3.0}));
+  EXPECT_EQ(parse_override_value("0x40"), json("0x40"));  // JSON has no hexadecimal either
+  EXPECT_EQ(parse_override_value(" 1.5 "), json(1.5));
 }
 
 TEST(Scene, Overrides) {
