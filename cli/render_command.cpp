@@ -13,6 +13,7 @@
 #include "cli/commands.h"
 #include "common/error.h"
 #include "common/parallel.h"
+#include "pipeline/camera.h"
 #include "pipeline/image_output.h"
 #include "pipeline/mesh_source.h"
 #include "pipeline/output_files.h"
@@ -111,8 +112,41 @@ void verify_written(const std::filesystem::path& temp, const Framebuffer& fb) {
                      ": the written file does not read back whole (disk full or file size limit?)");
 }
 
+// The scene as drawn: its file (or "<default scene>") and the keys --set changed.
+std::string drawn_scene_name(const Scene& scene, const std::vector<std::string>& sets) {
+  std::string name = scene.source, keys;
+  for (const std::string& set : sets) keys += (keys.empty() ? "" : ", ") + set.substr(0, set.find('='));
+  return keys.empty() ? name : name + " with --set " + keys;
+}
+
+// Every file the render wrote, the colour image first.
+std::string written_files(const RenderOptions& o, const TessDumpWriter* dump) {
+  std::string files = o.output;
+  if (!o.depth.empty()) files += ", " + o.depth + " (depth)";
+  if (!o.normals.empty()) files += ", " + o.normals + " (normals)";
+  if (dump)
+    files += ", " + o.dump_tess + " (" + std::to_string(dump->records_written()) + " tessellated vertices)";
+  return files;
+}
+
+// An image of nothing but the background exits 0 (it may be what was asked for), but says why.
+void warn_nothing_drawn(const DrawStats& s) {
+  const RasterStats& r = s.raster;
+  std::fprintf(stderr,
+               "tessref: warning: nothing was drawn (0 fragments shaded): of %llu triangles, "
+               "%llu lie outside the view volume, %llu were culled (back-facing or zero area), "
+               "%llu passed to the rasterizer covered no pixel centre; %llu patches were "
+               "discarded by their levels. Check camera (camera.fit frames the mesh), "
+               "cull_back_faces and the tessellation levels\n",
+               static_cast<unsigned long long>(r.triangles_in),
+               static_cast<unsigned long long>(r.triangles_clipped_away),
+               static_cast<unsigned long long>(r.triangles_culled),
+               static_cast<unsigned long long>(r.triangles_rasterized),
+               static_cast<unsigned long long>(s.tess.patches_discarded));
+}
+
 void run_render(const RenderOptions& o) {
-  const Scene scene = load_scene(o.scene, o.sets);
+  Scene scene = load_scene(o.scene, o.sets);
   // Every output checked before any work: its folder, its format, and no two on one file. All
   // are written to temporaries and moved into place together at the end, or none is.
   OutputFiles outputs;
@@ -132,6 +166,7 @@ void run_render(const RenderOptions& o) {
   auto t = Clock::now();
   std::vector<std::string> warnings;
   const Mesh mesh = build_mesh(scene.mesh, warnings);
+  scene.camera = fitted_camera(scene, mesh);
   const double mesh_seconds = seconds_since(t);
   for (const std::string& w : warnings) std::fprintf(stderr, "tessref: warning: %s\n", w.c_str());
 
@@ -183,12 +218,13 @@ void run_render(const RenderOptions& o) {
   std::printf(
       "tessref render: %s -> %s (%dx%d, %d threads): %llu triangles in%s, %llu rasterized, "
       "%llu fragments shaded; mesh %s, vertex %s, tessellation %s, raster+fs %s, write %s\n",
-      scene.source.c_str(), o.output.c_str(), scene.width, scene.height, parallel.threads(),
-      static_cast<unsigned long long>(s.triangles_in), tessellated.c_str(),
-      static_cast<unsigned long long>(s.raster.triangles_rasterized),
+      drawn_scene_name(scene, o.sets).c_str(), written_files(o, dump.get()).c_str(), scene.width,
+      scene.height, parallel.threads(), static_cast<unsigned long long>(s.triangles_in),
+      tessellated.c_str(), static_cast<unsigned long long>(s.raster.triangles_rasterized),
       static_cast<unsigned long long>(s.raster.fragments_shaded), ms(mesh_seconds).c_str(),
       ms(s.vertex_seconds).c_str(), ms(s.tessellation_seconds).c_str(),
       ms(s.raster_seconds).c_str(), ms(write_seconds).c_str());
+  if (s.raster.fragments_shaded == 0) warn_nothing_drawn(s);
   if (o.report_repeat)
     std::printf("tessref render: %d frame%s, median (min .. max): %s, %s, %s, %s\n", o.repeat,
                 o.repeat == 1 ? "" : "s", vertex.summary().c_str(), tessellation.summary().c_str(), raster.summary().c_str(),

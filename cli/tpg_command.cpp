@@ -1,5 +1,6 @@
 // `tessref tpg`: the primitive generator on one patch, printed as transform feedback would
 // capture a TES that writes gl_TessCoord.
+#include <charconv>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -62,6 +63,20 @@ void run_tpg(const TpgOptions& o) {
                o.format == "hex" ? StreamFormat::Hex : StreamFormat::Text);
 }
 
+// One level of a comma-separated list: a decimal number, nan or inf ("" between commas, or a word,
+// is said to be one, not read as 0 or counted).
+const CLI::Validator kLevel(
+    [](std::string& s) -> std::string {
+      float f = 0.0f;
+      const char* end = s.data() + s.size();
+      const auto [ptr, ec] = std::from_chars(s.data(), end, f);
+      if (s.empty()) return "expected a level (a number, nan or inf), got an empty value";
+      if ((ec != std::errc() && ec != std::errc::result_out_of_range) || ptr != end)
+        return "expected a level (a number, nan or inf), got '" + s + "'";
+      return {};
+    },
+    "LEVEL");
+
 }  // namespace
 
 void add_tpg_command(CLI::App& app) {
@@ -76,8 +91,9 @@ void add_tpg_command(CLI::App& app) {
   cmd->add_flag("--point-mode", opts->point_mode, "layout(point_mode)");
   cmd->add_option("--outer", opts->outer, "outer levels A,B,C[,D] (nan, inf accepted)")
       ->delimiter(',')
+      ->check(kLevel)
       ->required();
-  cmd->add_option("--inner", opts->inner, "inner levels X[,Y]")->delimiter(',');
+  cmd->add_option("--inner", opts->inner, "inner levels X[,Y]")->delimiter(',')->check(kLevel);
   cmd->add_option("--format", opts->format, "text (%.9g) | hex (IEEE-754 bits)")
       ->check(CLI::IsMember({"text", "hex"}))
       ->capture_default_str();

@@ -13,7 +13,9 @@
 #include "glref/malloc_tuning.h"
 #include "glref/gl_error.h"
 #include "glref/scene_renderer.h"
+#include "pipeline/camera.h"
 #include "pipeline/image_compare.h"
+#include "pipeline/camera.h"
 #include "pipeline/image_output.h"
 #include "pipeline/mesh_source.h"
 #include "pipeline/scene_loader.h"
@@ -35,7 +37,7 @@ struct Options {
 };
 
 int run(const Options& o) {
-  const Scene scene = load_scene(o.scene, o.sets);
+  Scene scene = load_scene(o.scene, o.sets);
   check_image_path(o.output, false, "color images");
   if (!o.depth.empty()) check_image_path(o.depth, true, "depth images");
   if (!o.diff.empty()) check_image_path(o.diff, false, "diff images");
@@ -44,6 +46,7 @@ int run(const Options& o) {
   auto t = Clock::now();
   std::vector<std::string> warnings;
   const Mesh mesh = build_mesh(scene.mesh, warnings);
+  scene.camera = fitted_camera(scene, mesh);
   const double mesh_ms = ms_since(t);
   for (const std::string& w : warnings) std::fprintf(stderr, "tessref-glref-render: warning: %s\n", w.c_str());
 

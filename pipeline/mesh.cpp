@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <unordered_map>
 
@@ -121,6 +122,20 @@ MeshRepairs validate_mesh(Mesh& m, const std::string& source) {
     if (m.indices[k] >= m.positions.size())
       fail("triangle " + std::to_string(k / 3) + " uses vertex " + std::to_string(m.indices[k]) +
            ", but the mesh has " + std::to_string(m.positions.size()) + " vertices");
+
+  // Finite coordinates whose edge cross product is not: the mesh is too large for single precision
+  // (every triangle would otherwise be dropped as "degenerate").
+  for (std::size_t t = 0; t < m.triangle_count(); ++t) {
+    const std::uint32_t* i = &m.indices[3 * t];
+    if (finite(face_normal(m.positions[i[0]], m.positions[i[1]], m.positions[i[2]]))) continue;
+    float largest = 0.0f;
+    for (int k = 0; k < 3; ++k)
+      for (int c = 0; c < 3; ++c) largest = std::max(largest, std::abs(m.positions[i[k]][c]));
+    char size[32];
+    std::snprintf(size, sizeof size, "%g", double(largest));
+    fail("triangle " + std::to_string(t) + ": the cross product of its edges overflows single "
+         "precision (coordinates up to " + size + "); scale the mesh down (below 1e18)");
+  }
 
   MeshRepairs repairs;
   std::vector<std::uint32_t> kept;

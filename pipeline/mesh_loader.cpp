@@ -1,6 +1,7 @@
 #include "pipeline/mesh_loader.h"
 
 #include <cctype>
+#include <cmath>
 #include <exception>
 #include <fstream>
 #include <sstream>
@@ -21,7 +22,23 @@ struct Soup {
   std::vector<glm::vec3> positions, normals;
   std::vector<std::uint32_t> indices;
   std::size_t skipped_faces = 0;
+  std::size_t bad_normals = 0;  // stored normals that are zero, NaN or infinite
+  bool has_normals = false;     // some mesh stored normals
 };
+
+// Stored normals that point into the surface on most faces (a mesh with its faces wound
+// clockwise, or normals negated: assimp's Spider_binary.stl): the faces' winding is what culling
+// and PN triangles go by, so such a mesh renders lit from behind. The count of faces whose normal
+// (from the winding) opposes the sum of its corners' normals.
+std::size_t faces_against_normals(const Mesh& m) {
+  std::size_t against = 0;
+  for (std::size_t t = 0; t < m.triangle_count(); ++t) {
+    const std::uint32_t* i = &m.indices[3 * t];
+    const glm::vec3 face = glm::cross(m.positions[i[1]] - m.positions[i[0]], m.positions[i[2]] - m.positions[i[0]]);
+    if (glm::dot(face, m.normals[i[0]] + m.normals[i[1]] + m.normals[i[2]]) < 0.0f) ++against;
+  }
+  return against;
+}
 
 glm::mat4 to_glm(const aiMatrix4x4& m) {
   // aiMatrix4x4 is row-major (a1..a4 is the first row); glm is column-major.
@@ -38,7 +55,12 @@ void append_mesh(const aiMesh& mesh, const glm::mat4& transform, Soup& soup,
     soup.positions.push_back(glm::vec3(transform * glm::vec4(p.x, p.y, p.z, 1.0f)));
     if (mesh.HasNormals()) {
       const aiVector3D& n = mesh.mNormals[v];
-      soup.normals.push_back(normal_matrix * glm::vec3(n.x, n.y, n.z));
+      const glm::vec3 stored(n.x, n.y, n.z);
+      soup.has_normals = true;
+      if (!std::isfinite(stored.x) || !std::isfinite(stored.y) || !std::isfinite(stored.z) ||
+          glm::dot(stored, stored) == 0.0f)
+        ++soup.bad_normals;  // welding replaces it (from its twins, else the faces)
+      soup.normals.push_back(normal_matrix * stored);
     } else {
       soup.normals.push_back(glm::vec3(0.0f));  // welding fills it in from the faces
     }
@@ -171,6 +193,18 @@ Mesh load_mesh_file(const std::filesystem::path& path, std::vector<std::string>&
   if (repairs.normals_recomputed)
     warnings.push_back(name + ": recomputed " + std::to_string(repairs.normals_recomputed) +
                        " zero-length normals from the faces");
+  if (soup.bad_normals)
+    warnings.push_back(name + ": " + std::to_string(soup.bad_normals) +
+                       " stored normals are zero, NaN or infinite; replaced by the normals of "
+                       "their welded twins or of the faces around them");
+  if (soup.has_normals) {
+    const std::size_t against = faces_against_normals(mesh);
+    if (2 * against > mesh.triangle_count())
+      warnings.push_back(name + ": the stored normals point against the faces' winding on " +
+                         std::to_string(against) + " of " + std::to_string(mesh.triangle_count()) +
+                         " triangles (negated normals or clockwise faces?): culling goes by the "
+                         "winding and lighting by the normals, so it will look lit from behind");
+  }
   return mesh;
 }
 

@@ -43,6 +43,7 @@ struct Camera {
   float fov_y_deg = 45.0f;
   float near = 0.1f;
   float far = 100.0f;
+  bool fit = false;  // frame the mesh's bounding sphere (pipeline/camera.h: fitted_camera)
 };
 
 // A point light; its intensity is used as I_a, I_d and I_s alike.

@@ -99,6 +99,7 @@ Camera read_camera(JsonObject o) {
   if (!(c.far > c.near))
     o.fail("far", "must be greater than camera.near (" + format_float(c.near) + "), got " +
                       format_float(c.far), {"near"});
+  c.fit = o.boolean("fit");
   glm::vec3 forward = c.target - c.eye;
   // lookAt normalizes target - eye and up in single precision: their squared lengths must fit.
   const float forward2 = glm::dot(forward, forward), up2 = glm::dot(c.up, c.up);
@@ -204,7 +205,7 @@ ShaderSettings read_shaders(JsonObject o, const JsonSource& source, const std::f
       } else if (v.is_number() && std::isfinite(v.get<double>())) {
         u.values.push_back(v.get<double>());
       } else {
-        o.fail("uniforms." + name, "expected numbers or booleans (a vector as an array, a matrix as an "
+        o.fail("uniforms." + u.name, "expected numbers or booleans (a vector as an array, a matrix as an "
                                    "array of columns), got " + describe_json(v));
       }
     };

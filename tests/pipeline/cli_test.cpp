@@ -40,7 +40,9 @@ TEST_F(Cli, RendersTheDefaultScene) {
   const CliRun r = run("render -o " + out.string() + " --threads 2 --set image.width=200 --set image.height=100 "
                     "--depth " + (dir.path() / "d.exr").string() + " --normals " + (dir.path() / "n.exr").string());
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_THAT(r.output, HasSubstr("tessref render: <default scene> -> " + out.string() + " (200x100, 2 threads): "
+  EXPECT_THAT(r.output, HasSubstr("tessref render: <default scene> with --set image.width, image.height -> " + out.string() +
+                                  ", " + (dir.path() / "d.exr").string() + " (depth), " +
+                                  (dir.path() / "n.exr").string() + " (normals) (200x100, 2 threads): "
                                   "256 triangles in, "));
   EXPECT_THAT(r.output, HasSubstr("fragments shaded; mesh "));
   EXPECT_THAT(r.output, HasSubstr(", raster+fs "));
@@ -65,7 +67,7 @@ TEST_F(Cli, RendersTheRepositoryDefaultScene) {
   const CliRun r = run("render " + std::string(TESSREF_SOURCE_DIR) + "/scenes/default.json -o " +
                     (dir.path() / "x.png").string() + " --set image.width=64 --set image.height=64");
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_THAT(r.output, HasSubstr("scenes/default.json -> "));
+  EXPECT_THAT(r.output, HasSubstr("scenes/default.json with --set image.width, image.height -> "));
 }
 
 TEST_F(Cli, RepeatPrintsStageTimesAndWritesTheSameImage) {
@@ -85,7 +87,7 @@ TEST_F(Cli, RepeatPrintsStageTimesAndWritesTheSameImage) {
   };
   const std::string medians = ", median \\(min \\.\\. max\\): " + stage("vertex") + ", " +
                               stage("tessellation") + ", " + stage("raster\\+fs") + ", " + stage("frame") + "\n";
-  EXPECT_THAT(r3.output, ::testing::MatchesRegex("tessref render: <default scene> -> [^\n]*, write " + ms +
+  EXPECT_THAT(r3.output, ::testing::MatchesRegex("tessref render: <default scene> with --set [^\n]*, write " + ms +
                                                  "\ntessref render: 3 frames" + medians));
   EXPECT_THAT(r1.output, ::testing::MatchesRegex("[^\n]*\ntessref render: 1 frame" + medians));
   EXPECT_THAT(r0.output, ::testing::Not(HasSubstr(" median ")));
@@ -251,6 +253,44 @@ TEST_F(Cli, OutputBytesDoNotDependOnTheClock) {
     EXPECT_FALSE(file_bytes(now).empty()) << ext;
     EXPECT_EQ(file_bytes(d + "/now_d.exr"), file_bytes(d + "/then_d.exr"));
   }
+}
+
+// Issue 11, defect 11: the summary names the scene as drawn (with the keys --set changed) and
+// every file written.
+TEST_F(Cli, SummaryNamesTheSceneAndEveryFileWritten) {
+  TempDir dir;
+  const std::string d = dir.path().string();
+  const CliRun r = run("render --set image.width=32 --set image.height=24 -o " + d + "/x.png --depth " + d +
+                       "/d.exr --normals " + d + "/n.exr --dump-tess " + d + "/t.bin");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("tessref render: <default scene> with --set image.width, image.height -> " + d +
+                                  "/x.png, " + d + "/d.exr (depth), " + d + "/n.exr (normals), " + d +
+                                  "/t.bin (37632 tessellated vertices) (32x24, "));
+}
+
+// Issue 11, defect 9: an image of the background alone says why.
+TEST_F(Cli, NothingDrawnIsAWarning) {
+  TempDir dir;
+  const std::string out = " -o " + (dir.path() / "x.png").string() + " --set image.width=32 --set image.height=32";
+  CliRun r = run("render --set camera.target=0,50,0" + out);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("tessref: warning: nothing was drawn (0 fragments shaded): of 64768 triangles, "
+                                  "64768 lie outside the view volume"));
+  r = run("render --set tessellation.outer=0" + out);
+  EXPECT_THAT(r.output, HasSubstr("256 patches were discarded by their levels"));
+  r = run("render" + out);
+  EXPECT_THAT(r.output, ::testing::Not(HasSubstr("warning")));
+}
+
+// Issue 11, defect 10: an empty or malformed level is said to be one.
+TEST_F(Cli, TpgLevelLists) {
+  CliRun r = run("tpg --outer \"\"");
+  EXPECT_GE(r.exit_code, 100);
+  EXPECT_THAT(r.output, HasSubstr("--outer: expected a level (a number, nan or inf), got an empty value"));
+  r = run("tpg --outer 1,x,1 --inner 1");
+  EXPECT_THAT(r.output, HasSubstr("--outer: expected a level (a number, nan or inf), got 'x'"));
+  r = run("tpg --outer 1,1,1 --inner nan");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
 }
 
 TEST_F(Cli, BadOptions) {

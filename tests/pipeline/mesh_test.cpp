@@ -213,6 +213,55 @@ TEST(MeshLoader, DegenerateTrianglesAreDroppedWithAWarning) {
   EXPECT_THAT(warnings, ::testing::Contains(HasSubstr("degenerate")));
 }
 
+// Issue 11, defect 9: repairs and suspicious normals are reported, not done silently.
+TEST(MeshLoader, BadStoredNormalsAreReplacedWithAWarning) {
+  TempDir dir;
+  const char* obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+                    "vn 0 0 0\nvn nan 0 0\nvn inf 1 0\nvn 1 1 1\n"
+                    "f 1//1 3//2 2//3\nf 1//1 2//3 4//4\nf 1//1 4//4 3//2\nf 2//3 3//2 4//4\n";
+  std::vector<std::string> warnings;
+  const Mesh m = load_mesh_file(dir.write("tet.obj", obj), warnings);
+  ASSERT_EQ(m.vertex_count(), 4u);
+  expect_closed_smooth_mesh(m);
+  EXPECT_THAT(warnings, ::testing::Contains(HasSubstr(
+                            "tet.obj: 3 stored normals are zero, NaN or infinite; replaced")));
+}
+
+TEST(MeshLoader, NormalsAgainstTheWindingAreReported) {
+  TempDir dir;
+  std::string inside_out = kSplitCubeObj;  // every stored normal negated
+  const std::string normals = "vn 0 0 -1\nvn 0 0 1\nvn 0 -1 0\nvn 0 1 0\nvn -1 0 0\nvn 1 0 0\n";
+  ASSERT_NE(inside_out.find(normals), std::string::npos);
+  inside_out.replace(inside_out.find(normals), normals.size(),
+                     "vn 0 0 1\nvn 0 0 -1\nvn 0 1 0\nvn 0 -1 0\nvn 1 0 0\nvn -1 0 0\n");
+  std::vector<std::string> warnings;
+  load_mesh_file(dir.write("cube.obj", inside_out), warnings);
+  EXPECT_THAT(warnings, ::testing::Contains(HasSubstr(
+                            "the stored normals point against the faces' winding on 12 of 12 triangles")));
+  warnings.clear();
+  load_mesh_file(dir.write("cube.obj", kSplitCubeObj), warnings);
+  EXPECT_TRUE(warnings.empty());
+}
+
+TEST(MeshLoader, AssimpSpiderStlNormalsAgainstTheWinding) {
+  for (const char* name : {"Spider_binary.stl", "Spider_ascii.stl"}) {
+    const std::filesystem::path path = std::filesystem::path("/usr/share/assimp/models/STL") / name;
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " missing (package assimp-testmodels)";
+    std::vector<std::string> warnings;
+    const Mesh m = load_mesh_file(path, warnings);
+    EXPECT_THAT(warnings, ::testing::Contains(HasSubstr("the stored normals point against the faces' winding on 1308 of " +
+                                                        std::to_string(m.triangle_count()))))
+        << name;
+  }
+}
+
+TEST(Mesh, CoordinatesTooLargeForSinglePrecision) {
+  Mesh m = make_cube();
+  for (glm::vec3& p : m.positions) p *= 1e37f;
+  EXPECT_EQ(mesh_error(m), "file.obj: triangle 0: the cross product of its edges overflows single "
+                           "precision (coordinates up to 5e+36); scale the mesh down (below 1e18)");
+}
+
 TEST(MeshLoader, NaNCoordinatesAreAnError) {
   TempDir dir;
   std::vector<std::string> warnings;

@@ -251,6 +251,35 @@ namespace {
 
 // A NaN inner level clamps to the lower bound (docs/tpg.md), in a scene as in a control shader:
 // the frame is that of inner level 1.
+// camera.fit: a mesh seen from far away along any direction fills the frame, with no pixel on the
+// border covered.
+TEST(Render, CameraFitFramesTheMesh) {
+  for (const char* eye : {"0,0,1000", "300,-200,5", "0.01,0.02,-0.01"}) {
+    SCOPED_TRACE(eye);
+    const Scene scene = parse_scene("{}", "x", ".", {"camera.fit=true", std::string("camera.eye=") + eye,
+                                                     "image.width=96", "image.height=64"});
+    std::vector<std::string> warnings;
+    const Mesh mesh = build_mesh(scene.mesh, warnings);
+    Scene fitted = scene;
+    fitted.camera = fitted_camera(scene, mesh);
+    const RenderResult r = render_scene(fitted, mesh, Parallel(2));
+    int lo_x = 96, hi_x = -1, lo_y = 64, hi_y = -1;
+    for (int y = 0; y < 64; ++y)
+      for (int x = 0; x < 96; ++x)
+        if (r.framebuffer.depth[r.framebuffer.index(x, y)] < 1.0f)
+          lo_x = std::min(lo_x, x), hi_x = std::max(hi_x, x), lo_y = std::min(lo_y, y), hi_y = std::max(hi_y, y);
+    EXPECT_GT(lo_x, 0);
+    EXPECT_GT(lo_y, 0);
+    EXPECT_LT(hi_x, 95);
+    EXPECT_LT(hi_y, 63);
+    EXPECT_GE(std::max(hi_x - lo_x, hi_y - lo_y), 40) << "the mesh should fill most of the 64-pixel side";
+  }
+  // Off: the camera as given.
+  const Scene plain = load_scene("");
+  std::vector<std::string> warnings;
+  EXPECT_EQ(fitted_camera(plain, build_mesh(plain.mesh, warnings)).eye, plain.camera.eye);
+}
+
 TEST(Render, NanInnerLevelDrawsAsTheLowerBound) {
   auto render_with = [](const std::string& inner) {
     const Scene scene = load_scene("", {"image.width=64", "image.height=64", "tessellation.inner=" + inner});

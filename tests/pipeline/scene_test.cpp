@@ -103,7 +103,7 @@ TEST(Scene, NumberOverflowInFile) {
 TEST(Scene, UnknownKeys) {
   EXPECT_EQ(scene_error(R"({"camera": {"eyes": [1, 2, 3]}})"),
             "scenes/x.json: camera.eyes: unknown key (expected one of: eye, target, up, "
-            "fov_y_deg, near, far)");
+            "fov_y_deg, near, far, fit)");
   EXPECT_THAT(scene_error(R"({"colour": 1})"), HasSubstr("scenes/x.json: colour: unknown key"));
   EXPECT_THAT(scene_error(R"({"lights": [{"position": [0, 0, 0], "power": 2}]})"),
               HasSubstr("scenes/x.json: lights.0.power: unknown key"));
@@ -303,7 +303,7 @@ TEST(Scene, OverrideErrors) {
   EXPECT_THAT(scene_error("{}", {"camera..eye=1"}), HasSubstr("empty key segment"));
   EXPECT_EQ(scene_error("{}", {"camera.eyes=1,2,3"}),
             "scenes/x.json: camera.eyes: unknown key (expected one of: eye, target, up, fov_y_deg, "
-            "near, far) (from --set camera.eyes)");
+            "near, far, fit) (from --set camera.eyes)");
   EXPECT_EQ(scene_error("{}", {"camera.fov_y_deg.x=1"}),
             "--set camera.fov_y_deg.x: camera.fov_y_deg is a number (18), not an object");
   EXPECT_EQ(scene_error("{}", {"lights.5.position=1,2,3"}),
