@@ -100,7 +100,8 @@ void write_as(const std::filesystem::path& temp, const std::filesystem::path& ta
 // An 8-bit file whose writer reports no write errors (PNG, BMP, TGA, JPEG under a file-size limit
 // or on a full disk) is read back whole before it counts as written.
 void verify_written(const std::filesystem::path& temp, const Framebuffer& fb) {
-  if (is_float_format(temp)) return;  // these writers report failed writes themselves
+  // Writers that keep floats (EXR, TIFF, HDR) report failed writes themselves.
+  if (check_image_path(temp, ImageKind::Color).stores_float) return;
   bool whole = false;
   try {
     const Rgb8Image back = read_rgb8_image(temp);  // 8 bits, as written: no float conversion
@@ -109,7 +110,8 @@ void verify_written(const std::filesystem::path& temp, const Framebuffer& fb) {
   }
   if (!whole)
     throw InputError(temp.string() +
-                     ": the written file does not read back whole (disk full or file size limit?)");
+                     ": the written file does not read back whole (the writer failed without saying so: a full "
+                     "disk, a file size limit, or an image size the format cannot hold)");
 }
 
 // The scene as drawn: its file (or "<default scene>") and the keys --set changed.
@@ -151,15 +153,15 @@ void run_render(const RenderOptions& o) {
   // are written to temporaries and moved into place together at the end, or none is.
   OutputFiles outputs;
   const std::filesystem::path color_tmp = outputs.add("-o", o.output);
-  check_image_path(o.output, false, "color images");
+  check_image_path(o.output, ImageKind::Color);
   std::filesystem::path depth_tmp, normals_tmp, dump_tmp;
   if (!o.depth.empty()) {
     depth_tmp = outputs.add("--depth", o.depth);
-    check_image_path(o.depth, true, "depth images");
+    check_image_path(o.depth, ImageKind::Depth);
   }
   if (!o.normals.empty()) {
     normals_tmp = outputs.add("--normals", o.normals);
-    check_image_path(o.normals, true, "normal images");
+    check_image_path(o.normals, ImageKind::Normals);
   }
   if (!o.dump_tess.empty()) dump_tmp = outputs.add("--dump-tess", o.dump_tess);
 

@@ -38,9 +38,9 @@ struct Options {
 
 int run(const Options& o) {
   Scene scene = load_scene(o.scene, o.sets);
-  check_image_path(o.output, false, "color images");
-  if (!o.depth.empty()) check_image_path(o.depth, true, "depth images");
-  if (!o.diff.empty()) check_image_path(o.diff, false, "diff images");
+  check_image_path(o.output, ImageKind::Color);
+  if (!o.depth.empty()) check_image_path(o.depth, ImageKind::Depth);
+  if (!o.diff.empty()) check_image_path(o.diff, ImageKind::Color);
   if (!o.diff.empty() && o.compare_with.empty()) throw InputError("--diff needs --compare-with");
 
   auto t = Clock::now();

@@ -4,6 +4,7 @@
 #include "pipeline/image_io_module.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <exception>
 #include <string>
 #include <vector>
@@ -39,12 +40,53 @@ const char* guarded(const char* path, Body&& body) {
   }
 }
 
-const char* check_writable(const char* path) {
-  return guarded(path, [&]() -> const char* {
-    if (!OIIO::ImageOutput::create(path))
-      return fail(std::string(path) + ": cannot write this image format (" + OIIO::geterror() + ")");
+const char* probe(const char* probe_path, int channels, tessref_image_io_type type, int* stored_float) {
+  return guarded(probe_path, [&]() -> const char* {
+    const std::string name = probe_path;
+    auto out = OIIO::ImageOutput::create(name);
+    if (!out) {
+      (void)OIIO::geterror();  // names the scratch file: the caller says what failed
+      return fail("OpenImageIO has no writer for this extension");
+    }
+    const OIIO::ImageSpec spec(1, 1, channels, type_desc(type));
+    const bool opened = out->open(name, spec);
+    // The writer may store another data type than asked (PNG: 8 or 16 bits for float data).
+    const OIIO::TypeDesc stored = out->spec().format;
+    const std::string why = opened ? std::string() : out->geterror();
+    if (opened) {
+      const std::vector<float> pixel(std::size_t(channels), 0.0f);
+      out->write_image(OIIO::TypeDesc::FLOAT, pixel.data());
+      out->close();
+    }
+    out.reset();
+    std::remove(probe_path);
+    if (!opened) return fail(why.empty() ? std::string("the writer refused it") : why);
+    *stored_float = stored.basetype == OIIO::TypeDesc::FLOAT || stored.basetype == OIIO::TypeDesc::HALF;
     return nullptr;
   });
+}
+
+// "openexr:exr,sxr,mxr;png:png;..." from OpenImageIO, keeping the formats that have a writer.
+const char* writable_extensions() {
+  static const std::string list = [] {
+    const std::string writers = "," + std::string(OIIO::get_string_attribute("output_format_list")) + ",";
+    std::string out;
+    const std::string all(OIIO::get_string_attribute("extension_list"));
+    for (std::size_t start = 0; start < all.size();) {
+      std::size_t end = all.find(';', start);
+      if (end == std::string::npos) end = all.size();
+      const std::string entry = all.substr(start, end - start);
+      start = end + 1;
+      const std::size_t colon = entry.find(':');
+      if (colon == std::string::npos || writers.find("," + entry.substr(0, colon) + ",") == std::string::npos)
+        continue;
+      std::string exts = entry.substr(colon + 1) + ",";
+      for (std::size_t a = 0, b; (b = exts.find(',', a)) != std::string::npos; a = b + 1)
+        if (b > a) out += (out.empty() ? "." : " .") + exts.substr(a, b - a);
+    }
+    return out;
+  }();
+  return list.c_str();
 }
 
 const char* write(const char* path, int width, int height, int channels, tessref_image_io_type type,
@@ -89,7 +131,7 @@ const char* read(const char* path, tessref_image_io_type type, int channels,
 }
 
 const tessref_image_io_api kApi = {TESSREF_IMAGE_IO_ABI_VERSION, sizeof(tessref_image_io_api),
-                                   check_writable, write, read};
+                                   probe, writable_extensions, write, read};
 
 }  // namespace
 

@@ -10,7 +10,7 @@
 // below. Nothing but plain C types crosses the boundary, and no exception does.
 #include <stdint.h>
 
-#define TESSREF_IMAGE_IO_ABI_VERSION 1u
+#define TESSREF_IMAGE_IO_ABI_VERSION 2u
 #define TESSREF_IMAGE_IO_ENTRY "tessref_image_io_api_v1"
 #define TESSREF_IMAGE_IO_MODULE_NAME "libtessref_image_io.so"
 
@@ -27,8 +27,14 @@ typedef void* (*tessref_image_io_alloc_fn)(void* context, int width, int height,
 struct tessref_image_io_api {
   uint32_t abi_version;  // TESSREF_IMAGE_IO_ABI_VERSION
   uint32_t size;         // sizeof(tessref_image_io_api)
-  // Fails when there is no writer for the path's extension.
-  const char* (*check_writable)(const char* path);
+  // Asks the writer for probe_path's extension whether it can store `channels` channels of
+  // `type`: opens probe_path (a scratch file, removed again) for a 1x1 image as write() would.
+  // On success *stored_float says whether the writer keeps float data as floating point (PNG
+  // would quantize it). Fails when there is no writer for the extension or it refuses the spec.
+  const char* (*probe)(const char* probe_path, int channels, tessref_image_io_type type,
+                       int* stored_float);
+  // The file extensions this OpenImageIO can write, space-separated, with dots (".exr .png").
+  const char* (*writable_extensions)(void);
   // Pixels top row first, channels interleaved; channel_names: `channels` names, or null.
   const char* (*write)(const char* path, int width, int height, int channels,
                        tessref_image_io_type type, const void* pixels,

@@ -1,10 +1,14 @@
 #include "pipeline/image_output.h"
 
 #include <dlfcn.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <iterator>
+#include <map>
+#include <mutex>
 #include <new>
 #include <string>
 #include <system_error>
@@ -146,10 +150,61 @@ std::vector<float> flipped(const Framebuffer& fb, int channels, Get&& get) {
   return rows;
 }
 
-void require_float_format(const std::filesystem::path& path, const char* what) {
-  if (!is_float_format(path))
-    throw InputError(path.string() + ": " + what +
-                     " need a floating-point format: .exr, .tif, .tiff, .pfm or .hdr");
+const char* kind_name(ImageKind kind) {
+  return kind == ImageKind::Color ? "color images" : kind == ImageKind::Depth ? "depth images" : "normal images";
+}
+
+// One probe of the writer for path's extension, through a scratch file beside path.
+const char* probe(const std::filesystem::path& path, int channels, tessref_image_io_type type, int& stored_float) {
+  const std::filesystem::path folder = path.parent_path().empty() ? "." : path.parent_path();
+  const std::filesystem::path scratch =
+      folder / ("." + path.stem().string() + ".tessref-probe-" + std::to_string(::getpid()) + path.extension().string());
+  return image_io().probe(scratch.c_str(), channels, type, &stored_float);
+}
+
+// The format of `kind` for path's extension, or the reason the writer cannot hold it.
+struct ProbeAnswer {
+  ImageFormat format;
+  std::string error;  // empty: usable
+};
+ProbeAnswer ask_writer(const std::filesystem::path& path, ImageKind kind) {
+  ProbeAnswer a;
+  int stored_float = 0;
+  const int channels = kind == ImageKind::Depth ? 1 : 3;
+  if (kind == ImageKind::Color) {
+    // RGBA where the writer takes four channels, RGB where it takes three (.hdr), 8-bit RGB else.
+    for (int n : {4, 3})
+      if (!probe(path, n, TESSREF_IMAGE_IO_FLOAT, stored_float) && stored_float) return {{n, true}, ""};
+    if (const char* e = probe(path, 3, TESSREF_IMAGE_IO_UINT8, stored_float)) a.error = e;
+    return a;
+  }
+  if (const char* e = probe(path, channels, TESSREF_IMAGE_IO_FLOAT, stored_float)) a.error = e;
+  else if (!stored_float) a.error = "it stores 8 or 16-bit integers, not floats";
+  a.format = {channels, true};
+  return a;
+}
+
+// Answers per (extension, kind): the probe runs once, in check_image_path, before any rendering.
+std::mutex formats_mutex;
+std::map<std::pair<std::string, ImageKind>, ProbeAnswer> known_formats;
+
+const ProbeAnswer& answer_for(const std::filesystem::path& path, ImageKind kind) {
+  std::lock_guard lock(formats_mutex);
+  const auto key = std::make_pair(lower_extension(path), kind);
+  auto it = known_formats.find(key);
+  if (it == known_formats.end()) it = known_formats.emplace(key, ask_writer(path, kind)).first;
+  return it->second;
+}
+
+ImageFormat usable_format(const std::filesystem::path& path, ImageKind kind) {
+  const ProbeAnswer& a = answer_for(path, kind);
+  if (a.error.empty()) return a.format;
+  const std::string ext = lower_extension(path).empty() ? "(no extension)" : lower_extension(path);
+  std::string need = kind_name(kind);
+  if (kind == ImageKind::Depth) need += " (1 float channel)";
+  if (kind == ImageKind::Normals) need += " (3 float channels)";
+  throw InputError(path.string() + ": this build's OpenImageIO cannot write " + need + " as " + ext + ": " +
+                   a.error + "; it can as " + writable_image_extensions(kind));
 }
 
 std::uint8_t unorm8(float c) {
@@ -172,20 +227,14 @@ Rgb8Image to_rgb8(const Framebuffer& fb) {
   return img;
 }
 
-bool is_float_format(const std::filesystem::path& path) {
-  const std::string ext = lower_extension(path);
-  return ext == ".exr" || ext == ".hdr" || ext == ".pfm" || ext == ".tif" || ext == ".tiff";
-}
-
-void check_image_path(const std::filesystem::path& path, bool float_only, const char* what) {
-  if (float_only) require_float_format(path, what);
-  check(image_io().check_writable(path.string().c_str()));
+ImageFormat check_image_path(const std::filesystem::path& path, ImageKind kind) {
+  return usable_format(path, kind);
 }
 
 void write_color_image(const Framebuffer& fb, const std::filesystem::path& path) {
-  if (!is_float_format(path)) return write_rgb8_image(to_rgb8(fb), path);
-  const bool rgb_only = lower_extension(path) == ".hdr" || lower_extension(path) == ".pfm";
-  const int channels = rgb_only ? 3 : 4;
+  const ImageFormat format = usable_format(path, ImageKind::Color);
+  if (!format.stores_float) return write_rgb8_image(to_rgb8(fb), path);
+  const int channels = format.channels;
   std::vector<float> rows = flipped(fb, channels, [&](std::size_t i, float* dst) {
     for (int k = 0; k < channels; ++k) dst[k] = fb.color[i][k];
   });
@@ -193,13 +242,13 @@ void write_color_image(const Framebuffer& fb, const std::filesystem::path& path)
 }
 
 void write_depth_image(const Framebuffer& fb, const std::filesystem::path& path) {
-  require_float_format(path, "depth images");
+  usable_format(path, ImageKind::Depth);
   std::vector<float> rows = flipped(fb, 1, [&](std::size_t i, float* dst) { dst[0] = fb.depth[i]; });
   write_image(path, fb.width, fb.height, 1, TESSREF_IMAGE_IO_FLOAT, rows.data(), {"Z"});
 }
 
 void write_normals_image(const Framebuffer& fb, const std::filesystem::path& path) {
-  require_float_format(path, "normal images");
+  usable_format(path, ImageKind::Normals);
   std::vector<float> rows = flipped(fb, 3, [&](std::size_t i, float* dst) {
     for (int k = 0; k < 3; ++k) dst[k] = fb.aux[i][k];
   });
@@ -230,6 +279,24 @@ FloatImage read_float_image(const std::filesystem::path& path) {
   img.height = target.height;
   img.channels = target.channels;
   return img;
+}
+
+std::string writable_image_extensions(ImageKind kind) {
+  std::string all = image_io().writable_extensions(), out;
+  for (std::size_t a = 0, b; a < all.size(); a = b + 1) {
+    b = std::min(all.find(' ', a), all.size());
+    const std::string ext = all.substr(a, b - a);
+    // Only the common image files: OpenImageIO also lists pseudo-formats (.null, .term).
+    static const char* const kFiles[] = {".exr", ".tif", ".tiff", ".hdr", ".pfm", ".png", ".jpg", ".jpeg",
+                                         ".bmp", ".tga", ".webp", ".dpx", ".sgi", ".rla", ".fits", ".ppm",
+                                         ".pgm", ".jp2", ".gif", ".ico", ".heic", ".cin"};
+    if (std::find_if(std::begin(kFiles), std::end(kFiles), [&](const char* f) { return ext == f; }) == std::end(kFiles))
+      continue;
+    // Listed is not writable: Debian's OpenImageIO 2.4 lists .pfm but has no writer for it.
+    if (!answer_for(std::filesystem::temp_directory_path() / ("x" + ext), kind).error.empty()) continue;
+    out += (out.empty() ? "" : " ") + ext;
+  }
+  return out;
 }
 
 std::string image_io_module_path() { return loaded_module().path; }

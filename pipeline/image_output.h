@@ -23,20 +23,34 @@ struct Rgb8Image {
 // round(c * 255). No sRGB encoding (the framebuffer holds what the shader wrote).
 Rgb8Image to_rgb8(const Framebuffer& fb);
 
-// True for formats written as floating point: .exr, .hdr, .pfm, .tif, .tiff.
-bool is_float_format(const std::filesystem::path& path);
+// What an image file holds: the colour attachment, depth (one float channel) or normals (three).
+enum class ImageKind { Color, Depth, Normals };
 
-// The color attachment; the format follows the extension: float RGBA for float formats
-// (linear, unclamped), 8-bit RGB otherwise (to_rgb8). InputError naming the file on failure.
+// How the writer for a path's extension stores a kind of image, as OpenImageIO answers a probe
+// (a 1x1 scratch file beside the path, removed again; answers are kept per extension).
+struct ImageFormat {
+  int channels = 3;           // colour: 4 (RGBA) where the writer takes them, else 3
+  bool stores_float = false;  // floats kept as floats (.exr, .tif, .hdr, ...), not quantized
+};
+
+// Fails early (InputError naming the file) when this build's OpenImageIO has no writer for the
+// extension or the writer cannot hold `kind` (depth and normals need floats; .hdr holds only 3
+// channels), listing the extensions that can. Later writes to the same extension use the answer.
+ImageFormat check_image_path(const std::filesystem::path& path, ImageKind kind);
+
+// The extensions of the common image files this build can write `kind` to, space-separated
+// (".exr .png ..."): for messages and --help.
+std::string writable_image_extensions(ImageKind kind);
+
+// The color attachment; the format follows the extension: float RGBA (or RGB) for formats that
+// keep floats (linear, unclamped), 8-bit RGB otherwise (to_rgb8). InputError naming the file.
 void write_color_image(const Framebuffer& fb, const std::filesystem::path& path);
 // Window-space depth (one float channel "Z", 1 where nothing was drawn); float formats only.
+// Depth and normals check the format as check_image_path does.
 void write_depth_image(const Framebuffer& fb, const std::filesystem::path& path);
 // The aux attachment's xyz (the world normal the shaders write; 0 where nothing was drawn).
 void write_normals_image(const Framebuffer& fb, const std::filesystem::path& path);
 
-// Fails early (InputError naming the file) when OpenImageIO has no writer for the extension, or
-// when float_only and the format is not a float format.
-void check_image_path(const std::filesystem::path& path, bool float_only, const char* what);
 
 // Float pixels as stored, top row first (channels per pixel as in the file).
 struct FloatImage {

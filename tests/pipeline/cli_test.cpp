@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -137,9 +138,9 @@ TEST_F(Cli, BadInput) {
        "tessref: error: /usr/share/assimp/models/invalid/empty.obj: the file is empty"},
       {"render --set mesh.type=file --set mesh.path=/nonexistent.obj" + out,
        "tessref: error: /nonexistent.obj: no such file"},
-      {"render -o " + (dir.path() / "x.unknownformat").string(), "x.unknownformat: cannot write this image format"},
+      {"render -o " + (dir.path() / "x.unknownformat").string(), "x.unknownformat: this build's OpenImageIO cannot write color images as .unknownformat: OpenImageIO has no writer"},
       {"render -o /nonexistent/dir/x.png", "tessref: error: /nonexistent/dir/x.png: "},
-      {"render --depth " + (dir.path() / "d.png").string() + out, "d.png: depth images need a floating-point format"},
+      {"render --depth " + (dir.path() / "d.png").string() + out, "d.png: this build's OpenImageIO cannot write depth images (1 float channel) as .png"},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.args);
@@ -253,6 +254,51 @@ TEST_F(Cli, OutputBytesDoNotDependOnTheClock) {
     EXPECT_FALSE(file_bytes(now).empty()) << ext;
     EXPECT_EQ(file_bytes(d + "/now_d.exr"), file_bytes(d + "/then_d.exr"));
   }
+}
+
+// Issue 11, defect 6: the formats the messages and --help list are the ones this build writes,
+// and a format that cannot hold an output is refused before rendering, with the ones that can.
+TEST_F(Cli, ImageFormatsAgreeWithWhatTheBuildWrites) {
+  TempDir dir;
+  // 32 pixels: OpenImageIO's JPEG 2000 writer leaves a file that does not read back below that
+  // (the read-back check refuses it, exit 2).
+  const std::string d = dir.path().string(), small = " --set image.width=32 --set image.height=32";
+  const std::string color = writable_image_extensions(ImageKind::Color);
+  const std::string depth = writable_image_extensions(ImageKind::Depth);
+  EXPECT_THAT(color, HasSubstr(".png"));
+  EXPECT_THAT(color, HasSubstr(".exr"));
+  EXPECT_THAT(depth, HasSubstr(".exr"));
+  EXPECT_THAT(depth, ::testing::Not(HasSubstr(".hdr")));  // RGB only
+  EXPECT_THAT(depth, ::testing::Not(HasSubstr(".png")));  // integers only
+  std::istringstream list(color);
+  for (std::string ext; list >> ext;) {
+    const CliRun r = run("render -o " + d + "/x" + ext + small);
+    EXPECT_EQ(r.exit_code, 0) << ext << ": " << r.output;
+  }
+  std::istringstream depth_list(depth);
+  for (std::string ext; depth_list >> ext;) {
+    const CliRun r = run("render -o " + d + "/x.png --depth " + d + "/d" + ext + small);
+    EXPECT_EQ(r.exit_code, 0) << ext << ": " << r.output;
+    EXPECT_EQ(read_float_image(d + "/d" + ext).channels, 1) << ext;
+  }
+  std::filesystem::remove_all(dir.path());
+  std::filesystem::create_directories(dir.path());
+  CliRun r = run("render -o " + d + "/x.png --depth " + d + "/d.hdr" + small);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.output, HasSubstr(d + "/d.hdr: this build's OpenImageIO cannot write depth images (1 float channel) "
+                                  "as .hdr: HDR can only support 3-channel images; it can as " + depth));
+  r = run("render -o " + d + "/x.png --normals " + d + "/n.png" + small);
+  EXPECT_THAT(r.output, HasSubstr("cannot write normal images (3 float channels) as .png: it stores 8 or 16-bit "
+                                  "integers, not floats"));
+  r = run("render -o " + d + "/x.xyz" + small);
+  EXPECT_THAT(r.output, HasSubstr("cannot write color images as .xyz: OpenImageIO has no writer for this extension; "
+                                  "it can as " + color));
+  if (color.find(".pfm") == std::string::npos) {  // Debian 12's OpenImageIO lists .pfm, writes none
+    r = run("render -o " + d + "/x.pfm" + small);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_THAT(r.output, HasSubstr("cannot write color images as .pfm"));
+  }
+  EXPECT_TRUE(files_in(dir.path()).empty()) << ::testing::PrintToString(files_in(dir.path()));
 }
 
 // Issue 11, defect 11: the summary names the scene as drawn (with the keys --set changed) and
