@@ -11,6 +11,11 @@ namespace tessref::cli {
 void add_render_command(CLI::App& app);  // cli/render_command.cpp
 void add_tpg_command(CLI::App& app);     // cli/tpg_command.cpp
 void add_shader_test_command(CLI::App& app);  // cli/shader_test_command.cpp
+void add_scene_command(CLI::App& app);   // cli/scene_command.cpp
+void add_diff_command(CLI::App& app);    // cli/diff_command.cpp
+
+// Every scene key with what it allows and its default, one per line (render --help, scene --keys).
+std::string scene_keys_text();
 
 // Checks that an option's value is an integer before a range check runs (CLI11's Range would call
 // a word "not in range"): "expected an integer, got 'abc'".

@@ -10,9 +10,12 @@
 int main(int argc, char** argv) {
   CLI::App app{"tessref: a CPU reference of the OpenGL 4.x tessellation pipeline"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("tessref ") + TESSREF_VERSION);
   tessref::cli::add_render_command(app);
   tessref::cli::add_tpg_command(app);
   tessref::cli::add_shader_test_command(app);
+  tessref::cli::add_scene_command(app);
+  tessref::cli::add_diff_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

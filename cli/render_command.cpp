@@ -274,6 +274,13 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--dump-tess", opts->dump_tess,
                   "also write every tessellated vertex (patch id, gl_TessCoord, position, normal): "
                   "binary, or text for *.txt (format: pipeline/tess_dump.h)");
+  // Generated when help is asked for: the formats from OpenImageIO, the keys from the loader.
+  cmd->footer([] {
+    return "\nImage formats this build writes (-o): " + writable_image_extensions(ImageKind::Color) +
+           "\n  depth (--depth): " + writable_image_extensions(ImageKind::Depth) +
+           "\n  normals (--normals): " + writable_image_extensions(ImageKind::Normals) +
+           "\n\nScene keys (--set KEY=VALUE; `tessref scene SCENE` prints a scene as read):\n" + scene_keys_text();
+  });
   cmd->callback([opts, repeat] {
     opts->report_repeat = repeat->count() > 0;
     run_render(*opts);

@@ -9,6 +9,9 @@
 #include <string>
 #include <vector>
 
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
 namespace {
@@ -130,8 +133,40 @@ const char* read(const char* path, tessref_image_io_type type, int channels,
   });
 }
 
+const char* diff(const char* a, const char* b, double warn_threshold, double fail_threshold,
+                 const char* diff_path, double diff_scale, tessref_image_io_diff* out) {
+  return guarded(a, [&]() -> const char* {
+    OIIO::ImageBuf A(a), B(b);
+    if (!A.read(0, 0, true, OIIO::TypeDesc::FLOAT)) return fail(std::string(a) + ": cannot read image: " + A.geterror());
+    if (!B.read(0, 0, true, OIIO::TypeDesc::FLOAT)) return fail(std::string(b) + ": cannot read image: " + B.geterror());
+    const OIIO::ImageSpec &sa = A.spec(), &sb = B.spec();
+    if (sa.width != sb.width || sa.height != sb.height)
+      return fail(std::string(a) + " is " + std::to_string(sa.width) + "x" + std::to_string(sa.height) + ", " + b +
+                  " is " + std::to_string(sb.width) + "x" + std::to_string(sb.height) + ": nothing to compare");
+    OIIO::ROI roi = A.roi();
+    roi.chend = std::min(sa.nchannels, sb.nchannels);
+    // One pass per threshold: compare() counts a pixel under one of its two thresholds only.
+    const auto warn = OIIO::ImageBufAlgo::compare(A, B, warn_threshold, warn_threshold, roi);
+    const auto over = OIIO::ImageBufAlgo::compare(A, B, fail_threshold, fail_threshold, roi);
+    // (Their `error` flags are set whenever a pixel is over the fail threshold in OpenImageIO 2.4;
+    // what could make the comparison itself fail, unread files or unequal sizes, is checked above.)
+    *out = tessref_image_io_diff{sa.width, sa.height, roi.chend, warn.meanerror, warn.rms_error, warn.PSNR,
+                                 warn.maxerror, warn.maxx, warn.maxy, warn.maxc, uint64_t(warn.nfail),
+                                 uint64_t(over.nfail)};
+    if (diff_path) {
+      OIIO::ImageBuf d = OIIO::ImageBufAlgo::mul(OIIO::ImageBufAlgo::absdiff(A, B, roi), float(diff_scale));
+      if (d.has_error()) return fail(std::string(diff_path) + ": cannot make the difference image: " + d.geterror());
+      OIIO::ImageSpec& spec = d.specmod();
+      const std::string ext = OIIO::Filesystem::extension(diff_path);
+      if (ext == ".exr" || ext == ".tif" || ext == ".tiff") spec.attribute("DateTime", "1970:01:01 00:00:00");
+      if (!d.write(diff_path)) return fail(std::string(diff_path) + ": cannot write: " + d.geterror());
+    }
+    return nullptr;
+  });
+}
+
 const tessref_image_io_api kApi = {TESSREF_IMAGE_IO_ABI_VERSION, sizeof(tessref_image_io_api),
-                                   probe, writable_extensions, write, read};
+                                   probe, writable_extensions, write, diff, read};
 
 }  // namespace
 

@@ -22,6 +22,14 @@ enum tessref_image_io_type : int32_t { TESSREF_IMAGE_IO_UINT8 = 0, TESSREF_IMAGE
 // width * height * channels elements of the requested type, or null (out of memory).
 typedef void* (*tessref_image_io_alloc_fn)(void* context, int width, int height, int channels);
 
+// What diff found (ImageBufAlgo::compare over the channels both images have).
+struct tessref_image_io_diff {
+  int width, height, channels;
+  double mean_error, rms_error, psnr, max_error;
+  int max_x, max_y, max_c;      // where max_error is (max_y counted from the top row)
+  uint64_t over_warn, over_fail;  // pixels with a channel difference above warn / fail threshold
+};
+
 // Each function returns null on success, or an error message that names the file (valid until
 // the next call on the same thread).
 struct tessref_image_io_api {
@@ -39,6 +47,9 @@ struct tessref_image_io_api {
   const char* (*write)(const char* path, int width, int height, int channels,
                        tessref_image_io_type type, const void* pixels,
                        const char* const* channel_names);
+  // Compares two images of the same size; writes |a - b| * diff_scale to diff_path unless null.
+  const char* (*diff)(const char* a, const char* b, double warn_threshold, double fail_threshold,
+                      const char* diff_path, double diff_scale, tessref_image_io_diff* out);
   // Reads the first subimage converted to `type`. channels > 0: a buffer of that many channels
   // per pixel receives the file's first min(channels, file channels) (the rest stay 0);
   // channels == 0: every channel of the file.

@@ -299,6 +299,16 @@ std::string writable_image_extensions(ImageKind kind) {
   return out;
 }
 
+ImageFileDiff diff_image_files(const std::filesystem::path& a, const std::filesystem::path& b,
+                               double warn_threshold, double fail_threshold,
+                               const std::filesystem::path& diff_path, double diff_scale) {
+  tessref_image_io_diff d{};
+  check(image_io().diff(a.c_str(), b.c_str(), warn_threshold, fail_threshold,
+                        diff_path.empty() ? nullptr : diff_path.c_str(), diff_scale, &d));
+  return ImageFileDiff{d.width, d.height, d.channels, d.mean_error, d.rms_error, d.psnr, d.max_error,
+                       d.max_x, d.max_y, d.max_c, d.over_warn, d.over_fail};
+}
+
 std::string image_io_module_path() { return loaded_module().path; }
 
 }  // namespace tessref

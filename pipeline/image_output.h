@@ -62,6 +62,20 @@ FloatImage read_float_image(const std::filesystem::path& path);  // InputError i
 void write_rgb8_image(const Rgb8Image& image, const std::filesystem::path& path);
 Rgb8Image read_rgb8_image(const std::filesystem::path& path);  // InputError if unreadable
 
+// Two image files compared by OpenImageIO's ImageBufAlgo::compare over the channels both have, in
+// the files' units (8-bit files as 0..1): `tessref diff`. Differences "above" a threshold are
+// strictly greater. InputError when either cannot be read or their sizes differ.
+struct ImageFileDiff {
+  int width = 0, height = 0, channels = 0;
+  double mean_error = 0, rms_error = 0, psnr = 0, max_error = 0;
+  int max_x = 0, max_y = 0, max_channel = 0;  // max_y from the top row
+  std::uint64_t above_warn = 0, above_fail = 0;  // pixels with a channel difference above each
+};
+// diff_path, when not empty: |a - b| * diff_scale written there (any format -o takes).
+ImageFileDiff diff_image_files(const std::filesystem::path& a, const std::filesystem::path& b,
+                               double warn_threshold, double fail_threshold,
+                               const std::filesystem::path& diff_path = {}, double diff_scale = 1.0);
+
 // The path of the image I/O module in use (loads it first; InputError if it cannot).
 std::string image_io_module_path();
 

@@ -84,8 +84,31 @@ void JsonObject::mark(const std::string& key) {
   if (std::find(known_.begin(), known_.end(), key) == known_.end()) known_.push_back(key);
 }
 
+SchemaKey* JsonObject::schema_entry(const std::string& key) {
+  if (!source_.schema) return nullptr;
+  // lights.0.position -> lights[].position: one entry for every element.
+  std::string path;
+  std::size_t start = 0;
+  for (const std::string full = path_of(key); start <= full.size();) {
+    std::size_t end = std::min(full.find('.', start), full.size());
+    const std::string segment = full.substr(start, end - start);
+    const bool index = !segment.empty() && segment.find_first_not_of("0123456789") == std::string::npos;
+    path += index ? "[]" : (path.empty() ? "" : ".") + segment;
+    start = end + 1;
+  }
+  for (SchemaKey& k : *source_.schema)
+    if (k.path == path) return &k;
+  source_.schema->push_back({path, "", false});
+  return &source_.schema->back();
+}
+
+void JsonObject::describe(const std::string& key, const std::string& allowed) {
+  if (SchemaKey* k = schema_entry(key)) k->allowed = allowed;
+}
+
 bool JsonObject::has(const std::string& key) {
   mark(key);
+  if (SchemaKey* k = schema_entry(key)) k->optional = true;
   return j_.contains(key);
 }
 
@@ -115,18 +138,21 @@ JsonObject JsonObject::object(const std::string& key) {
 }
 
 bool JsonObject::boolean(const std::string& key) {
+  describe(key, "true or false");
   const json& v = value(key);
   if (!v.is_boolean()) fail(key, "expected true or false, got " + describe_json(v));
   return v.get<bool>();
 }
 
 std::string JsonObject::string(const std::string& key) {
+  describe(key, "a string");
   const json& v = value(key);
   if (!v.is_string()) fail(key, "expected a string, got " + describe_json(v));
   return v.get<std::string>();
 }
 
 float JsonObject::number(const std::string& key) {
+  describe(key, "a number");
   const json& v = value(key);
   if (!v.is_number()) fail(key, "expected a number, got " + describe_json(v));
   double d = v.get<double>();
@@ -138,17 +164,16 @@ float JsonObject::number(const std::string& key) {
 float JsonObject::number_in(const std::string& key, float lo, float hi, bool lo_open,
                             bool hi_open) {
   float f = number(key);
-  bool ok = (lo_open ? f > lo : f >= lo) && (hi_open ? f < hi : f <= hi);
-  if (!ok) {
-    std::string range = std::string(lo_open ? "(" : "[") + format_number(lo) + ", " +
-                        (std::isinf(hi) ? std::string("inf") : format_number(hi)) +
-                        (hi_open ? ")" : "]");
+  const std::string range = std::string(lo_open ? "(" : "[") + format_float(lo) + ", " +
+                            (std::isinf(hi) ? std::string("inf") : format_float(hi)) + (hi_open ? ")" : "]");
+  describe(key, "a number in " + range);
+  if (!((lo_open ? f > lo : f >= lo) && (hi_open ? f < hi : f <= hi)))
     fail(key, "expected a number in " + range + ", got " + format_float(f));
-  }
   return f;
 }
 
 int JsonObject::integer(const std::string& key, int lo, int hi) {
+  describe(key, "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
   const json& v = value(key);
   double d = v.is_number() ? v.get<double>() : 0.0;
   if (!v.is_number() || !std::isfinite(d) || d != std::floor(d) || d < lo || d > hi)
@@ -180,17 +205,20 @@ void finite_numbers(const json& v, std::size_t min_n, std::size_t max_n, float* 
 }  // namespace
 
 glm::vec3 JsonObject::vec3(const std::string& key) {
+  describe(key, "[x, y, z]");
   glm::vec3 r;
   finite_numbers(value(key), 3, 3, &r.x, [&](const std::string& w) { fail(key, w); });
   return r;
 }
 
 glm::vec3 JsonObject::vec3_or_scalar(const std::string& key) {
-  if (value(key).is_number()) return glm::vec3(number(key));
-  return vec3(key);
+  const glm::vec3 v = value(key).is_number() ? glm::vec3(number(key)) : vec3(key);
+  describe(key, "a number or [x, y, z]");
+  return v;
 }
 
 glm::vec4 JsonObject::rgba(const std::string& key) {
+  describe(key, "[r, g, b] or [r, g, b, a]");
   glm::vec4 r(0.0f, 0.0f, 0.0f, 1.0f);
   finite_numbers(value(key), 3, 4, &r.x, [&](const std::string& w) { fail(key, w); });
   return r;
@@ -198,6 +226,8 @@ glm::vec4 JsonObject::rgba(const std::string& key) {
 
 std::vector<float> JsonObject::levels(const std::string& key, std::size_t min_count,
                                       std::size_t max_count) {
+  describe(key, "a level or an array of " + std::to_string(min_count) + " to " + std::to_string(max_count) +
+                    " levels (numbers, or \"nan\", \"inf\", \"-inf\")");
   const json& v = value(key);
   auto one = [&](const json& e, const std::string& where) -> float {
     if (e.is_number()) return static_cast<float>(e.get<double>());

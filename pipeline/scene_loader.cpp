@@ -89,10 +89,12 @@ json parse_json(const std::string& text, const std::string& name) {
 
 }  // namespace
 
-Scene parse_scene(const std::string& text, const std::string& name,
-                  const std::filesystem::path& base_dir,
-                  const std::vector<std::string>& overrides) {
-  json merged = parse_json(default_scene_json(), "<default scene>");
+namespace {
+
+// The default scene, the file and the overrides merged, then checked; `merged` keeps the JSON.
+Scene parse_merged(const std::string& text, const std::string& name, const std::filesystem::path& base_dir,
+                   const std::vector<std::string>& overrides, json& merged) {
+  merged = parse_json(default_scene_json(), "<default scene>");
   merge_json(merged, parse_json(text, name));
   JsonSource source{name, {}};
   std::filesystem::path mesh_base = base_dir;
@@ -105,9 +107,7 @@ Scene parse_scene(const std::string& text, const std::string& name,
   return scene_from_json(merged, source, mesh_base);
 }
 
-Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-  if (file.empty())
-    return parse_scene("{}", "<default scene>", std::filesystem::current_path(), overrides);
+std::string read_scene_file(const std::filesystem::path& file) {
   const std::string name = file.string();
   std::error_code ec;
   if (!std::filesystem::exists(file, ec)) throw InputError(name + ": no such scene file");
@@ -117,7 +117,54 @@ Scene load_scene(const std::filesystem::path& file, const std::vector<std::strin
   if (!in.is_open()) throw InputError(name + ": cannot open the scene file");
   std::ostringstream text;
   text << in.rdbuf();
-  return parse_scene(text.str(), name, file.parent_path(), overrides);
+  return text.str();
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& name,
+                  const std::filesystem::path& base_dir,
+                  const std::vector<std::string>& overrides) {
+  json merged;
+  return parse_merged(text, name, base_dir, overrides, merged);
+}
+
+Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  if (file.empty())
+    return parse_scene("{}", "<default scene>", std::filesystem::current_path(), overrides);
+  return parse_scene(read_scene_file(file), file.string(), file.parent_path(), overrides);
+}
+
+json load_scene_json(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  json merged;
+  const Scene scene = file.empty()
+      ? parse_merged("{}", "<default scene>", std::filesystem::current_path(), overrides, merged)
+      : parse_merged(read_scene_file(file), file.string(), file.parent_path(), overrides, merged);
+  // Paths as the renderer will open them.
+  if (!scene.mesh.path.empty()) merged["mesh"]["path"] = scene.mesh.path.string();
+  const std::pair<const char*, const std::filesystem::path*> shaders[] = {
+      {"vertex", &scene.shaders.vertex}, {"tess_control", &scene.shaders.tess_control},
+      {"tess_evaluation", &scene.shaders.tess_evaluation}, {"fragment", &scene.shaders.fragment}};
+  for (const auto& [key, path] : shaders)
+    if (!path->empty()) merged["shaders"][key] = path->string();
+  return merged;
+}
+
+std::vector<SchemaKey> scene_keys() {
+  std::vector<SchemaKey> keys;
+  const json defaults = parse_json(default_scene_json(), "<default scene>");
+  JsonSource source{"<default scene>", {}, &keys};
+  scene_from_json(defaults, source, ".");
+  return keys;
+}
+
+std::string scene_key_default(const std::string& path) {
+  std::string pointer = "/" + path;
+  for (std::size_t at; (at = pointer.find("[]")) != std::string::npos;) pointer.replace(at, 2, "/0");
+  for (char& c : pointer) if (c == '.') c = '/';
+  const json defaults = parse_json(default_scene_json(), "<default scene>");
+  const json::json_pointer p(pointer);
+  return defaults.contains(p) ? defaults.at(p).dump() : std::string();
 }
 
 }  // namespace tessref

@@ -5,6 +5,9 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
+#include "pipeline/json_reader.h"
 #include "pipeline/scene.h"
 
 namespace tessref {
@@ -22,5 +25,15 @@ Scene load_scene(const std::filesystem::path& file, const std::vector<std::strin
 Scene parse_scene(const std::string& text, const std::string& name,
                   const std::filesystem::path& base_dir,
                   const std::vector<std::string>& overrides = {});
+
+// What `tessref scene` prints: the scene as load_scene reads it (the default scene, the file and
+// the overrides merged), after every check has passed, with file paths resolved.
+nlohmann::json load_scene_json(const std::filesystem::path& file, const std::vector<std::string>& overrides = {});
+
+// Every key the loader reads, with what it allows, in the order it reads them: recorded from the
+// loader's own accessors (json_reader.h), for --help and `tessref scene --keys`.
+std::vector<SchemaKey> scene_keys();
+// A key's value in the default scene, as compact JSON ("" where it has none).
+std::string scene_key_default(const std::string& path);
 
 }  // namespace tessref

@@ -30,6 +30,7 @@ bool parse(const std::string& s, Shading& out) {
 template <typename Enum>
 Enum enum_value(JsonObject& o, const std::string& key, const char* choices) {
   std::string s = o.string(key);
+  o.describe(key, "one of " + std::string(choices));
   Enum e{};
   if (!parse(s, e)) o.fail(key, "expected one of " + std::string(choices) + ", got \"" + s + "\"");
   return e;
@@ -40,6 +41,7 @@ Enum enum_value(JsonObject& o, const std::string& key, const char* choices) {
 constexpr float kMaxExtent = 1e18f;
 float extent(JsonObject& o, const std::string& key) {
   const float v = o.number_in(key, 0.0f, kInf, true, true);
+  o.describe(key, "a number in (0, 1e18]");
   if (v > kMaxExtent)
     o.fail(key, format_float(v) + " is too large: the mesh's triangle areas (about its square) "
                 "would overflow single precision; use at most 1e18");
@@ -49,6 +51,7 @@ float extent(JsonObject& o, const std::string& key) {
 MeshSettings read_mesh(JsonObject o, const std::filesystem::path& base_dir) {
   MeshSettings m;
   m.type = enum_value<MeshType>(o, "type", "icosphere, torus, cube, file");
+  o.describe("path", "a mesh file (OBJ, PLY, STL, ... through assimp), relative to the scene file");
   if (o.has("path")) {
     std::filesystem::path p = o.string("path");
     m.path = p.is_relative() ? base_dir / p : p;
@@ -62,6 +65,7 @@ MeshSettings read_mesh(JsonObject o, const std::filesystem::path& base_dir) {
   JsonObject torus = o.object("torus");
   m.torus_major_radius = extent(torus, "major_radius");
   m.torus_minor_radius = extent(torus, "minor_radius");
+  torus.describe("minor_radius", "a number in (0, 1e18], less than major_radius");
   if (!(m.torus_minor_radius < m.torus_major_radius))
     torus.fail("minor_radius", "must be less than mesh.torus.major_radius (" +
                                    format_float(m.torus_major_radius) + "), got " +
@@ -96,6 +100,7 @@ Camera read_camera(JsonObject o) {
   c.fov_y_deg = o.number_in("fov_y_deg", 0.0f, 180.0f, true, true);
   c.near = o.number_in("near", 0.0f, kInf, true, true);
   c.far = o.number_in("far", 0.0f, kInf, true, true);
+  o.describe("far", "a number greater than camera.near");
   if (!(c.far > c.near))
     o.fail("far", "must be greater than camera.near (" + format_float(c.near) + "), got " +
                       format_float(c.far), {"near"});
@@ -118,6 +123,7 @@ Camera read_camera(JsonObject o) {
 }
 
 std::vector<Light> read_lights(JsonObject& root, const JsonSource& source) {
+  root.describe("lights", "an array of at most " + std::to_string(kMaxLights) + " lights");
   const json& arr = root.value("lights");
   if (!arr.is_array() || arr.size() > kMaxLights)
     root.fail("lights", "expected an array of at most " + std::to_string(kMaxLights) +
@@ -175,11 +181,13 @@ TessellationSettings read_tessellation(JsonObject o) {
 ShaderSettings read_shaders(JsonObject o, const JsonSource& source, const std::filesystem::path& base_dir) {
   ShaderSettings s;
   const std::string program = o.string("program");
+  o.describe("program", "one of builtin, twins, custom");
   if (program == "builtin") s.program = ShaderProgram::Builtin;
   else if (program == "twins") s.program = ShaderProgram::Twins;
   else if (program == "custom") s.program = ShaderProgram::Custom;
   else o.fail("program", "expected one of builtin, twins, custom, got \"" + program + "\"");
   auto path = [&](const char* key) -> std::filesystem::path {
+    o.describe(key, "a GLSL file relative to the scene file, or \"twin:NAME\"");
     if (!o.has(key)) return {};
     const std::string s = o.string(key);
     if (s.rfind("twin:", 0) == 0) return s;  // a built-in program's GLSL twin (stages/glsl/twins.h)
@@ -194,6 +202,7 @@ ShaderSettings read_shaders(JsonObject o, const JsonSource& source, const std::f
     for (const char* key : {"vertex", "fragment"})
       if (path(key).empty())
         o.fail(key, "required when shaders.program is \"custom\" (a GLSL file relative to the scene file)");
+  o.describe("uniforms", "an object of uniform name: number, boolean or array");
   const nlohmann::json& uniforms = o.value("uniforms");
   if (!uniforms.is_object()) o.fail("uniforms", "expected an object of name: value, got " + describe_json(uniforms));
   for (const auto& [name, value] : uniforms.items()) {
@@ -220,6 +229,7 @@ ShaderSettings read_shaders(JsonObject o, const JsonSource& source, const std::f
     if (u.values.empty()) o.fail("uniforms." + name, "has no value");
     s.uniforms.push_back(std::move(u));
   }
+  o.describe("attributes", "an object of vertex input name: \"position\" or \"normal\"");
   const nlohmann::json& attributes = o.value("attributes");
   if (!attributes.is_object()) o.fail("attributes", "expected an object of input name: attribute, got " + describe_json(attributes));
   for (const auto& [name, value] : attributes.items()) {
@@ -227,6 +237,7 @@ ShaderSettings read_shaders(JsonObject o, const JsonSource& source, const std::f
       o.fail("attributes." + name, "expected \"position\" or \"normal\", got " + describe_json(value));
     s.attributes.push_back({name, value.get<std::string>()});
   }
+  o.describe("textures", "an object of sampler name: image file or {path, filter, wrap}");
   if (o.has("textures")) {
     const nlohmann::json& textures = o.value("textures");
     if (!textures.is_object())
@@ -271,6 +282,7 @@ Scene scene_from_json(const json& root_json, const JsonSource& source,
   Scene s;
   s.source = source.name;
   if (root.has("description")) root.string("description");
+  root.describe("description", "a string (ignored)");
   s.mesh = read_mesh(root.object("mesh"), mesh_base_dir);
   s.transform = read_transform(root.object("transform"));
   s.camera = read_camera(root.object("camera"));

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include <gmock/gmock.h>
+#include <nlohmann/json.hpp>
 #include <gtest/gtest.h>
 
 #include "pipeline/image_output.h"
@@ -299,6 +300,76 @@ TEST_F(Cli, ImageFormatsAgreeWithWhatTheBuildWrites) {
     EXPECT_THAT(r.output, HasSubstr("cannot write color images as .pfm"));
   }
   EXPECT_TRUE(files_in(dir.path()).empty()) << ::testing::PrintToString(files_in(dir.path()));
+}
+
+// Issue 11, defect 11: what a new user looks for.
+TEST_F(Cli, VersionAndHelp) {
+  CliRun r = run("--version");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.output, "tessref 0.1.0\n");
+  r = run("render --help");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_THAT(r.output, HasSubstr("Image formats this build writes (-o): " + writable_image_extensions(ImageKind::Color)));
+  EXPECT_THAT(r.output, HasSubstr("  depth (--depth): " + writable_image_extensions(ImageKind::Depth)));
+  // The keys as the loader reads them, with what they allow and their defaults.
+  auto key_line = [&](const std::string& key) {
+    const std::size_t at = r.output.find("\n  " + key + " ");
+    if (at == std::string::npos) return std::string("(missing)");
+    const std::size_t end = r.output.find('\n', at + 1);
+    const std::string line = r.output.substr(at + 3 + key.size(), end - at - 3 - key.size());
+    return line.substr(line.find_first_not_of(' '));
+  };
+  EXPECT_EQ(key_line("camera.fit"), "true or false; default false");
+  EXPECT_EQ(key_line("tessellation.spacing"), "one of equal, fractional_odd, fractional_even; default \"fractional_odd\"");
+  EXPECT_EQ(key_line("lights[].position"), "[x, y, z]; default [-2.0,5.0,-10.0]");
+  EXPECT_EQ(key_line("camera.far"), "a number greater than camera.near; default 50.0");
+  EXPECT_EQ(run("scene --keys").output.substr(0, 12), "Scene keys (");
+}
+
+TEST_F(Cli, ScenePrintsTheMergedCheckedScene) {
+  CliRun r = run("scene " + std::string(TESSREF_SOURCE_DIR) + "/scenes/spider.json --set material.ka=0.25");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json j = nlohmann::json::parse(r.output);
+  EXPECT_EQ(j["material"]["ka"], 0.25);                       // --set
+  EXPECT_EQ(j["camera"]["fov_y_deg"], 11.0);                  // the file
+  EXPECT_EQ(j["material"]["shininess"], 150.0);               // the default scene
+  EXPECT_EQ(j["mesh"]["path"], "/usr/share/assimp/models/OBJ/spider.obj");
+  // The printed scene reads back as the same scene.
+  TempDir dir;
+  const CliRun again = run("scene " + dir.write("s.json", r.output).string());
+  EXPECT_EQ(nlohmann::json::parse(again.output), j);
+  r = run("scene --set camera.near=60");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.output, HasSubstr("camera.far: must be greater than camera.near (60)"));
+}
+
+TEST_F(Cli, DiffComparesTwoImages) {
+  TempDir dir;
+  const std::string d = dir.path().string(), small = " --set image.width=48 --set image.height=32";
+  ASSERT_EQ(run("render -o " + d + "/a.png" + small).exit_code, 0);
+  ASSERT_EQ(run("render -o " + d + "/b.png --set material.ka=0.41" + small).exit_code, 0);
+  ASSERT_EQ(run("render -o " + d + "/big.png").exit_code, 0);
+  CliRun r = run("diff " + d + "/a.png " + d + "/a.png");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("(48x32, 3 channels): 0 pixels (0%) differ by more than the tolerance 0"));
+  r = run("diff " + d + "/a.png " + d + "/b.png --diff " + d + "/d.png");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("largest difference 0.0117648 (3.0/255)"));
+  EXPECT_EQ(read_rgb8_image(d + "/d.png").width, 48);
+  r = run("diff " + d + "/a.png " + d + "/b.png --tolerance 3/255 --json");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json j = nlohmann::json::parse(r.output);
+  EXPECT_EQ(j["pixels_above_tolerance"], 0);
+  EXPECT_GT(j["pixels_above_1_255"].get<int>(), 0);
+  EXPECT_NEAR(j["max_difference"].get<double>(), 3.0 / 255.0, 1e-6);
+  r = run("diff " + d + "/a.png " + d + "/big.png");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.output, HasSubstr("a.png is 48x32, " + d + "/big.png is 1024x1024: nothing to compare"));
+  r = run("diff " + d + "/a.png " + d + "/none.png");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.output, HasSubstr("none.png: cannot read image"));
+  r = run("diff " + d + "/a.png " + d + "/b.png --tolerance -1");
+  EXPECT_THAT(r.output, HasSubstr("--tolerance: expected a number >= 0 or N/255, got '-1'"));
 }
 
 // Issue 11, defect 11: the summary names the scene as drawn (with the keys --set changed) and

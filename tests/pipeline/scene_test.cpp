@@ -1,5 +1,7 @@
 // Scene files: the default scene, every error case, --set overrides.
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -311,6 +313,36 @@ TEST(Scene, OverrideErrors) {
   EXPECT_EQ(scene_error("{}", {"camera.eye=up"}),
             "scenes/x.json: camera.eye: expected an array of 3 numbers, got a string (\"up\") "
             "(from --set camera.eye)");
+}
+
+// The key list that --help prints comes from the loader's own reads: every key of the default
+// scene is in it, each with what it allows, and README's table names every one.
+TEST(Scene, KeyListCoversTheDefaultSceneAndTheReadme) {
+  const std::vector<SchemaKey> keys = scene_keys();
+  ASSERT_GT(keys.size(), 40u);
+  const std::string readme = test::read_file(kSource + "/README.md");
+  for (const SchemaKey& k : keys) {
+    SCOPED_TRACE(k.path);
+    EXPECT_FALSE(k.allowed.empty());
+    const std::string last = k.path.substr(k.path.rfind('.') + 1);
+    const std::string short_path = k.path.find("[]") == std::string::npos ? k.path : "lights";
+    EXPECT_TRUE(readme.find("`" + short_path + "`") != std::string::npos ||
+                readme.find("`" + last + "`") != std::string::npos)
+        << "README.md's scene key table does not name " << k.path;
+    if (!k.optional) EXPECT_FALSE(scene_key_default(k.path).empty());
+  }
+  // Every leaf of the default scene is a key the loader reads.
+  std::function<void(const nlohmann::json&, const std::string&)> leaves = [&](const nlohmann::json& j,
+                                                                              const std::string& path) {
+    if (j.is_object() && !j.empty() && path != "shaders.attributes" && path != "shaders.uniforms") {
+      for (const auto& [key, value] : j.items()) leaves(value, path.empty() ? key : path + "." + key);
+      return;
+    }
+    std::string p = path;
+    if (p.rfind("lights", 0) == 0) return;  // an array: lights[].position, lights[].intensity
+    EXPECT_TRUE(std::any_of(keys.begin(), keys.end(), [&](const SchemaKey& k) { return k.path == p; })) << p;
+  };
+  leaves(nlohmann::json::parse(default_scene_json()), "");
 }
 
 TEST(Scene, MeshPathsResolve) {
