@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <charconv>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -29,6 +30,7 @@ struct RenderOptions {
   std::string output = "tessref.png";
   std::string depth, normals, dump_tess;
   int threads = 0;
+  std::uint64_t max_dump_bytes = 0;  // 0: the free space of the dump's file system
   int repeat = 1;              // frames rendered; the image is the last one's
   bool report_repeat = false;  // --repeat given: print per-stage medians over the frames
   std::vector<std::string> sets;
@@ -147,6 +149,35 @@ void warn_nothing_drawn(const DrawStats& s) {
                static_cast<unsigned long long>(s.tess.patches_discarded));
 }
 
+std::string gigabytes(std::uint64_t bytes) {
+  char buf[64];
+  const double b = double(bytes);
+  const unsigned long long n = bytes;
+  if (b >= 1e9) std::snprintf(buf, sizeof buf, "%.1f GB (%llu bytes)", b / 1e9, n);
+  else if (b >= 1e6) std::snprintf(buf, sizeof buf, "%.1f MB (%llu bytes)", b / 1e6, n);
+  else std::snprintf(buf, sizeof buf, "%llu bytes", n);
+  return buf;
+}
+
+// How large --dump-tess may grow: --max-dump-bytes, and never more than the free space where it
+// goes (less 64 MiB for the images written beside it). `why` says which bound it is.
+std::uint64_t dump_limit(const RenderOptions& o, std::string& why) {
+  std::error_code ec;
+  const std::filesystem::path folder = std::filesystem::absolute(o.dump_tess).parent_path();
+  const std::filesystem::space_info space = std::filesystem::space(folder, ec);
+  std::uint64_t limit = UINT64_MAX;
+  if (!ec) {
+    const std::uint64_t margin = 64ull << 20;
+    limit = space.available > margin ? space.available - margin : 0;
+    why = "the " + gigabytes(limit) + " free in " + folder.string() + " (less 64 MiB for the images)";
+  }
+  if (o.max_dump_bytes != 0 && o.max_dump_bytes < limit) {
+    limit = o.max_dump_bytes;
+    why = "--max-dump-bytes " + std::to_string(o.max_dump_bytes);
+  }
+  return limit;
+}
+
 void run_render(const RenderOptions& o) {
   Scene scene = load_scene(o.scene, o.sets);
   // Every output checked before any work: its folder, its format, and no two on one file. All
@@ -174,10 +205,23 @@ void run_render(const RenderOptions& o) {
 
   const Parallel parallel(o.threads);
   std::unique_ptr<TessDumpWriter> dump;
+  std::uint64_t dump_bytes_allowed = 0;
+  std::string dump_bound;
   if (!o.dump_tess.empty()) {
     if (!scene.tessellation.enabled)
       throw InputError("--dump-tess: the scene does not tessellate (tessellation.enabled is false)");
     write_as(dump_tmp, o.dump_tess, [&] { dump = std::make_unique<TessDumpWriter>(dump_tmp.string()); });
+    dump_bytes_allowed = dump_limit(o, dump_bound);
+    // Refused before drawing when the size is known up front (fixed levels, built-in programs).
+    if (const auto invocations = predicted_tes_invocations(scene, mesh)) {
+      const std::uint64_t estimate = TessDumpWriter::estimated_bytes(*invocations, dump->text());
+      if (estimate > dump_bytes_allowed)
+        throw InputError(o.dump_tess + ": --dump-tess would write " + (dump->text() ? "about " : "") +
+                         gigabytes(estimate) + " (" + std::to_string(*invocations) +
+                         " tessellated vertices), more than " + dump_bound +
+                         "; lower the levels or dump to another place" +
+                         (o.max_dump_bytes == dump_bytes_allowed ? ", or raise --max-dump-bytes" : ""));
+    }
   }
   // --repeat: every frame renders the same scene again into the same framebuffer memory (as a GL
   // application redraws into its framebuffer); the first also feeds --dump-tess (the records are
@@ -191,7 +235,14 @@ void run_render(const RenderOptions& o) {
       DrawOptions options;
       options.progress = [&](double f) { bar.update((i + f) / o.repeat); };
       if (dump && i == 0)
-        options.dump_tess = [&](const std::vector<TessDumpRecord>& r) { dump->write(r); };
+        options.dump_tess = [&](const std::vector<TessDumpRecord>& r) {
+          dump->write(r);
+          // Levels chosen per patch (adaptive, control shaders) are only known while drawing.
+          if (dump->bytes_written() > dump_bytes_allowed)
+            throw InputError(o.dump_tess + ": --dump-tess stopped after " + gigabytes(dump->bytes_written()) +
+                             " (" + std::to_string(dump->records_written()) + " tessellated vertices), more than " +
+                             dump_bound + "; nothing was written");
+        };
       const auto t0 = Clock::now();
       result.stats = render_scene(scene, mesh, parallel, result.framebuffer, options);
       frame.seconds.push_back(seconds_since(t0));
@@ -269,6 +320,10 @@ void add_render_command(CLI::App& app) {
       ->check(CLI::Validator(check_repeat, ""))
       ->type_name("N")
       ->capture_default_str();
+  cmd->add_option("--max-dump-bytes", opts->max_dump_bytes,
+                  "refuse a --dump-tess larger than this (default: the free space where it goes)")
+      ->check(kInteger)
+      ->check(CLI::Range(std::uint64_t(1), UINT64_MAX));
   cmd->add_option("--depth", opts->depth, "also write window-space depth (.exr)");
   cmd->add_option("--normals", opts->normals, "also write world normals (.exr)");
   cmd->add_option("--dump-tess", opts->dump_tess,

@@ -55,4 +55,12 @@ DrawStats render_scene(const Scene& scene, const Mesh& mesh, const Parallel& par
   return draw_mesh(mesh, vs, scene.tessellation, state, fs, fb, parallel, options);
 }
 
+std::optional<std::uint64_t> predicted_tes_invocations(const Scene& scene, const Mesh& mesh) {
+  const TessellationSettings& t = scene.tessellation;
+  if (!t.enabled || t.adaptive.enabled || scene.shaders.program != ShaderProgram::Builtin) return std::nullopt;
+  const TessLayout layout{TessDomain::Triangles, t.spacing, t.winding, false};
+  const TessDomainPoints points = generate_tessellation(layout, t.levels);
+  return std::uint64_t(mesh.triangle_count()) * (points.discarded ? 0 : points.coords.size());
+}
+
 }  // namespace tessref

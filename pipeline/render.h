@@ -1,5 +1,8 @@
 #pragma once
 // One scene, one image: the scene's programs and matrices set up around the draw call.
+#include <cstdint>
+#include <optional>
+
 #include "common/parallel.h"
 #include "pipeline/draw.h"
 #include "pipeline/mesh.h"
@@ -19,5 +22,10 @@ RenderResult render_scene(const Scene& scene, const Mesh& mesh, const Parallel& 
 // frames: --repeat, benchmarks). The bytes of fb are those render_scene would return.
 DrawStats render_scene(const Scene& scene, const Mesh& mesh, const Parallel& parallel,
                        Framebuffer& fb, const DrawOptions& options = {});
+
+// The number of TES invocations the draw will run, where it is known before drawing: built-in
+// programs with the scene's fixed levels (every patch then has the same domain). Empty for
+// adaptive levels and GLSL programs, whose control shaders decide per patch.
+std::optional<std::uint64_t> predicted_tes_invocations(const Scene& scene, const Mesh& mesh);
 
 }  // namespace tessref

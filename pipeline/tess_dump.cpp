@@ -11,6 +11,8 @@ namespace {
 
 static_assert(std::endian::native == std::endian::little, "the dump format is little-endian");
 
+constexpr std::uint64_t kBinaryHeaderBytes = 16, kBinaryRecordBytes = 40, kTextRecordBytes = 100;
+
 bool ends_with(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
@@ -21,12 +23,15 @@ TessDumpWriter::TessDumpWriter(const std::string& path)
     : path_(path), text_(ends_with(path, ".txt")), file_(std::fopen(path.c_str(), "wb"), &std::fclose) {
   if (!file_) throw InputError(path + ": cannot create the tessellation dump: " + std::strerror(errno));
   if (text_) {
-    std::fputs("# tessref tess dump v1: patch_id u v w px py pz nx ny nz\n", file_.get());
+    static const char kHeader[] = "# tessref tess dump v1: patch_id u v w px py pz nx ny nz\n";
+    std::fputs(kHeader, file_.get());
+    bytes_ = sizeof kHeader - 1;
   } else {
     const std::uint32_t version = 1, record_size = 40;
     std::fwrite("TESSDUMP", 1, 8, file_.get());
     std::fwrite(&version, 4, 1, file_.get());
     std::fwrite(&record_size, 4, 1, file_.get());
+    bytes_ = kBinaryHeaderBytes;
   }
 }
 
@@ -34,10 +39,10 @@ void TessDumpWriter::write(const std::vector<TessDumpRecord>& records) {
   std::FILE* f = file_.get();
   for (const TessDumpRecord& r : records) {
     if (text_) {
-      std::fprintf(f, "%u %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g\n", r.patch_id,
+      bytes_ += std::uint64_t(std::fprintf(f, "%u %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g\n", r.patch_id,
                    double(r.tess_coord.x), double(r.tess_coord.y), double(r.tess_coord.z),
                    double(r.position.x), double(r.position.y), double(r.position.z),
-                   double(r.normal.x), double(r.normal.y), double(r.normal.z));
+                   double(r.normal.x), double(r.normal.y), double(r.normal.z)));
       continue;
     }
     unsigned char rec[40];
@@ -46,8 +51,13 @@ void TessDumpWriter::write(const std::vector<TessDumpRecord>& records) {
     std::memcpy(rec + 16, &r.position, 12);
     std::memcpy(rec + 28, &r.normal, 12);
     std::fwrite(rec, 1, sizeof rec, f);
+    bytes_ += sizeof rec;
   }
   count_ += records.size();
+}
+
+std::uint64_t TessDumpWriter::estimated_bytes(std::uint64_t records, bool text) {
+  return text ? 56 + records * kTextRecordBytes : kBinaryHeaderBytes + records * kBinaryRecordBytes;
 }
 
 void TessDumpWriter::close() {

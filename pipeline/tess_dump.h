@@ -8,6 +8,7 @@
 //                           float32 normal[3]   (position and normal in world space)
 // Text format (*.txt): a '#' header line naming the columns, then one record per line,
 //   "patch_id u v w px py pz nx ny nz", floats printed with %.9g (they round-trip exactly).
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -25,12 +26,20 @@ class TessDumpWriter {
   // Flushes and closes; throws InputError on a write error (disk full).
   void close();
   std::size_t records_written() const { return count_; }
+  std::uint64_t bytes_written() const { return bytes_; }  // header included
+  bool text() const { return text_; }
+
+  // The size of a dump of `records` records: exact for binary files; for text, an estimate from
+  // an average line (the default scene's lines average 111 bytes; 100 is used, so that an
+  // estimate refuses no dump that would fit).
+  static std::uint64_t estimated_bytes(std::uint64_t records, bool text);
 
  private:
   std::string path_;
   bool text_ = false;
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> file_{nullptr, &std::fclose};
   std::size_t count_ = 0;
+  std::uint64_t bytes_ = 0;
 };
 
 }  // namespace tessref

@@ -302,6 +302,37 @@ TEST_F(Cli, ImageFormatsAgreeWithWhatTheBuildWrites) {
   EXPECT_TRUE(files_in(dir.path()).empty()) << ::testing::PrintToString(files_in(dir.path()));
 }
 
+// Issue 11, defect 4: a dump's size is estimated before drawing where the levels are fixed, and
+// checked while drawing where control shaders or adaptive levels choose them; either way a dump
+// over --max-dump-bytes (or the free space) is refused with its size and leaves no file.
+TEST_F(Cli, DumpSizeIsBoundedAndEstimated) {
+  TempDir dir;
+  const std::string d = dir.path().string(), small = " --set image.width=32 --set image.height=32";
+  // The estimate is exact for binary dumps: 37632 records of 40 bytes and a 16-byte header.
+  CliRun r = run("render -o " + d + "/x.png --dump-tess " + d + "/t.bin --max-dump-bytes 1505296" + small);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(std::filesystem::file_size(d + "/t.bin"), 1505296u);
+  std::filesystem::remove_all(dir.path());
+  std::filesystem::create_directories(dir.path());
+  r = run("render -o " + d + "/x.png --dump-tess " + d + "/t.bin --max-dump-bytes 1505295" + small);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.output, HasSubstr("t.bin: --dump-tess would write 1.5 MB (1505296 bytes) (37632 tessellated "
+                                  "vertices), more than --max-dump-bytes 1505295"));
+  // Adaptive levels: known only while drawing.
+  r = run("render -o " + d + "/x.png --dump-tess " + d + "/t.txt --max-dump-bytes 100000 "
+          "--set tessellation.adaptive.enabled=true --set tessellation.adaptive.pixels_per_segment=2");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.output, HasSubstr("t.txt: --dump-tess stopped after "));
+  EXPECT_THAT(r.output, HasSubstr("more than --max-dump-bytes 100000; nothing was written"));
+  // Far more than any disk: refused up front against the free space.
+  r = run("render -o " + d + "/x.png --dump-tess " + d + "/t.bin --set tessellation.inner=64 "
+          "--set tessellation.outer=64 --set mesh.torus.major_segments=4096 --set mesh.torus.minor_segments=4096");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.output, HasSubstr("--dump-tess would write 4123.2 GB (4123168604176 bytes)"));
+  EXPECT_THAT(r.output, HasSubstr(" free in "));
+  EXPECT_TRUE(files_in(dir.path()).empty()) << ::testing::PrintToString(files_in(dir.path()));
+}
+
 // Issue 11, defect 11: what a new user looks for.
 TEST_F(Cli, VersionAndHelp) {
   CliRun r = run("--version");
