@@ -120,10 +120,19 @@ OutputFiles::~OutputFiles() {
   }
 }
 
-fs::path OutputFiles::add(const std::string& option, const fs::path& target) {
-  const std::string name = target.string();
-  if (target.filename().empty() || target.filename() == "." || target.filename() == "..")
+fs::path OutputFiles::add(const std::string& option, const fs::path& given) {
+  const std::string name = given.string();
+  if (given.filename().empty() || given.filename() == "." || given.filename() == "..")
     throw InputError(name + ": " + option + " needs a file name, not a folder");
+  // A link is followed: the file it names is replaced (the link stays), written whole beside it.
+  std::error_code link_ec;
+  fs::path target = given;
+  if (fs::is_symlink(fs::symlink_status(given, link_ec))) target = fs::weakly_canonical(fs::absolute(given), link_ec);
+  const fs::file_status existing = fs::status(target, link_ec);
+  if (fs::exists(existing) && !fs::is_regular_file(existing) && !fs::is_directory(existing))
+    throw InputError(name + ": " + option + ": " + target.string() +
+                     " is not a regular file (a device, pipe or socket): outputs are written whole to a "
+                     "temporary file and renamed into place, which such a file cannot take");
   const fs::path folder = folder_of(target);
   std::error_code ec;
   const fs::file_status st = fs::status(folder, ec);
@@ -141,15 +150,15 @@ fs::path OutputFiles::add(const std::string& option, const fs::path& target) {
     if (e.identity == identity)
       throw InputError(name + ": " + option + " and " + e.option +
                        " name the same file; one would overwrite the other");
-  // Same folder and extension (the image writer picks the format by extension), hidden, and
-  // unique to this process.
+  // Same folder as the file replaced, the extension of the name given (the image writer picks
+  // the format by extension), hidden, and unique to this process.
   std::string temp_name = ".";
   temp_name += target.stem().string();
   temp_name += ".tessref-";
   temp_name += std::to_string(getpid());
   temp_name += '-';
   temp_name += std::to_string(entries_.size());
-  temp_name += target.extension().string();
+  temp_name += given.extension().string();
   const fs::path temp = folder / temp_name;
   entries_.push_back(Entry{option, target, temp, identity});
   track(temp, target);

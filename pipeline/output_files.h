@@ -16,9 +16,11 @@ class OutputFiles {
   OutputFiles& operator=(const OutputFiles&) = delete;
   ~OutputFiles();  // removes the temporaries of a set that was not committed
 
-  // Registers an output; `option` names it in messages ("-o", "--depth"). InputError when its
-  // folder does not exist, is not a folder or is not writable, or when an earlier output names the
-  // same file. Returns the temporary path to write to (same folder and extension as the target).
+  // Registers an output; `option` names it in messages ("-o", "--depth"). A symbolic link is
+  // followed (the file it names is replaced, the link stays). InputError when the folder does not
+  // exist, is not a folder or is not writable, when the file is a device, pipe or socket (such as
+  // a link to /dev/full), or when an earlier output names the same file. Returns the temporary
+  // path to write to (the file's folder, the given name's extension).
   std::filesystem::path add(const std::string& option, const std::filesystem::path& target);
 
   // Renames every temporary onto its target, in the order added. InputError if one fails (the

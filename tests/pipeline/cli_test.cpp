@@ -302,6 +302,25 @@ TEST_F(Cli, ImageFormatsAgreeWithWhatTheBuildWrites) {
   EXPECT_TRUE(files_in(dir.path()).empty()) << ::testing::PrintToString(files_in(dir.path()));
 }
 
+// Issue 11, defect 1: a link to a device cannot take a whole-file write and is refused before any
+// work; a link to a file is followed, replacing the file and keeping the link.
+TEST_F(Cli, OutputLinks) {
+  TempDir dir;
+  const std::filesystem::path full = dir.path() / "full.png", link = dir.path() / "link.png",
+                              real = dir.path() / "real.png";
+  std::filesystem::create_symlink("/dev/full", full);
+  CliRun r = run("render -o " + full.string() + " --set image.width=16 --set image.height=16");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.output, HasSubstr(full.string() + ": -o: /dev/full is not a regular file (a device, pipe or socket)"));
+  EXPECT_TRUE(std::filesystem::is_symlink(full));
+  std::ofstream(real) << "old";
+  std::filesystem::create_symlink(real, link);
+  r = run("render -o " + link.string() + " --set image.width=16 --set image.height=16");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(std::filesystem::is_symlink(link));
+  EXPECT_EQ(read_rgb8_image(real).width, 16);
+}
+
 // Issue 11, defect 4: a dump's size is estimated before drawing where the levels are fixed, and
 // checked while drawing where control shaders or adaptive levels choose them; either way a dump
 // over --max-dump-bytes (or the free space) is refused with its size and leaves no file.
