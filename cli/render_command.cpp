@@ -322,8 +322,16 @@ void add_render_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--max-dump-bytes", opts->max_dump_bytes,
                   "refuse a --dump-tess larger than this (default: the free space where it goes)")
-      ->check(kInteger)
-      ->check(CLI::Range(std::uint64_t(1), UINT64_MAX));
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            std::uint64_t n = 0;
+            const char* end = text.data() + text.size();
+            const auto [ptr, ec] = std::from_chars(text.data(), end, n);
+            return ec == std::errc() && ptr == end && n >= 1 ? std::string()
+                                                              : "expected a number of bytes >= 1, got '" + text + "'";
+          },
+          ""))
+      ->type_name("BYTES");
   cmd->add_option("--depth", opts->depth, "also write window-space depth (.exr)");
   cmd->add_option("--normals", opts->normals, "also write world normals (.exr)");
   cmd->add_option("--dump-tess", opts->dump_tess,

@@ -42,19 +42,25 @@ float corner_angle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
 
 std::vector<glm::vec3> face_weighted_normals(const std::vector<glm::vec3>& positions,
                                              const std::vector<std::uint32_t>& indices) {
-  std::vector<glm::vec3> sum(positions.size(), glm::vec3(0.0f));
+  // Angle-weighted sums, and area-weighted ones for the vertices whose every corner angle rounds
+  // to zero (the sharp tip of a needle triangle), which would otherwise get no normal at all.
+  std::vector<glm::vec3> sum(positions.size(), glm::vec3(0.0f)), by_area(positions.size(), glm::vec3(0.0f));
   for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
     std::uint32_t i[3] = {indices[t], indices[t + 1], indices[t + 2]};
     if (i[0] >= positions.size() || i[1] >= positions.size() || i[2] >= positions.size()) continue;
     const glm::vec3 &a = positions[i[0]], &b = positions[i[1]], &c = positions[i[2]];
-    glm::vec3 n = face_normal(a, b, c);
-    if (!usable_normal(n)) continue;
-    n = glm::normalize(n);
+    const glm::vec3 area = face_normal(a, b, c);
+    if (!usable_normal(area)) continue;
+    const glm::vec3 n = glm::normalize(area);
     sum[i[0]] += corner_angle(a, b, c) * n;
     sum[i[1]] += corner_angle(b, c, a) * n;
     sum[i[2]] += corner_angle(c, a, b) * n;
+    for (std::uint32_t k : i) by_area[k] += area;
   }
-  for (glm::vec3& n : sum) n = usable_normal(n) ? glm::normalize(n) : glm::vec3(0.0f);
+  for (std::size_t v = 0; v < sum.size(); ++v) {
+    const glm::vec3 n = usable_normal(sum[v]) ? sum[v] : by_area[v];
+    sum[v] = usable_normal(n) ? glm::normalize(n) : glm::vec3(0.0f);
+  }
   return sum;
 }
 

@@ -32,8 +32,9 @@ struct MeshRepairs {
 //     non-finite normals are recomputed from the faces, all normals are normalized.
 MeshRepairs validate_mesh(Mesh& mesh, const std::string& source);
 
-// Angle-weighted average of the unit face normals around each vertex (zero where no
-// non-degenerate face touches the vertex). Summed in triangle order: deterministic.
+// Angle-weighted average of the unit face normals around each vertex; where every angle at a
+// vertex rounds to zero (a needle's tip), the area-weighted average; zero where no
+// non-degenerate face touches the vertex. Summed in triangle order: deterministic.
 std::vector<glm::vec3> face_weighted_normals(const std::vector<glm::vec3>& positions,
                                              const std::vector<std::uint32_t>& indices);
 

@@ -2,6 +2,8 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstring>
+#include <unordered_map>
 #include <exception>
 #include <fstream>
 #include <sstream>
@@ -22,8 +24,8 @@ struct Soup {
   std::vector<glm::vec3> positions, normals;
   std::vector<std::uint32_t> indices;
   std::size_t skipped_faces = 0;
-  std::size_t bad_normals = 0;  // stored normals that are zero, NaN or infinite
-  bool has_normals = false;     // some mesh stored normals
+  std::vector<bool> stored;  // per vertex: the file gave its normal
+  bool has_normals = false;  // some mesh stored normals
 };
 
 // Stored normals that point into the surface on most faces (a mesh with its faces wound
@@ -38,6 +40,53 @@ std::size_t faces_against_normals(const Mesh& m) {
     if (glm::dot(face, m.normals[i[0]] + m.normals[i[1]] + m.normals[i[2]]) < 0.0f) ++against;
   }
   return against;
+}
+
+// Vertices with bit-identical position and normal become one, so that a corner repeated by every
+// face that uses it counts once when welding averages the normals at a position.
+void join_exact_duplicates(Soup& soup) {
+  struct Key {
+    glm::vec3 p, n;
+    bool operator==(const Key& o) const { return std::memcmp(this, &o, sizeof(Key)) == 0; }
+  };
+  struct Hash {
+    std::size_t operator()(const Key& k) const {
+      std::uint32_t w[6];
+      std::memcpy(w, &k, sizeof w);
+      std::size_t h = 1469598103934665603ull;
+      for (std::uint32_t x : w) h = (h ^ x) * 1099511628211ull;
+      return h;
+    }
+  };
+  static_assert(sizeof(Key) == 6 * sizeof(float));
+  std::unordered_map<Key, std::uint32_t, Hash> first;
+  std::vector<std::uint32_t> remap(soup.positions.size());
+  Soup joined;
+  for (std::size_t v = 0; v < soup.positions.size(); ++v) {
+    const auto [it, inserted] = first.try_emplace(Key{soup.positions[v], soup.normals[v]},
+                                                  static_cast<std::uint32_t>(joined.positions.size()));
+    if (inserted) {
+      joined.positions.push_back(soup.positions[v]);
+      joined.normals.push_back(soup.normals[v]);
+      joined.stored.push_back(soup.stored[v]);
+    }
+    remap[v] = it->second;
+  }
+  for (std::uint32_t& i : soup.indices) i = remap[i];
+  soup.positions = std::move(joined.positions);
+  soup.normals = std::move(joined.normals);
+  soup.stored = std::move(joined.stored);
+}
+
+// Stored normals that welding must replace (from their twins at the position, else the faces).
+std::size_t bad_stored_normals(const Soup& soup) {
+  std::size_t bad = 0;
+  for (std::size_t v = 0; v < soup.normals.size(); ++v) {
+    const glm::vec3& n = soup.normals[v];
+    if (soup.stored[v] && !(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z) && glm::dot(n, n) > 0.0f))
+      ++bad;
+  }
+  return bad;
 }
 
 glm::mat4 to_glm(const aiMatrix4x4& m) {
@@ -55,13 +104,11 @@ void append_mesh(const aiMesh& mesh, const glm::mat4& transform, Soup& soup,
     soup.positions.push_back(glm::vec3(transform * glm::vec4(p.x, p.y, p.z, 1.0f)));
     if (mesh.HasNormals()) {
       const aiVector3D& n = mesh.mNormals[v];
-      const glm::vec3 stored(n.x, n.y, n.z);
       soup.has_normals = true;
-      if (!std::isfinite(stored.x) || !std::isfinite(stored.y) || !std::isfinite(stored.z) ||
-          glm::dot(stored, stored) == 0.0f)
-        ++soup.bad_normals;  // welding replaces it (from its twins, else the faces)
-      soup.normals.push_back(normal_matrix * stored);
+      soup.stored.push_back(true);
+      soup.normals.push_back(normal_matrix * glm::vec3(n.x, n.y, n.z));
     } else {
+      soup.stored.push_back(false);
       soup.normals.push_back(glm::vec3(0.0f));  // welding fills it in from the faces
     }
   }
@@ -148,6 +195,19 @@ void check_declared_counts(const std::filesystem::path& path, std::uintmax_t fil
                        " bytes can hold");
 }
 
+// assimp 5.2.5's PLY reader never returns from a header without an end_header line (a file cut
+// short in its header, found by fuzz_mesh), so such a file is refused before assimp sees it.
+bool ply_header_ends(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  for (std::string line; std::getline(in, line);) {
+    const std::size_t k = line.find_first_not_of(" \t");
+    if (k != std::string::npos && line.compare(k, 10, "end_header") == 0 &&
+        (line.size() == k + 10 || std::isspace(static_cast<unsigned char>(line[k + 10]))))
+      return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 Mesh load_mesh_file(const std::filesystem::path& path, std::vector<std::string>& warnings) {
@@ -160,11 +220,15 @@ Mesh load_mesh_file(const std::filesystem::path& path, std::vector<std::string>&
   if (ec) fail("cannot read: " + ec.message());
   if (file_size == 0) fail("the file is empty");
   check_declared_counts(path, file_size);
+  if (lower(path.extension().string()) == ".ply" && !ply_header_ends(path))
+    fail("the PLY header has no end_header line (is the file cut short?)");
 
   Assimp::Importer importer;
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                         aiProcess_SortByPType | aiProcess_ValidateDataStructure;
+  // No aiProcess_JoinIdenticalVertices: it merges a vertex with a NaN coordinate into another one
+  // (its comparisons are false), moving the triangle silently; join_exact_duplicates does its
+  // job after the coordinates have been checked.
+  const unsigned flags = aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure;
   const aiScene* scene = nullptr;
   try {
     scene = importer.ReadFile(name, flags);
@@ -185,6 +249,13 @@ Mesh load_mesh_file(const std::filesystem::path& path, std::vector<std::string>&
                        " point and line primitives");
 
   if (soup.indices.empty()) fail("the mesh is empty (no triangles)");
+  for (std::size_t v = 0; v < soup.positions.size(); ++v) {
+    const glm::vec3& p = soup.positions[v];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      fail("vertex " + std::to_string(v) + " (in file order) has a NaN or infinite coordinate");
+  }
+  join_exact_duplicates(soup);
+  const std::size_t bad_normals = bad_stored_normals(soup);
   Mesh mesh = weld_by_position(soup.positions, soup.normals, soup.indices);
   MeshRepairs repairs = validate_mesh(mesh, name);
   if (repairs.degenerate_triangles_dropped)
@@ -193,8 +264,8 @@ Mesh load_mesh_file(const std::filesystem::path& path, std::vector<std::string>&
   if (repairs.normals_recomputed)
     warnings.push_back(name + ": recomputed " + std::to_string(repairs.normals_recomputed) +
                        " zero-length normals from the faces");
-  if (soup.bad_normals)
-    warnings.push_back(name + ": " + std::to_string(soup.bad_normals) +
+  if (bad_normals)
+    warnings.push_back(name + ": " + std::to_string(bad_normals) +
                        " stored normals are zero, NaN or infinite; replaced by the normals of "
                        "their welded twins or of the faces around them");
   if (soup.has_normals) {

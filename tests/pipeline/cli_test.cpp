@@ -445,8 +445,39 @@ TEST_F(Cli, NothingDrawnIsAWarning) {
                                   "64768 lie outside the view volume"));
   r = run("render --set tessellation.outer=0" + out);
   EXPECT_THAT(r.output, HasSubstr("256 patches were discarded by their levels"));
+  // From inside a sphere every face is seen from behind.
+  r = run("render --set mesh.type=icosphere --set camera.eye=0,0,0.01 --set camera.target=0,0,1 "
+          "--set camera.near=0.001" + out);
+  EXPECT_THAT(r.output, ::testing::ContainsRegex("outside the view volume, [1-9][0-9]* were culled \\(back-facing"));
   r = run("render" + out);
   EXPECT_THAT(r.output, ::testing::Not(HasSubstr("warning")));
+}
+
+TEST_F(Cli, CameraFitFromTheCommandLine) {
+  TempDir dir;
+  const std::string out = (dir.path() / "x.png").string();
+  const CliRun r = run("render -o " + out + " --set camera.fit=true --set camera.eye=0,0,500 --set image.width=64 "
+                       "--set image.height=64");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output, ::testing::Not(HasSubstr("warning")));
+  const Rgb8Image img = read_rgb8_image(out);
+  std::size_t lit = 0;
+  for (std::size_t i = 0; i < img.pixels.size(); i += 3) lit += img.pixels[i] != img.pixels[0];
+  EXPECT_GT(lit, 64u * 64u / 4);  // the torus fills the frame from 500 units away
+}
+
+TEST_F(Cli, DumpOptionErrors) {
+  TempDir dir;
+  const std::string d = dir.path().string();
+  CliRun r = run("render -o " + d + "/x.png --dump-tess " + d + "/t.bin --set tessellation.enabled=false");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.output, HasSubstr("--dump-tess: the scene does not tessellate"));
+  for (const char* bad : {"0", "abc", "-5"}) {
+    r = run("render -o " + d + "/x.png --dump-tess " + d + "/t.bin --max-dump-bytes " + bad);
+    EXPECT_GE(r.exit_code, 100) << bad << ": " << r.output;
+    EXPECT_THAT(r.output, HasSubstr("--max-dump-bytes")) << bad;
+  }
+  EXPECT_TRUE(files_in(dir.path()).empty()) << ::testing::PrintToString(files_in(dir.path()));
 }
 
 // Issue 11, defect 10: an empty or malformed level is said to be one.

@@ -1,5 +1,8 @@
 // Procedural meshes, welding, validation and loading through assimp.
+#include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <future>
 #include <set>
 #include <string>
 #include <vector>
@@ -17,6 +20,7 @@ namespace tessref {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 using test::TempDir;
 
 // Every normal unit length, every index in range, every face turned outward (its normal agrees
@@ -262,6 +266,23 @@ TEST(Mesh, CoordinatesTooLargeForSinglePrecision) {
                            "precision (coordinates up to 5e+36); scale the mesh down (below 1e18)");
 }
 
+// A NaN coordinate is named even when it is the only thing wrong (assimp's vertex joining would
+// have merged it into another vertex), and a needle triangle's tip still gets a normal.
+TEST(MeshLoader, NaNVertexIsNamedAndNeedleTipsGetNormals) {
+  TempDir dir;
+  std::vector<std::string> warnings;
+  try {
+    load_mesh_file(dir.write("nan.obj", "v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n"), warnings);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("nan.obj: vertex 2 (in file order) has a NaN or infinite coordinate"));
+  }
+  const Mesh m = load_mesh_file(
+      dir.write("needle.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1e6 1 0\nf 1 2 3\nf 2 4 3\n"), warnings);
+  ASSERT_EQ(m.vertex_count(), 4u);
+  for (const glm::vec3& n : m.normals) EXPECT_EQ(n, glm::vec3(0.0f, 0.0f, 1.0f));
+}
+
 TEST(MeshLoader, NaNCoordinatesAreAnError) {
   TempDir dir;
   std::vector<std::string> warnings;
@@ -309,6 +330,35 @@ TEST(MeshLoader, DeclaredCountsLargerThanTheFile) {
   // The honest versions load.
   auto good = dir.write("good.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
   EXPECT_EQ(load_mesh_file(good, warnings).triangle_count(), 1u);
+}
+
+// fuzz_mesh: assimp 5.2.5 never returns from a PLY header without an end_header line (a file cut
+// short), so the loader refuses one first. The load runs on a thread with a deadline: the hang it
+// was fails the test instead of stalling the suite.
+TEST(MeshLoader, PlyHeaderWithoutEndIsAnError) {
+  TempDir dir;
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n";
+  auto error_of = [](const std::filesystem::path& path) {
+    auto result = std::async(std::launch::async, [path] {
+      std::vector<std::string> warnings;
+      try {
+        load_mesh_file(path, warnings);
+      } catch (const InputError& e) {
+        return std::string(e.what());
+      }
+      return std::string("no error");
+    });
+    if (result.wait_for(std::chrono::seconds(30)) != std::future_status::ready) {
+      ADD_FAILURE() << path << ": load_mesh_file hangs";
+      std::_Exit(1);  // the thread cannot be stopped
+    }
+    return result.get();
+  };
+  const auto cut = dir.write("cut.ply", header);
+  EXPECT_EQ(error_of(cut), cut.string() + ": the PLY header has no end_header line (is the file cut short?)");
+  // Ended (even indented), the same header goes on to assimp (which finds no triangles in it).
+  const auto ended = dir.write("ended.ply", header + "  end_header\n0\n1\n2\n");
+  EXPECT_THAT(error_of(ended), Not(HasSubstr("end_header")));
 }
 
 TEST(MeshLoader, AssimpInvalidModels) {
