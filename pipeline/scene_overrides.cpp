@@ -102,7 +102,10 @@ void merge_json(json& base, const json& over) {
     base = over;
     return;
   }
-  for (auto it = over.begin(); it != over.end(); ++it) merge_json(base[it.key()], it.value());
+  for (auto it = over.begin(); it != over.end(); ++it) {
+    if (it.value().is_null()) base.erase(it.key());  // as in a JSON merge patch (RFC 7386)
+    else merge_json(base[it.key()], it.value());
+  }
 }
 
 }  // namespace tessref

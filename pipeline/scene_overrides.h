@@ -20,8 +20,9 @@ nlohmann::json parse_override_value(const std::string& text);
 // Splits "key=value"; InputError for a missing '=' or an empty key segment.
 SceneOverride parse_override(const std::string& text);
 
-// Merges `over` into `base`: objects key by key, anything else replaces what `base` has. Scene
-// files merge over the default scene this way, and so does --set with an object value.
+// Merges `over` into `base`: objects key by key, a null member removes the key (as a JSON merge
+// patch does), anything else replaces what `base` has. Scene files merge over the default scene
+// this way, and so does --set with an object value ({"u_old": null, "u_new": 1}).
 void merge_json(nlohmann::json& base, const nlohmann::json& over);
 
 // Merges value into root[key] (merge_json), creating missing object members (validation then reports them if they

@@ -82,7 +82,7 @@ TEST(GlslScene, RunawayShaderStopsAtTheBudget) {
                               "void main() {\n  float x = 0.0;\n  for (int i = 0; i != u_n; i += 2) x += 1.0;\n"
                               "  v_world_position = gl_TessCoord;\n  v_world_normal = vec3(x);\n"
                               "  gl_Position = vec4(gl_TessCoord, 1.0);\n}\n");
-  const std::string e = error_of(kExample, {"shaders.tess_evaluation=" + loop.string(), "shaders.uniforms={\"u_n\": 1}",
+  const std::string e = error_of(kExample, {"shaders.tess_evaluation=" + loop.string(), "shaders.uniforms={\"u_n\": 1, \"u_amplitude\": null, \"u_frequency\": null}",
                                             "shaders.max_instructions=100000"});
   EXPECT_NE(e.find("tessellation evaluation shader, patch 0, invocation 0, line 8:"), std::string::npos) << e;
   EXPECT_NE(e.find("instruction budget of 100000 exceeded"), std::string::npos) << e;

@@ -206,6 +206,12 @@ TEST(Scene, MessageDetails) {
   const Scene s = parse_scene("{}", "x", ".", {R"(image={"width": 64})"});
   EXPECT_EQ(s.width, 64);
   EXPECT_EQ(s.height, 1024);
+  // A null member removes a key, as in a JSON merge patch.
+  const Scene u = parse_scene(R"({"shaders": {"uniforms": {"u_a": 1, "u_b": 2}}})", "x", ".",
+                              {R"(shaders.uniforms={"u_a": null, "u_c": 3})"});
+  ASSERT_EQ(u.shaders.uniforms.size(), 2u);
+  EXPECT_EQ(u.shaders.uniforms[0].name, "u_b");
+  EXPECT_EQ(u.shaders.uniforms[1].name, "u_c");
 }
 
 TEST(Scene, ImageSize) {
@@ -313,6 +319,25 @@ TEST(Scene, OverrideErrors) {
   EXPECT_EQ(scene_error("{}", {"camera.eye=up"}),
             "scenes/x.json: camera.eye: expected an array of 3 numbers, got a string (\"up\") "
             "(from --set camera.eye)");
+}
+
+TEST(Scene, ShaderSettingChecks) {
+  EXPECT_THAT(scene_error("{}", {"shaders.patch_vertices=0"}), HasSubstr("shaders.patch_vertices: expected an integer in [1, 32], got a number (0)"));
+  EXPECT_THAT(scene_error("{}", {"shaders.patch_vertices=33"}), HasSubstr("shaders.patch_vertices: expected an integer in [1, 32]"));
+  EXPECT_THAT(scene_error("{}", {"shaders.batch_lanes=257"}), HasSubstr("shaders.batch_lanes: expected an integer in [1, 256]"));
+  EXPECT_THAT(scene_error("{}", {"shaders.max_instructions=0"}), HasSubstr("shaders.max_instructions: expected an integer in [1, "));
+  EXPECT_THAT(scene_error("{}", {"shaders.program=custom", "shaders.fragment=twin:phong.frag"}),
+              HasSubstr("shaders.vertex: required when shaders.program is \"custom\""));
+  EXPECT_THAT(scene_error("{}", {"shaders.program=mine"}),
+              HasSubstr("shaders.program: expected one of builtin, twins, custom, got \"mine\""));
+  EXPECT_THAT(scene_error("{}", {"shaders.attributes.in_position=uv"}),
+              HasSubstr("shaders.attributes.in_position: expected \"position\" or \"normal\", got a string (\"uv\")"));
+  EXPECT_THAT(scene_error(R"({"shaders": {"textures": {"u_tex": {"path": "a.png", "filter": "cubic"}}}})"),
+              HasSubstr("shaders.textures.u_tex.filter: expected linear or nearest, got \"cubic\""));
+  EXPECT_THAT(scene_error(R"({"shaders": {"textures": {"u_tex": {"path": "a.png", "wrap": "clamp"}}}})"),
+              HasSubstr("shaders.textures.u_tex.wrap: expected repeat, mirrored_repeat or clamp_to_edge"));
+  EXPECT_THAT(scene_error(R"({"shaders": {"uniforms": {"u_k": "high"}}})"),
+              HasSubstr("shaders.uniforms.u_k: expected numbers or booleans"));
 }
 
 // The key list that --help prints comes from the loader's own reads: every key of the default
