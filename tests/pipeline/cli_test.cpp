@@ -218,20 +218,23 @@ TEST_F(Cli, AWriteThatFailsLeavesNoFileAndExitsTwo) {
 }
 
 TEST_F(Cli, AnInterruptedRenderLeavesNoPartialFile) {
-  TempDir dir;
-  const std::string d = dir.path().string();
-  // About a minute of frames, interrupted after one second.
-  const std::string cmd = kBinary + " render --set tessellation.inner=64 --set tessellation.outer=64 --repeat 1000 -o " +
-                          d + "/x.png --dump-tess " + d + "/x.tess";
-  FILE* pipe = popen(("sh -c '" + cmd + " & p=$!; sleep 1; kill -INT $p; wait $p; echo status=$?' 2>&1").c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  std::string output;
-  std::array<char, 4096> buf;
-  for (std::size_t n; (n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0;) output.append(buf.data(), n);
-  pclose(pipe);
-  EXPECT_THAT(output, HasSubstr("interrupted; unfinished output files removed"));
-  EXPECT_THAT(output, HasSubstr("status=130"));
-  EXPECT_TRUE(files_in(dir.path()).empty()) << ::testing::PrintToString(files_in(dir.path()));
+  for (const auto& [signal, status] : {std::pair<const char*, const char*>{"INT", "130"}, {"TERM", "143"}}) {
+    SCOPED_TRACE(signal);
+    TempDir dir;
+    const std::string d = dir.path().string();
+    // About a minute of frames, interrupted after one second.
+    const std::string cmd = kBinary + " render --set tessellation.inner=64 --set tessellation.outer=64 --repeat 1000 -o " +
+                            d + "/x.png --dump-tess " + d + "/x.tess";
+    FILE* pipe = popen(("sh -c '" + cmd + " & p=$!; sleep 1; kill -" + signal + " $p; wait $p; echo status=$?' 2>&1").c_str(), "r");
+    ASSERT_NE(pipe, nullptr);
+    std::string output;
+    std::array<char, 4096> buf;
+    for (std::size_t n; (n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0;) output.append(buf.data(), n);
+    pclose(pipe);
+    EXPECT_THAT(output, HasSubstr("interrupted; unfinished output files removed"));
+    EXPECT_THAT(output, HasSubstr(std::string("status=") + status));
+    EXPECT_TRUE(files_in(dir.path()).empty()) << ::testing::PrintToString(files_in(dir.path()));
+  }
 }
 
 std::string file_bytes(const std::filesystem::path& p) {
@@ -246,14 +249,21 @@ TEST_F(Cli, OutputBytesDoNotDependOnTheClock) {
   TempDir dir;
   const std::string d = dir.path().string();
   const std::string args = " render --set image.width=24 --set image.height=16";
-  for (const char* ext : {".exr", ".tif", ".png", ".jpg", ".hdr", ".bmp"}) {
+  for (const char* ext : {".exr", ".tif", ".png", ".jpg", ".hdr", ".bmp", ".tga"}) {
     const std::string now = d + "/now" + ext, then = d + "/then" + ext;
-    ASSERT_EQ(run(args.substr(1) + " -o " + now + " --depth " + d + "/now_d.exr").exit_code, 0);
-    ASSERT_EQ(std::system(("faketime '2001-02-03 04:05:06' " + kBinary + args + " -o " + then + " --depth " + d +
-                           "/then_d.exr > /dev/null").c_str()), 0);
+    const std::string extras = " --depth %s_d.exr --normals %s_n.tif --dump-tess %s.tess";
+    auto with = [&](const std::string& stem) {
+      std::string e = extras;
+      for (std::size_t at; (at = e.find("%s")) != std::string::npos;) e.replace(at, 2, d + "/" + stem);
+      return e;
+    };
+    ASSERT_EQ(run(args.substr(1) + " -o " + now + with("now")).exit_code, 0);
+    ASSERT_EQ(std::system(("faketime '2001-02-03 04:05:06' " + kBinary + args + " -o " + then + with("then") +
+                           " > /dev/null").c_str()), 0);
     EXPECT_EQ(file_bytes(now), file_bytes(then)) << ext;
     EXPECT_FALSE(file_bytes(now).empty()) << ext;
-    EXPECT_EQ(file_bytes(d + "/now_d.exr"), file_bytes(d + "/then_d.exr"));
+    for (const char* suffix : {"_d.exr", "_n.tif", ".tess"})
+      EXPECT_EQ(file_bytes(d + "/now" + suffix), file_bytes(d + "/then" + suffix)) << suffix;
   }
 }
 
