@@ -13,6 +13,9 @@ void add_tpg_command(CLI::App& app);     // cli/tpg_command.cpp
 void add_shader_test_command(CLI::App& app);  // cli/shader_test_command.cpp
 void add_scene_command(CLI::App& app);   // cli/scene_command.cpp
 void add_diff_command(CLI::App& app);    // cli/diff_command.cpp
+void add_verify_command(CLI::App& app);  // cli/verify_command.cpp
+// The command line is stored in the capture's manifest.
+void add_capture_command(CLI::App& app, int argc, char** argv);  // cli/capture_command.cpp
 
 // Every scene key with what it allows and its default, one per line (render --help, scene --keys).
 std::string scene_keys_text();

@@ -16,6 +16,8 @@ int main(int argc, char** argv) {
   tessref::cli::add_shader_test_command(app);
   tessref::cli::add_scene_command(app);
   tessref::cli::add_diff_command(app);
+  tessref::cli::add_capture_command(app, argc, argv);
+  tessref::cli::add_verify_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -78,7 +78,8 @@ unsigned compile_shader(const ShaderStage& stage) {
   return s;
 }
 
-Program link_program(const std::vector<ShaderStage>& stages, const FeedbackVaryings& feedback) {
+Program link_program(const std::vector<ShaderStage>& stages, const FeedbackVaryings& feedback,
+                     const AttributeLocations& attributes) {
   Program program(glCreateProgram());
   if (!program) throw GlError("glCreateProgram failed");
   std::vector<GLuint> shaders;
@@ -99,6 +100,7 @@ Program link_program(const std::vector<ShaderStage>& stages, const FeedbackVaryi
     glTransformFeedbackVaryings(program.id(), static_cast<GLsizei>(ptrs.size()), ptrs.data(),
                                 feedback.interleaved ? GL_INTERLEAVED_ATTRIBS : GL_SEPARATE_ATTRIBS);
   }
+  for (const auto& [name, location] : attributes) glBindAttribLocation(program.id(), location, name.c_str());
   glLinkProgram(program.id());
   for (GLuint s : shaders) {
     glDetachShader(program.id(), s);

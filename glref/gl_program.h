@@ -17,6 +17,10 @@ struct FeedbackVaryings {
   bool interleaved = true;  // GL_INTERLEAVED_ATTRIBS, else GL_SEPARATE_ATTRIBS
 };
 
+// Vertex shader inputs bound to attribute locations before linking (glBindAttribLocation); an
+// input with its own layout(location) keeps it.
+using AttributeLocations = std::vector<std::pair<std::string, unsigned>>;
+
 // A linked program object (move-only; deletes the program when destroyed).
 class Program {
  public:
@@ -41,7 +45,8 @@ class Program {
 // Compiles one stage; returns the shader object. Throws GlError with the stage name and info log.
 unsigned compile_shader(const ShaderStage& stage);
 // Compiles and links; the shader objects are deleted after linking.
-Program link_program(const std::vector<ShaderStage>& stages, const FeedbackVaryings& feedback = {});
+Program link_program(const std::vector<ShaderStage>& stages, const FeedbackVaryings& feedback = {},
+                     const AttributeLocations& attributes = {});
 
 const char* stage_name(unsigned type);  // "vertex", "tessellation control", ...
 

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstring>
+#include <regex>
 #include <string>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -15,6 +16,7 @@
 #include "glref/shader_source.h"
 #include "glref/tess_capture.h"
 #include "pipeline/camera.h"
+#include "pipeline/glsl_scene.h"
 #include "stages/programs/transform.h"
 #include "stages/tess_levels_adaptive.h"
 
@@ -58,7 +60,53 @@ std::string wrap_tes_for_capture(const std::string& tes) {
   return out;
 }
 
+GLenum gl_stage(shader::Stage stage) {
+  switch (stage) {
+    case shader::Stage::Vertex: return GL_VERTEX_SHADER;
+    case shader::Stage::TessControl: return GL_TESS_CONTROL_SHADER;
+    case shader::Stage::TessEval: return GL_TESS_EVALUATION_SHADER;
+    default: return GL_FRAGMENT_SHADER;
+  }
+}
+
+// The user's files (shaders.program custom), as tessref's executor runs them; for capture the
+// evaluation shader is wrapped as the twins' is, and the fragment shader left out.
+std::vector<ShaderStage> custom_stages(const Scene& scene, bool for_capture) {
+  std::vector<ShaderStage> stages;
+  for (const shader::ShaderSource& src : scene_sources(scene)) {
+    if (for_capture && src.stage == shader::Stage::Fragment) continue;
+    std::string text = src.text;
+    if (for_capture && src.stage == shader::Stage::TessEval) text = wrap_tes_for_capture(text);
+    stages.push_back({gl_stage(src.stage), text, src.file});
+  }
+  return stages;
+}
+
+// The evaluation shader's outputs at locations 0 and 1, which tessref's --dump-tess and the
+// capture read as position and normal (the twins' v_world_position and v_world_normal).
+std::vector<std::string> position_normal_outputs(const Scene& scene) {
+  std::vector<std::string> names{"v_world_position", "v_world_normal"};
+  if (scene.shaders.program != ShaderProgram::Custom) return names;
+  for (const shader::ShaderSource& src : scene_sources(scene)) {
+    if (src.stage != shader::Stage::TessEval) continue;
+    static const std::regex out_at(R"(layout\s*\(\s*location\s*=\s*([01])\s*\)\s*out\s+\w+\s+(\w+)\s*;)");
+    for (std::sregex_iterator it(src.text.begin(), src.text.end(), out_at), end; it != end; ++it)
+      names[(*it)[1].str() == "0" ? 0 : 1] = (*it)[2].str();
+  }
+  return names;
+}
+
+// shaders.attributes: the mesh attribute each named vertex input reads (0 position, 1 normal).
+AttributeLocations attribute_locations(const Scene& scene) {
+  AttributeLocations out;
+  for (const auto& [input, attribute] : scene.shaders.attributes)
+    if (input.find_first_not_of("0123456789") != std::string::npos)
+      out.push_back({input, attribute == "position" ? 0u : 1u});
+  return out;
+}
+
 std::vector<ShaderStage> twin_stages(const Scene& scene, bool for_capture) {
+  if (scene.shaders.program == ShaderProgram::Custom) return custom_stages(scene, for_capture);
   std::vector<ShaderStage> stages{{GL_VERTEX_SHADER, shader_source("transform.vert"), "transform.vert"}};
   const TessellationSettings& t = scene.tessellation;
   if (t.enabled) {
@@ -85,16 +133,21 @@ SceneRenderer::SceneRenderer(GlContext& context, const Scene& scene, const Mesh&
   view_projection_ =
       projection_matrix(scene.camera, scene.width, scene.height) * view_matrix(scene.camera);
 
-  program_ = link_program(twin_stages(scene_, false));
+  if (!scene.shaders.textures.empty())
+    throw GlError("SceneRenderer: shaders.textures are not bound on the GL side yet");
+  program_ = link_program(twin_stages(scene_, false), {}, attribute_locations(scene_));
   set_uniforms(program_);
 
   const TessellationSettings& t = scene_.tessellation;
   if (t.enabled) {
-    patches_ = std::make_unique<PatchMesh>(context_, PatchMeshData{mesh.positions, mesh.normals, mesh.indices, 3});
-    // Constant levels: the exact bound of every patch. Adaptive: the TCS clamps to max_level.
+    const bool custom = scene_.shaders.program == ShaderProgram::Custom;
+    patches_ = std::make_unique<PatchMesh>(
+        context_, PatchMeshData{mesh.positions, mesh.normals, mesh.indices, custom ? scene_.shaders.patch_vertices : 3});
+    // Constant levels: the exact bound of every patch. Adaptive: the TCS clamps to max_level. A
+    // user's control shader: any level up to the largest.
     TessLevels worst = t.levels;
-    if (t.adaptive.enabled) {
-      const float m = level_settings(scene_, view_projection_).screen.max_level;
+    if (t.adaptive.enabled || custom) {
+      const float m = custom ? 64.0f : level_settings(scene_, view_projection_).screen.max_level;
       worst.outer = {m, m, m, m};
       worst.inner = {m, m};
     }
@@ -181,6 +234,42 @@ void SceneRenderer::set_uniforms(const Program& program) const {
   if ((l = loc("u_shininess")) >= 0) glUniform1f(l, scene_.material.shininess);
   if ((l = loc("u_color")) >= 0) glUniform3fv(l, 1, glm::value_ptr(scene_.material.color));
   check_gl("SceneRenderer: setting uniforms");
+  for (const UniformSetting& u : scene_.shaders.uniforms) set_user_uniform(program, u);
+}
+
+// shaders.uniforms, by the type GL reports (tessref's executor has checked the values against
+// the GLSL types already; a uniform GL optimized away is skipped, as the scene uniforms are).
+void SceneRenderer::set_user_uniform(const Program& program, const UniformSetting& u) const {
+  const GLint location = glGetUniformLocation(program.id(), u.name.c_str());
+  if (location < 0) return;
+  const char* name = u.name.c_str();
+  GLuint index = GL_INVALID_INDEX;
+  glGetUniformIndices(program.id(), 1, &name, &index);
+  GLint type = 0;
+  if (index == GL_INVALID_INDEX) {  // an array element by name: ask for the array
+    const std::string base = u.name.substr(0, u.name.find('[')) + "[0]";
+    const char* b = base.c_str();
+    glGetUniformIndices(program.id(), 1, &b, &index);
+  }
+  if (index != GL_INVALID_INDEX) glGetActiveUniformsiv(program.id(), 1, &index, GL_UNIFORM_TYPE, &type);
+  std::vector<float> f(u.values.begin(), u.values.end());
+  std::vector<GLint> i(u.values.begin(), u.values.end());
+  const GLsizei n = 1;
+  switch (type) {
+    case GL_FLOAT: glUniform1fv(location, n, f.data()); break;
+    case GL_FLOAT_VEC2: glUniform2fv(location, n, f.data()); break;
+    case GL_FLOAT_VEC3: glUniform3fv(location, n, f.data()); break;
+    case GL_FLOAT_VEC4: glUniform4fv(location, n, f.data()); break;
+    case GL_FLOAT_MAT2: glUniformMatrix2fv(location, n, GL_FALSE, f.data()); break;
+    case GL_FLOAT_MAT3: glUniformMatrix3fv(location, n, GL_FALSE, f.data()); break;
+    case GL_FLOAT_MAT4: glUniformMatrix4fv(location, n, GL_FALSE, f.data()); break;
+    case GL_INT: case GL_BOOL: glUniform1iv(location, n, i.data()); break;
+    case GL_INT_VEC2: case GL_BOOL_VEC2: glUniform2iv(location, n, i.data()); break;
+    case GL_INT_VEC3: case GL_BOOL_VEC3: glUniform3iv(location, n, i.data()); break;
+    case GL_INT_VEC4: case GL_BOOL_VEC4: glUniform4iv(location, n, i.data()); break;
+    default: throw GlError("SceneRenderer: uniform " + u.name + " has a type the GL runner does not set yet");
+  }
+  check_gl(("SceneRenderer: setting uniform " + u.name).c_str());
 }
 
 void SceneRenderer::draw() {
@@ -228,9 +317,10 @@ std::vector<TessOutputVertex> SceneRenderer::capture_tess() {
   if (!patches_) throw GlError("SceneRenderer::capture_tess: the scene does not tessellate");
   context_.make_current();
   if (!capture_program_) {
-    capture_program_ = link_program(
-        twin_stages(scene_, true),
-        FeedbackVaryings{{"v_world_position", "v_world_normal", "tf_tess_coord", "tf_patch_id"}, true});
+    const std::vector<std::string> outputs = position_normal_outputs(scene_);
+    capture_program_ = link_program(twin_stages(scene_, true),
+                                    FeedbackVaryings{{outputs[0], outputs[1], "tf_tess_coord", "tf_patch_id"}, true},
+                                    attribute_locations(scene_));
     set_uniforms(capture_program_);
   }
   const std::vector<std::uint32_t> words =

@@ -1,6 +1,7 @@
 #pragma once
-// A tessref scene drawn by the GL driver with tessref's GLSL twins (stages/programs/*.vert/.frag,
-// stages/schemes/*.tesc/.tese), set up exactly as tessref::render_scene sets up the C++ programs:
+// A tessref scene drawn by the GL driver with its GLSL: tessref's twins (stages/programs/*.vert/.frag,
+// stages/schemes/*.tesc/.tese), or the user's files for shaders.program custom (their uniforms
+// set by name, their inputs bound as shaders.attributes says; textures not yet), set up exactly as tessref::render_scene sets up the C++ programs:
 // the same matrices (pipeline/camera.h, so both sides upload the same floats), uniforms,
 // tessellation (scheme, normal mode, spacing, winding, constant or adaptive levels), culling (back
 // faces, CCW front), depth test (LESS), clear color and viewport. The result is read back into a
@@ -72,6 +73,7 @@ class SceneRenderer {
 
  private:
   void set_uniforms(const Program& program) const;
+  void set_user_uniform(const Program& program, const UniformSetting& u) const;
 
   GlContext& context_;
   Scene scene_;

@@ -29,42 +29,6 @@ std::string read_file(const Scene& scene, const char* key, const std::filesystem
   return text.str();
 }
 
-std::vector<shader::ShaderSource> scene_sources(const Scene& scene) {
-  const ShaderSettings& s = scene.shaders;
-  std::vector<shader::ShaderSource> out;
-  if (s.program == ShaderProgram::Twins) {
-    auto twin = [&](Stage stage, const std::string& name) {
-      out.push_back({stage, name, 1, glsl::twin_source(name)});
-    };
-    const std::string scheme = scene.tessellation.scheme == SurfaceScheme::PN ? "pn_triangles" : "flat";
-    twin(Stage::Vertex, "transform.vert");
-    if (scene.tessellation.enabled) {
-      twin(Stage::TessControl, scheme + ".tesc");
-      twin(Stage::TessEval, scheme + ".tese");
-    }
-    twin(Stage::Fragment, scene.shading == Shading::Phong ? "phong.frag" : "normals.frag");
-    return out;
-  }
-  auto file = [&](Stage stage, const char* key, const std::filesystem::path& path) {
-    if (path.empty()) return;
-    const std::string name = path.string();
-    if (name.rfind("twin:", 0) == 0) {
-      try {
-        out.push_back({stage, name.substr(5), 1, glsl::twin_source(name.substr(5))});
-      } catch (const std::invalid_argument& e) {
-        throw InputError(scene.source + ": shaders." + key + ": " + e.what());
-      }
-      return;
-    }
-    out.push_back({stage, name, 1, read_file(scene, key, path)});
-  };
-  file(Stage::Vertex, "vertex", s.vertex);
-  file(Stage::TessControl, "tess_control", s.tess_control);
-  file(Stage::TessEval, "tess_evaluation", s.tess_evaluation);
-  file(Stage::Fragment, "fragment", s.fragment);
-  return out;
-}
-
 glsl::UniformValue floats(std::initializer_list<float> v, int columns = 1, int rows = 0) {
   glsl::UniformValue u;
   u.scalar = Scalar::F32;
@@ -231,6 +195,42 @@ shader::CompiledProgram compile_cached(const std::vector<shader::ShaderSource>& 
 }
 
 }  // namespace
+
+std::vector<shader::ShaderSource> scene_sources(const Scene& scene) {
+  const ShaderSettings& s = scene.shaders;
+  std::vector<shader::ShaderSource> out;
+  if (s.program == ShaderProgram::Twins) {
+    auto twin = [&](Stage stage, const std::string& name) {
+      out.push_back({stage, name, 1, glsl::twin_source(name)});
+    };
+    const std::string scheme = scene.tessellation.scheme == SurfaceScheme::PN ? "pn_triangles" : "flat";
+    twin(Stage::Vertex, "transform.vert");
+    if (scene.tessellation.enabled) {
+      twin(Stage::TessControl, scheme + ".tesc");
+      twin(Stage::TessEval, scheme + ".tese");
+    }
+    twin(Stage::Fragment, scene.shading == Shading::Phong ? "phong.frag" : "normals.frag");
+    return out;
+  }
+  auto file = [&](Stage stage, const char* key, const std::filesystem::path& path) {
+    if (path.empty()) return;
+    const std::string name = path.string();
+    if (name.rfind("twin:", 0) == 0) {
+      try {
+        out.push_back({stage, name.substr(5), 1, glsl::twin_source(name.substr(5))});
+      } catch (const std::invalid_argument& e) {
+        throw InputError(scene.source + ": shaders." + key + ": " + e.what());
+      }
+      return;
+    }
+    out.push_back({stage, name, 1, read_file(scene, key, path)});
+  };
+  file(Stage::Vertex, "vertex", s.vertex);
+  file(Stage::TessControl, "tess_control", s.tess_control);
+  file(Stage::TessEval, "tess_evaluation", s.tess_evaluation);
+  file(Stage::Fragment, "fragment", s.fragment);
+  return out;
+}
 
 SceneProgram build_scene_program(const Scene& scene) {
   const std::vector<shader::ShaderSource> sources = scene_sources(scene);

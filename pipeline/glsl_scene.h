@@ -8,6 +8,7 @@
 #include "pipeline/draw.h"
 #include "pipeline/mesh.h"
 #include "pipeline/scene.h"
+#include "shader/glsl_compile.h"
 #include "stages/glsl/glsl_program.h"
 
 namespace tessref {
@@ -17,6 +18,10 @@ struct SceneProgram {
   std::unique_ptr<glsl::GlslProgram> program;
   std::vector<std::unique_ptr<shader::Texture>> textures;
 };
+
+// The GLSL of the scene's program, stage by stage: the twins, or the user's files (`twin:NAME`
+// resolved). InputError when a file cannot be read. The real-GL runner draws the same sources.
+std::vector<shader::ShaderSource> scene_sources(const Scene& scene);
 
 // Compiles the scene's program (InputError: a file that cannot be read, compile and link errors
 // with file and line, a uniform value whose type does not fit, an unreadable texture) with its

@@ -3,6 +3,7 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <cerrno>
 
 #include "common/error.h"
 
@@ -65,6 +66,29 @@ void TessDumpWriter::close() {
   const bool failed = std::ferror(file_.get()) != 0;
   const bool close_failed = std::fclose(file_.release()) != 0;
   if (failed || close_failed) throw InputError(path_ + ": error writing the tessellation dump");
+}
+
+std::vector<TessDumpRecord> read_tess_dump(const std::string& path) {
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!f) throw InputError(path + ": cannot open the tessellation dump: " + std::strerror(errno));
+  char magic[8];
+  std::uint32_t header[2];
+  if (std::fread(magic, 1, 8, f.get()) != 8 || std::memcmp(magic, "TESSDUMP", 8) != 0 ||
+      std::fread(header, 4, 2, f.get()) != 2 || header[0] != 1 || header[1] != kBinaryRecordBytes)
+    throw InputError(path + ": not a binary tessellation dump (version 1, 40-byte records)");
+  std::vector<TessDumpRecord> records;
+  unsigned char rec[kBinaryRecordBytes];
+  std::size_t n;
+  while ((n = std::fread(rec, 1, sizeof rec, f.get())) == sizeof rec) {
+    TessDumpRecord r;
+    std::memcpy(&r.patch_id, rec, 4);
+    std::memcpy(&r.tess_coord, rec + 4, 12);
+    std::memcpy(&r.position, rec + 16, 12);
+    std::memcpy(&r.normal, rec + 28, 12);
+    records.push_back(r);
+  }
+  if (n != 0) throw InputError(path + ": the tessellation dump ends in the middle of a record");
+  return records;
 }
 
 }  // namespace tessref

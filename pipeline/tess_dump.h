@@ -42,4 +42,7 @@ class TessDumpWriter {
   std::uint64_t bytes_ = 0;
 };
 
+// Reads a binary dump back (InputError naming the file when it is not one, or is cut short).
+std::vector<TessDumpRecord> read_tess_dump(const std::string& path);
+
 }  // namespace tessref

@@ -1,0 +1,103 @@
+#include "glref/reference_capture.h"
+
+#include <epoxy/gl.h>
+
+#include <chrono>
+#include <ctime>
+#include <fstream>
+
+#include "common/error.h"
+#include "glref/gl_context.h"
+#include "glref/scene_renderer.h"
+#include "pipeline/image_output.h"
+#include "pipeline/output_files.h"
+#include "pipeline/tess_dump.h"
+
+namespace tessref::glref {
+namespace {
+
+int gl_integer(GLenum name) {
+  GLint v = 0;
+  glGetIntegerv(name, &v);
+  return v;
+}
+
+std::string utc_now() {
+  const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+// FNV-1a, 64 bits, over the scene as read (compact JSON): names the scene a capture belongs to.
+std::string scene_hash(const nlohmann::json& scene_json) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : scene_json.dump()) h = (h ^ c) * 1099511628211ull;
+  char buf[24];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+}  // namespace
+
+CaptureSummary capture_reference(GlContext& context, const Scene& scene, const Mesh& mesh,
+                                 const nlohmann::json& scene_json, const std::string& command_line,
+                                 const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw InputError(dir.string() + ": cannot create the capture folder (" + ec.message() + ")");
+  OutputFiles outputs;
+  const auto color = outputs.add("color", dir / "color.png");
+  const auto depth = outputs.add("depth", dir / "depth.exr");
+  const auto tess = outputs.add("tess", dir / "tess.bin");
+  const auto manifest_path = outputs.add("manifest", dir / "manifest.json");
+
+  SceneRenderer renderer(context, scene, mesh);
+  const Framebuffer fb = renderer.render();
+  write_rgb8_image(to_rgb8(fb), color);
+  write_depth_image(fb, depth);
+  CaptureSummary summary;
+  {
+    TessDumpWriter writer(tess.string());
+    if (scene.tessellation.enabled) {
+      std::vector<TessDumpRecord> records;
+      for (const TessOutputVertex& v : renderer.capture_tess())
+        records.push_back(TessDumpRecord{v.patch, v.tess_coord, v.position, v.normal});
+      writer.write(records);
+      summary.tess_records = records.size();
+    }
+    writer.close();
+  }
+  context.make_current();
+  summary.manifest = {
+      {"format", "tessref capture 1"},
+      {"gl_vendor", context.vendor()},
+      {"gl_renderer", context.renderer()},
+      {"gl_version", context.version()},
+      {"limits",
+       {{"GL_MAX_TESS_GEN_LEVEL", gl_integer(GL_MAX_TESS_GEN_LEVEL)},
+        {"GL_MAX_PATCH_VERTICES", gl_integer(GL_MAX_PATCH_VERTICES)},
+        {"GL_MAX_TESS_CONTROL_OUTPUT_COMPONENTS", gl_integer(GL_MAX_TESS_CONTROL_OUTPUT_COMPONENTS)},
+        {"GL_MAX_TESS_EVALUATION_OUTPUT_COMPONENTS", gl_integer(GL_MAX_TESS_EVALUATION_OUTPUT_COMPONENTS)}}},
+      {"scene_source", scene.source},
+      {"scene_fnv1a64", scene_hash(scene_json)},
+      {"scene", scene_json},
+      {"command_line", command_line},
+      {"date_utc", utc_now()},
+      {"files",
+       {{"color", "color.png (8-bit RGB, quantized as tessref's PNGs are)"},
+        {"depth", "depth.exr (window-space depth, 1 where nothing was drawn)"},
+        {"tess", "tess.bin (--dump-tess binary format; one record per emitted vertex, 3 per triangle)"}}},
+      {"tess_records", summary.tess_records}};
+  {
+    std::ofstream out(manifest_path);
+    out << summary.manifest.dump(2) << "\n";
+    if (!out.flush()) throw InputError((dir / "manifest.json").string() + ": cannot write");
+  }
+  outputs.commit();
+  return summary;
+}
+
+}  // namespace tessref::glref

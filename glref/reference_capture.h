@@ -1,0 +1,29 @@
+#pragma once
+// `tessref capture`: a scene drawn by the GL driver with its GLSL (SceneRenderer), stored as a
+// reference for `tessref verify` (pipeline/verify.h): color.png, depth.exr, tess.bin (the TES
+// outputs by transform feedback, one record per emitted vertex, in the --dump-tess format) and
+// manifest.json (the driver's names and tessellation limits, the scene as read, its hash, the
+// command line, the date). The four files are written whole or not at all.
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "pipeline/mesh.h"
+#include "pipeline/scene.h"
+
+namespace tessref::glref {
+
+class GlContext;
+
+struct CaptureSummary {
+  std::size_t tess_records = 0;  // emitted vertices captured (0 without tessellation)
+  nlohmann::json manifest;
+};
+
+// scene_json: the merged scene (pipeline/scene_loader.h: load_scene_json), stored in the manifest.
+CaptureSummary capture_reference(GlContext& context, const Scene& scene, const Mesh& mesh,
+                                 const nlohmann::json& scene_json, const std::string& command_line,
+                                 const std::filesystem::path& dir);
+
+}  // namespace tessref::glref

@@ -1,0 +1,196 @@
+#include "pipeline/verify.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <deque>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <unordered_map>
+
+#include "common/error.h"
+#include "pipeline/tess_dump.h"
+
+namespace tessref {
+namespace {
+
+// Floats on one integer line, so that adjacent floats differ by 1 (and -0 meets +0).
+std::int64_t ordered(float f) {
+  const std::int32_t i = std::bit_cast<std::int32_t>(f);
+  return i < 0 ? std::int64_t(std::numeric_limits<std::int32_t>::min()) - i : std::int64_t(i);
+}
+
+std::uint32_t ulp_distance(float a, float b) {
+  if (std::isnan(a) || std::isnan(b)) return std::isnan(a) && std::isnan(b) ? 0 : UINT32_MAX;
+  const std::int64_t d = ordered(a) - ordered(b);
+  return std::uint32_t(std::min<std::int64_t>(d < 0 ? -d : d, UINT32_MAX));
+}
+
+std::size_t ulp_bucket(std::uint32_t d) {
+  if (d <= 2) return d;
+  const std::size_t k = std::size_t(std::bit_width(d - 1)) + 1;  // (2^(k-2), 2^(k-1)] -> k
+  return std::min<std::size_t>(k, UlpHistogram().size() - 1);
+}
+
+std::uint64_t coord_key(const glm::vec3& c) {
+  // gl_TessCoord on triangles: (u, v) fix w; the key keeps all three for other domains' z.
+  const std::uint64_t u = std::bit_cast<std::uint32_t>(c.x), v = std::bit_cast<std::uint32_t>(c.y);
+  return (u << 32 | v) ^ (std::uint64_t(std::bit_cast<std::uint32_t>(c.z)) * 0x9E3779B97F4A7C15ull);
+}
+
+}  // namespace
+
+std::string ulp_bucket_name(std::size_t bucket) {
+  if (bucket <= 2) return std::to_string(bucket);
+  const std::size_t last = UlpHistogram().size() - 1;
+  if (bucket >= last) return ">" + std::to_string(1u << (last - 2));
+  return std::to_string((1u << (bucket - 2)) + 1) + "-" + std::to_string(1u << (bucket - 1));
+}
+
+Reference load_reference(const std::filesystem::path& dir) {
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec)) throw InputError(dir.string() + ": no such capture folder");
+  Reference r;
+  const std::filesystem::path manifest = dir / "manifest.json";
+  std::ifstream in(manifest);
+  if (!in) throw InputError(manifest.string() + ": missing (is " + dir.string() + " a tessref capture?)");
+  try {
+    r.manifest = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(manifest.string() + ": not JSON: " + e.what());
+  }
+  r.color = read_rgb8_image(dir / "color.png");
+  r.depth = read_float_image(dir / "depth.exr");
+  if (r.depth.channels != 1 || r.depth.width != r.color.width || r.depth.height != r.color.height)
+    throw InputError((dir / "depth.exr").string() + ": expected one channel the size of color.png");
+  if (std::filesystem::exists(dir / "tess.bin", ec)) r.tess = read_tess_dump((dir / "tess.bin").string());
+  return r;
+}
+
+TessComparison compare_tess(const std::vector<TessDumpRecord>& reference_emitted,
+                            const std::vector<TessDumpRecord>& tessref_points) {
+  TessComparison c;
+  // Both streams come patch by patch in mesh order; group them by patch id.
+  std::map<std::uint32_t, std::pair<std::vector<const TessDumpRecord*>, std::vector<const TessDumpRecord*>>> patches;
+  for (const TessDumpRecord& r : reference_emitted) patches[r.patch_id].first.push_back(&r);
+  for (const TessDumpRecord& r : tessref_points) patches[r.patch_id].second.push_back(&r);
+  c.reference_vertices = reference_emitted.size();
+  for (const auto& [patch, streams] : patches) {
+    ++c.patches;
+    std::unordered_map<std::uint64_t, const TessDumpRecord*> generated;
+    for (const TessDumpRecord* r : streams.second) generated.emplace(coord_key(r->tess_coord), r);
+    std::unordered_map<std::uint64_t, bool> emitted;
+    bool mismatch = false;
+    for (const TessDumpRecord* ref : streams.first) {
+      const auto it = generated.find(coord_key(ref->tess_coord));
+      if (it == generated.end() || std::memcmp(&it->second->tess_coord, &ref->tess_coord, sizeof(glm::vec3)) != 0) {
+        ++c.unmatched_vertices;
+        mismatch = true;
+        continue;
+      }
+      emitted[it->first] = true;
+      c.max_position_distance =
+          std::max(c.max_position_distance, double(glm::length(glm::dvec3(ref->position) - glm::dvec3(it->second->position))));
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t dp = ulp_distance(ref->position[k], it->second->position[k]);
+        const std::uint32_t dn = ulp_distance(ref->normal[k], it->second->normal[k]);
+        ++c.position_ulps[ulp_bucket(dp)];
+        ++c.normal_ulps[ulp_bucket(dn)];
+        if (dp > c.max_position_ulp) c.max_position_ulp = dp, c.worst_position_patch = patch;
+        c.max_normal_ulp = std::max(c.max_normal_ulp, dn);
+      }
+    }
+    if (emitted.size() != generated.size()) mismatch = true;  // generated but never emitted
+    if (mismatch) {
+      ++c.patches_mismatched;
+      if (c.first_mismatched_patch < 0) c.first_mismatched_patch = patch;
+    }
+  }
+  return c;
+}
+
+CoverageComparison compare_coverage(const FloatImage& reference_depth, const Framebuffer& fb) {
+  if (reference_depth.width != fb.width || reference_depth.height != fb.height || reference_depth.channels != 1)
+    throw InputError("the reference depth image is " + std::to_string(reference_depth.width) + "x" +
+                     std::to_string(reference_depth.height) + ", the scene renders " + std::to_string(fb.width) +
+                     "x" + std::to_string(fb.height));
+  const int w = fb.width, h = fb.height;
+  CoverageComparison c;
+  c.pixels = std::uint64_t(w) * h;
+  // Top row first in both, as images are written.
+  std::vector<char> mine(c.pixels), theirs(c.pixels);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = std::size_t(y) * w + x;
+      mine[i] = fb.depth[fb.index(x, h - 1 - y)] < 1.0f;
+      theirs[i] = reference_depth.pixels[i] < 1.0f;
+      c.covered_tessref += mine[i];
+      c.covered_reference += theirs[i];
+    }
+  // Distance (4-neighbour steps) from tessref's silhouette, by a breadth-first sweep from it.
+  std::vector<int> distance(c.pixels, -1);
+  std::deque<std::size_t> queue;
+  const int dx[4] = {1, -1, 0, 0}, dy[4] = {0, 0, 1, -1};
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = std::size_t(y) * w + x;
+      for (int k = 0; k < 4; ++k) {
+        const int nx = x + dx[k], ny = y + dy[k];
+        if (nx >= 0 && ny >= 0 && nx < w && ny < h && mine[std::size_t(ny) * w + nx] != mine[i]) {
+          distance[i] = 0;
+          queue.push_back(i);
+          break;
+        }
+      }
+    }
+  while (!queue.empty()) {
+    const std::size_t i = queue.front();
+    queue.pop_front();
+    const int x = int(i % w), y = int(i / w);
+    for (int k = 0; k < 4; ++k) {
+      const int nx = x + dx[k], ny = y + dy[k];
+      if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+      const std::size_t j = std::size_t(ny) * w + nx;
+      if (distance[j] < 0) distance[j] = distance[i] + 1, queue.push_back(j);
+    }
+  }
+  c.heat.assign(c.pixels, 0.0f);
+  for (std::size_t i = 0; i < c.pixels; ++i) {
+    if (mine[i] == theirs[i]) continue;
+    ++c.mismatched;
+    const int d = distance[i] < 0 ? w + h : distance[i];  // no silhouette at all: far
+    if (d > 1) ++c.off_silhouette;
+    if (c.by_distance.size() <= std::size_t(d)) c.by_distance.resize(d + 1, 0);
+    ++c.by_distance[d];
+    c.heat[i] = 1.0f + float(d);
+  }
+  return c;
+}
+
+ColorComparison compare_color(const Rgb8Image& reference, const Rgb8Image& tessref) {
+  if (reference.width != tessref.width || reference.height != tessref.height)
+    throw InputError("the reference color image is " + std::to_string(reference.width) + "x" +
+                     std::to_string(reference.height) + ", the scene renders " + std::to_string(tessref.width) +
+                     "x" + std::to_string(tessref.height));
+  ColorComparison c;
+  c.pixels = std::uint64_t(reference.width) * reference.height;
+  double squared = 0.0;
+  for (std::size_t p = 0; p < c.pixels; ++p) {
+    int worst = 0;
+    for (int k = 0; k < 3; ++k) {
+      const int d = std::abs(int(reference.pixels[3 * p + k]) - int(tessref.pixels[3 * p + k]));
+      worst = std::max(worst, d);
+      squared += double(d) * d;
+    }
+    c.within_1 += worst <= 1;
+    c.within_2 += worst <= 2;
+    c.max_difference = std::max(c.max_difference, worst);
+  }
+  const double mse = squared / (3.0 * double(std::max<std::uint64_t>(c.pixels, 1)));
+  c.psnr = mse == 0.0 ? std::numeric_limits<double>::infinity() : 10.0 * std::log10(255.0 * 255.0 / mse);
+  return c;
+}
+
+}  // namespace tessref

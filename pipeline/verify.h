@@ -1,0 +1,68 @@
+#pragma once
+// `tessref verify`: tessref's rendering of a scene against a reference that a GL driver produced
+// (`tessref capture`: color, depth and the TES outputs by transform feedback). Plain functions
+// over the two results; the command (cli/verify_command.cpp) renders and reports.
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "pipeline/image_output.h"
+#include "raster/framebuffer.h"
+#include "stages/tess_stage.h"
+
+namespace tessref {
+
+// A capture folder: manifest.json, color.png, depth.exr and tess.bin (one record per vertex the
+// driver emitted, 3 per triangle, in the --dump-tess binary format; pipeline/tess_dump.h).
+struct Reference {
+  nlohmann::json manifest;
+  Rgb8Image color;
+  FloatImage depth;  // one channel, top row first; 1 where nothing was drawn
+  std::vector<TessDumpRecord> tess;
+};
+Reference load_reference(const std::filesystem::path& dir);  // InputError naming what is missing
+
+// ULP distance buckets: 0, 1, 2, 3-4, 5-8, ..., 2^(k-2)+1 .. 2^(k-1), and the last for the rest.
+using UlpHistogram = std::array<std::uint64_t, 14>;
+std::string ulp_bucket_name(std::size_t bucket);  // "0", "1", "2", "3-4", ..., ">4096"
+
+struct TessComparison {
+  std::uint64_t patches = 0;            // in either stream
+  std::uint64_t patches_mismatched = 0; // a reference coordinate tessref did not generate, a
+                                        // tessref coordinate the driver never emitted, or counts differ
+  std::int64_t first_mismatched_patch = -1;
+  std::uint64_t reference_vertices = 0, unmatched_vertices = 0;
+  UlpHistogram position_ulps{}, normal_ulps{};  // per component, at matched coordinates
+  std::uint32_t max_position_ulp = 0, max_normal_ulp = 0;
+  std::int64_t worst_position_patch = -1;
+  double max_position_distance = 0.0;  // world units, at matched coordinates
+  bool coords_identical() const { return patches_mismatched == 0; }
+};
+// Patch by patch: every gl_TessCoord the driver emitted must be one tessref generated, bit for
+// bit, and every one tessref generated must be emitted; position and normal compared there.
+TessComparison compare_tess(const std::vector<TessDumpRecord>& reference_emitted,
+                            const std::vector<TessDumpRecord>& tessref_points);
+
+struct CoverageComparison {
+  std::uint64_t pixels = 0, covered_reference = 0, covered_tessref = 0;
+  std::uint64_t mismatched = 0;
+  std::uint64_t off_silhouette = 0;  // mismatches more than one pixel from tessref's silhouette
+  std::vector<std::uint64_t> by_distance;  // mismatches by pixel distance to the silhouette
+  std::vector<float> heat;  // per pixel (top row first): 0 agree, else 1 + distance; for an image
+};
+// Covered = depth below 1 in both. The silhouette: tessref's covered pixels with an uncovered
+// 4-neighbour, and uncovered ones with a covered neighbour.
+CoverageComparison compare_coverage(const FloatImage& reference_depth, const Framebuffer& fb);
+
+struct ColorComparison {
+  std::uint64_t pixels = 0, within_1 = 0, within_2 = 0;  // every channel within 1/255, 2/255
+  int max_difference = 0;
+  double psnr = 0.0;  // dB over 8-bit channels; infinity when identical
+};
+ColorComparison compare_color(const Rgb8Image& reference, const Rgb8Image& tessref);
+
+}  // namespace tessref
