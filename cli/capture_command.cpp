@@ -61,11 +61,8 @@ void add_capture_command(CLI::App& app, int argc, char** argv) {
   CLI::App* cmd = app.add_subcommand(
       "capture", "Draw a scene through the system's GL driver (EGL, e.g. Mesa llvmpipe) and store a reference "
                  "for `tessref verify`: color, depth, the TES outputs and a manifest");
-  cmd->add_option("scene", args->scene, "scene file; without one, the built-in default scene");
+  add_scene_options(cmd, args->scene, args->sets);
   cmd->add_option("--out", args->out, "the capture folder (created if missing)")->required();
-  cmd->add_option("--set", args->sets, "override a scene value, KEY=VALUE; repeatable")
-      ->expected(1)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->callback([args] { run(*args); });
 }
 

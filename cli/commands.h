@@ -3,6 +3,7 @@
 // the command; callbacks throw InputError for bad input and set the exit code for other failures.
 #include <exception>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -33,6 +34,15 @@ inline const CLI::Validator kInteger(
       return used != 0 && used == s.size() ? std::string() : "expected an integer, got '" + s + "'";
     },
     "INTEGER");
+
+// The scene a command reads: the positional SCENE (none: the built-in default scene) and the
+// repeatable --set KEY=VALUE overrides.
+inline void add_scene_options(CLI::App* cmd, std::string& scene, std::vector<std::string>& sets) {
+  cmd->add_option("scene", scene, "scene file (see README.md); without one, the built-in default scene");
+  cmd->add_option("--set", sets, "override a scene value, KEY=VALUE (e.g. camera.eye=2,5,-10); repeatable")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+}
 
 // Exit status set by a command callback (0 unless it failed without throwing).
 int exit_code();

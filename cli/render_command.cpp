@@ -301,8 +301,7 @@ std::string check_repeat(std::string& text) {
 void add_render_command(CLI::App& app) {
   auto opts = std::make_shared<RenderOptions>();
   CLI::App* cmd = app.add_subcommand("render", "Render a scene (JSON) to an image");
-  cmd->add_option("scene", opts->scene,
-                  "scene file (see README.md); without one, the built-in default scene");
+  add_scene_options(cmd, opts->scene, opts->sets);
   cmd->add_option("-o,--output", opts->output,
                   "color image; the extension picks the format (.png: 8-bit, .exr: float)")
       ->capture_default_str();
@@ -310,10 +309,6 @@ void add_render_command(CLI::App& app) {
       ->check(kInteger)
       ->check(CLI::Range(0, 4096))
       ->capture_default_str();
-  cmd->add_option("--set", opts->sets,
-                  "override a scene value, KEY=VALUE (e.g. camera.eye=2,5,-10); repeatable")
-      ->expected(1)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   CLI::Option* repeat = cmd->add_option("--repeat", opts->repeat,
                   "render the frame N times and print each stage's median, min and max time; "
                   "the image is written once, from the last frame")

@@ -37,10 +37,7 @@ void add_scene_command(CLI::App& app) {
   auto args = std::make_shared<SceneArgs>();
   CLI::App* cmd = app.add_subcommand(
       "scene", "Print a scene as render reads it (default scene, file and --set merged, then checked) as JSON");
-  cmd->add_option("scene", args->scene, "scene file; without one, the built-in default scene");
-  cmd->add_option("--set", args->sets, "override a scene value, KEY=VALUE; repeatable")
-      ->expected(1)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  add_scene_options(cmd, args->scene, args->sets);
   cmd->add_flag("--keys", args->keys, "list every scene key, what it allows and its default, and exit");
   cmd->callback([args] {
     if (args->keys) {

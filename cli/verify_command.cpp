@@ -155,11 +155,8 @@ void add_verify_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "verify", "Compare tessref's rendering of a scene with a GL driver's capture of it (`tessref capture`): "
                 "exit 0 when they agree, 1 when not");
-  cmd->add_option("scene", args->scene, "scene file; without one, the built-in default scene");
+  add_scene_options(cmd, args->scene, args->sets);
   cmd->add_option("--ref", args->ref, "the capture folder")->required();
-  cmd->add_option("--set", args->sets, "override a scene value, KEY=VALUE; repeatable")
-      ->expected(1)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--json", args->json, "also write the figures as JSON");
   cmd->add_option("--heat", args->heat, "also write the coverage heat map (yellow: on the silhouette, red: off it)");
   cmd->add_option("--color-share", args->color_share,
