@@ -20,8 +20,13 @@ inline constexpr int kGuardBits = 14;
 
 // Snap a window coordinate to 24.8 with round-to-nearest (ties to even), as llvmpipe's
 // _mm_cvtps_epi32. Clipping keeps |window_coord| below 2^(kGuardBits + 1), so the result fits.
+// Only the clipper's float rounding on absurd input (mesh coordinates near 1e37: fuzz_pipeline)
+// leaves that range, or gives NaN; those clamp to its ends (NaN to the low one), since converting
+// them would be undefined behaviour.
 inline std::int32_t snap_subpixel(float window_coord) {
-  return static_cast<std::int32_t>(std::nearbyint(window_coord * float(kSubpixelOne)));
+  constexpr float kLimit = float(1 << (kGuardBits + 1));
+  const float c = std::fmin(std::fmax(window_coord, -kLimit), kLimit);
+  return static_cast<std::int32_t>(std::nearbyint(c * float(kSubpixelOne)));
 }
 // Pixel (x, y) has its center at (x + 0.5, y + 0.5): in 24.8 that is x * 256 + 128.
 inline constexpr std::int32_t kSubpixelHalf = kSubpixelOne / 2;

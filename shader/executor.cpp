@@ -333,10 +333,13 @@ void Runner::texture(const XIns& x) {
       }
       const float s = row<float>(x.b, 0)[l] * float(t->width);
       const float r = row<float>(x.b, 1)[l] * float(t->height);
-      if (!t->linear) return texel(*t, int(std::floor(s)), int(std::floor(r)), c);
+      // Texel indices through to_int: a coordinate that is NaN, infinite or past int's range
+      // (fuzz_glsl) reads the texel at INT_MIN after wrapping, as float-to-int conversion does
+      // elsewhere, with weights from the coordinate's own fraction (0 once it has none, NaN for NaN).
+      if (!t->linear) return texel(*t, to_int(std::floor(s)), to_int(std::floor(r)), c);
       const float fs = s - 0.5f, fr = r - 0.5f;
-      const int i0 = int(std::floor(fs)), j0 = int(std::floor(fr));
-      const float a = fs - float(i0), b = fr - float(j0);
+      const int i0 = to_int(std::floor(fs)), j0 = to_int(std::floor(fr));
+      const float a = fs - std::floor(fs), b = fr - std::floor(fr);
       return (1.0f - a) * (1.0f - b) * texel(*t, i0, j0, c) + a * (1.0f - b) * texel(*t, i0 + 1, j0, c) +
              (1.0f - a) * b * texel(*t, i0, j0 + 1, c) + a * b * texel(*t, i0 + 1, j0 + 1, c);
     });
@@ -997,10 +1000,20 @@ Executable::Executable(Module module, ExecLimits limits)
       serial_(next_serial++) {}
 
 Invocations& Executable::local() const {
-  thread_local std::unordered_map<std::uint64_t, std::unique_ptr<Invocations>> cache;
-  auto& slot = cache[serial_];
-  if (!slot) slot = std::make_unique<Invocations>(*this);
-  return *slot;
+  struct Entry {
+    std::weak_ptr<const bool> alive;
+    std::unique_ptr<Invocations> invocations;
+  };
+  thread_local std::unordered_map<std::uint64_t, Entry> cache;
+  if (const auto it = cache.find(serial_); it != cache.end()) return *it->second.invocations;
+  // First use on this thread: drop the state of executables that are gone. Kept, every
+  // program ever run held an arena on every thread that ran it, and a process that builds programs
+  // again and again (piglit files, fuzz_pipeline's renders) grew without bound.
+  std::erase_if(cache, [](const auto& e) { return e.second.alive.expired(); });
+  Entry& e = cache[serial_];
+  e.alive = alive_;
+  e.invocations = std::make_unique<Invocations>(*this);
+  return *e.invocations;
 }
 
 Executable::~Executable() = default;

@@ -152,6 +152,8 @@ class Executable {
   ExecLimits limits_;
   std::unique_ptr<DecodedProgram> program_;
   std::uint64_t serial_;  // tells this executable's thread-local state from an earlier one's
+  // Expires with the executable, so that threads can drop their state of executables now gone.
+  std::shared_ptr<const bool> alive_ = std::make_shared<const bool>(true);
 };
 
 }  // namespace tessref::shader

@@ -83,7 +83,9 @@ void lay_out(Module& m, Type& t) {
     case TypeKind::Pointer: t.words = 1; break;  // a per-lane word offset
     case TypeKind::SampledImage:
     case TypeKind::Image:
-    case TypeKind::Sampler: t.words = 1; break;  // a texture unit
+    // A texture unit: one word, a flat component so that loads and copies move it (without one,
+    // every sampler read unit 0).
+    case TypeKind::Sampler: scalar_type(Scalar::U32); break;
     default: t.words = 0; break;
   }
 }

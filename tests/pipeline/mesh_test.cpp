@@ -327,6 +327,21 @@ TEST(MeshLoader, DeclaredCountsLargerThanTheFile) {
                                   "property list uchar int vertex_indices\nend_header\n"
                                   "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
   EXPECT_THROW(load_mesh_file(ply, warnings), InputError);
+  // Counts past 64 bits (fuzz_mesh): assimp read the OFF one as 2^32 - 1 faces and allocated 64 GB.
+  auto error_of = [&](const std::filesystem::path& p) -> std::string {
+    try {
+      load_mesh_file(p, warnings);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  const std::string huge(76, '9');
+  auto huge_off = dir.write("huge.off", "OFF\n3 " + huge + " 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_THAT(error_of(huge_off), HasSubstr("the header declares 18446744073709551615 face elements"));
+  auto huge_ply = dir.write("huge.ply", "ply\nformat ascii 1.0\nelement vertex " + huge +
+                                            "\nproperty float x\nend_header\n0\n");
+  EXPECT_THAT(error_of(huge_ply), HasSubstr("the header declares 18446744073709551615 vertex elements"));
   // The honest versions load.
   auto good = dir.write("good.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
   EXPECT_EQ(load_mesh_file(good, warnings).triangle_count(), 1u);
@@ -356,9 +371,30 @@ TEST(MeshLoader, PlyHeaderWithoutEndIsAnError) {
   };
   const auto cut = dir.write("cut.ply", header);
   EXPECT_EQ(error_of(cut), cut.string() + ": the PLY header has no end_header line (is the file cut short?)");
+  // A vertical tab after end_header does not end the header for assimp (a hang too).
+  const auto vtab = dir.write("vtab.ply", header + "end_header\v0\n1\n2\n");
+  EXPECT_EQ(error_of(vtab), vtab.string() + ": the PLY header has no end_header line (is the file cut short?)");
   // Ended (even indented), the same header goes on to assimp (which finds no triangles in it).
   const auto ended = dir.write("ended.ply", header + "  end_header\n0\n1\n2\n");
   EXPECT_THAT(error_of(ended), Not(HasSubstr("end_header")));
+}
+
+// fuzz_mesh: assimp 5.2.5's triangulation aborts the process on a face without vertices (a PLY
+// face "0"), which its validation lets through; the loader refuses one before triangulating.
+TEST(MeshLoader, FaceWithoutVerticesIsAnError) {
+  TempDir dir;
+  std::vector<std::string> warnings;
+  const auto ply = dir.write("empty_face.ply",
+                             "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                             "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                             "end_header\n0 0 0\n1 0 0\n0 1 0\n0\n");
+  try {
+    load_mesh_file(ply, warnings);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr(ply.string() + ": face 0 of mesh '"));
+    EXPECT_THAT(e.what(), HasSubstr("' has no vertices"));
+  }
 }
 
 TEST(MeshLoader, AssimpInvalidModels) {

@@ -294,5 +294,29 @@ TEST(Render, NanInnerLevelDrawsAsTheLowerBound) {
   EXPECT_TRUE(nan.first == one.first);
 }
 
+// fuzz_pipeline's case: a triangle with coordinates near 1e37 through adaptive flat tessellation
+// and the clipper, whose float rounding put a window coordinate at 4.4e30 (undefined behaviour
+// when snapped; fixed_point_test.cpp has the rule). The draw must end with a defined image.
+TEST(Render, HugeCoordinatesThroughTheClipperAreDefined) {
+  const Scene scene = load_scene(
+      "", {"camera.eye=0,0,6", "camera.target=0,0,0", "camera.fov_y_deg=45", "camera.near=0.5",
+           "camera.far=20", "transform.rotate_deg=0,0,0", "image.width=21", "image.height=30",
+           "tessellation.enabled=true", "tessellation.scheme=flat", "tessellation.spacing=fractional_odd",
+           "tessellation.winding=cw", "tessellation.inner=5.92376428e+22,-3.8424966e-38",
+           "tessellation.outer=2,40.84375,14.34375,5.78125", "tessellation.adaptive.enabled=true",
+           "tessellation.adaptive.pixels_per_segment=1", "shading=normals"});
+  Mesh mesh;
+  mesh.positions = {{0x1.8bce7ep+117f, 0x1p-2f, 0x1.5155aap-34f},
+                    {-0x1.a8p+0f, -0x1.c8p+0f, 0x1.7p+0f},
+                    {-0x1.e85ddap+123f, -0x1.ep-1f, -0x1.28p+0f}};
+  mesh.normals = {{-0x1.8p-4f, -0x1.d8p+0f, -0x1.58p+1f},
+                  {-0x1.6cp+1f, -0x1.7ea028p+61f, 0x1.34p+1f},
+                  {-0x1.4p+1f, 0x1.5f86cap-23f, -0x1.cp-1f}};
+  mesh.indices = {0, 1, 2};
+  validate_mesh(mesh, "huge");
+  const RenderResult r = render_scene(scene, mesh, Parallel(1));
+  for (float z : r.framebuffer.depth) EXPECT_TRUE(z >= 0.0f && z <= 1.0f);
+}
+
 }  // namespace
 }  // namespace tessref

@@ -1,6 +1,8 @@
 // The raster section of common/fixed_point.h: 24.8 snapping and the fill-rule predicate.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "common/fixed_point.h"
 
 namespace tessref {
@@ -14,6 +16,18 @@ TEST(RasterFixedPoint, SnapIs24Point8RoundedToNearestEven) {
   // 16383.99f is 16383.990234375; times 256 that is 4194301.5 exactly, a tie: to even.
   EXPECT_EQ(fixed::snap_subpixel(16383.99f), 4194302);
   EXPECT_EQ(fixed::pixel_center(3), 3 * 256 + 128);
+}
+
+// fuzz_pipeline: the clipper's float rounding on mesh coordinates near 1e37 gave a window
+// coordinate of 4.4e30, whose conversion to int was undefined behaviour. Beyond the clip guard
+// band (2^15 pixels) coordinates clamp; NaN takes the low end.
+TEST(RasterFixedPoint, SnapClampsCoordinatesClippingCannotProduce) {
+  const std::int32_t limit = (1 << (fixed::kGuardBits + 1)) * fixed::kSubpixelOne;
+  EXPECT_EQ(fixed::snap_subpixel(4.4335e30f), limit);
+  EXPECT_EQ(fixed::snap_subpixel(-1e38f), -limit);
+  EXPECT_EQ(fixed::snap_subpixel(std::numeric_limits<float>::infinity()), limit);
+  EXPECT_EQ(fixed::snap_subpixel(std::numeric_limits<float>::quiet_NaN()), -limit);
+  EXPECT_EQ(fixed::snap_subpixel(32767.5f), 8388480);  // inside: unchanged
 }
 
 TEST(RasterFixedPoint, BottomLeftEdgesInWindowCoordinatesForCounterClockwiseTriangles) {
