@@ -354,7 +354,9 @@ TEST(Scene, KeyListCoversTheDefaultSceneAndTheReadme) {
     EXPECT_TRUE(readme.find("`" + short_path + "`") != std::string::npos ||
                 readme.find("`" + last + "`") != std::string::npos)
         << "README.md's scene key table does not name " << k.path;
-    if (!k.optional) EXPECT_FALSE(scene_key_default(k.path).empty());
+    if (!k.optional) {
+      EXPECT_FALSE(scene_key_default(k.path).empty());
+    }
   }
   // Every leaf of the default scene is a key the loader reads.
   std::function<void(const nlohmann::json&, const std::string&)> leaves = [&](const nlohmann::json& j,
