@@ -85,8 +85,8 @@ common="log_path=$reports/report:exitcode=86:halt_on_error=1"
 export ASAN_OPTIONS="$common:suppressions=$supp/asan.supp:detect_leaks=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1:verify_asan_link_order=0:intercept_tls_get_addr=0"
 export LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="$common:print_stacktrace=1"
-# TSan: scripts/sanitizer/tsan.supp (oneTBB's and Embree's internals; see there and
-# common/parallel.cpp).
+# TSan: scripts/sanitizer/tsan.supp (oneTBB's internals, and Embree's and the image libraries'
+# own threads; see there and common/parallel.cpp).
 export TSAN_OPTIONS="$common:second_deadlock_stack=1:suppressions=$supp/tsan.supp:print_suppressions=0"
 
 scripts/install-deps.sh >&2
