@@ -8,10 +8,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/dump_budget.h"
 #include "common/error.h"
 #include "common/parallel.h"
 #include "pipeline/camera.h"
@@ -99,23 +101,6 @@ void write_as(const std::filesystem::path& temp, const std::filesystem::path& ta
   }
 }
 
-// An 8-bit file whose writer reports no write errors (PNG, BMP, TGA, JPEG under a file-size limit
-// or on a full disk) is read back whole before it counts as written.
-void verify_written(const std::filesystem::path& temp, const Framebuffer& fb) {
-  // Writers that keep floats (EXR, TIFF, HDR) report failed writes themselves.
-  if (check_image_path(temp, ImageKind::Color).stores_float) return;
-  bool whole = false;
-  try {
-    const Rgb8Image back = read_rgb8_image(temp);  // 8 bits, as written: no float conversion
-    whole = back.width == fb.width && back.height == fb.height;
-  } catch (const InputError&) {
-  }
-  if (!whole)
-    throw InputError(temp.string() +
-                     ": the written file does not read back whole (the writer failed without saying so: a full "
-                     "disk, a file size limit, or an image size the format cannot hold)");
-}
-
 // The scene as drawn: its file (or "<default scene>") and the keys --set changed.
 std::string drawn_scene_name(const Scene& scene, const std::vector<std::string>& sets) {
   std::string name = scene.source, keys;
@@ -149,35 +134,6 @@ void warn_nothing_drawn(const DrawStats& s) {
                static_cast<unsigned long long>(s.tess.patches_discarded));
 }
 
-std::string gigabytes(std::uint64_t bytes) {
-  char buf[64];
-  const double b = double(bytes);
-  const unsigned long long n = bytes;
-  if (b >= 1e9) std::snprintf(buf, sizeof buf, "%.1f GB (%llu bytes)", b / 1e9, n);
-  else if (b >= 1e6) std::snprintf(buf, sizeof buf, "%.1f MB (%llu bytes)", b / 1e6, n);
-  else std::snprintf(buf, sizeof buf, "%llu bytes", n);
-  return buf;
-}
-
-// How large --dump-tess may grow: --max-dump-bytes, and never more than the free space where it
-// goes (less 64 MiB for the images written beside it). `why` says which bound it is.
-std::uint64_t dump_limit(const RenderOptions& o, std::string& why) {
-  std::error_code ec;
-  const std::filesystem::path folder = std::filesystem::absolute(o.dump_tess).parent_path();
-  const std::filesystem::space_info space = std::filesystem::space(folder, ec);
-  std::uint64_t limit = UINT64_MAX;
-  if (!ec) {
-    const std::uint64_t margin = 64ull << 20;
-    limit = space.available > margin ? space.available - margin : 0;
-    why = "the " + gigabytes(limit) + " free in " + folder.string() + " (less 64 MiB for the images)";
-  }
-  if (o.max_dump_bytes != 0 && o.max_dump_bytes < limit) {
-    limit = o.max_dump_bytes;
-    why = "--max-dump-bytes " + std::to_string(o.max_dump_bytes);
-  }
-  return limit;
-}
-
 void run_render(const RenderOptions& o) {
   Scene scene = load_scene(o.scene, o.sets);
   // Every output checked before any work: its folder, its format, and no two on one file. All
@@ -205,23 +161,13 @@ void run_render(const RenderOptions& o) {
 
   const Parallel parallel(o.threads);
   std::unique_ptr<TessDumpWriter> dump;
-  std::uint64_t dump_bytes_allowed = 0;
-  std::string dump_bound;
+  std::optional<DumpBudget> budget;
   if (!o.dump_tess.empty()) {
     if (!scene.tessellation.enabled)
       throw InputError("--dump-tess: the scene does not tessellate (tessellation.enabled is false)");
     write_as(dump_tmp, o.dump_tess, [&] { dump = std::make_unique<TessDumpWriter>(dump_tmp.string()); });
-    dump_bytes_allowed = dump_limit(o, dump_bound);
-    // Refused before drawing when the size is known up front (fixed levels, built-in programs).
-    if (const auto invocations = predicted_tes_invocations(scene, mesh)) {
-      const std::uint64_t estimate = TessDumpWriter::estimated_bytes(*invocations, dump->text());
-      if (estimate > dump_bytes_allowed)
-        throw InputError(o.dump_tess + ": --dump-tess would write " + (dump->text() ? "about " : "") +
-                         gigabytes(estimate) + " (" + std::to_string(*invocations) +
-                         " tessellated vertices), more than " + dump_bound +
-                         "; lower the levels or dump to another place" +
-                         (o.max_dump_bytes == dump_bytes_allowed ? ", or raise --max-dump-bytes" : ""));
-    }
+    budget.emplace(o.dump_tess, o.max_dump_bytes);
+    if (const auto invocations = predicted_tes_invocations(scene, mesh)) budget->check_estimate(*invocations, dump->text());
   }
   // --repeat: every frame renders the same scene again into the same framebuffer memory (as a GL
   // application redraws into its framebuffer); the first also feeds --dump-tess (the records are
@@ -237,11 +183,7 @@ void run_render(const RenderOptions& o) {
       if (dump && i == 0)
         options.dump_tess = [&](const std::vector<TessDumpRecord>& r) {
           dump->write(r);
-          // Levels chosen per patch (adaptive, control shaders) are only known while drawing.
-          if (dump->bytes_written() > dump_bytes_allowed)
-            throw InputError(o.dump_tess + ": --dump-tess stopped after " + gigabytes(dump->bytes_written()) +
-                             " (" + std::to_string(dump->records_written()) + " tessellated vertices), more than " +
-                             dump_bound + "; nothing was written");
+          budget->check_written(*dump);
         };
       const auto t0 = Clock::now();
       result.stats = render_scene(scene, mesh, parallel, result.framebuffer, options);
@@ -255,10 +197,7 @@ void run_render(const RenderOptions& o) {
 
   t = Clock::now();
   const Framebuffer& fb = result.framebuffer;
-  write_as(color_tmp, o.output, [&] {
-    write_color_image(fb, color_tmp);
-    verify_written(color_tmp, fb);
-  });
+  write_as(color_tmp, o.output, [&] { write_color_image(fb, color_tmp); });
   if (!o.depth.empty()) write_as(depth_tmp, o.depth, [&] { write_depth_image(fb, depth_tmp); });
   if (!o.normals.empty()) write_as(normals_tmp, o.normals, [&] { write_normals_image(fb, normals_tmp); });
   outputs.commit();

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "common/error.h"
+#include "common/hash.h"
 #include "glref/gl_context.h"
 #include "glref/scene_renderer.h"
 #include "pipeline/image_output.h"
@@ -33,10 +34,10 @@ std::string utc_now() {
 
 // FNV-1a, 64 bits, over the scene as read (compact JSON): names the scene a capture belongs to.
 std::string scene_hash(const nlohmann::json& scene_json) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (unsigned char c : scene_json.dump()) h = (h ^ c) * 1099511628211ull;
+  Fnv1a f;
+  for (unsigned char c : scene_json.dump()) f.mix(c);
   char buf[24];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(f.h));
   return buf;
 }
 

@@ -196,7 +196,15 @@ const ProbeAnswer& answer_for(const std::filesystem::path& path, ImageKind kind)
   return it->second;
 }
 
-ImageFormat usable_format(const std::filesystem::path& path, ImageKind kind) {
+std::uint8_t unorm8(float c) {
+  if (!(c > 0.0f)) return 0;  // also NaN
+  if (c >= 1.0f) return 255;
+  return static_cast<std::uint8_t>(c * 255.0f + 0.5f);
+}
+
+}  // namespace
+
+ImageFormat check_image_path(const std::filesystem::path& path, ImageKind kind) {
   const ProbeAnswer& a = answer_for(path, kind);
   if (a.error.empty()) return a.format;
   const std::string ext = lower_extension(path).empty() ? "(no extension)" : lower_extension(path);
@@ -206,14 +214,6 @@ ImageFormat usable_format(const std::filesystem::path& path, ImageKind kind) {
   throw InputError(path.string() + ": this build's OpenImageIO cannot write " + need + " as " + ext + ": " +
                    a.error + "; it can as " + writable_image_extensions(kind));
 }
-
-std::uint8_t unorm8(float c) {
-  if (!(c > 0.0f)) return 0;  // also NaN
-  if (c >= 1.0f) return 255;
-  return static_cast<std::uint8_t>(c * 255.0f + 0.5f);
-}
-
-}  // namespace
 
 Rgb8Image to_rgb8(const Framebuffer& fb) {
   Rgb8Image img{fb.width, fb.height, std::vector<std::uint8_t>(std::size_t(fb.width) * fb.height * 3)};
@@ -227,12 +227,8 @@ Rgb8Image to_rgb8(const Framebuffer& fb) {
   return img;
 }
 
-ImageFormat check_image_path(const std::filesystem::path& path, ImageKind kind) {
-  return usable_format(path, kind);
-}
-
 void write_color_image(const Framebuffer& fb, const std::filesystem::path& path) {
-  const ImageFormat format = usable_format(path, ImageKind::Color);
+  const ImageFormat format = check_image_path(path, ImageKind::Color);
   if (!format.stores_float) return write_rgb8_image(to_rgb8(fb), path);
   const int channels = format.channels;
   std::vector<float> rows = flipped(fb, channels, [&](std::size_t i, float* dst) {
@@ -242,13 +238,13 @@ void write_color_image(const Framebuffer& fb, const std::filesystem::path& path)
 }
 
 void write_depth_image(const Framebuffer& fb, const std::filesystem::path& path) {
-  usable_format(path, ImageKind::Depth);
+  check_image_path(path, ImageKind::Depth);
   std::vector<float> rows = flipped(fb, 1, [&](std::size_t i, float* dst) { dst[0] = fb.depth[i]; });
   write_image(path, fb.width, fb.height, 1, TESSREF_IMAGE_IO_FLOAT, rows.data(), {"Z"});
 }
 
 void write_normals_image(const Framebuffer& fb, const std::filesystem::path& path) {
-  usable_format(path, ImageKind::Normals);
+  check_image_path(path, ImageKind::Normals);
   std::vector<float> rows = flipped(fb, 3, [&](std::size_t i, float* dst) {
     for (int k = 0; k < 3; ++k) dst[k] = fb.aux[i][k];
   });
@@ -257,6 +253,20 @@ void write_normals_image(const Framebuffer& fb, const std::filesystem::path& pat
 
 void write_rgb8_image(const Rgb8Image& image, const std::filesystem::path& path) {
   write_image(path, image.width, image.height, 3, TESSREF_IMAGE_IO_UINT8, image.pixels.data());
+  // Writers that keep floats (EXR, TIFF, HDR) report failed writes themselves; the 8-bit ones
+  // (PNG, BMP, TGA, JPEG under a file-size limit or on a full disk, JPEG 2000 below 32 pixels)
+  // may not, so their file counts as written only when it reads back whole.
+  if (check_image_path(path, ImageKind::Color).stores_float) return;
+  bool whole = false;
+  try {
+    const Rgb8Image back = read_rgb8_image(path);  // 8 bits, as written: no float conversion
+    whole = back.width == image.width && back.height == image.height;
+  } catch (const InputError&) {
+  }
+  if (!whole)
+    throw InputError(path.string() +
+                     ": the written file does not read back whole (the writer failed without saying so: a full "
+                     "disk, a file size limit, or an image size the format cannot hold)");
 }
 
 Rgb8Image read_rgb8_image(const std::filesystem::path& path) {

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "common/error.h"
+#include "common/hash.h"
 
 namespace tessref {
 namespace {
@@ -15,10 +16,6 @@ bool finite(const glm::vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-// A normal we can normalize: finite and not (nearly) zero.
-bool usable_normal(const glm::vec3& n) {
-  return finite(n) && glm::dot(n, n) > 1e-30f;
-}
 
 glm::vec3 face_normal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
   return glm::cross(b - a, c - a);
@@ -39,6 +36,8 @@ float corner_angle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
 }
 
 }  // namespace
+
+bool usable_normal(const glm::vec3& n) { return finite(n) && glm::dot(n, n) > 1e-30f; }
 
 std::vector<glm::vec3> face_weighted_normals(const std::vector<glm::vec3>& positions,
                                              const std::vector<std::uint32_t>& indices) {
@@ -73,9 +72,9 @@ Mesh weld_by_position(const std::vector<glm::vec3>& positions,
   };
   struct KeyHash {
     std::size_t operator()(const Key& k) const {
-      std::size_t h = 1469598103934665603ull;
-      for (std::uint32_t b : k.bits) h = (h ^ b) * 1099511628211ull;
-      return h;
+      Fnv1a f;
+      for (std::uint32_t b : k.bits) f.mix(b);
+      return std::size_t(f.h);
     }
   };
   Mesh out;

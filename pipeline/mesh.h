@@ -32,6 +32,9 @@ struct MeshRepairs {
 //     non-finite normals are recomputed from the faces, all normals are normalized.
 MeshRepairs validate_mesh(Mesh& mesh, const std::string& source);
 
+// A normal welding keeps (then normalizes): finite and not (nearly) zero. Others are replaced.
+bool usable_normal(const glm::vec3& n);
+
 // Angle-weighted average of the unit face normals around each vertex; where every angle at a
 // vertex rounds to zero (a needle's tip), the area-weighted average; zero where no
 // non-degenerate face touches the vertex. Summed in triangle order: deterministic.

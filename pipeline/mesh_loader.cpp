@@ -1,5 +1,6 @@
 #include "pipeline/mesh_loader.h"
 
+#include <algorithm>
 #include <cctype>
 #include <climits>
 #include <cmath>
@@ -17,6 +18,7 @@
 #include <assimp/scene.h>
 
 #include "common/error.h"
+#include "common/hash.h"
 
 namespace tessref {
 namespace {
@@ -27,7 +29,6 @@ struct Soup {
   std::vector<std::uint32_t> indices;
   std::size_t skipped_faces = 0;
   std::vector<bool> stored;  // per vertex: the file gave its normal
-  bool has_normals = false;  // some mesh stored normals
 };
 
 // Stored normals that point into the surface on most faces (a mesh with its faces wound
@@ -55,9 +56,9 @@ void join_exact_duplicates(Soup& soup) {
     std::size_t operator()(const Key& k) const {
       std::uint32_t w[6];
       std::memcpy(w, &k, sizeof w);
-      std::size_t h = 1469598103934665603ull;
-      for (std::uint32_t x : w) h = (h ^ x) * 1099511628211ull;
-      return h;
+      Fnv1a f;
+      for (std::uint32_t x : w) f.mix(x);
+      return std::size_t(f.h);
     }
   };
   static_assert(sizeof(Key) == 6 * sizeof(float));
@@ -83,11 +84,7 @@ void join_exact_duplicates(Soup& soup) {
 // Stored normals that welding must replace (from their twins at the position, else the faces).
 std::size_t bad_stored_normals(const Soup& soup) {
   std::size_t bad = 0;
-  for (std::size_t v = 0; v < soup.normals.size(); ++v) {
-    const glm::vec3& n = soup.normals[v];
-    if (soup.stored[v] && !(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z) && glm::dot(n, n) > 0.0f))
-      ++bad;
-  }
+  for (std::size_t v = 0; v < soup.normals.size(); ++v) bad += soup.stored[v] && !usable_normal(soup.normals[v]);
   return bad;
 }
 
@@ -106,7 +103,6 @@ void append_mesh(const aiMesh& mesh, const glm::mat4& transform, Soup& soup,
     soup.positions.push_back(glm::vec3(transform * glm::vec4(p.x, p.y, p.z, 1.0f)));
     if (mesh.HasNormals()) {
       const aiVector3D& n = mesh.mNormals[v];
-      soup.has_normals = true;
       soup.stored.push_back(true);
       soup.normals.push_back(normal_matrix * glm::vec3(n.x, n.y, n.z));
     } else {
@@ -287,7 +283,7 @@ Mesh load_mesh_file(const std::filesystem::path& path, std::vector<std::string>&
     warnings.push_back(name + ": " + std::to_string(bad_normals) +
                        " stored normals are zero, NaN or infinite; replaced by the normals of "
                        "their welded twins or of the faces around them");
-  if (soup.has_normals) {
+  if (std::find(soup.stored.begin(), soup.stored.end(), true) != soup.stored.end()) {
     const std::size_t against = faces_against_normals(mesh);
     if (2 * against > mesh.triangle_count())
       warnings.push_back(name + ": the stored normals point against the faces' winding on " +

@@ -7,7 +7,6 @@
 #include <deque>
 #include <fstream>
 #include <limits>
-#include <map>
 #include <unordered_map>
 
 #include "common/error.h"
@@ -71,38 +70,59 @@ Reference load_reference(const std::filesystem::path& dir) {
 
 TessComparison compare_tess(const std::vector<TessDumpRecord>& reference_emitted,
                             const std::vector<TessDumpRecord>& tessref_points) {
+  // Both streams come patch by patch in mesh order (the capture checks its order, the draw emits
+  // in it); a stream that does not is put in that order first.
+  const auto by_patch = [](const TessDumpRecord& a, const TessDumpRecord& b) { return a.patch_id < b.patch_id; };
+  std::vector<TessDumpRecord> ref_sorted, mine_sorted;
+  const auto in_order = [&](const std::vector<TessDumpRecord>& s, std::vector<TessDumpRecord>& copy)
+      -> const std::vector<TessDumpRecord>& {
+    if (std::is_sorted(s.begin(), s.end(), by_patch)) return s;
+    copy = s;
+    std::stable_sort(copy.begin(), copy.end(), by_patch);
+    return copy;
+  };
+  const std::vector<TessDumpRecord>& ref = in_order(reference_emitted, ref_sorted);
+  const std::vector<TessDumpRecord>& mine = in_order(tessref_points, mine_sorted);
+
   TessComparison c;
-  // Both streams come patch by patch in mesh order; group them by patch id.
-  std::map<std::uint32_t, std::pair<std::vector<const TessDumpRecord*>, std::vector<const TessDumpRecord*>>> patches;
-  for (const TessDumpRecord& r : reference_emitted) patches[r.patch_id].first.push_back(&r);
-  for (const TessDumpRecord& r : tessref_points) patches[r.patch_id].second.push_back(&r);
-  c.reference_vertices = reference_emitted.size();
-  for (const auto& [patch, streams] : patches) {
+  c.reference_vertices = ref.size();
+  std::unordered_map<std::uint64_t, std::size_t> generated;  // coordinate -> its first point in `mine`
+  std::vector<char> emitted;                                  // per point of the patch in `mine`
+  for (std::size_t i = 0, j = 0; i < ref.size() || j < mine.size();) {
+    // The next patch either stream has, and its range in each.
+    const std::uint32_t patch = std::min(i < ref.size() ? ref[i].patch_id : UINT32_MAX,
+                                         j < mine.size() ? mine[j].patch_id : UINT32_MAX);
+    const std::size_t i0 = i, j0 = j;
+    while (i < ref.size() && ref[i].patch_id == patch) ++i;
+    while (j < mine.size() && mine[j].patch_id == patch) ++j;
     ++c.patches;
-    std::unordered_map<std::uint64_t, const TessDumpRecord*> generated;
-    for (const TessDumpRecord* r : streams.second) generated.emplace(coord_key(r->tess_coord), r);
-    std::unordered_map<std::uint64_t, bool> emitted;
+    generated.clear();
+    for (std::size_t k = j0; k < j; ++k) generated.emplace(coord_key(mine[k].tess_coord), k - j0);
+    emitted.assign(j - j0, 0);
     bool mismatch = false;
-    for (const TessDumpRecord* ref : streams.first) {
-      const auto it = generated.find(coord_key(ref->tess_coord));
-      if (it == generated.end() || std::memcmp(&it->second->tess_coord, &ref->tess_coord, sizeof(glm::vec3)) != 0) {
+    for (std::size_t k = i0; k < i; ++k) {
+      const TessDumpRecord& r = ref[k];
+      const auto it = generated.find(coord_key(r.tess_coord));
+      const TessDumpRecord* m = it == generated.end() ? nullptr : &mine[j0 + it->second];
+      if (!m || std::memcmp(&m->tess_coord, &r.tess_coord, sizeof(glm::vec3)) != 0) {
         ++c.unmatched_vertices;
         mismatch = true;
         continue;
       }
-      emitted[it->first] = true;
+      emitted[it->second] = 1;
       c.max_position_distance =
-          std::max(c.max_position_distance, double(glm::length(glm::dvec3(ref->position) - glm::dvec3(it->second->position))));
-      for (int k = 0; k < 3; ++k) {
-        const std::uint32_t dp = ulp_distance(ref->position[k], it->second->position[k]);
-        const std::uint32_t dn = ulp_distance(ref->normal[k], it->second->normal[k]);
+          std::max(c.max_position_distance, double(glm::length(glm::dvec3(r.position) - glm::dvec3(m->position))));
+      for (int k3 = 0; k3 < 3; ++k3) {
+        const std::uint32_t dp = ulp_distance(r.position[k3], m->position[k3]);
+        const std::uint32_t dn = ulp_distance(r.normal[k3], m->normal[k3]);
         ++c.position_ulps[ulp_bucket(dp)];
         ++c.normal_ulps[ulp_bucket(dn)];
         if (dp > c.max_position_ulp) c.max_position_ulp = dp, c.worst_position_patch = patch;
         c.max_normal_ulp = std::max(c.max_normal_ulp, dn);
       }
     }
-    if (emitted.size() != generated.size()) mismatch = true;  // generated but never emitted
+    // Every coordinate tessref generated must have been emitted.
+    if (std::size_t(std::count(emitted.begin(), emitted.end(), 1)) != generated.size()) mismatch = true;
     if (mismatch) {
       ++c.patches_mismatched;
       if (c.first_mismatched_patch < 0) c.first_mismatched_patch = patch;

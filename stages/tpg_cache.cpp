@@ -2,6 +2,8 @@
 
 #include <bit>
 
+#include "common/hash.h"
+
 namespace tessref {
 
 std::size_t TessPattern::bytes() const {
@@ -46,14 +48,12 @@ TessPatternCache::Key TessPatternCache::make_key(const TessLayout& layout, const
 
 std::size_t TessPatternCache::KeyHash::operator()(const Key& k) const {
   // FNV-1a over the fields (the struct has padding, so not over its bytes).
-  std::uint64_t h = 1469598103934665603ull;
-  auto mix = [&h](std::uint64_t v) { h = (h ^ v) * 1099511628211ull; };
-  mix(k.domain | k.spacing << 8 | k.winding << 16 | k.point_mode << 24 |
-      std::uint64_t(k.odd_collapse) << 32);
-  mix(std::uint32_t(k.max_level));
-  for (std::uint32_t v : k.outer) mix(v);
-  for (std::uint32_t v : k.inner) mix(v);
-  return std::size_t(h);
+  Fnv1a f;
+  f.mix(k.domain | k.spacing << 8 | k.winding << 16 | k.point_mode << 24 | std::uint64_t(k.odd_collapse) << 32);
+  f.mix(std::uint32_t(k.max_level));
+  for (std::uint32_t v : k.outer) f.mix(v);
+  for (std::uint32_t v : k.inner) f.mix(v);
+  return std::size_t(f.h);
 }
 
 std::shared_ptr<const TessPattern> TessPatternCache::get(const TessLayout& layout,
