@@ -1,151 +1,62 @@
 // `tessref verify [SCENE] --ref DIR`: tessref's rendering of a scene against a GL driver's capture
-// of it (`tessref capture`): the gl_TessCoord streams patch by patch (exact), positions and
-// normals there (ULP histograms), coverage (mismatched pixels and their distance to the
-// silhouette) and colour. Exit 0 when the coordinates are identical, positions within 1e-5 of the
-// bounding-box diagonal, every coverage mismatch on the silhouette and (by default) 99.99% of the
-// pixels within 2/255 (a highlight's exponent turns a last-bit normal difference into a few
-// levels on single pixels: 1 of 262144 on scenes/spider.json at 512x512); 1 when not; 2 for bad input.
-#include <cmath>
+// of it (`tessref capture`), every comparison of verify/verify_scene.h. Exit 0 when every
+// tolerance holds, 1 when one does not, 2 for bad input.
 #include <cstdio>
 #include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "cli/commands.h"
 #include "common/error.h"
-#include "common/parallel.h"
-#include "pipeline/camera.h"
-#include "pipeline/mesh_source.h"
 #include "pipeline/output_files.h"
-#include "pipeline/render.h"
-#include "pipeline/scene_loader.h"
-#include "pipeline/verify.h"
+#include "verify/verify_scene.h"
 
 namespace tessref::cli {
 namespace {
 
-// Positions may differ by rounding (the driver's compiler may reorder or fuse), not by more than
-// this share of the bounding-box diagonal.
-constexpr double kMaxDistance = 1e-5;
-
 struct VerifyArgs {
-  std::string scene, ref, json, heat;
+  std::string scene, ref, json, heat, images;
   std::vector<std::string> sets;
   int threads = 0;
-  double color_share = 99.99;  // percent of pixels within 2/255 required
+  VerifyLimits limits;
+  bool allow_cracks = false;
 };
 
-nlohmann::json histogram_json(const UlpHistogram& h) {
-  nlohmann::json j = nlohmann::json::object();
-  for (std::size_t b = 0; b < h.size(); ++b)
-    if (h[b]) j[ulp_bucket_name(b)] = h[b];
-  return j;
-}
-
-// The heat map: black where both agree, yellow for a mismatch on tessref's silhouette (distance
-// 0 or 1), red for one farther off.
-Rgb8Image heat_image(const CoverageComparison& c, int width, int height) {
-  Rgb8Image img{width, height, std::vector<std::uint8_t>(std::size_t(width) * height * 3, 0)};
-  for (std::size_t i = 0; i < c.heat.size(); ++i) {
-    if (c.heat[i] == 0.0f) continue;
-    img.pixels[3 * i] = 255;
-    img.pixels[3 * i + 1] = c.heat[i] <= 2.0f ? 255 : 0;
-  }
-  return img;
-}
-
-void run(const VerifyArgs& a) {
-  Scene scene = load_scene(a.scene, a.sets);
-  const nlohmann::json scene_json = load_scene_json(a.scene, a.sets);
+void run(VerifyArgs a) {
+  a.limits.cracks_fail = !a.allow_cracks;
   OutputFiles outputs;
   std::filesystem::path json_tmp, heat_tmp;
   if (!a.json.empty()) json_tmp = outputs.add("--json", a.json);
   if (!a.heat.empty()) {
-    heat_tmp = outputs.add("--heat", a.heat);
     check_image_path(a.heat, ImageKind::Color);
+    heat_tmp = outputs.add("--heat", a.heat);
   }
-  const Reference ref = load_reference(a.ref);
-  if (ref.manifest.contains("scene") && ref.manifest["scene"] != scene_json)
-    std::fprintf(stderr, "tessref: warning: %s was captured from another scene than %s (the manifest's scene "
-                         "differs); the comparison below is of different scenes\n",
-                 a.ref.c_str(), scene.source.c_str());
-  std::vector<std::string> warnings;
-  const Mesh mesh = build_mesh(scene.mesh, warnings);
-  scene.camera = fitted_camera(scene, mesh);
-  for (const std::string& w : warnings) std::fprintf(stderr, "tessref: warning: %s\n", w.c_str());
+  static const char* kImages[4] = {"tessref.png", "reference.png", "difference.png", "heat.png"};
+  std::filesystem::path image_tmp[4];
+  if (!a.images.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(a.images, ec);
+    if (ec) throw InputError(a.images + ": cannot create the folder: " + ec.message());
+    for (int k = 0; k < 4; ++k) image_tmp[k] = outputs.add("--images", std::filesystem::path(a.images) / kImages[k]);
+  }
 
-  std::vector<TessDumpRecord> points;
-  DrawOptions options;
-  if (scene.tessellation.enabled)
-    options.dump_tess = [&](const std::vector<TessDumpRecord>& r) { points.insert(points.end(), r.begin(), r.end()); };
-  const RenderResult result = render_scene(scene, mesh, Parallel(a.threads), options);
-
-  const CoverageComparison coverage = compare_coverage(ref.depth, result.framebuffer);
-  const ColorComparison color = compare_color(ref.color, to_rgb8(result.framebuffer));
-  const bool tessellated = scene.tessellation.enabled && !ref.tess.empty();
-  const TessComparison tess = tessellated ? compare_tess(ref.tess, points) : TessComparison{};
-  // Distances relative to the size of what is drawn: the world-space bounding box's diagonal.
-  glm::vec3 lo(INFINITY), hi(-INFINITY);
-  for (const TessDumpRecord& r : points) lo = glm::min(lo, r.position), hi = glm::max(hi, r.position);
-  const double diagonal = points.empty() ? 1.0 : double(glm::length(hi - lo));
-  const bool pass = (!tessellated || (tess.coords_identical() && tess.max_position_distance <= kMaxDistance * diagonal)) &&
-                    coverage.off_silhouette == 0 &&
-                    100.0 * double(color.within_2) >= a.color_share * double(color.pixels);
-
-  const std::string driver = ref.manifest.value("gl_renderer", std::string("unknown driver"));
-  std::printf("tessref verify: %s against %s (%s), %dx%d: %s\n", scene.source.c_str(), a.ref.c_str(), driver.c_str(),
-              scene.width, scene.height, pass ? "PASS" : "FAIL");
-  if (tessellated)
-    std::printf("  tessellation: %llu patches, %llu with gl_TessCoord streams that differ%s; %llu emitted vertices, "
-                "%llu not generated by tessref; largest ULP distance: position %u (patch %lld), normal %u; largest "
-                "position difference %.3g of the bounding-box diagonal\n",
-                static_cast<unsigned long long>(tess.patches), static_cast<unsigned long long>(tess.patches_mismatched),
-                tess.first_mismatched_patch >= 0 ? (" (first: patch " + std::to_string(tess.first_mismatched_patch) + ")").c_str()
-                                                 : "",
-                static_cast<unsigned long long>(tess.reference_vertices),
-                static_cast<unsigned long long>(tess.unmatched_vertices), tess.max_position_ulp,
-                static_cast<long long>(tess.worst_position_patch), tess.max_normal_ulp,
-                tess.max_position_distance / diagonal);
-  std::printf("  coverage: %llu pixels covered by the driver, %llu by tessref; %llu differ, %llu of them more than "
-              "one pixel from tessref's silhouette\n",
-              static_cast<unsigned long long>(coverage.covered_reference),
-              static_cast<unsigned long long>(coverage.covered_tessref),
-              static_cast<unsigned long long>(coverage.mismatched),
-              static_cast<unsigned long long>(coverage.off_silhouette));
-  std::printf("  colour: %.4f%% of pixels within 1/255, %.4f%% within 2/255, largest difference %d/255, PSNR %.2f dB\n",
-              100.0 * double(color.within_1) / double(color.pixels), 100.0 * double(color.within_2) / double(color.pixels),
-              color.max_difference, color.psnr);
+  const VerifyResult r = verify_scene(a.scene, a.sets, a.ref, a.limits, Parallel(a.threads));
+  for (const auto& w : r.report["warnings"]) std::fprintf(stderr, "tessref: warning: %s\n", w.get<std::string>().c_str());
+  std::fputs(verify_summary(r.report).c_str(), stdout);
 
   if (!a.json.empty()) {
-    nlohmann::json j = {{"scene", scene.source}, {"reference", a.ref}, {"driver", driver}, {"pass", pass},
-                        {"width", scene.width}, {"height", scene.height},
-                        {"coverage",
-                         {{"covered_reference", coverage.covered_reference}, {"covered_tessref", coverage.covered_tessref},
-                          {"mismatched", coverage.mismatched}, {"off_silhouette", coverage.off_silhouette},
-                          {"mismatched_by_distance", coverage.by_distance}}},
-                        {"color",
-                         {{"within_1_255", color.within_1}, {"within_2_255", color.within_2}, {"pixels", color.pixels},
-                          {"max_difference_255", color.max_difference},
-                          {"psnr_db", std::isinf(color.psnr) ? nlohmann::json(nullptr) : nlohmann::json(color.psnr)}}}};
-    if (tessellated)
-      j["tessellation"] = {{"patches", tess.patches}, {"patches_mismatched", tess.patches_mismatched},
-                           {"first_mismatched_patch", tess.first_mismatched_patch},
-                           {"emitted_vertices", tess.reference_vertices}, {"unmatched_vertices", tess.unmatched_vertices},
-                           {"position_ulps", histogram_json(tess.position_ulps)},
-                           {"normal_ulps", histogram_json(tess.normal_ulps)},
-                           {"max_position_ulp", tess.max_position_ulp}, {"worst_position_patch", tess.worst_position_patch},
-                           {"max_normal_ulp", tess.max_normal_ulp},
-                           {"max_position_difference_of_diagonal", tess.max_position_distance / diagonal}};
     std::ofstream out(json_tmp);
-    out << j.dump(2) << "\n";
+    out << r.report.dump(2) << "\n";
     if (!out.flush()) throw InputError(a.json + ": cannot write");
   }
-  if (!a.heat.empty()) write_rgb8_image(heat_image(coverage, scene.width, scene.height), heat_tmp);
+  if (!a.heat.empty()) write_rgb8_image(r.heat, heat_tmp);
+  if (!a.images.empty()) {
+    const Rgb8Image* images[4] = {&r.tessref, &r.reference, &r.difference, &r.heat};
+    for (int k = 0; k < 4; ++k) write_rgb8_image(*images[k], image_tmp[k]);
+  }
   outputs.commit();
-  if (!pass) set_exit_code(1);
+  if (!r.pass()) set_exit_code(1);
 }
 
 }  // namespace
@@ -154,15 +65,27 @@ void add_verify_command(CLI::App& app) {
   auto args = std::make_shared<VerifyArgs>();
   CLI::App* cmd = app.add_subcommand(
       "verify", "Compare tessref's rendering of a scene with a GL driver's capture of it (`tessref capture`): "
-                "exit 0 when they agree, 1 when not");
+                "gl_TessCoord streams, surface distances and silhouettes by Embree ray casting, cracks, colour. "
+                "Exit 0 when every tolerance holds, 1 when one does not");
   add_scene_options(cmd, args->scene, args->sets);
   cmd->add_option("--ref", args->ref, "the capture folder")->required();
-  cmd->add_option("--json", args->json, "also write the figures as JSON");
-  cmd->add_option("--heat", args->heat, "also write the coverage heat map (yellow: on the silhouette, red: off it)");
-  cmd->add_option("--color-share", args->color_share,
+  cmd->add_option("--json", args->json, "also write the report as JSON");
+  cmd->add_option("--heat", args->heat, "also write the silhouette heat map (yellow: within the limit, red: beyond)");
+  cmd->add_option("--images", args->images,
+                  "also write tessref.png, reference.png, difference.png (x8) and heat.png into this folder");
+  cmd->add_option("--max-distance", args->limits.max_distance,
+                  "largest Hausdorff distance and position difference, as a share of the bounding-box diagonal")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--silhouette-px", args->limits.silhouette_px,
+                  "a coverage mismatch whose pixel centre is farther than this from the silhouette fails")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  cmd->add_option("--color-share", args->limits.color_share,
                   "percent of pixels that must be within 2/255 of the reference")
       ->check(CLI::Range(0.0, 100.0))
       ->capture_default_str();
+  cmd->add_flag("--allow-cracks", args->allow_cracks, "report cracks between patches without failing");
   cmd->add_option("--threads", args->threads, "worker threads (0: all hardware threads)")
       ->check(kInteger)
       ->check(CLI::Range(0, 4096));

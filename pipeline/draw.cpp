@@ -98,7 +98,7 @@ void draw_tessellated(const std::vector<programs::VertexOut>& shaded, const Mesh
   std::vector<TessDumpRecord> records;
   TessOptions tess_options;
   tess_options.patches_per_task = std::clamp<std::size_t>(kTaskTriangles / per_patch, 1, 64);
-  if (options.dump_tess) tess_options.dump = &records;
+  if (options.dump_tess || options.tess_surface) tess_options.dump = &records;
   const TessDrawInput input{control_points, mesh.indices, 3};
   const std::size_t patches = input.patch_count();
   std::size_t done = 0;
@@ -108,10 +108,9 @@ void draw_tessellated(const std::vector<programs::VertexOut>& shaded, const Mesh
       input, chunk, tcs, tes, tess_options, parallel,
       [&](const TriangleBatch& batch) {
         rasterize(batch);
-        if (options.dump_tess) {
-          options.dump_tess(records);
-          records.clear();
-        }
+        if (options.tess_surface) options.tess_surface(records, batch);
+        if (options.dump_tess) options.dump_tess(records);
+        records.clear();
         done = std::min(patches, done + chunk);
         if (options.progress) options.progress(double(done) / double(std::max<std::size_t>(1, patches)));
       });

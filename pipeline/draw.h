@@ -36,6 +36,9 @@ struct DrawOptions {
   // Tessellation: receives every TES invocation's record (patch id, gl_TessCoord, position,
   // normal), chunk by chunk in patch order, on the calling thread.
   std::function<void(const std::vector<TessDumpRecord>&)> dump_tess;
+  // Tessellation: receives each chunk's triangles with their vertices' records (the batch is
+  // indexed; vertex k of the batch is record k), before dump_tess, on the calling thread.
+  std::function<void(const std::vector<TessDumpRecord>&, const TriangleBatch&)> tess_surface;
 };
 
 // Draws the mesh's triangles, in mesh order, into fb. The bytes of fb do not depend on

@@ -71,7 +71,7 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
   std::vector<TessDumpRecord> records;
   TessOptions tess_options;
   tess_options.patches_per_task = 4;
-  if (options.dump_tess) tess_options.dump = &records;
+  if (options.dump_tess || options.tess_surface) tess_options.dump = &records;
   const std::size_t chunk = options.tess_chunk_patches ? options.tess_chunk_patches : kChunkPatches;
 
   for (int instance = 0; instance < call.instances; ++instance) {
@@ -96,10 +96,9 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
       stats.triangles_generated += batch.triangle_count();
       stats.raster += draw_triangles(batch, raster_state, *fs, fb, par);
       stats.raster_seconds += seconds_since(r0);
-      if (options.dump_tess) {
-        options.dump_tess(records);
-        records.clear();
-      }
+      if (options.tess_surface) options.tess_surface(records, batch);
+      if (options.dump_tess) options.dump_tess(records);
+      records.clear();
       done = std::min(patches, done + chunk);
       if (options.progress)
         options.progress((double(instance) + double(done) / double(std::max<std::size_t>(1, patches))) /

@@ -66,27 +66,13 @@ std::vector<glm::vec3> face_weighted_normals(const std::vector<glm::vec3>& posit
 Mesh weld_by_position(const std::vector<glm::vec3>& positions,
                       const std::vector<glm::vec3>& normals,
                       const std::vector<std::uint32_t>& indices) {
-  struct Key {
-    std::uint32_t bits[3];
-    bool operator==(const Key& o) const { return std::memcmp(bits, o.bits, sizeof bits) == 0; }
-  };
-  struct KeyHash {
-    std::size_t operator()(const Key& k) const {
-      Fnv1a f;
-      for (std::uint32_t b : k.bits) f.mix(b);
-      return std::size_t(f.h);
-    }
-  };
   Mesh out;
   std::vector<std::uint32_t> remap(positions.size());
-  std::unordered_map<Key, std::uint32_t, KeyHash> first;
+  std::unordered_map<FloatBits3, std::uint32_t, FloatBits3::Hash> first;
   first.reserve(positions.size());
   for (std::size_t v = 0; v < positions.size(); ++v) {
-    Key k;
-    for (int c = 0; c < 3; ++c) {
-      float f = positions[v][c] + 0.0f;  // -0 and +0 weld together
-      std::memcpy(&k.bits[c], &f, sizeof f);
-    }
+    const glm::vec3 p = positions[v] + 0.0f;  // -0 and +0 weld together
+    const FloatBits3 k(&p.x);
     auto [it, inserted] = first.try_emplace(k, static_cast<std::uint32_t>(out.positions.size()));
     if (inserted) out.positions.push_back(positions[v]);
     remap[v] = it->second;

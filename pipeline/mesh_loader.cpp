@@ -215,7 +215,7 @@ bool ply_header_ends(const std::filesystem::path& path) {
 
 }  // namespace
 
-Mesh load_mesh_file(const std::filesystem::path& path, std::vector<std::string>& warnings) {
+Mesh load_mesh_file(const std::filesystem::path& path, std::vector<std::string>& warnings, bool split_normals) {
   const std::string name = path.string();
   auto fail = [&](const std::string& what) { throw InputError(name + ": " + what); };
   std::error_code ec;
@@ -271,7 +271,18 @@ Mesh load_mesh_file(const std::filesystem::path& path, std::vector<std::string>&
   }
   join_exact_duplicates(soup);
   const std::size_t bad_normals = bad_stored_normals(soup);
-  Mesh mesh = weld_by_position(soup.positions, soup.normals, soup.indices);
+  Mesh mesh;
+  if (split_normals) {
+    // Vertices stay as stored (joined only where position and normal both match); a normal that
+    // cannot be used is zeroed here and recomputed from the faces by validate_mesh.
+    mesh.positions = soup.positions;
+    mesh.indices = soup.indices;
+    for (std::size_t v = 0; v < soup.normals.size(); ++v)
+      mesh.normals.push_back(soup.stored[v] && usable_normal(soup.normals[v]) ? glm::normalize(soup.normals[v])
+                                                                                : glm::vec3(0.0f));
+  } else {
+    mesh = weld_by_position(soup.positions, soup.normals, soup.indices);
+  }
   MeshRepairs repairs = validate_mesh(mesh, name);
   if (repairs.degenerate_triangles_dropped)
     warnings.push_back(name + ": dropped " + std::to_string(repairs.degenerate_triangles_dropped) +

@@ -13,6 +13,7 @@ namespace tessref {
 // per position, or angle-weighted face normals), then validated (validate_mesh). Points and
 // lines are skipped. Throws InputError naming the file for anything unreadable; appends what
 // was skipped or repaired to `warnings`.
-Mesh load_mesh_file(const std::filesystem::path& path, std::vector<std::string>& warnings);
+Mesh load_mesh_file(const std::filesystem::path& path, std::vector<std::string>& warnings,
+                    bool split_normals = false);
 
 }  // namespace tessref

@@ -14,7 +14,7 @@ Mesh build_mesh(const MeshSettings& s, std::vector<std::string>& warnings) {
                         s.torus_minor_segments);
       break;
     case MeshType::Cube: mesh = make_cube(s.cube_size); break;
-    case MeshType::File: return load_mesh_file(s.path, warnings);
+    case MeshType::File: return load_mesh_file(s.path, warnings, s.split_normals);
   }
   validate_mesh(mesh, "procedural mesh");  // generators are exact: this only normalizes
   return mesh;

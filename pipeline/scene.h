@@ -20,6 +20,10 @@ enum class MeshType { Icosphere, Torus, Cube, File };
 struct MeshSettings {
   MeshType type = MeshType::Icosphere;
   std::filesystem::path path;  // type file: resolved against the scene file's folder
+  // false: vertices at one position share one normal (the file's normals there averaged), so PN
+  // patches meet without cracks; true: each face keeps the normals the file gives it (seed 000,
+  // Figure 5: where they differ along an edge, the patches part). Procedural meshes have one.
+  bool split_normals = false;
   int icosphere_refinements = 1;
   float icosphere_radius = 1.0f;
   float torus_major_radius = 1.0f;

@@ -56,6 +56,11 @@ MeshSettings read_mesh(JsonObject o, const std::filesystem::path& base_dir) {
     std::filesystem::path p = o.string("path");
     m.path = p.is_relative() ? base_dir / p : p;
   }
+  const std::string normals = o.string("normals");
+  o.describe("normals", "one of shared, split (a file's normals per face, as stored: cracks where they differ)");
+  if (normals != "shared" && normals != "split")
+    o.fail("normals", "expected one of shared, split, got \"" + normals + "\"");
+  m.split_normals = normals == "split";
   if (m.type == MeshType::File && m.path.empty())
     o.fail("path", "required when mesh.type is \"file\" (a path relative to the scene file)");
   JsonObject ico = o.object("icosphere");

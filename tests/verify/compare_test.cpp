@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "common/parallel.h"
-#include "pipeline/verify.h"
+#include "verify/compare.h"
 
 namespace tessref {
 namespace {

@@ -1,4 +1,4 @@
-#include "pipeline/verify.h"
+#include "verify/compare.h"
 
 #include <algorithm>
 #include <bit>

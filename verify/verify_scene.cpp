@@ -1,0 +1,288 @@
+#include "verify/verify_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "common/error.h"
+#include "pipeline/camera.h"
+#include "pipeline/mesh_source.h"
+#include "pipeline/render.h"
+#include "pipeline/scene_loader.h"
+#include "verify/compare.h"
+#include "verify/cracks.h"
+#include "verify/silhouette.h"
+#include "verify/surface_distance.h"
+
+namespace tessref {
+namespace {
+
+nlohmann::json histogram_json(const UlpHistogram& h) {
+  nlohmann::json j = nlohmann::json::object();
+  for (std::size_t b = 0; b < h.size(); ++b)
+    if (h[b]) j[ulp_bucket_name(b)] = h[b];
+  return j;
+}
+
+nlohmann::json vec_json(const glm::vec3& v) { return {v.x, v.y, v.z}; }
+
+// Without tessellation the surface is the mesh's triangles in world space, one patch each.
+TessSurface mesh_surface(const Scene& scene, const Mesh& mesh) {
+  TessSurface s;
+  const glm::mat4 model = model_matrix(scene.transform);
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t v = mesh.indices[3 * t + k];
+      TessDumpRecord r;
+      r.patch_id = std::uint32_t(t);
+      r.position = glm::vec3(model * glm::vec4(mesh.positions[v], 1.0f));
+      r.normal = glm::vec3(glm::transpose(glm::inverse(model)) * glm::vec4(mesh.normals[v], 0.0f));
+      s.indices.push_back(std::uint32_t(s.points.size()));
+      s.points.push_back(r);
+    }
+  return s;
+}
+
+Rgb8Image difference_image(const Rgb8Image& a, const Rgb8Image& b) {
+  Rgb8Image d{a.width, a.height, std::vector<std::uint8_t>(a.pixels.size())};
+  for (std::size_t i = 0; i < a.pixels.size(); ++i)
+    d.pixels[i] = std::uint8_t(std::min(255, 8 * std::abs(int(a.pixels[i]) - int(b.pixels[i]))));
+  return d;
+}
+
+Rgb8Image heat_image(const SilhouetteComparison& s, const FloatImage& depth, double limit) {
+  Rgb8Image img{depth.width, depth.height, std::vector<std::uint8_t>(depth.pixels.size() * 3, 0)};
+  for (std::size_t i = 0; i < depth.pixels.size(); ++i) {
+    std::uint8_t* p = &img.pixels[3 * i];
+    if (s.distance[i] < 0.0f) {
+      if (depth.pixels[i] < 1.0f) p[0] = p[1] = p[2] = 64;
+      continue;
+    }
+    p[0] = 255;
+    p[1] = s.distance[i] <= limit ? 255 : 0;
+  }
+  return img;
+}
+
+}  // namespace
+
+VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::string>& sets,
+                          const std::string& reference, const VerifyLimits& limits, const Parallel& parallel) {
+  Scene scene = load_scene(scene_path, sets);
+  const nlohmann::json scene_json = load_scene_json(scene_path, sets);
+  const Reference ref = load_reference(reference);
+  nlohmann::json j;
+  j["scene"] = scene.source;
+  j["reference"] = reference;
+  j["driver"] = ref.manifest.value("gl_renderer", std::string("unknown driver"));
+  j["driver_version"] = ref.manifest.value("gl_version", std::string());
+  j["width"] = scene.width;
+  j["height"] = scene.height;
+  std::vector<std::string> warnings, failures;
+  if (ref.manifest.contains("scene") && ref.manifest["scene"] != scene_json)
+    warnings.push_back(reference + " was captured from another scene than " + scene.source +
+                       " (the manifest's scene differs); the comparison is of different scenes");
+  const Mesh mesh = build_mesh(scene.mesh, warnings);
+  scene.camera = fitted_camera(scene, mesh);
+
+  TessSurface mine;
+  DrawOptions options;
+  if (scene.tessellation.enabled)
+    options.tess_surface = [&](const std::vector<TessDumpRecord>& r, const TriangleBatch& b) { mine.append(r, b); };
+  const RenderResult result = render_scene(scene, mesh, parallel, options);
+  if (!scene.tessellation.enabled) mine = mesh_surface(scene, mesh);
+  const double diagonal = mine.diagonal();
+  j["diagonal"] = diagonal;
+  double severity = 0.0;  // the largest measured / limit; above 1 fails
+  const auto rate = [&](double measured, double limit) { severity = std::max(severity, measured / limit); };
+
+  // gl_TessCoord streams and the values at them.
+  const bool tessellated = scene.tessellation.enabled && !ref.tess.empty();
+  if (tessellated) {
+    const TessComparison t = compare_tess(ref.tess, mine.points);
+    const double position = t.max_position_distance / diagonal;
+    j["tessellation"] = {{"patches", t.patches}, {"patches_mismatched", t.patches_mismatched},
+                         {"first_mismatched_patch", t.first_mismatched_patch},
+                         {"emitted_vertices", t.reference_vertices}, {"unmatched_vertices", t.unmatched_vertices},
+                         {"position_ulps", histogram_json(t.position_ulps)}, {"normal_ulps", histogram_json(t.normal_ulps)},
+                         {"max_position_ulp", t.max_position_ulp}, {"worst_position_patch", t.worst_position_patch},
+                         {"max_normal_ulp", t.max_normal_ulp}, {"max_position_difference_of_diagonal", position}};
+    if (!t.coords_identical()) {
+      failures.push_back("gl_TessCoord streams differ in " + std::to_string(t.patches_mismatched) + " of " +
+                         std::to_string(t.patches) + " patches (first: patch " +
+                         std::to_string(t.first_mismatched_patch) + ")");
+      rate(1.0 + double(t.patches_mismatched), 1.0);
+    }
+    rate(position, limits.max_distance);
+  }
+
+  const SurfaceOracle mine_oracle(mine);
+  // Two-sided distance between the surfaces.
+  if (tessellated) {
+    const TessSurface theirs = TessSurface::from_emitted(ref.tess);
+    const SurfaceOracle their_oracle(theirs);
+    const SurfaceDistance d = surface_distance(theirs, their_oracle, mine, mine_oracle, parallel);
+    const auto side = [&](const SurfaceDistance::Side& s) {
+      return nlohmann::json{{"samples", s.samples}, {"max_of_diagonal", s.max / diagonal},
+                            {"rms_of_diagonal", s.rms / diagonal}, {"worst_patch", s.worst_patch}};
+    };
+    nlohmann::json worst = nlohmann::json::array();
+    for (const auto& [patch, dist] : d.worst_patches)
+      worst.push_back({{"patch", patch}, {"distance_of_diagonal", dist / diagonal}});
+    j["surface_distance"] = {{"hausdorff_of_diagonal", d.hausdorff / diagonal},
+                             {"reference_to_tessref", side(d.reference_to_tessref)},
+                             {"tessref_to_reference", side(d.tessref_to_reference)},
+                             {"worst_patches", worst}};
+    if (d.hausdorff > limits.max_distance * diagonal) {
+      char buf[160];
+      std::snprintf(buf, sizeof buf, "Hausdorff distance %.3g of the diagonal (limit %g; worst: patch %u)",
+                    d.hausdorff / diagonal, limits.max_distance, d.worst_patches.empty() ? 0u : d.worst_patches[0].first);
+      failures.push_back(buf);
+    }
+    rate(d.hausdorff / diagonal, limits.max_distance);
+  }
+
+  // Silhouette: Embree's coverage of tessref's surface against the driver's.
+  if (ref.depth.width != scene.width || ref.depth.height != scene.height)
+    throw InputError(reference + ": the capture is " + std::to_string(ref.depth.width) + "x" +
+                     std::to_string(ref.depth.height) + ", the scene renders " + std::to_string(scene.width) + "x" +
+                     std::to_string(scene.height));
+  const glm::mat4 view_projection = projection_matrix(scene.camera, scene.width, scene.height) * view_matrix(scene.camera);
+  const SilhouetteComparison s = compare_silhouette(ref.depth, mine, mine_oracle, view_projection, scene.cull_back_faces, parallel);
+  std::uint64_t beyond = 0;
+  for (std::size_t i = 0; i < s.distance.size(); ++i) beyond += s.distance[i] > limits.silhouette_px;
+  nlohmann::json buckets = nlohmann::json::object();
+  for (std::size_t b = 0; b < s.by_distance.size(); ++b)
+    if (s.by_distance[b]) buckets[kSilhouetteBuckets[b]] = s.by_distance[b];
+  j["silhouette"] = {{"covered_reference", s.covered_reference}, {"covered_rays", s.covered_rays},
+                     {"mismatched", s.mismatched}, {"beyond_limit", beyond}, {"max_distance_px", s.max_distance},
+                     {"by_distance_px", buckets}, {"silhouette_edges", s.silhouette_edges},
+                     {"worst_pixels", s.worst_pixels}};
+  if (beyond) {
+    failures.push_back(std::to_string(beyond) + " coverage mismatches farther than " +
+                       std::to_string(limits.silhouette_px).substr(0, 3) + " px from the silhouette (worst at pixel " +
+                       std::to_string(s.worst_pixels[0][0]) + "," + std::to_string(s.worst_pixels[0][1]) + ", " +
+                       std::to_string(s.max_distance) + " px)");
+  }
+  rate(s.max_distance, limits.silhouette_px);
+
+  // The rasterizer's coverage against the driver's, pixel for pixel.
+  const CoverageComparison coverage = compare_coverage(ref.depth, result.framebuffer);
+  j["coverage"] = {{"covered_reference", coverage.covered_reference}, {"covered_tessref", coverage.covered_tessref},
+                   {"mismatched", coverage.mismatched}, {"off_silhouette", coverage.off_silhouette},
+                   {"mismatched_by_distance", coverage.by_distance}};
+
+  // Cracks between tessref's patches.
+  if (scene.tessellation.enabled) {
+    const CrackReport c = find_cracks(mine, mine_oracle, parallel);
+    nlohmann::json worst = nlohmann::json::array();
+    for (std::size_t k = 0; k < std::min<std::size_t>(10, c.cracked.size()); ++k)
+      worst.push_back({{"patches", {c.cracked[k].patch_a, c.cracked[k].patch_b}},
+                       {"from", vec_json(c.cracked[k].from)}, {"to", vec_json(c.cracked[k].to)},
+                       {"gap_of_diagonal", c.cracked[k].gap / diagonal}, {"rays_through", c.cracked[k].rays_through}});
+    j["cracks"] = {{"examined", c.triangles}, {"patches", c.patches}, {"shared_edges", c.shared_edges},
+                   {"unshared_edges", c.unshared_edges}, {"rays", c.rays}, {"rays_through", c.rays_through},
+                   {"cracked_edges", c.cracked.size()}, {"max_gap_of_diagonal", c.max_gap / diagonal},
+                   {"worst", worst}};
+    if (!c.cracked.empty() && limits.cracks_fail) {
+      failures.push_back(std::to_string(c.cracked.size()) + " cracked edges (" + std::to_string(c.rays_through) +
+                         " rays through; widest between patches " + std::to_string(c.cracked[0].patch_a) + " and " +
+                         std::to_string(c.cracked[0].patch_b) + ")");
+      rate(1.0 + double(c.cracked.size()), 1.0);
+    }
+  }
+
+  // Colour.
+  VerifyResult out;
+  out.reference = ref.color;
+  out.tessref = to_rgb8(result.framebuffer);
+  const ColorComparison color = compare_color(ref.color, out.tessref);
+  const double share = 100.0 * double(color.within_2) / double(std::max<std::uint64_t>(color.pixels, 1));
+  j["color"] = {{"within_1_255", color.within_1}, {"within_2_255", color.within_2}, {"pixels", color.pixels},
+                {"max_difference_255", color.max_difference},
+                {"psnr_db", std::isinf(color.psnr) ? nlohmann::json(nullptr) : nlohmann::json(color.psnr)}};
+  if (share < limits.color_share) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "%.4f%% of pixels within 2/255 (required: %g%%; largest difference %d/255)", share,
+                  limits.color_share, color.max_difference);
+    failures.push_back(buf);
+  }
+  rate((100.0 - share) / std::max(1e-9, 100.0 - limits.color_share), 1.0);
+
+  j["limits"] = {{"max_distance_of_diagonal", limits.max_distance}, {"silhouette_px", limits.silhouette_px},
+                 {"color_share_percent", limits.color_share}, {"cracks_fail", limits.cracks_fail}};
+  j["pass"] = failures.empty();
+  j["failures"] = failures;
+  j["warnings"] = warnings;
+  j["severity"] = severity;
+  out.report = std::move(j);
+  out.difference = difference_image(ref.color, out.tessref);
+  out.heat = heat_image(s, ref.depth, limits.silhouette_px);
+  return out;
+}
+
+std::string verify_summary(const nlohmann::json& j) {
+  std::string out;
+  char buf[512];
+  std::snprintf(buf, sizeof buf, "tessref verify: %s against %s (%s), %dx%d: %s\n", j["scene"].get<std::string>().c_str(),
+                j["reference"].get<std::string>().c_str(), j["driver"].get<std::string>().c_str(), j["width"].get<int>(),
+                j["height"].get<int>(), j["pass"].get<bool>() ? "PASS" : "FAIL");
+  out += buf;
+  if (j.contains("tessellation")) {
+    const auto& t = j["tessellation"];
+    std::snprintf(buf, sizeof buf,
+                  "  gl_TessCoord: %llu patches, %llu with streams that differ; %llu emitted vertices, %llu not "
+                  "generated by tessref; largest ULP distance: position %u (patch %lld), normal %u\n",
+                  t["patches"].get<unsigned long long>(), t["patches_mismatched"].get<unsigned long long>(),
+                  t["emitted_vertices"].get<unsigned long long>(), t["unmatched_vertices"].get<unsigned long long>(),
+                  t["max_position_ulp"].get<unsigned>(), t["worst_position_patch"].get<long long>(),
+                  t["max_normal_ulp"].get<unsigned>());
+    out += buf;
+  }
+  if (j.contains("surface_distance")) {
+    const auto& d = j["surface_distance"];
+    std::snprintf(buf, sizeof buf,
+                  "  surface distance (of the diagonal): Hausdorff %.3g; driver -> tessref max %.3g rms %.3g, tessref "
+                  "-> driver max %.3g rms %.3g\n",
+                  d["hausdorff_of_diagonal"].get<double>(), d["reference_to_tessref"]["max_of_diagonal"].get<double>(),
+                  d["reference_to_tessref"]["rms_of_diagonal"].get<double>(),
+                  d["tessref_to_reference"]["max_of_diagonal"].get<double>(),
+                  d["tessref_to_reference"]["rms_of_diagonal"].get<double>());
+    out += buf;
+  }
+  const auto& s = j["silhouette"];
+  std::snprintf(buf, sizeof buf,
+                "  silhouette (Embree rays): %llu pixels covered by the driver, %llu by the rays; %llu differ, the "
+                "farthest %.3f px from the silhouette, %llu beyond the limit\n",
+                s["covered_reference"].get<unsigned long long>(), s["covered_rays"].get<unsigned long long>(),
+                s["mismatched"].get<unsigned long long>(), s["max_distance_px"].get<double>(),
+                s["beyond_limit"].get<unsigned long long>());
+  out += buf;
+  const auto& c = j["coverage"];
+  std::snprintf(buf, sizeof buf, "  raster coverage: %llu pixels differ from the driver's, %llu more than one pixel from the silhouette\n",
+                c["mismatched"].get<unsigned long long>(), c["off_silhouette"].get<unsigned long long>());
+  out += buf;
+  if (j.contains("cracks")) {
+    const auto& k = j["cracks"];
+    if (!k["examined"].get<bool>())
+      out += "  cracks: not examined (not a triangle domain)\n";
+    else {
+      std::snprintf(buf, sizeof buf, "  cracks: %llu shared edges, %llu rays, %llu through (%llu edges); largest gap %.3g of the diagonal\n",
+                    k["shared_edges"].get<unsigned long long>(), k["rays"].get<unsigned long long>(),
+                    k["rays_through"].get<unsigned long long>(), k["cracked_edges"].get<unsigned long long>(),
+                    k["max_gap_of_diagonal"].get<double>());
+      out += buf;
+    }
+  }
+  const auto& col = j["color"];
+  const double pixels = col["pixels"].get<double>();
+  std::snprintf(buf, sizeof buf, "  colour: %.4f%% of pixels within 1/255, %.4f%% within 2/255, largest difference %d/255, PSNR %s dB\n",
+                100.0 * col["within_1_255"].get<double>() / pixels, 100.0 * col["within_2_255"].get<double>() / pixels,
+                col["max_difference_255"].get<int>(),
+                col["psnr_db"].is_null() ? "inf" : std::to_string(col["psnr_db"].get<double>()).c_str());
+  out += buf;
+  for (const auto& f : j["failures"]) out += "  FAIL: " + f.get<std::string>() + "\n";
+  return out;
+}
+
+}  // namespace tessref
