@@ -2,6 +2,7 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 #include <fstream>
@@ -12,6 +13,7 @@
 #include "glref/scene_renderer.h"
 #include "pipeline/image_output.h"
 #include "pipeline/output_files.h"
+#include "pipeline/tess_digest.h"
 #include "pipeline/tess_dump.h"
 
 namespace tessref::glref {
@@ -45,7 +47,7 @@ std::string scene_hash(const nlohmann::json& scene_json) {
 
 CaptureSummary capture_reference(GlContext& context, const Scene& scene, const Mesh& mesh,
                                  const nlohmann::json& scene_json, const std::string& command_line,
-                                 const std::filesystem::path& dir) {
+                                 const std::filesystem::path& dir, std::size_t max_tess_records) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError(dir.string() + ": cannot create the capture folder (" + ec.message() + ")");
@@ -53,6 +55,7 @@ CaptureSummary capture_reference(GlContext& context, const Scene& scene, const M
   const auto color = outputs.add("color", dir / "color.png");
   const auto depth = outputs.add("depth", dir / "depth.exr");
   const auto tess = outputs.add("tess", dir / "tess.bin");
+  const auto digests = outputs.add("tess_patches", dir / "tess_patches.bin");
   const auto manifest_path = outputs.add("manifest", dir / "manifest.json");
 
   SceneRenderer renderer(context, scene, mesh);
@@ -62,13 +65,26 @@ CaptureSummary capture_reference(GlContext& context, const Scene& scene, const M
   CaptureSummary summary;
   {
     TessDumpWriter writer(tess.string());
-    if (scene.tessellation.enabled) {
-      std::vector<TessDumpRecord> records;
+    std::vector<TessDumpRecord> records;
+    if (scene.tessellation.enabled)
       for (const TessOutputVertex& v : renderer.capture_tess())
         records.push_back(TessDumpRecord{v.patch, v.tess_coord, v.position, v.normal});
-      writer.write(records);
-      summary.tess_records = records.size();
+    summary.tess_records = records.size();
+    write_patch_digests(digests.string(), digest_patches(records));
+    if (max_tess_records && records.size() > max_tess_records) {
+      // Patches are about equally heavy: a stride of records / budget, rounded up, then grown
+      // until the sample fits.
+      summary.patch_stride = std::uint32_t((records.size() + max_tess_records - 1) / max_tess_records);
+      for (;; ++summary.patch_stride) {
+        const auto kept = std::count_if(records.begin(), records.end(), [&](const TessDumpRecord& r) {
+          return r.patch_id % summary.patch_stride == 0;
+        });
+        if (std::size_t(kept) <= max_tess_records) break;
+      }
+      std::erase_if(records, [&](const TessDumpRecord& r) { return r.patch_id % summary.patch_stride != 0; });
     }
+    summary.tess_records_stored = records.size();
+    writer.write(records);
     writer.close();
   }
   context.make_current();
@@ -90,8 +106,13 @@ CaptureSummary capture_reference(GlContext& context, const Scene& scene, const M
       {"files",
        {{"color", "color.png (8-bit RGB, quantized as tessref's PNGs are)"},
         {"depth", "depth.exr (window-space depth, 1 where nothing was drawn)"},
-        {"tess", "tess.bin (--dump-tess binary format; one record per emitted vertex, 3 per triangle)"}}},
-      {"tess_records", summary.tess_records}};
+        {"tess", "tess.bin (--dump-tess binary format; one record per emitted vertex, 3 per triangle, of the "
+                 "patches whose id is a multiple of tess_patch_stride)"},
+        {"tess_patches", "tess_patches.bin (per patch: emitted vertices and a hash of its distinct gl_TessCoord; "
+                         "pipeline/tess_digest.h)"}}},
+      {"tess_records", summary.tess_records},
+      {"tess_records_stored", summary.tess_records_stored},
+      {"tess_patch_stride", summary.patch_stride}};
   {
     std::ofstream out(manifest_path);
     out << summary.manifest.dump(2) << "\n";

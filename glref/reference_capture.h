@@ -18,12 +18,17 @@ class GlContext;
 
 struct CaptureSummary {
   std::size_t tess_records = 0;  // emitted vertices captured (0 without tessellation)
+  std::size_t tess_records_stored = 0;  // of them, in tess.bin
+  std::uint32_t patch_stride = 1;       // tess.bin holds the patches whose id is a multiple of it
   nlohmann::json manifest;
 };
 
 // scene_json: the merged scene (pipeline/scene_loader.h: load_scene_json), stored in the manifest.
+// max_tess_records: 0 stores every emitted vertex in tess.bin; otherwise only every k-th patch's,
+// k the smallest stride that keeps tess.bin within that many records. tess_patches.bin always
+// holds every patch's digest (pipeline/tess_digest.h), so coordinates are compared for all.
 CaptureSummary capture_reference(GlContext& context, const Scene& scene, const Mesh& mesh,
                                  const nlohmann::json& scene_json, const std::string& command_line,
-                                 const std::filesystem::path& dir);
+                                 const std::filesystem::path& dir, std::size_t max_tess_records = 0);
 
 }  // namespace tessref::glref

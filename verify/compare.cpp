@@ -65,7 +65,34 @@ Reference load_reference(const std::filesystem::path& dir) {
   if (r.depth.channels != 1 || r.depth.width != r.color.width || r.depth.height != r.color.height)
     throw InputError((dir / "depth.exr").string() + ": expected one channel the size of color.png");
   if (std::filesystem::exists(dir / "tess.bin", ec)) r.tess = read_tess_dump((dir / "tess.bin").string());
+  if (std::filesystem::exists(dir / "tess_patches.bin", ec))
+    r.digests = read_patch_digests((dir / "tess_patches.bin").string());
+  const nlohmann::json stride = r.manifest.value("tess_patch_stride", nlohmann::json(1));
+  if (!stride.is_number_unsigned() || stride.get<std::uint64_t>() == 0 || stride.get<std::uint64_t>() > UINT32_MAX)
+    throw InputError(manifest.string() + ": tess_patch_stride must be a positive integer, got " + stride.dump());
+  r.patch_stride = stride.get<std::uint32_t>();
   return r;
+}
+
+std::vector<std::uint32_t> compare_digests(const std::vector<TessPatchDigest>& reference,
+                                           const std::vector<TessPatchDigest>& tessref) {
+  std::vector<TessPatchDigest> a(reference), b(tessref);
+  const auto by_patch = [](const TessPatchDigest& x, const TessPatchDigest& y) { return x.patch_id < y.patch_id; };
+  std::sort(a.begin(), a.end(), by_patch);
+  std::sort(b.begin(), b.end(), by_patch);
+  std::vector<std::uint32_t> differ;
+  std::size_t i = 0, j = 0;
+  while (i < a.size() || j < b.size()) {
+    if (j == b.size() || (i < a.size() && a[i].patch_id < b[j].patch_id)) {
+      differ.push_back(a[i++].patch_id);
+    } else if (i == a.size() || b[j].patch_id < a[i].patch_id) {
+      differ.push_back(b[j++].patch_id);
+    } else {
+      if (!(a[i] == b[j])) differ.push_back(a[i].patch_id);
+      ++i, ++j;
+    }
+  }
+  return differ;
 }
 
 TessComparison compare_tess(const std::vector<TessDumpRecord>& reference_emitted,
@@ -126,6 +153,7 @@ TessComparison compare_tess(const std::vector<TessDumpRecord>& reference_emitted
     if (mismatch) {
       ++c.patches_mismatched;
       if (c.first_mismatched_patch < 0) c.first_mismatched_patch = patch;
+      c.mismatched_patches.push_back(patch);
     }
   }
   return c;

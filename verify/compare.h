@@ -11,18 +11,24 @@
 #include <nlohmann/json.hpp>
 
 #include "pipeline/image_output.h"
+#include "pipeline/tess_digest.h"
 #include "raster/framebuffer.h"
 #include "stages/tess_stage.h"
 
 namespace tessref {
 
-// A capture folder: manifest.json, color.png, depth.exr and tess.bin (one record per vertex the
-// driver emitted, 3 per triangle, in the --dump-tess binary format; pipeline/tess_dump.h).
+// A capture folder: manifest.json, color.png, depth.exr, tess.bin (one record per vertex the
+// driver emitted, 3 per triangle, in the --dump-tess binary format; pipeline/tess_dump.h) and
+// tess_patches.bin (every patch's digest; pipeline/tess_digest.h). A heavy scene's tess.bin holds
+// only the patches whose id is a multiple of the manifest's tess_patch_stride.
 struct Reference {
   nlohmann::json manifest;
   Rgb8Image color;
   FloatImage depth;  // one channel, top row first; 1 where nothing was drawn
   std::vector<TessDumpRecord> tess;
+  std::vector<TessPatchDigest> digests;  // empty in captures made before digests existed
+  std::uint32_t patch_stride = 1;
+  bool sampled(std::uint32_t patch) const { return patch % patch_stride == 0; }
 };
 Reference load_reference(const std::filesystem::path& dir);  // InputError naming what is missing
 
@@ -35,6 +41,7 @@ struct TessComparison {
   std::uint64_t patches_mismatched = 0; // a reference coordinate tessref did not generate, a
                                         // tessref coordinate the driver never emitted, or counts differ
   std::int64_t first_mismatched_patch = -1;
+  std::vector<std::uint32_t> mismatched_patches;  // in patch order
   std::uint64_t reference_vertices = 0, unmatched_vertices = 0;
   UlpHistogram position_ulps{}, normal_ulps{};  // per component, at matched coordinates
   std::uint32_t max_position_ulp = 0, max_normal_ulp = 0;
@@ -46,6 +53,10 @@ struct TessComparison {
 // bit, and every one tessref generated must be emitted; position and normal compared there.
 TessComparison compare_tess(const std::vector<TessDumpRecord>& reference_emitted,
                             const std::vector<TessDumpRecord>& tessref_points);
+
+// The patches whose digests differ (count or distinct coordinates), or that only one side has.
+std::vector<std::uint32_t> compare_digests(const std::vector<TessPatchDigest>& reference,
+                                           const std::vector<TessPatchDigest>& tessref);
 
 struct CoverageComparison {
   std::uint64_t pixels = 0, covered_reference = 0, covered_tessref = 0;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 
 #include "common/error.h"
 #include "pipeline/camera.h"
@@ -96,17 +97,44 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
   double severity = 0.0;  // the largest measured / limit; above 1 fails
   const auto rate = [&](double measured, double limit) { severity = std::max(severity, measured / limit); };
 
-  // gl_TessCoord streams and the values at them.
-  const bool tessellated = scene.tessellation.enabled && !ref.tess.empty();
+  // gl_TessCoord streams and the values at them: in full for the patches tess.bin holds, by
+  // digest for every patch.
+  const bool tessellated = scene.tessellation.enabled && (!ref.tess.empty() || !ref.digests.empty());
+  TessSurface mine_sampled;  // tessref's triangles of the patches tess.bin holds
+  if (tessellated && ref.patch_stride > 1) {
+    mine_sampled.points = mine.points;
+    for (std::size_t t = 0; t < mine.triangle_count(); ++t)
+      if (ref.sampled(mine.patch_of(t))) mine_sampled.indices.insert(mine_sampled.indices.end(), &mine.indices[3 * t], &mine.indices[3 * t + 3]);
+  }
+  const TessSurface& mine_compared = ref.patch_stride > 1 ? mine_sampled : mine;
   if (tessellated) {
-    const TessComparison t = compare_tess(ref.tess, mine.points);
+    std::vector<TessDumpRecord> compared_points;
+    if (ref.patch_stride > 1)
+      std::copy_if(mine.points.begin(), mine.points.end(), std::back_inserter(compared_points),
+                   [&](const TessDumpRecord& r) { return ref.sampled(r.patch_id); });
+    TessComparison t = compare_tess(ref.tess, ref.patch_stride > 1 ? compared_points : mine.points);
+    if (!ref.digests.empty()) {
+      const std::vector<TessPatchDigest> digests = digest_patches(mine.points, mine.indices);
+      // Either finding counts: the digests cover every patch, the records the sampled ones (and
+      // a tess.bin edited without its digests).
+      std::vector<std::uint32_t> differ, by_digest = compare_digests(ref.digests, digests);
+      std::set_union(by_digest.begin(), by_digest.end(), t.mismatched_patches.begin(), t.mismatched_patches.end(),
+                     std::back_inserter(differ));
+      differ.erase(std::unique(differ.begin(), differ.end()), differ.end());
+      t.patches = std::max(ref.digests.size(), digests.size());
+      t.patches_mismatched = differ.size();
+      t.first_mismatched_patch = differ.empty() ? -1 : std::int64_t(differ.front());
+      t.reference_vertices = 0;
+      for (const TessPatchDigest& d : ref.digests) t.reference_vertices += d.emitted;
+    }
     const double position = t.max_position_distance / diagonal;
     j["tessellation"] = {{"patches", t.patches}, {"patches_mismatched", t.patches_mismatched},
                          {"first_mismatched_patch", t.first_mismatched_patch},
                          {"emitted_vertices", t.reference_vertices}, {"unmatched_vertices", t.unmatched_vertices},
                          {"position_ulps", histogram_json(t.position_ulps)}, {"normal_ulps", histogram_json(t.normal_ulps)},
                          {"max_position_ulp", t.max_position_ulp}, {"worst_position_patch", t.worst_position_patch},
-                         {"max_normal_ulp", t.max_normal_ulp}, {"max_position_difference_of_diagonal", position}};
+                         {"max_normal_ulp", t.max_normal_ulp}, {"max_position_difference_of_diagonal", position},
+                         {"patch_stride", ref.patch_stride}, {"records_compared", ref.tess.size()}};
     if (!t.coords_identical()) {
       failures.push_back("gl_TessCoord streams differ in " + std::to_string(t.patches_mismatched) + " of " +
                          std::to_string(t.patches) + " patches (first: patch " +
@@ -121,7 +149,7 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
   if (tessellated) {
     const TessSurface theirs = TessSurface::from_emitted(ref.tess);
     const SurfaceOracle their_oracle(theirs);
-    const SurfaceDistance d = surface_distance(theirs, their_oracle, mine, mine_oracle, parallel);
+    const SurfaceDistance d = surface_distance(theirs, their_oracle, mine_compared, mine_oracle, parallel);
     const auto side = [&](const SurfaceDistance::Side& s) {
       return nlohmann::json{{"samples", s.samples}, {"max_of_diagonal", s.max / diagonal},
                             {"rms_of_diagonal", s.rms / diagonal}, {"worst_patch", s.worst_patch}};
@@ -238,6 +266,9 @@ std::string verify_summary(const nlohmann::json& j) {
                   t["max_position_ulp"].get<unsigned>(), t["worst_position_patch"].get<long long>(),
                   t["max_normal_ulp"].get<unsigned>());
     out += buf;
+    if (t["patch_stride"].get<unsigned>() > 1)
+      out += "    (coordinates of every patch by digest; values and distances on every " +
+             std::to_string(t["patch_stride"].get<unsigned>()) + "th patch, the capture's sample)\n";
   }
   if (j.contains("surface_distance")) {
     const auto& d = j["surface_distance"];
