@@ -90,7 +90,8 @@ void draw_tessellated(const std::vector<programs::VertexOut>& shaded, const Mesh
     estimate_levels.inner.fill(levels.screen.max_level);
   }
   const std::size_t per_patch = std::max<std::size_t>(
-      1, generate_tessellation(tes.layout(), estimate_levels).primitive_count());
+      1, make_pattern(tes.layout(), estimate_levels, TessProfile::llvmpipe(), settings.tessellator)
+             ->points.primitive_count());
   const std::size_t chunk = options.tess_chunk_patches
                                 ? options.tess_chunk_patches
                                 : std::clamp<std::size_t>(kChunkTriangles / per_patch, 1, 4096);
@@ -98,6 +99,7 @@ void draw_tessellated(const std::vector<programs::VertexOut>& shaded, const Mesh
   std::vector<TessDumpRecord> records;
   TessOptions tess_options;
   tess_options.patches_per_task = std::clamp<std::size_t>(kTaskTriangles / per_patch, 1, 64);
+  tess_options.tessellator = settings.tessellator;
   if (options.dump_tess || options.tess_surface) tess_options.dump = &records;
   const TessDrawInput input{control_points, mesh.indices, 3};
   const std::size_t patches = input.patch_count();

@@ -59,7 +59,8 @@ std::optional<std::uint64_t> predicted_tes_invocations(const Scene& scene, const
   const TessellationSettings& t = scene.tessellation;
   if (!t.enabled || t.adaptive.enabled || scene.shaders.program != ShaderProgram::Builtin) return std::nullopt;
   const TessLayout layout{TessDomain::Triangles, t.spacing, t.winding, false};
-  const TessDomainPoints points = generate_tessellation(layout, t.levels);
+  const TessDomainPoints& points =
+      make_pattern(layout, t.levels, TessProfile::llvmpipe(), t.tessellator)->points;
   return std::uint64_t(mesh.triangle_count()) * (points.discarded ? 0 : points.coords.size());
 }
 

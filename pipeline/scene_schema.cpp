@@ -167,6 +167,7 @@ TessellationSettings read_tessellation(JsonObject o) {
       enum_value<NormalMode>(o, "normal_mode", "linear, quadratic, quadratic_corrected, analytic");
   t.spacing = enum_value<TessSpacing>(o, "spacing", "equal, fractional_odd, fractional_even");
   t.winding = enum_value<TessWinding>(o, "winding", "ccw, cw");
+  t.tessellator = enum_value<Tessellator>(o, "tessellator", "primitive_generator, uniform");
   // Every level is allowed, as a control shader may write any (docs/tpg.md: NaN or <= 0 outer
   // levels discard the patch; inner levels clamp, NaN to the lower bound).
   std::vector<float> inner = o.levels("inner", 1, 2);
@@ -179,6 +180,11 @@ TessellationSettings read_tessellation(JsonObject o) {
   t.adaptive.enabled = a.boolean("enabled");
   t.adaptive.pixels_per_segment = a.number_in("pixels_per_segment", 0.0f, kInf, true, true);
   a.finish();
+  // One n per patch from its own levels: adaptive levels would differ across a shared edge and
+  // open T-junction cracks, so uniform subdivision takes fixed levels only.
+  if (t.enabled && t.tessellator == Tessellator::Uniform && t.adaptive.enabled)
+    o.fail("tessellator", "\"uniform\" needs fixed levels; it cannot be used with adaptive.enabled",
+           {"adaptive.enabled", "enabled"});
   o.finish();
   return t;
 }
@@ -306,6 +312,13 @@ Scene scene_from_json(const json& root_json, const JsonSource& source,
   s.cull_back_faces = root.boolean("cull_back_faces");
   s.tessellation = read_tessellation(root.object("tessellation"));
   s.shaders = read_shaders(root.object("shaders"), source, mesh_base_dir);
+  // The GLSL path's TES may declare any domain; uniform subdivision is plumbed for the built-in
+  // programs only.
+  if (s.tessellation.enabled && s.tessellation.tessellator == Tessellator::Uniform &&
+      s.shaders.program != ShaderProgram::Builtin)
+    source.fail("tessellation.tessellator",
+                "\"uniform\" works with shaders.program \"builtin\" only",
+                {"tessellation.tessellator", "shaders.program", "tessellation.enabled"});
   root.finish();
   return s;
 }

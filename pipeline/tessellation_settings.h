@@ -1,6 +1,7 @@
 #pragma once
 // The scene's tessellation block: what the tessellation stages (stages/) will be asked to do.
 #include "stages/tpg.h"
+#include "stages/tpg_uniform.h"
 
 namespace tessref {
 
@@ -22,6 +23,9 @@ struct TessellationSettings {
   NormalMode normal_mode = NormalMode::Quadratic;
   TessSpacing spacing = TessSpacing::FractionalOdd;
   TessWinding winding = TessWinding::Ccw;
+  // The GL primitive generator, or uniform subdivision on the barycentric grid (seed 000's CPU
+  // tessellator; built-in programs and fixed levels only, docs/uniform-subdivision.md).
+  Tessellator tessellator = Tessellator::PrimitiveGenerator;
   TessLevels levels;  // used as is when adaptive is off (triangles: outer[0..2], inner[0])
   AdaptiveTessellation adaptive;
 };

@@ -155,7 +155,7 @@ void control_task(const TessDrawInput& input, std::size_t range_first, std::size
     t0 = Clock::now();
     for (int k = 0; k < count; ++k) {
       if (!task.memo || !same_levels(task.memo_levels, out[k]->levels)) {
-        task.memo = cache.get(layout, out[k]->levels, options.profile);
+        task.memo = cache.get(layout, out[k]->levels, options.profile, options.tessellator);
         task.memo_levels = out[k]->levels;
       }
       if (task.memo->points.discarded) {
@@ -268,7 +268,11 @@ void evaluate_task(std::size_t range_first, std::size_t first, std::size_t last,
 }
 
 void validate(const TessDrawInput& input, const TessControlProgram& tcs,
-              const TessEvalProgram& tes) {
+              const TessEvalProgram& tes, const TessOptions& options) {
+  // Checked here, before any task runs, rather than in a worker generating the pattern.
+  if (options.tessellator == Tessellator::Uniform && tes.layout().domain != TessDomain::Triangles)
+    throw std::invalid_argument(std::string("tessellate: uniform tessellation needs the triangles domain, the TES has ") +
+                                to_string(tes.layout().domain));
   if (input.patch_vertices < 1 || input.patch_vertices > kMaxPatchVertices)
     throw std::invalid_argument("tessellate: patch_vertices " +
                                 std::to_string(input.patch_vertices) + " outside 1.." +
@@ -378,7 +382,7 @@ TessStats tessellate_range(const TessDrawInput& input, std::size_t first_patch,
 TessStats tessellate(const TessDrawInput& input, std::size_t first_patch, std::size_t last_patch,
                      const TessControlProgram& tcs, const TessEvalProgram& tes,
                      const TessOptions& options, const Parallel& parallel, TriangleBatch& out) {
-  validate(input, tcs, tes);
+  validate(input, tcs, tes, options);
   ExecutorScratch scratch;
   return tessellate_range(input, first_patch, last_patch, tcs, tes, options, parallel, out,
                           scratch);
@@ -388,7 +392,7 @@ TessStats tessellate_chunks(const TessDrawInput& input, std::size_t chunk_patche
                             const TessControlProgram& tcs, const TessEvalProgram& tes,
                             const TessOptions& options, const Parallel& parallel,
                             const std::function<void(const TriangleBatch&)>& consume) {
-  validate(input, tcs, tes);
+  validate(input, tcs, tes, options);
   const std::size_t total = input.patch_count();
   const std::size_t chunk = std::max<std::size_t>(1, chunk_patches);
   TessStats stats;

@@ -164,6 +164,9 @@ struct TessOptions {
   // layouts that do not produce triangles. Without them such primitives are only counted.
   std::vector<ClipVertex>* lines = nullptr;
   std::vector<ClipVertex>* points = nullptr;
+  // Which pattern each patch's levels give: the primitive generator (GL) or uniform subdivision
+  // (triangle domain only; stages/tpg_uniform.h).
+  Tessellator tessellator = Tessellator::PrimitiveGenerator;
   // Where generated patterns are looked up; null: TessPatternCache::shared().
   TessPatternCache* patterns = nullptr;
 };

@@ -13,9 +13,10 @@ std::size_t TessPattern::bytes() const {
 }
 
 std::shared_ptr<const TessPattern> make_pattern(const TessLayout& layout, const TessLevels& levels,
-                                                const TessProfile& profile) {
+                                                const TessProfile& profile, Tessellator tessellator) {
   auto p = std::make_shared<TessPattern>();
-  generate_tessellation(layout, levels, profile, p->points);
+  if (tessellator == Tessellator::Uniform) generate_uniform(layout, levels, profile, p->points);
+  else generate_tessellation(layout, levels, profile, p->points);
   const std::size_t n = p->points.coords.size();
   const std::size_t padded = (n + kPatternPadding - 1) / kPatternPadding * kPatternPadding;
   for (int c = 0; c < 3; ++c) {
@@ -33,8 +34,9 @@ TessPatternCache& TessPatternCache::shared() {
 }
 
 TessPatternCache::Key TessPatternCache::make_key(const TessLayout& layout, const TessLevels& levels,
-                                                 const TessProfile& profile) {
+                                                 const TessProfile& profile, Tessellator tessellator) {
   Key k{};
+  k.tessellator = std::uint8_t(tessellator);
   k.domain = std::uint8_t(layout.domain);
   k.spacing = std::uint8_t(layout.spacing);
   k.winding = std::uint8_t(layout.winding);
@@ -49,7 +51,8 @@ TessPatternCache::Key TessPatternCache::make_key(const TessLayout& layout, const
 std::size_t TessPatternCache::KeyHash::operator()(const Key& k) const {
   // FNV-1a over the fields (the struct has padding, so not over its bytes).
   Fnv1a f;
-  f.mix(k.domain | k.spacing << 8 | k.winding << 16 | k.point_mode << 24 | std::uint64_t(k.odd_collapse) << 32);
+  f.mix(k.domain | k.spacing << 8 | k.winding << 16 | k.point_mode << 24 | std::uint64_t(k.odd_collapse) << 32 |
+        std::uint64_t(k.tessellator) << 40);
   f.mix(std::uint32_t(k.max_level));
   for (std::uint32_t v : k.outer) f.mix(v);
   for (std::uint32_t v : k.inner) f.mix(v);
@@ -58,8 +61,9 @@ std::size_t TessPatternCache::KeyHash::operator()(const Key& k) const {
 
 std::shared_ptr<const TessPattern> TessPatternCache::get(const TessLayout& layout,
                                                         const TessLevels& levels,
-                                                        const TessProfile& profile) {
-  const Key key = make_key(layout, levels, profile);
+                                                        const TessProfile& profile,
+                                                        Tessellator tessellator) {
+  const Key key = make_key(layout, levels, profile, tessellator);
   {
     std::shared_lock lock(mutex_);
     auto it = map_.find(key);
@@ -68,7 +72,7 @@ std::shared_ptr<const TessPattern> TessPatternCache::get(const TessLayout& layou
       return it->second;
     }
   }
-  auto pattern = make_pattern(layout, levels, profile);  // outside the lock: other keys proceed
+  auto pattern = make_pattern(layout, levels, profile, tessellator);  // outside the lock: other keys proceed
   std::unique_lock lock(mutex_);
   auto [it, inserted] = map_.try_emplace(key, pattern);
   if (!inserted) {

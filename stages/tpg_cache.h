@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "stages/tpg.h"
+#include "stages/tpg_uniform.h"
 
 namespace tessref {
 
@@ -32,7 +33,8 @@ class TessPatternCache {
   explicit TessPatternCache(std::size_t max_bytes = std::size_t(64) << 20);
 
   std::shared_ptr<const TessPattern> get(const TessLayout& layout, const TessLevels& levels,
-                                         const TessProfile& profile);
+                                         const TessProfile& profile,
+                                         Tessellator tessellator = Tessellator::PrimitiveGenerator);
 
   struct Stats {
     std::uint64_t hits = 0, misses = 0, clears = 0;
@@ -47,6 +49,7 @@ class TessPatternCache {
  private:
   struct Key {
     std::uint8_t domain, spacing, winding, point_mode, odd_collapse;
+    std::uint8_t tessellator;  // a uniform pattern is never served for the TPG's levels
     std::int32_t max_level;
     std::uint32_t outer[4], inner[2];  // level bit patterns: NaN and -0 are keys like any other
     bool operator==(const Key&) const = default;
@@ -54,7 +57,8 @@ class TessPatternCache {
   struct KeyHash {
     std::size_t operator()(const Key& k) const;
   };
-  static Key make_key(const TessLayout& layout, const TessLevels& levels, const TessProfile& profile);
+  static Key make_key(const TessLayout& layout, const TessLevels& levels, const TessProfile& profile,
+                      Tessellator tessellator);
 
   std::size_t max_bytes_;
   mutable std::shared_mutex mutex_;
@@ -66,6 +70,7 @@ class TessPatternCache {
 
 // Builds a pattern without the cache (what the cache stores for a key).
 std::shared_ptr<const TessPattern> make_pattern(const TessLayout& layout, const TessLevels& levels,
-                                                const TessProfile& profile);
+                                                const TessProfile& profile,
+                                                Tessellator tessellator = Tessellator::PrimitiveGenerator);
 
 }  // namespace tessref
