@@ -1,6 +1,7 @@
 // `tessref verify [SCENE] --ref DIR`: tessref's rendering of a scene against a GL driver's capture
-// of it (`tessref capture`), every comparison of verify/verify_scene.h. Exit 0 when every
-// tolerance holds, 1 when one does not, 2 for bad input.
+// of it (`tessref capture`), every comparison of verify/verify_scene.h. With a folder of scenes, a
+// campaign (cli/verify_campaign.h); with --merge, the merge of campaigns' reports. Exit 0 when
+// every tolerance holds, 1 when one does not, 2 for bad input.
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -8,6 +9,9 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/shard.h"
+#include "cli/verify_campaign.h"
+#include "cli/verify_html.h"
 #include "common/error.h"
 #include "pipeline/output_files.h"
 #include "verify/verify_scene.h"
@@ -16,15 +20,58 @@ namespace tessref::cli {
 namespace {
 
 struct VerifyArgs {
-  std::string scene, ref, json, heat, images;
-  std::vector<std::string> sets;
+  std::string scene, ref, json, heat, images, html, out, shard;
+  std::vector<std::string> sets, merge;
   int threads = 0;
   VerifyLimits limits;
   bool allow_cracks = false;
 };
 
+// Options that belong to one mode only, given in another: name them rather than ignore them.
+void refuse(const std::string& value, const std::string& option, const std::string& mode) {
+  if (!value.empty()) throw InputError(option + " does not apply " + mode);
+}
+
+void run_merge(const VerifyArgs& a) {
+  const std::string mode = "with --merge (it reads reports, not scenes)";
+  refuse(a.scene, "a SCENE", mode);
+  refuse(a.ref, "--ref", mode);
+  refuse(a.out, "--out", mode);
+  refuse(a.shard, "--shard", mode);
+  refuse(a.heat, "--heat", mode);
+  refuse(a.images, "--images", mode);
+  if (a.json.empty() && a.html.empty()) throw InputError("--merge needs --json FILE or --html DIR (or both)");
+  const std::vector<std::filesystem::path> folders(a.merge.begin(), a.merge.end());
+  if (run_verify_merge(folders, a.json, a.html) > 0) set_exit_code(1);
+}
+
+void run_campaign(const VerifyArgs& a) {
+  const std::string mode = "to a folder of scenes (each scene's report and images go under --out)";
+  refuse(a.json, "--json", mode);
+  refuse(a.heat, "--heat", mode);
+  refuse(a.images, "--images", mode);
+  if (a.ref.empty()) throw InputError("a folder of scenes needs --ref CAPTURES_DIR (one capture folder per scene)");
+  if (a.out.empty()) throw InputError("a folder of scenes needs --out REPORTS_DIR");
+  VerifyCampaign c;
+  c.scenes = a.scene;
+  c.captures = a.ref;
+  c.reports = a.out;
+  c.html = a.html;
+  c.sets = a.sets;
+  c.limits = a.limits;
+  if (!a.shard.empty()) c.shard = parse_shard(a.shard);
+  if (run_verify_campaign(c, Parallel(a.threads)) > 0) set_exit_code(1);
+}
+
 void run(VerifyArgs a) {
   a.limits.cracks_fail = !a.allow_cracks;
+  if (!a.merge.empty()) return run_merge(a);
+  std::error_code ec;
+  if (!a.scene.empty() && std::filesystem::is_directory(a.scene, ec)) return run_campaign(a);
+  const std::string mode = "to one scene (give a folder of scenes for a campaign)";
+  refuse(a.out, "--out", mode);
+  refuse(a.shard, "--shard", mode);
+  if (a.ref.empty()) throw InputError("--ref DIR is required: the capture folder (tessref capture)");
   OutputFiles outputs;
   std::filesystem::path json_tmp, heat_tmp;
   if (!a.json.empty()) json_tmp = outputs.add("--json", a.json);
@@ -32,13 +79,25 @@ void run(VerifyArgs a) {
     check_image_path(a.heat, ImageKind::Color);
     heat_tmp = outputs.add("--heat", a.heat);
   }
-  static const char* kImages[4] = {"tessref.png", "reference.png", "difference.png", "heat.png"};
+  const auto make_folder = [](const std::string& folder, const char* option) {
+    std::error_code e;
+    std::filesystem::create_directories(folder, e);
+    if (e) throw InputError(folder + ": cannot create the " + option + " folder: " + e.message());
+  };
   std::filesystem::path image_tmp[4];
   if (!a.images.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(a.images, ec);
-    if (ec) throw InputError(a.images + ": cannot create the folder: " + ec.message());
-    for (int k = 0; k < 4; ++k) image_tmp[k] = outputs.add("--images", std::filesystem::path(a.images) / kImages[k]);
+    make_folder(a.images, "--images");
+    for (int k = 0; k < 4; ++k)
+      image_tmp[k] = outputs.add("--images", std::filesystem::path(a.images) / kVerifyImageFiles[k]);
+  }
+  // --html DIR: DIR/index.html with the images embedded, and the PNGs beside it.
+  VerifyImages html_images;
+  std::filesystem::path html_tmp;
+  if (!a.html.empty()) {
+    make_folder(a.html, "--html");
+    for (int k = 0; k < 4; ++k)
+      html_images[k] = outputs.add("--html", std::filesystem::path(a.html) / kVerifyImageFiles[k]);
+    html_tmp = outputs.add("--html", std::filesystem::path(a.html) / "index.html");
   }
 
   const VerifyResult r = verify_scene(a.scene, a.sets, a.ref, a.limits, Parallel(a.threads));
@@ -55,6 +114,13 @@ void run(VerifyArgs a) {
     const Rgb8Image* images[4] = {&r.tessref, &r.reference, &r.difference, &r.heat};
     for (int k = 0; k < 4; ++k) write_rgb8_image(*images[k], image_tmp[k]);
   }
+  if (!a.html.empty()) {
+    const Rgb8Image* images[4] = {&r.tessref, &r.reference, &r.difference, &r.heat};
+    for (int k = 0; k < 4; ++k) write_rgb8_image(*images[k], html_images[k]);
+    std::ofstream out(html_tmp, std::ios::binary);
+    out << verify_scene_page(r.report, html_images, "");
+    if (!out.flush()) throw InputError(a.html + "/index.html: cannot write");
+  }
   outputs.commit();
   if (!r.pass()) set_exit_code(1);
 }
@@ -66,10 +132,23 @@ void add_verify_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "verify", "Compare tessref's rendering of a scene with a GL driver's capture of it (`tessref capture`): "
                 "gl_TessCoord streams, surface distances and silhouettes by Embree ray casting, cracks, colour. "
-                "Exit 0 when every tolerance holds, 1 when one does not");
+                "SCENE may be a folder of scenes (a campaign: --ref holds one capture folder per scene, named "
+                "after its file, --out gets the reports). Exit 0 when every tolerance holds, 1 when one does not");
   add_scene_options(cmd, args->scene, args->sets);
-  cmd->add_option("--ref", args->ref, "the capture folder")->required();
-  cmd->add_option("--json", args->json, "also write the report as JSON");
+  cmd->add_option("--ref", args->ref, "the capture folder (a campaign: the folder of capture folders)");
+  cmd->add_option("--json", args->json, "also write the report as JSON (with --merge: the merged report)");
+  cmd->add_option("--html", args->html,
+                  "also write an HTML report into this folder: index.html (with --merge or a campaign: an index "
+                  "of the scenes, worst first, and one SCENE.html each)");
+  cmd->add_option("--out", args->out, "a campaign's reports folder: STEM.json and the images under STEM/ per scene");
+  cmd->add_option("--shard", args->shard,
+                  "a campaign's shard I/N (0-based: scenes whose index in the name-sorted folder is I mod N); "
+                  "'auto' or 'auto/N' reads I (and N) from SLURM_ARRAY_TASK_ID/_COUNT or JOB_COMPLETION_INDEX "
+                  "(with TESSREF_SHARD_COUNT)");
+  cmd->add_option("--merge", args->merge,
+                  "merge the reports of campaigns (their --out folders, e.g. one per shard) into --json and/or "
+                  "--html; exit 1 if any scene failed")
+      ->expected(1, -1);
   cmd->add_option("--heat", args->heat, "also write the silhouette heat map (yellow: within the limit, red: beyond)");
   cmd->add_option("--images", args->images,
                   "also write tessref.png, reference.png, difference.png (x8) and heat.png into this folder");
