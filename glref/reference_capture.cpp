@@ -73,14 +73,16 @@ CaptureSummary capture_reference(GlContext& context, const Scene& scene, const M
     write_patch_digests(digests.string(), digest_patches(records));
     if (max_tess_records && records.size() > max_tess_records) {
       // Patches are about equally heavy: a stride of records / budget, rounded up, then grown
-      // until the sample fits.
-      summary.patch_stride = std::uint32_t((records.size() + max_tess_records - 1) / max_tess_records);
-      for (;; ++summary.patch_stride) {
-        const auto kept = std::count_if(records.begin(), records.end(), [&](const TessDumpRecord& r) {
-          return r.patch_id % summary.patch_stride == 0;
-        });
-        if (std::size_t(kept) <= max_tess_records) break;
-      }
+      // until the sample fits, or only patch 0 is left (kept even when it alone is over).
+      std::uint32_t last_patch = 0;
+      for (const TessDumpRecord& r : records) last_patch = std::max(last_patch, r.patch_id);
+      summary.patch_stride = std::uint32_t(std::min<std::size_t>(
+          (records.size() + max_tess_records - 1) / max_tess_records, std::size_t(last_patch) + 1));
+      while (summary.patch_stride <= last_patch &&
+             std::size_t(std::count_if(records.begin(), records.end(), [&](const TessDumpRecord& r) {
+               return r.patch_id % summary.patch_stride == 0;
+             })) > max_tess_records)
+        ++summary.patch_stride;
       std::erase_if(records, [&](const TessDumpRecord& r) { return r.patch_id % summary.patch_stride != 0; });
     }
     summary.tess_records_stored = records.size();

@@ -68,7 +68,7 @@ Reference load_reference(const std::filesystem::path& dir) {
   if (std::filesystem::exists(dir / "tess_patches.bin", ec))
     r.digests = read_patch_digests((dir / "tess_patches.bin").string());
   const nlohmann::json stride = r.manifest.value("tess_patch_stride", nlohmann::json(1));
-  if (!stride.is_number_unsigned() || stride.get<std::uint64_t>() == 0 || stride.get<std::uint64_t>() > UINT32_MAX)
+  if (!stride.is_number_integer() || stride.get<std::int64_t>() <= 0 || stride.get<std::int64_t>() > INT32_MAX)
     throw InputError(manifest.string() + ": tess_patch_stride must be a positive integer, got " + stride.dump());
   r.patch_stride = stride.get<std::uint32_t>();
   return r;

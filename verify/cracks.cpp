@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <unordered_map>
 
 namespace tessref {
 namespace {
@@ -13,20 +14,24 @@ namespace {
 struct Boundary {
   std::uint32_t patch = 0;
   std::vector<double> t;  // 0 at the first corner, 1 at the second
-  std::vector<glm::dvec3> position, normal;
+  std::vector<std::uint32_t> point;  // the surface's points there
+  std::vector<glm::dvec3> position;
+  std::vector<glm::dvec3> face_normal;  // per segment: the geometric normal of its triangle
 
-  void at(double s, glm::dvec3& p, glm::dvec3& n) const {
+  // The segment s lies on, and the boundary's point there.
+  std::size_t segment(double s) const {
     const std::size_t i = std::size_t(std::upper_bound(t.begin(), t.end(), s) - t.begin());
-    if (i == 0 || i == t.size()) {
-      const std::size_t k = i == 0 ? 0 : t.size() - 1;
-      p = position[k], n = normal[k];
-      return;
-    }
-    const double f = (s - t[i - 1]) / (t[i] - t[i - 1]);
-    p = glm::mix(position[i - 1], position[i], f);
-    n = glm::mix(normal[i - 1], normal[i], f);
+    return std::clamp<std::size_t>(i, 1, t.size() - 1) - 1;
+  }
+  glm::dvec3 at(double s) const {
+    const std::size_t k = segment(s);
+    return glm::mix(position[k], position[k + 1], std::clamp((s - t[k]) / (t[k + 1] - t[k]), 0.0, 1.0));
   }
 };
+
+std::uint64_t pair_key(std::uint32_t a, std::uint32_t b) {
+  return std::uint64_t(std::min(a, b)) << 32 | std::max(a, b);
+}
 
 using Corner = std::array<std::uint32_t, 3>;  // a corner position's bits
 Corner bits(const glm::vec3& p) {
@@ -84,22 +89,42 @@ CrackReport find_cracks(const TessSurface& surface, const SurfaceOracle& oracle,
       b.patch = patch;
       for (const auto& [t, p] : on) {
         b.t.push_back(t);
+        b.point.push_back(p);
         b.position.emplace_back(surface.points[p].position);
-        b.normal.emplace_back(surface.points[p].normal);
       }
       Corner from = bits(surface.points[on.front().second].position), to = bits(surface.points[on.back().second].position);
       if (to < from) {  // one orientation per edge, whichever patch it comes from
         std::swap(from, to);
         std::reverse(b.t.begin(), b.t.end());
         for (double& t : b.t) t = 1.0 - t;
+        std::reverse(b.point.begin(), b.point.end());
         std::reverse(b.position.begin(), b.position.end());
-        std::reverse(b.normal.begin(), b.normal.end());
       }
       edges[{from, to}].push_back(boundaries.size());
       boundaries.push_back(std::move(b));
     }
     i = end;
   }
+
+  // Each boundary segment's triangle, for its geometric normal: rays are aimed along the surface's
+  // own normal (a file's stored normals may lie anywhere), and only from where both sides of the
+  // edge face the ray the same way (at a fold the edge is a silhouette for the ray, and a ray
+  // grazing it may miss both triangles without any gap).
+  std::unordered_map<std::uint64_t, std::pair<std::uint32_t, std::uint32_t>> segments;  // -> boundary, segment
+  for (std::size_t i = 0; i < boundaries.size(); ++i) {
+    boundaries[i].face_normal.assign(boundaries[i].t.size() - 1, glm::dvec3(0.0));
+    for (std::size_t k = 0; k + 1 < boundaries[i].t.size(); ++k)
+      segments.emplace(pair_key(boundaries[i].point[k], boundaries[i].point[k + 1]),
+                       std::pair(std::uint32_t(i), std::uint32_t(k)));
+  }
+  for (std::size_t t = 0; t < surface.triangle_count(); ++t)
+    for (int e = 0; e < 3; ++e) {
+      const auto it = segments.find(pair_key(surface.indices[3 * t + e], surface.indices[3 * t + (e + 1) % 3]));
+      if (it == segments.end()) continue;
+      const glm::dvec3 a(surface.corner(t, 0)), b(surface.corner(t, 1)), c(surface.corner(t, 2));
+      const glm::dvec3 n = glm::cross(b - a, c - a);
+      if (glm::dot(n, n) > 0.0) boundaries[it->second.first].face_normal[it->second.second] = glm::normalize(n);
+    }
 
   std::vector<std::pair<std::size_t, std::size_t>> shared;
   for (const auto& [corners, list] : edges) {
@@ -112,7 +137,7 @@ CrackReport find_cracks(const TessSurface& surface, const SurfaceOracle& oracle,
 
   // Each shared edge in its own slot, merged in the map's order.
   std::vector<CrackReport::Edge> results(shared.size());
-  std::vector<std::uint64_t> rays(shared.size());
+  std::vector<std::uint64_t> rays(shared.size()), grazing(shared.size());
   const double length = standoff * diagonal, slack = tolerance * diagonal;
   parallel.for_each(shared.size(), [&](std::size_t s) {
     const Boundary& a = boundaries[shared[s].first];
@@ -120,24 +145,22 @@ CrackReport find_cracks(const TessSurface& surface, const SurfaceOracle& oracle,
     CrackReport::Edge& r = results[s];
     r.patch_a = std::min(a.patch, b.patch), r.patch_b = std::max(a.patch, b.patch);
     r.from = glm::vec3(a.position.front()), r.to = glm::vec3(a.position.back());
-    // Aim at both boundaries' vertices and at the midpoints between them.
+    // The gap at every boundary vertex of either side; rays at the midpoints between them (not at
+    // the corners, where more patches meet and a crack along another edge opens).
     std::vector<double> ts(a.t);
     ts.insert(ts.end(), b.t.begin(), b.t.end());
     std::sort(ts.begin(), ts.end());
     ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
-    const std::size_t vertices = ts.size();
-    for (std::size_t k = 0; k + 1 < vertices; ++k) ts.push_back(0.5 * (ts[k] + ts[k + 1]));
+    for (double t : ts) r.gap = std::max(r.gap, glm::length(a.at(t) - b.at(t)));
     const glm::dvec3 tangent = glm::normalize(a.position.back() - a.position.front());
-    for (double t : ts) {
-      // Not at the corners: more patches meet there, and a crack along another edge opens there.
-      if (t == 0.0 || t == 1.0) continue;
-      glm::dvec3 pa, na, pb, nb;
-      a.at(t, pa, na);
-      b.at(t, pb, nb);
+    for (std::size_t k = 0; k + 1 < ts.size(); ++k) {
+      const double t = 0.5 * (ts[k] + ts[k + 1]);
+      const glm::dvec3 pa = a.at(t), pb = b.at(t);
       r.gap = std::max(r.gap, glm::length(pa - pb));
       const glm::dvec3 aim = 0.5 * (pa + pb);
+      const glm::dvec3 na = a.face_normal[a.segment(t)], nb = b.face_normal[b.segment(t)];
       const glm::dvec3 sum = na + nb;
-      if (!(glm::dot(sum, sum) > 0.0) || !std::isfinite(glm::dot(sum, sum))) continue;
+      if (!(glm::dot(sum, sum) > 1e-6)) continue;  // a degenerate triangle, or a fold back onto itself
       const glm::dvec3 n = glm::normalize(sum);
       glm::dvec3 across = glm::cross(tangent, n);
       const bool tilt = glm::dot(across, across) > 1e-12;
@@ -147,15 +170,20 @@ CrackReport find_cracks(const TessSurface& surface, const SurfaceOracle& oracle,
         for (double sine : {0.0, 0.5, -0.5}) {
           if (sine != 0.0 && !tilt) continue;
           const glm::dvec3 dir = side * (std::sqrt(1.0 - sine * sine) * n + sine * across);
+          const double da = glm::dot(dir, na), db = glm::dot(dir, nb);
+          if (da * db <= 0.0 || std::min(std::fabs(da), std::fabs(db)) < 0.1) continue;
           ++rays[s];
           const SurfaceOracle::Hit h = oracle.cast(glm::vec3(aim - length * dir), glm::vec3(dir), 0.0f,
                                                    float(length + slack));
-          if (!h.hit()) ++r.rays_through;
+          // Where the two boundaries are the same points bit for bit there is no gap to pass
+          // through: a miss there is the ray caster's own (a ray grazing a fold's edge in float).
+          if (!h.hit()) ++(pa == pb ? grazing[s] : r.rays_through);
         }
     }
   });
   for (std::size_t s = 0; s < shared.size(); ++s) {
     report.rays += rays[s];
+    report.grazing_misses += grazing[s];
     report.rays_through += results[s].rays_through;
     report.max_gap = std::max(report.max_gap, results[s].gap);
     if (results[s].rays_through) report.cracked.push_back(results[s]);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iterator>
 
 #include "common/error.h"
@@ -65,6 +66,24 @@ Rgb8Image heat_image(const SilhouetteComparison& s, const FloatImage& depth, dou
   return img;
 }
 
+// The scene as compared with the capture's: file paths (the mesh, shaders, textures) are resolved
+// against the folder the command ran in, so only their file names are compared.
+nlohmann::json without_folders(nlohmann::json scene) {
+  const auto name_only = [](nlohmann::json& v) {
+    if (v.is_string() && v.get<std::string>().rfind("twin:", 0) != 0)
+      v = std::filesystem::path(v.get<std::string>()).filename().string();
+  };
+  if (scene.contains("mesh") && scene["mesh"].contains("path")) name_only(scene["mesh"]["path"]);
+  if (scene.contains("shaders")) {
+    nlohmann::json& s = scene["shaders"];
+    for (const char* stage : {"vertex", "tess_control", "tess_evaluation", "fragment"})
+      if (s.contains(stage)) name_only(s[stage]);
+    if (s.contains("textures") && s["textures"].is_object())
+      for (auto& [name, t] : s["textures"].items()) name_only(t.is_object() && t.contains("path") ? t["path"] : t);
+  }
+  return scene;
+}
+
 }  // namespace
 
 VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::string>& sets,
@@ -80,7 +99,7 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
   j["width"] = scene.width;
   j["height"] = scene.height;
   std::vector<std::string> warnings, failures;
-  if (ref.manifest.contains("scene") && ref.manifest["scene"] != scene_json)
+  if (ref.manifest.contains("scene") && without_folders(ref.manifest["scene"]) != without_folders(scene_json))
     warnings.push_back(reference + " was captured from another scene than " + scene.source +
                        " (the manifest's scene differs); the comparison is of different scenes");
   const Mesh mesh = build_mesh(scene.mesh, warnings);
@@ -210,6 +229,7 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
                        {"gap_of_diagonal", c.cracked[k].gap / diagonal}, {"rays_through", c.cracked[k].rays_through}});
     j["cracks"] = {{"examined", c.triangles}, {"patches", c.patches}, {"shared_edges", c.shared_edges},
                    {"unshared_edges", c.unshared_edges}, {"rays", c.rays}, {"rays_through", c.rays_through},
+                   {"grazing_misses", c.grazing_misses},
                    {"cracked_edges", c.cracked.size()}, {"max_gap_of_diagonal", c.max_gap / diagonal},
                    {"worst", worst}};
     if (!c.cracked.empty() && limits.cracks_fail) {
@@ -267,8 +287,8 @@ std::string verify_summary(const nlohmann::json& j) {
                   t["max_normal_ulp"].get<unsigned>());
     out += buf;
     if (t["patch_stride"].get<unsigned>() > 1)
-      out += "    (coordinates of every patch by digest; values and distances on every " +
-             std::to_string(t["patch_stride"].get<unsigned>()) + "th patch, the capture's sample)\n";
+      out += "    (coordinates of every patch by digest; values and distances on the patches whose id is a "
+             "multiple of " + std::to_string(t["patch_stride"].get<unsigned>()) + ", the capture's sample)\n";
   }
   if (j.contains("surface_distance")) {
     const auto& d = j["surface_distance"];
@@ -298,10 +318,12 @@ std::string verify_summary(const nlohmann::json& j) {
     if (!k["examined"].get<bool>())
       out += "  cracks: not examined (not a triangle domain)\n";
     else {
-      std::snprintf(buf, sizeof buf, "  cracks: %llu shared edges, %llu rays, %llu through (%llu edges); largest gap %.3g of the diagonal\n",
+      std::snprintf(buf, sizeof buf,
+                    "  cracks: %llu shared edges, %llu rays, %llu through (%llu edges); largest gap %.3g of the "
+                    "diagonal; %llu grazing misses where the boundaries coincide\n",
                     k["shared_edges"].get<unsigned long long>(), k["rays"].get<unsigned long long>(),
                     k["rays_through"].get<unsigned long long>(), k["cracked_edges"].get<unsigned long long>(),
-                    k["max_gap_of_diagonal"].get<double>());
+                    k["max_gap_of_diagonal"].get<double>(), k["grazing_misses"].get<unsigned long long>());
       out += buf;
     }
   }

@@ -14,6 +14,7 @@
 #include "../pipeline/test_util.h"
 #include "../verify/split_cylinder.h"
 #include "gl_fixture.h"
+#include "pipeline/tess_digest.h"
 #include "pipeline/tess_dump.h"
 #include "stages/glsl/twins.h"
 
@@ -222,6 +223,28 @@ TEST_F(VerifyVsLlvmpipe, UserShadersVerifyToo) {
   r = test::run_cli("verify " + scene + " --ref " + path("displacement") + kSmall +
                     " --set shaders.uniforms.u_amplitude=0");
   EXPECT_EQ(r.exit_code, 1) << r.output;
+}
+
+// A capture that keeps the records of every k-th patch only (--tess-records) still compares every
+// patch's coordinates, by digest: a patch outside the sample whose digest differs is named.
+TEST_F(VerifyVsLlvmpipe, SampledCapturesCompareEveryPatchByDigest) {
+  const std::string small = path("sampled");
+  test::CliRun r = test::run_cli("capture --out " + small + kSmall + " --tess-records 20000");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("194304 emitted vertices, 19734 stored: the patches whose id is a multiple of 10"));
+  const std::vector<TessDumpRecord> stored = read_tess_dump(small + "/tess.bin");
+  for (const TessDumpRecord& rec : stored) ASSERT_EQ(rec.patch_id % 10, 0u);
+  r = test::run_cli("verify --ref " + small + kSmall);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("gl_TessCoord: 256 patches, 0 with streams that differ; 194304 emitted vertices"));
+  EXPECT_THAT(r.output, HasSubstr("multiple of 10, the capture's sample"));
+  // Patch 57 (not sampled) with one coordinate otherwise: its digest changes.
+  std::vector<TessPatchDigest> digests = read_patch_digests(small + "/tess_patches.bin");
+  digests[57].coords_hash ^= 1;
+  write_patch_digests(small + "/tess_patches.bin", digests);
+  r = test::run_cli("verify --ref " + small + kSmall);
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("FAIL: gl_TessCoord streams differ in 1 of 256 patches (first: patch 57)"));
 }
 
 TEST_F(VerifyVsLlvmpipe, BadReferenceFolders) {
