@@ -74,6 +74,32 @@ Reference load_reference(const std::filesystem::path& dir) {
   return r;
 }
 
+std::vector<std::uint32_t> emission_order_differs(const std::vector<TessDumpRecord>& reference_emitted,
+                                                  const std::vector<TessDumpRecord>& points,
+                                                  const std::vector<std::uint32_t>& indices) {
+  // tessref's emitted vertices of each patch: a range of `indices` (a draw emits patch by patch).
+  std::unordered_map<std::uint32_t, std::pair<std::size_t, std::size_t>> ranges;
+  for (std::size_t i = 0; i < indices.size();) {
+    const std::uint32_t patch = points[indices[i]].patch_id;
+    const std::size_t begin = i;
+    while (i < indices.size() && points[indices[i]].patch_id == patch) ++i;
+    ranges.emplace(patch, std::pair(begin, i));
+  }
+  std::vector<std::uint32_t> differ;
+  for (std::size_t i = 0; i < reference_emitted.size();) {
+    const std::uint32_t patch = reference_emitted[i].patch_id;
+    const std::size_t begin = i;
+    while (i < reference_emitted.size() && reference_emitted[i].patch_id == patch) ++i;
+    const auto it = ranges.find(patch);
+    bool same = it != ranges.end() && it->second.second - it->second.first == i - begin;
+    for (std::size_t k = 0; same && k < i - begin; ++k)
+      same = std::memcmp(&reference_emitted[begin + k].tess_coord, &points[indices[it->second.first + k]].tess_coord,
+                         sizeof(glm::vec3)) == 0;
+    if (!same) differ.push_back(patch);
+  }
+  return differ;
+}
+
 std::vector<std::uint32_t> compare_digests(const std::vector<TessPatchDigest>& reference,
                                            const std::vector<TessPatchDigest>& tessref) {
   std::vector<TessPatchDigest> a(reference), b(tessref);

@@ -54,6 +54,14 @@ struct TessComparison {
 TessComparison compare_tess(const std::vector<TessDumpRecord>& reference_emitted,
                             const std::vector<TessDumpRecord>& tessref_points);
 
+// The patches whose emitted stream (the driver's, 3 records a triangle) differs from tessref's
+// triangles (`indices` into `points`, 3 a triangle) in order: the same coordinates, bit for bit, in
+// the same sequence. The specification leaves the order to the implementation; llvmpipe's is
+// tessref's. Only patches present in the reference stream are compared.
+std::vector<std::uint32_t> emission_order_differs(const std::vector<TessDumpRecord>& reference_emitted,
+                                                  const std::vector<TessDumpRecord>& points,
+                                                  const std::vector<std::uint32_t>& indices);
+
 // The patches whose digests differ (count or distinct coordinates), or that only one side has.
 std::vector<std::uint32_t> compare_digests(const std::vector<TessPatchDigest>& reference,
                                            const std::vector<TessPatchDigest>& tessref);

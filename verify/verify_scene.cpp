@@ -154,6 +154,13 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
                          {"max_position_ulp", t.max_position_ulp}, {"worst_position_patch", t.worst_position_patch},
                          {"max_normal_ulp", t.max_normal_ulp}, {"max_position_difference_of_diagonal", position},
                          {"patch_stride", ref.patch_stride}, {"records_compared", ref.tess.size()}};
+    // Order is the implementation's choice: reported, not failed.
+    const std::vector<std::uint32_t> order = emission_order_differs(ref.tess, mine.points, mine.indices);
+    std::size_t compared = 0;
+    for (std::size_t i = 0; i < ref.tess.size(); ++i) compared += i == 0 || ref.tess[i].patch_id != ref.tess[i - 1].patch_id;
+    j["tessellation"]["order_compared_patches"] = compared;
+    j["tessellation"]["order_differs_patches"] = order.size();
+    j["tessellation"]["first_order_differs_patch"] = order.empty() ? -1 : std::int64_t(order.front());
     if (!t.coords_identical()) {
       failures.push_back("gl_TessCoord streams differ in " + std::to_string(t.patches_mismatched) + " of " +
                          std::to_string(t.patches) + " patches (first: patch " +
@@ -285,6 +292,10 @@ std::string verify_summary(const nlohmann::json& j) {
                   t["emitted_vertices"].get<unsigned long long>(), t["unmatched_vertices"].get<unsigned long long>(),
                   t["max_position_ulp"].get<unsigned>(), t["worst_position_patch"].get<long long>(),
                   t["max_normal_ulp"].get<unsigned>());
+    out += buf;
+    std::snprintf(buf, sizeof buf, "  emission order (the driver's choice; reported only): the same in %llu of %llu patches\n",
+                  t["order_compared_patches"].get<unsigned long long>() - t["order_differs_patches"].get<unsigned long long>(),
+                  t["order_compared_patches"].get<unsigned long long>());
     out += buf;
     if (t["patch_stride"].get<unsigned>() > 1)
       out += "    (coordinates of every patch by digest; values and distances on the patches whose id is a "

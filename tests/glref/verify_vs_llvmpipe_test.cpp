@@ -93,6 +93,9 @@ TEST_F(VerifyVsLlvmpipe, DefaultScenePasses) {
   EXPECT_EQ(j["cracks"]["shared_edges"], 384);  // every edge of the 256-triangle torus
   EXPECT_EQ(j["cracks"]["rays_through"], 0);
   EXPECT_EQ(j["failures"].size(), 0u);
+  // The order the driver emitted is tessref's, triangle for triangle (the spec leaves it free).
+  EXPECT_EQ(j["tessellation"]["order_compared_patches"], 256);
+  EXPECT_EQ(j["tessellation"]["order_differs_patches"], 0);
 }
 
 TEST_F(VerifyVsLlvmpipe, AMovedPatchIsNamed) {

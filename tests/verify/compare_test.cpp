@@ -1,5 +1,6 @@
 // tessref verify's comparisons on made-up data: planted differences are found where they were
 // planted, and agreement reports none.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -125,6 +126,24 @@ TEST(Verify, ColorFigures) {
   EXPECT_EQ(c.within_2, 1u);
   EXPECT_EQ(c.max_difference, 3);
   EXPECT_NEAR(c.psnr, 10.0 * std::log10(255.0 * 255.0 / (9.0 / 6.0)), 1e-9);
+}
+
+TEST(Verify, EmissionOrderIsComparedTriangleByTriangle) {
+  // Patch 0 and 1: two triangles each over four points; the driver emits patch 1's second
+  // triangle rotated (same triangle, other first vertex): that patch's order differs.
+  std::vector<TessDumpRecord> points;
+  for (std::uint32_t p = 0; p < 2; ++p)
+    for (const glm::vec3& c : {glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 0, 1), glm::vec3(0.5f, 0.5f, 0)})
+      points.push_back({p, c, c, c});
+  const std::vector<std::uint32_t> indices = {0, 3, 2, 3, 1, 2, 4, 7, 6, 7, 5, 6};
+  std::vector<TessDumpRecord> emitted;
+  for (std::uint32_t i : indices) emitted.push_back(points[i]);
+  EXPECT_TRUE(emission_order_differs(emitted, points, indices).empty());
+  std::rotate(emitted.begin() + 9, emitted.begin() + 10, emitted.end());
+  EXPECT_EQ(emission_order_differs(emitted, points, indices), std::vector<std::uint32_t>{1});
+  // A patch tessref did not draw at all differs too.
+  emitted.push_back({7, glm::vec3(1, 0, 0), glm::vec3(0.0f), glm::vec3(0.0f)});
+  EXPECT_EQ(emission_order_differs(emitted, points, indices), (std::vector<std::uint32_t>{1, 7}));
 }
 
 }  // namespace
