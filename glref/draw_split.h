@@ -11,6 +11,13 @@ namespace tessref::glref {
 // Well below 65,535, and below Mesa's internal chunking of large draws.
 constexpr std::size_t kSafePointsPerDraw = 60000;
 
+// Mesa's draw module also cuts a draw's index list into chunks of 1,023 indices (341 triangle
+// patches) and restarts gl_PrimitiveID at 0 in each: the spider at level 3 (1,312 patches, few
+// points each) came back with patch 341 tagged 0. A draw of at most this many patches is one chunk.
+constexpr std::size_t max_patches_per_draw(int patch_vertices) {
+  return patch_vertices > 0 && patch_vertices < 1023 ? std::size_t(1023 / patch_vertices) : 1;
+}
+
 struct DrawRange {
   std::size_t first = 0;  // first patch (glDrawArrays `first` in patches; pass it as the id base)
   std::size_t count = 0;  // patches in this draw

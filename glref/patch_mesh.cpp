@@ -84,7 +84,7 @@ std::size_t PatchMesh::draw(const Program& program, const std::vector<std::size_
   const GLint base_location = glGetUniformLocation(program.id(), "u_patch_base");
   glBindVertexArray(vao_);
   glPatchParameteri(GL_PATCH_VERTICES, patch_vertices_);
-  const std::vector<DrawRange> draws = split_draws(bounds, max_points_per_draw, std::size_t(1) << 20);
+  const std::vector<DrawRange> draws = split_draws(bounds, max_points_per_draw, max_patches_per_draw(patch_vertices_));
   for (const DrawRange& d : draws) draw_range(d, base_location);
   glBindVertexArray(0);
   check_gl("PatchMesh::draw");
@@ -112,7 +112,7 @@ std::vector<std::uint32_t> PatchMesh::capture(const Program& program, int words_
   glEnable(GL_RASTERIZER_DISCARD);
   std::vector<std::uint32_t> out;
   try {
-    for (const DrawRange& d : split_draws(bounds, max_points_per_draw, std::size_t(1) << 20)) {
+    for (const DrawRange& d : split_draws(bounds, max_points_per_draw, max_patches_per_draw(patch_vertices_))) {
       // Emitted vertices: fewer than 2 triangles (or 1 segment) per domain point.
       std::size_t points = 0;
       for (std::size_t i = d.first; i < d.first + d.count; ++i) points += bounds[i];

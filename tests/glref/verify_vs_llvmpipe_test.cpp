@@ -250,6 +250,19 @@ TEST_F(VerifyVsLlvmpipe, SampledCapturesCompareEveryPatchByDigest) {
   EXPECT_THAT(r.output, HasSubstr("FAIL: gl_TessCoord streams differ in 1 of 256 patches (first: patch 57)"));
 }
 
+// llvmpipe restarts gl_PrimitiveID every 341 triangle patches of a draw (its draw module's index
+// chunks): a mesh of 1,024 patches at level 1 fits one draw by points, so the capture must split
+// it by patches too, or patch 341 comes back as patch 0.
+TEST_F(VerifyVsLlvmpipe, ManyLightPatchesKeepTheirIds) {
+  const std::string sets = kSmall + " --set mesh.torus.major_segments=64 --set mesh.torus.minor_segments=8 "
+                                    "--set tessellation.inner=1 --set tessellation.outer=1";
+  test::CliRun r = test::run_cli("capture --out " + path("light") + sets);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = test::run_cli("verify --ref " + path("light") + sets);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("gl_TessCoord: 1024 patches, 0 with streams that differ; 3072 emitted vertices"));
+}
+
 TEST_F(VerifyVsLlvmpipe, BadReferenceFolders) {
   test::CliRun r = test::run_cli("verify --ref " + path("none") + kSmall);
   EXPECT_EQ(r.exit_code, 2);
