@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "common/error.h"
+#include "pipeline/builtin_programs.h"
 #include "stages/schemes/flat.h"
 #include "stages/schemes/pn_triangles.h"
 #include "stages/tess_stage.h"
@@ -50,44 +51,21 @@ void draw_tessellated(const std::vector<programs::VertexOut>& shaded, const Mesh
                       const Parallel& parallel, const DrawOptions& options, Rasterize& rasterize,
                       DrawStats& stats) {
   auto t0 = Clock::now();
-  std::vector<StageVertex> control_points(shaded.size());
-  for (std::size_t v = 0; v < shaded.size(); ++v) {
-    control_points[v].attr[kAttrPosition] = glm::vec4(shaded[v].v_world_position, 1.0f);
-    control_points[v].attr[kAttrNormal] = glm::vec4(shaded[v].v_world_normal, 0.0f);
-  }
+  const std::vector<StageVertex> control_points = tess_control_points(shaded);
   stats.vertex_seconds += seconds_since(t0);
 
-  TessLevelSettings levels;
-  levels.constant = settings.levels;
-  levels.adaptive = settings.adaptive.enabled;
-  levels.screen.view_proj = vs.u_view_projection;
-  levels.screen.viewport_pixels = glm::vec2(float(fb.width), float(fb.height));
-  levels.screen.pixels_per_segment = settings.adaptive.pixels_per_segment;
-
-  PassThroughTcs flat_tcs;
-  flat_tcs.levels = levels;
-  FlatTes flat_tes;
-  flat_tes.tess_layout = TessLayout{TessDomain::Triangles, settings.spacing, settings.winding, false};
-  flat_tes.view_proj = vs.u_view_projection;
-  PnTcs pn_tcs;
-  PnTes pn_tes;
-  parse(to_string(settings.normal_mode), pn_tcs.normal_mode);  // same names, same order
-  pn_tcs.levels = levels;
-  pn_tes.normal_mode = pn_tcs.normal_mode;
-  pn_tes.spacing = settings.spacing;
-  pn_tes.winding = settings.winding;
-  pn_tes.view_proj = vs.u_view_projection;
-  const bool pn = settings.scheme == SurfaceScheme::PN;
-  const TessControlProgram& tcs = pn ? static_cast<const TessControlProgram&>(pn_tcs) : flat_tcs;
-  const TessEvalProgram& tes = pn ? static_cast<const TessEvalProgram&>(pn_tes) : flat_tes;
+  const BuiltinTessPrograms programs =
+      builtin_tess_programs(settings, vs, glm::vec2(float(fb.width), float(fb.height)));
+  const TessControlProgram& tcs = programs.tcs();
+  const TessEvalProgram& tes = programs.tes();
 
   // Chunks and tasks sized by triangles, not patches: at level 64 one patch makes ~6,000
   // triangles, at level 1 one. The estimate is the generator's count for the constant levels
   // (adaptive levels: the largest they can reach).
   TessLevels estimate_levels = settings.levels;
   if (settings.adaptive.enabled) {
-    estimate_levels.outer.fill(levels.screen.max_level);
-    estimate_levels.inner.fill(levels.screen.max_level);
+    estimate_levels.outer.fill(programs.pn_tcs.levels.screen.max_level);
+    estimate_levels.inner.fill(programs.pn_tcs.levels.screen.max_level);
   }
   const std::size_t per_patch = std::max<std::size_t>(
       1, make_pattern(tes.layout(), estimate_levels, TessProfile::llvmpipe(), settings.tessellator)
@@ -121,6 +99,39 @@ void draw_tessellated(const std::vector<programs::VertexOut>& shaded, const Mesh
 }
 
 }  // namespace
+
+BuiltinTessPrograms builtin_tess_programs(const TessellationSettings& settings,
+                                          const programs::TransformVertexShader& vs,
+                                          const glm::vec2& viewport) {
+  TessLevelSettings levels;
+  levels.constant = settings.levels;
+  levels.adaptive = settings.adaptive.enabled;
+  levels.screen.view_proj = vs.u_view_projection;
+  levels.screen.viewport_pixels = viewport;
+  levels.screen.pixels_per_segment = settings.adaptive.pixels_per_segment;
+
+  BuiltinTessPrograms p;
+  p.flat_tcs.levels = levels;
+  p.flat_tes.tess_layout = TessLayout{TessDomain::Triangles, settings.spacing, settings.winding, false};
+  p.flat_tes.view_proj = vs.u_view_projection;
+  parse(to_string(settings.normal_mode), p.pn_tcs.normal_mode);  // same names, same order
+  p.pn_tcs.levels = levels;
+  p.pn_tes.normal_mode = p.pn_tcs.normal_mode;
+  p.pn_tes.spacing = settings.spacing;
+  p.pn_tes.winding = settings.winding;
+  p.pn_tes.view_proj = vs.u_view_projection;
+  p.pn = settings.scheme == SurfaceScheme::PN;
+  return p;
+}
+
+std::vector<StageVertex> tess_control_points(const std::vector<programs::VertexOut>& shaded) {
+  std::vector<StageVertex> control_points(shaded.size());
+  for (std::size_t v = 0; v < shaded.size(); ++v) {
+    control_points[v].attr[kAttrPosition] = glm::vec4(shaded[v].v_world_position, 1.0f);
+    control_points[v].attr[kAttrNormal] = glm::vec4(shaded[v].v_world_normal, 0.0f);
+  }
+  return control_points;
+}
 
 DrawStats draw_mesh(const Mesh& mesh, const programs::TransformVertexShader& vertex_shader,
                     const TessellationSettings& tessellation, const RasterState& raster_state,

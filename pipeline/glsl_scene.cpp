@@ -260,8 +260,8 @@ SceneProgram build_scene_program(const Scene& scene) {
   return out;
 }
 
-DrawStats draw_glsl_scene(const Scene& scene, const glsl::GlslProgram& program, const Mesh& mesh,
-                          Framebuffer& fb, const Parallel& parallel, const DrawOptions& options) {
+std::vector<glsl::VertexAttribute> scene_attributes(const Scene& scene, const glsl::GlslProgram& program,
+                                                   const Mesh& mesh) {
   std::vector<glsl::VertexAttribute> attributes;
   for (const auto& [input, source] : scene.shaders.attributes) {
     const bool by_location = !input.empty() && input.find_first_not_of("0123456789") == std::string::npos;
@@ -275,11 +275,22 @@ DrawStats draw_glsl_scene(const Scene& scene, const glsl::GlslProgram& program, 
       for (int c = 0; c < 3; ++c) a.words.push_back(std::bit_cast<std::uint32_t>(v[c]));
     attributes.push_back(std::move(a));
   }
+  return attributes;
+}
+
+GlslDrawCall scene_draw_call(const Scene& scene, const Mesh& mesh) {
   GlslDrawCall call;
   call.indices = mesh.indices;
   call.vertex_count = mesh.vertex_count();
   call.patches = scene.tessellation.enabled;
   call.patch_vertices = scene.shaders.program == ShaderProgram::Twins ? 3 : scene.shaders.patch_vertices;
+  return call;
+}
+
+DrawStats draw_glsl_scene(const Scene& scene, const glsl::GlslProgram& program, const Mesh& mesh,
+                          Framebuffer& fb, const Parallel& parallel, const DrawOptions& options) {
+  const std::vector<glsl::VertexAttribute> attributes = scene_attributes(scene, program, mesh);
+  const GlslDrawCall call = scene_draw_call(scene, mesh);
   RasterState state;
   state.cull_back_faces = scene.cull_back_faces;
   try {

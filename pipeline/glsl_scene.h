@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "pipeline/draw.h"
+#include "pipeline/glsl_draw.h"
 #include "pipeline/mesh.h"
 #include "pipeline/scene.h"
 #include "shader/glsl_compile.h"
@@ -27,6 +28,13 @@ std::vector<shader::ShaderSource> scene_sources(const Scene& scene);
 // with file and line, a uniform value whose type does not fit, an unreadable texture) with its
 // uniforms set and its textures bound.
 SceneProgram build_scene_program(const Scene& scene);
+
+// The draw's vertex attribute arrays (shaders.attributes: the mesh's positions and normals by input
+// name or location) and the draw call (indices, GL_PATCH_VERTICES) draw_glsl_scene makes; also
+// what tessref inspect reruns.
+std::vector<glsl::VertexAttribute> scene_attributes(const Scene& scene, const glsl::GlslProgram& program,
+                                                   const Mesh& mesh);
+GlslDrawCall scene_draw_call(const Scene& scene, const Mesh& mesh);
 
 // Draws the mesh with the scene's GLSL program into fb (already cleared).
 DrawStats draw_glsl_scene(const Scene& scene, const glsl::GlslProgram& program, const Mesh& mesh,

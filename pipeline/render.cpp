@@ -1,5 +1,6 @@
 #include "pipeline/render.h"
 
+#include "pipeline/builtin_programs.h"
 #include "pipeline/camera.h"
 #include "pipeline/glsl_scene.h"
 #include "stages/programs/normals.h"
@@ -26,6 +27,12 @@ programs::PhongShader phong_shader(const Scene& scene) {
 
 }  // namespace
 
+programs::TransformVertexShader scene_vertex_shader(const Scene& scene) {
+  const glm::mat4 view_projection =
+      projection_matrix(scene.camera, scene.width, scene.height) * view_matrix(scene.camera);
+  return programs::TransformVertexShader::from(model_matrix(scene.transform), view_projection);
+}
+
 RenderResult render_scene(const Scene& scene, const Mesh& mesh, const Parallel& parallel,
                           const DrawOptions& options) {
   RenderResult result;
@@ -40,9 +47,7 @@ DrawStats render_scene(const Scene& scene, const Mesh& mesh, const Parallel& par
     fb.reset(scene.width, scene.height, scene.background, parallel);
     return draw_glsl_scene(scene, *program.program, mesh, fb, parallel, options);
   }
-  const glm::mat4 view_projection =
-      projection_matrix(scene.camera, scene.width, scene.height) * view_matrix(scene.camera);
-  const auto vs = programs::TransformVertexShader::from(model_matrix(scene.transform), view_projection);
+  const auto vs = scene_vertex_shader(scene);
   RasterState state;
   state.cull_back_faces = scene.cull_back_faces;
 

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "stages/tpg_domains.h"
+#include "stages/tpg_levels.h"
 #include "stages/tpg_stitch.h"
 
 namespace tessref {
@@ -215,6 +216,50 @@ TessDomainPoints generate_tessellation(const TessLayout& layout, const TessLevel
                                        const TessProfile& profile) {
   TessDomainPoints out;
   generate_tessellation(layout, levels, profile, out);
+  return out;
+}
+
+// What generate_tessellation computes before the domain generators, through the same LevelRules
+// (tpg_levels.h). The segment counts are those of the subdivision each domain generator makes.
+ProcessedTessLevels process_tess_levels(const TessLayout& layout, const TessLevels& levels,
+                                        const TessProfile& profile) {
+  ProcessedTessLevels out;
+  const int max_level = std::clamp(profile.max_level, 2, 64);
+  const LevelRules rules{layout.spacing, clamp_range(layout.spacing, max_level), &profile};
+  auto segments = [](Fx16 fx, Parity parity) { return tpg::make_subdivision(fx, parity).num_points - 1; };
+  const int outer_count = layout.domain == TessDomain::Triangles ? 3 : layout.domain == TessDomain::Quads ? 4 : 2;
+  out.outer_count = outer_count;
+  out.inner_count = layout.domain == TessDomain::Triangles ? 1 : layout.domain == TessDomain::Quads ? 2 : 0;
+  for (int e = 0; e < outer_count; ++e) out.discarded |= discards(levels.outer[e]);
+  if (out.discarded) return out;
+
+  if (layout.domain == TessDomain::Isolines) {
+    const float density = std::ceil(clamp_level(levels.outer[0], {1.0f, float(max_level)}));
+    const float detail = rules.clamp_outer(levels.outer[1]);
+    out.outer = {density, detail, 0.0f, 0.0f};
+    out.outer_segments[0] = int(density);  // lines, not segments: the lines at v = 0 .. < 1
+    out.outer_segments[1] = segments(rules.to_fixed(detail), rules.parity(detail));
+    return out;
+  }
+  Fx16 fx[4];
+  Parity parity[4];
+  bool any_above_one = rules.process_outer(levels.outer, outer_count, fx, parity);
+  for (int e = 0; e < outer_count; ++e) {
+    out.outer[e] = rules.clamp_outer(levels.outer[e]);
+    out.outer_segments[e] = segments(fx[e], parity[e]);
+  }
+  // Quads also look at the raw inner levels for the 1 + epsilon frame (as generate_tessellation).
+  if (layout.domain == TessDomain::Quads)
+    for (int a = 0; a < 2; ++a) any_above_one |= rules.above_one(levels.inner[a]);
+  for (int a = 0; a < out.inner_count; ++a) {
+    Fx16 inner_fx;
+    Parity inner_parity;
+    rules.process_inner(levels.inner[a], any_above_one, inner_fx, inner_parity);
+    float inner = clamp_level(levels.inner[a], rules.inner_range(any_above_one));
+    if (layout.spacing == TessSpacing::Equal) inner = std::ceil(inner);
+    out.inner[a] = inner;
+    out.inner_segments[a] = segments(inner_fx, inner_parity);
+  }
   return out;
 }
 

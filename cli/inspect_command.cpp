@@ -1,0 +1,314 @@
+// `tessref inspect`: one patch of the scene's draw, stage by stage (pipeline/inspect.h), as text
+// for a terminal or as JSON (--json FILE; structure in docs/inspect.md).
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.h"
+#include "common/error.h"
+#include "pipeline/camera.h"
+#include "pipeline/inspect.h"
+#include "pipeline/mesh_source.h"
+#include "pipeline/scene_loader.h"
+#include "stages/schemes/pn_triangles.h"
+
+namespace tessref::cli {
+namespace {
+
+struct InspectArgs {
+  std::string scene, coord, json;
+  std::vector<std::string> sets;
+  long long patch = -1, vertex = -1;
+};
+
+// %.9g: a float printed so that it reads back as the same bits.
+std::string g9(float f) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.9g", double(f));
+  return buf;
+}
+template <int N>
+std::string vec(const glm::vec<N, float>& v) {
+  std::string s = "(";
+  for (int i = 0; i < N; ++i) s += (i ? ", " : "") + g9(v[i]);
+  return s + ")";
+}
+// JSON numbers carry the %.9g decimal, so that any reader gets the float back by rounding.
+nlohmann::json num(float f) { return std::strtod(g9(f).c_str(), nullptr); }
+template <int N>
+nlohmann::json jvec(const glm::vec<N, float>& v) {
+  nlohmann::json a = nlohmann::json::array();
+  for (int i = 0; i < N; ++i) a.push_back(num(v[i]));
+  return a;
+}
+
+// --coord U,V[,W]: two or three numbers (a missing W is completed by inspect_patch).
+std::vector<float> parse_coord(const std::string& text) {
+  std::vector<float> v;
+  for (std::size_t at = 0; at <= text.size();) {
+    const std::size_t end = std::min(text.find(',', at), text.size());
+    float f = 0.0f;
+    const auto [ptr, ec] = std::from_chars(text.data() + at, text.data() + end, f);
+    if (ec != std::errc() || ptr != text.data() + end || end == at)
+      throw InputError("--coord: expected U,V[,W] (numbers, comma-separated), got '" + text + "'");
+    v.push_back(f);
+    at = end + 1;
+  }
+  if (v.size() != 2 && v.size() != 3)
+    throw InputError("--coord: expected 2 or 3 components (U,V[,W]), got " + std::to_string(v.size()));
+  return v;
+}
+
+// Slots up to the last one any of the vertices writes (at least one).
+int used_slots(const StageVertex& v, int n = 1) {
+  for (int s = 0; s < kMaxStageAttributes; ++s)
+    if (v.attr[s] != glm::vec4(0.0f)) n = std::max(n, s + 1);
+  return n;
+}
+int used_slots(const std::vector<InspectCorner>& corners) {
+  int n = 1;
+  for (const InspectCorner& c : corners) n = used_slots(c.vs_out, n);
+  return n;
+}
+int used_slots(const PatchOutput& o) {
+  int n = 1;
+  for (int k = 0; k < o.vertex_count; ++k) n = used_slots(o.vertices[k], n);
+  return n;
+}
+int used_patch_slots(const PatchOutput& o) {
+  int n = 0;
+  for (int s = 0; s < kMaxPatchAttributes; ++s)
+    if (o.patch[s] != glm::vec4(0.0f)) n = s + 1;
+  return n;
+}
+
+// Names of the slots: the built-in programs' (pn_triangles.h, tess_stage.h), else GLSL's I/O slots.
+std::string vs_slot_name(const InspectResult& r, int s) {
+  if (r.program.rfind("builtin", 0) == 0) return s == kAttrPosition ? "world position" : s == kAttrNormal ? "world normal" : "slot " + std::to_string(s);
+  return s == 0 ? "gl_Position" : "location " + std::to_string(s - 1);
+}
+std::string tcs_slot_name(const InspectResult& r, int s) {
+  if (!r.builtin_pn) return vs_slot_name(r, s);
+  switch (s) {
+    case kAttrPosition: return "P_i (corner)";
+    case kAttrNormal: return "N_i (unit normal)";
+    case kPnAttrTangentNext: return "tangent coefficient to P_(i+1)";
+    case kPnAttrTangentPrev: return "tangent coefficient to P_(i+2)";
+    case kPnAttrMidNormal: return "mid-edge normal n_(i,i+1)";
+  }
+  return "slot " + std::to_string(s);
+}
+std::string patch_slot_name(const InspectResult& r, int s) {
+  if (r.builtin_pn && s == kPnPatchCenter) return "b111 (centre)";
+  if (r.builtin_pn && s == kPnPatchOrder) return "canonical corner order";
+  return "patch slot " + std::to_string(s);
+}
+
+int rings(const InspectResult& r) {
+  if (r.layout.domain == TessDomain::Triangles) return (r.levels.inner_segments[0] + 1) / 2;
+  if (r.layout.domain == TessDomain::Quads)
+    return (std::min(r.levels.inner_segments[0], r.levels.inner_segments[1]) + 1) / 2;
+  return 0;
+}
+
+void print_text(const Scene& scene, const InspectResult& r, double seconds) {
+  std::printf("tessref inspect: %s, patch %zu of %zu (0..%zu); programs: %s\n\n", scene.source.c_str(), r.patch,
+              r.patch_count, r.patch_count - 1, r.program.c_str());
+  const bool builtin = r.program.rfind("builtin", 0) == 0;
+  std::printf("1. Vertex shader: the patch's %d corners (gl_in[] of the control shader)\n", r.patch_vertices);
+  const int vs_slots = used_slots(r.corners);
+  for (std::size_t k = 0; k < r.corners.size(); ++k) {
+    const InspectCorner& c = r.corners[k];
+    std::printf("  gl_in[%zu] = mesh vertex %u: in position %s, in normal %s\n", k, c.mesh_vertex,
+                vec(c.in_position).c_str(), vec(c.in_normal).c_str());
+    if (c.gl_position) std::printf("      gl_Position %s\n", vec(*c.gl_position).c_str());
+    for (int s = 0; s < vs_slots; ++s)
+      std::printf("      %s %s\n", vs_slot_name(r, s).c_str(), vec(c.vs_out.attr[s]).c_str());
+  }
+
+  std::printf("\n2. Tessellation control: %d invocations, %d phase%s\n", r.tcs_vertices, r.tcs_phases,
+              r.tcs_phases == 1 ? "" : "s");
+  const int tcs_slots = used_slots(r.tcs_out);
+  for (int k = 0; k < r.tcs_out.vertex_count; ++k)
+    for (int s = 0; s < tcs_slots; ++s)
+      std::printf("  gl_out[%d] %-32s %s\n", k, tcs_slot_name(r, s).c_str(), vec(r.tcs_out.vertices[k].attr[s]).c_str());
+  for (int s = 0; s < used_patch_slots(r.tcs_out); ++s)
+    std::printf("  patch out %-30s %s\n", patch_slot_name(r, s).c_str(), vec(r.tcs_out.patch[s]).c_str());
+  const TessLevels& lv = r.tcs_out.levels;
+  std::printf("  gl_TessLevelOuter %s, gl_TessLevelInner (%s, %s)\n",
+              vec(glm::vec4(lv.outer[0], lv.outer[1], lv.outer[2], lv.outer[3])).c_str(), g9(lv.inner[0]).c_str(),
+              g9(lv.inner[1]).c_str());
+
+  std::printf("\n3. Primitive generator: %s, %s, %s%s; %s\n", to_string(r.layout.domain), to_string(r.layout.spacing),
+              to_string(r.layout.winding), r.layout.point_mode ? ", point_mode" : "",
+              r.tessellator == Tessellator::Uniform ? "uniform subdivision (levels below are the GL generator's reading)"
+                                                    : "profile llvmpipe");
+  const ProcessedTessLevels& p = r.levels;
+  if (p.discarded) {
+    std::printf("  discarded: a relevant outer level is <= 0 or NaN\n");
+  } else {
+    for (int e = 0; e < p.outer_count; ++e)
+      std::printf("  outer[%d] %s -> clamped %s -> %d %s\n", e, g9(lv.outer[e]).c_str(), g9(p.outer[e]).c_str(),
+                  p.outer_segments[e],
+                  r.layout.domain == TessDomain::Isolines && e == 0 ? "lines" : "segments");
+    for (int a = 0; a < p.inner_count; ++a)
+      std::printf("  inner[%d] %s -> clamped %s -> %d segments\n", a, g9(lv.inner[a]).c_str(), g9(p.inner[a]).c_str(),
+                  p.inner_segments[a]);
+    if (p.inner_count) std::printf("  %d rings (the outer one included)\n", rings(r));
+  }
+  std::printf("  %zu domain points, %zu %s\n", r.domain_points, r.primitives,
+              r.vertices_per_primitive == 3 ? "triangles" : r.vertices_per_primitive == 2 ? "line segments" : "points");
+
+  std::printf("\n4. Tessellation evaluation: %d varyings; world position = varyings[%d..], normal = varyings[%d..]\n",
+              r.num_varyings, r.dump_varyings[0], r.dump_varyings[1]);
+  if (r.points.empty()) std::printf("  no points: the generator discarded the patch\n");
+  for (const InspectPoint& pt : r.points) {
+    std::printf("  %s gl_TessCoord %s\n",
+                pt.index ? ("point " + std::to_string(*pt.index) + ":").c_str() : "coordinate (not a generated point):",
+                vec(pt.tess_coord).c_str());
+    std::printf("      gl_Position %s\n      world position %s\n      world normal %s\n", vec(pt.gl_position).c_str(),
+                vec(pt.position).c_str(), vec(pt.normal).c_str());
+    if (!builtin || r.num_varyings > kBuiltinVaryings) {
+      std::string v;
+      for (float f : pt.varyings) v += (v.empty() ? "" : ", ") + g9(f);
+      std::printf("      varyings (%s)\n", v.c_str());
+    }
+    if (!pt.primitives.empty()) {
+      std::string t;
+      for (std::size_t i : pt.primitives) t += (t.empty() ? "" : ", ") + std::to_string(i);
+      std::printf("      in the patch's triangles %s\n", t.c_str());
+    }
+  }
+  std::printf("\n(%.1f ms)\n", seconds * 1e3);
+}
+
+nlohmann::json to_json(const Scene& scene, const InspectResult& r) {
+  using nlohmann::json;
+  json corners = json::array();
+  const int vs_slots = used_slots(r.corners);
+  for (const InspectCorner& c : r.corners) {
+    json j{{"mesh_vertex", c.mesh_vertex}, {"in_position", jvec(c.in_position)}, {"in_normal", jvec(c.in_normal)}};
+    if (c.gl_position) j["gl_Position"] = jvec(*c.gl_position);
+    json out = json::array();
+    for (int s = 0; s < vs_slots; ++s) out.push_back(jvec(c.vs_out.attr[s]));
+    j["outputs"] = out;
+    corners.push_back(j);
+  }
+  json gl_out = json::array();
+  const int tcs_slots = used_slots(r.tcs_out);
+  for (int k = 0; k < r.tcs_out.vertex_count; ++k) {
+    json slots = json::array();
+    for (int s = 0; s < tcs_slots; ++s) slots.push_back(jvec(r.tcs_out.vertices[k].attr[s]));
+    gl_out.push_back(slots);
+  }
+  json patch_out = json::array();
+  for (int s = 0; s < used_patch_slots(r.tcs_out); ++s) patch_out.push_back(jvec(r.tcs_out.patch[s]));
+  const TessLevels& lv = r.tcs_out.levels;
+  json tpg{{"domain", to_string(r.layout.domain)}, {"spacing", to_string(r.layout.spacing)},
+           {"winding", to_string(r.layout.winding)}, {"point_mode", r.layout.point_mode},
+           {"tessellator", r.tessellator == Tessellator::Uniform ? "uniform" : "primitive_generator"},
+           {"discarded", r.levels.discarded}, {"domain_points", r.domain_points}, {"primitives", r.primitives},
+           {"vertices_per_primitive", r.vertices_per_primitive}};
+  if (!r.levels.discarded) {
+    json oc = json::array(), os = json::array(), ic = json::array(), is = json::array();
+    for (int e = 0; e < r.levels.outer_count; ++e) {
+      oc.push_back(num(r.levels.outer[e]));
+      os.push_back(r.levels.outer_segments[e]);
+    }
+    for (int a = 0; a < r.levels.inner_count; ++a) {
+      ic.push_back(num(r.levels.inner[a]));
+      is.push_back(r.levels.inner_segments[a]);
+    }
+    tpg["outer_clamped"] = oc;
+    tpg["outer_segments"] = os;
+    tpg["inner_clamped"] = ic;
+    tpg["inner_segments"] = is;
+    tpg["rings"] = rings(r);
+  }
+  json points = json::array();
+  for (const InspectPoint& p : r.points) {
+    json v = json::array();
+    for (float f : p.varyings) v.push_back(num(f));
+    points.push_back(json{{"index", p.index ? json(*p.index) : json()},
+                          {"gl_TessCoord", jvec(p.tess_coord)},
+                          {"gl_Position", jvec(p.gl_position)},
+                          {"varyings", v},
+                          {"world_position", jvec(p.position)},
+                          {"world_normal", jvec(p.normal)},
+                          {"primitives", p.primitives}});
+  }
+  return json{{"scene", scene.source},
+              {"program", r.program},
+              {"patch", r.patch},
+              {"patch_count", r.patch_count},
+              {"vertex_stage", {{"corners", corners}}},
+              {"control_stage",
+               {{"output_vertices", r.tcs_vertices},
+                {"phases", r.tcs_phases},
+                {"gl_out", gl_out},
+                {"patch_out", patch_out},
+                {"gl_TessLevelOuter", jvec(glm::vec4(lv.outer[0], lv.outer[1], lv.outer[2], lv.outer[3]))},
+                {"gl_TessLevelInner", jvec(glm::vec2(lv.inner[0], lv.inner[1]))}}},
+              {"primitive_generator", tpg},
+              {"evaluation_stage",
+               {{"num_varyings", r.num_varyings},
+                {"dump_varyings", {r.dump_varyings[0], r.dump_varyings[1]}},
+                {"points", points}}}};
+}
+
+void run_inspect(const InspectArgs& a) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (a.patch < 0) throw InputError("--patch: required: which patch of the draw to inspect (counted from 0)");
+  if (a.vertex != -1 && a.vertex < 0) throw InputError("--vertex: must be 0 or more, got " + std::to_string(a.vertex));
+  if (!a.coord.empty() && a.vertex >= 0)
+    throw InputError("--coord and --vertex: give one of them (a coordinate, or a generated point's index)");
+  Scene scene = load_scene(a.scene, a.sets);
+  std::vector<std::string> warnings;
+  const Mesh mesh = build_mesh(scene.mesh, warnings);
+  for (const std::string& w : warnings) std::fprintf(stderr, "tessref: warning: %s\n", w.c_str());
+  scene.camera = fitted_camera(scene, mesh);  // as render does
+
+  InspectRequest request;
+  request.patch = std::size_t(a.patch);
+  if (a.vertex >= 0) request.vertex = std::size_t(a.vertex);
+  if (!a.coord.empty()) {
+    const std::vector<float> c = parse_coord(a.coord);
+    request.coord = glm::vec3(c[0], c[1], c.size() == 3 ? c[2] : 0.0f);
+    request.coord_has_w = c.size() == 3;
+  }
+  const InspectResult r = inspect_patch(scene, mesh, request);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!a.json.empty()) {
+    std::ofstream out(a.json, std::ios::binary);
+    if (!out) throw InputError("--json: cannot create '" + a.json + "'");
+    out << to_json(scene, r).dump(1) << "\n";
+    if (!out.flush()) throw InputError("--json: cannot write '" + a.json + "'");
+    return;
+  }
+  print_text(scene, r, seconds);
+}
+
+}  // namespace
+
+void add_inspect_command(CLI::App& app) {
+  auto args = std::make_shared<InspectArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "inspect", "Show one patch of the scene's draw stage by stage (vertex shader, control shader, primitive "
+                 "generator, evaluation shader) with the values the draw computes (docs/inspect.md)");
+  add_scene_options(cmd, args->scene, args->sets);
+  cmd->add_option("--patch", args->patch, "the patch (draw order, from 0) to inspect")->check(kInteger)->required();
+  cmd->add_option("--coord", args->coord, "evaluate the TES at gl_TessCoord U,V[,W] (triangles: W = (1 - U) - V if left out)");
+  cmd->add_option("--vertex", args->vertex, "the patch's K-th generated domain point (from 0)")->check(kInteger);
+  cmd->add_option("--json", args->json, "write the result as JSON to FILE instead of printing text");
+  cmd->callback([args] { run_inspect(*args); });
+}
+
+}  // namespace tessref::cli

@@ -1,0 +1,72 @@
+#pragma once
+// tessref inspect: the life of one patch of a scene's draw, stage by stage, as the draw computes it.
+// Nothing here re-derives a value: the scene's own program objects (builtin_programs.h, or the GLSL
+// program on the executor) run on the patch through the same executor (tessellate() over
+// [patch, patch + 1)), and what each stage handed to the next is recorded on the way.
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "pipeline/mesh.h"
+#include "pipeline/scene.h"
+#include "stages/tess_stage.h"
+#include "stages/tpg_levels.h"
+
+namespace tessref {
+
+struct InspectRequest {
+  std::size_t patch = 0;
+  std::optional<glm::vec3> coord;      // evaluate the TES here (need not be a generated point)
+  bool coord_has_w = true;             // false: z is filled in, (1 - u) - v for triangles (as the
+                                       // generator computes it), 0 for quads and isolines
+  std::optional<std::size_t> vertex;   // the patch's K-th generated domain point
+  // Neither: every generated point.
+};
+
+// One corner of the patch (gl_in[k] of the TCS).
+struct InspectCorner {
+  std::uint32_t mesh_vertex = 0;   // index into the mesh's vertex arrays
+  glm::vec3 in_position{0.0f}, in_normal{0.0f};  // the mesh's attributes
+  StageVertex vs_out;              // the vertex stage's output as the TCS received it
+  std::optional<glm::vec4> gl_position;  // built-in vertex shader: its gl_Position (not passed on)
+};
+
+// One TES invocation.
+struct InspectPoint {
+  std::optional<std::size_t> index;  // generation order within the patch; none: a --coord off the pattern
+  glm::vec3 tess_coord{0.0f};
+  glm::vec4 gl_position{0.0f};
+  std::vector<float> varyings;      // the TES's num_varyings outputs
+  glm::vec3 position{0.0f}, normal{0.0f};  // world position and normal, as --dump-tess records them
+  std::vector<std::size_t> primitives;     // the patch's triangles (emission order) using this point
+};
+
+struct InspectResult {
+  std::string program;           // "builtin pn (quadratic normals)", "glsl twins", "glsl custom"
+  bool builtin_pn = false;       // the TCS output follows pn_triangles.h's layout
+  std::size_t patch = 0, patch_count = 0;
+  int patch_vertices = 3;
+  std::vector<InspectCorner> corners;
+  int tcs_vertices = 0, tcs_phases = 1;
+  PatchOutput tcs_out;           // gl_out[], patch out, levels: what the executor handed the TES
+  TessLayout layout;
+  Tessellator tessellator = Tessellator::PrimitiveGenerator;
+  ProcessedTessLevels levels;    // the generator's reading of tcs_out.levels
+  std::size_t domain_points = 0, primitives = 0;
+  int vertices_per_primitive = 3;
+  bool discarded = false;
+  int num_varyings = 0;
+  std::array<int, 2> dump_varyings{kVaryingPosition, kVaryingNormal};
+  std::vector<InspectPoint> points;  // the requested ones
+};
+
+// Runs the scene's draw on one patch. The scene's camera must already be fitted (as render does).
+// InputError for a patch past the draw (message names --patch and the patch count), a --vertex past
+// the patch's domain points, a --coord off the domain, or a scene that does not tessellate.
+InspectResult inspect_patch(const Scene& scene, const Mesh& mesh, const InspectRequest& request);
+
+}  // namespace tessref

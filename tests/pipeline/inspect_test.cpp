@@ -1,0 +1,193 @@
+// tessref inspect: the values it shows are the draw's own (issue 10's first acceptance test): the
+// world positions and normals of a patch equal bit for bit what `render --dump-tess` records for
+// the same patch and gl_TessCoord; the primitive generator summary follows docs/tpg.md; bad
+// requests are refused with exit status 2 and a message naming the option.
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <cstdlib>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "pipeline/tess_dump.h"
+#include "stages/tpg.h"
+#include "test_util.h"
+
+namespace tessref {
+namespace {
+
+using ::testing::HasSubstr;
+using test::CliRun;
+using test::run_cli;
+using test::TempDir;
+
+// One line of the text dump, with its gl_TessCoord words kept as printed (they read back exactly).
+struct DumpLine {
+  std::string u, v, w;
+  float f[9];  // u v w px py pz nx ny nz
+};
+
+// The text dump of a render, grouped by patch in draw order.
+std::map<int, std::vector<DumpLine>> render_dump(const TempDir& dir, const std::string& sets) {
+  const auto dump = dir.path() / "dump.txt";
+  const CliRun r = run_cli("render -o " + (dir.path() / "x.png").string() + " --dump-tess " + dump.string() + sets);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  std::map<int, std::vector<DumpLine>> out;
+  std::istringstream in(test::read_file(dump));
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream words(line);
+    int patch = 0;
+    DumpLine d;
+    words >> patch >> d.u >> d.v >> d.w;
+    d.f[0] = std::strtof(d.u.c_str(), nullptr);
+    d.f[1] = std::strtof(d.v.c_str(), nullptr);
+    d.f[2] = std::strtof(d.w.c_str(), nullptr);
+    for (int i = 3; i < 9; ++i) {
+      std::string word;
+      words >> word;
+      d.f[i] = std::strtof(word.c_str(), nullptr);
+    }
+    out[patch].push_back(d);
+  }
+  return out;
+}
+
+nlohmann::json inspect_json(const TempDir& dir, const std::string& args) {
+  const auto file = dir.path() / "inspect.json";
+  const CliRun r = run_cli("inspect " + args + " --json " + file.string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  return nlohmann::json::parse(test::read_file(file));
+}
+
+std::uint32_t bits(const nlohmann::json& number) { return std::bit_cast<std::uint32_t>(float(number.get<double>())); }
+
+// A point of inspect's JSON against a dump line: gl_TessCoord, world position and normal, bit for bit.
+void expect_same_bits(const nlohmann::json& point, const DumpLine& d, const std::string& where) {
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_EQ(bits(point["gl_TessCoord"][c]), std::bit_cast<std::uint32_t>(d.f[c])) << where << " coord " << c;
+    EXPECT_EQ(bits(point["world_position"][c]), std::bit_cast<std::uint32_t>(d.f[3 + c])) << where << " position " << c;
+    EXPECT_EQ(bits(point["world_normal"][c]), std::bit_cast<std::uint32_t>(d.f[6 + c])) << where << " normal " << c;
+  }
+}
+
+void expect_patch_matches_dump(const std::string& sets, const std::vector<int>& patches) {
+  TempDir dir;
+  const auto dump = render_dump(dir, sets);
+  ASSERT_EQ(dump.size(), 256u);
+  for (int patch : patches) {
+    const std::vector<DumpLine>& lines = dump.at(patch);
+    ASSERT_FALSE(lines.empty()) << "patch " << patch;
+    const std::string p = "--patch " + std::to_string(patch) + sets;
+    // Every generated point (no --coord, no --vertex), in generation order.
+    const nlohmann::json all = inspect_json(dir, p);
+    ASSERT_EQ(all["evaluation_stage"]["points"].size(), lines.size()) << "patch " << patch;
+    EXPECT_EQ(all["primitive_generator"]["domain_points"], lines.size());
+    for (std::size_t k = 0; k < lines.size(); ++k)
+      expect_same_bits(all["evaluation_stage"]["points"][k], lines[k], "patch " + std::to_string(patch) + " point " + std::to_string(k));
+    // --coord (evaluated on its own through the TES's batch entry point) and --vertex.
+    for (std::size_t k : {std::size_t(0), std::min<std::size_t>(5, lines.size() - 1), lines.size() / 2, lines.size() - 1}) {
+      const DumpLine& d = lines[k];
+      const nlohmann::json at = inspect_json(dir, p + " --coord " + d.u + "," + d.v + "," + d.w);
+      ASSERT_EQ(at["evaluation_stage"]["points"].size(), 1u);
+      EXPECT_EQ(at["evaluation_stage"]["points"][0]["index"], k);
+      expect_same_bits(at["evaluation_stage"]["points"][0], d, "patch " + std::to_string(patch) + " --coord of point " + std::to_string(k));
+      const nlohmann::json vk = inspect_json(dir, p + " --vertex " + std::to_string(k));
+      expect_same_bits(vk["evaluation_stage"]["points"][0], d, "patch " + std::to_string(patch) + " --vertex " + std::to_string(k));
+    }
+  }
+}
+
+TEST(Inspect, PositionsAndNormalsAreTheDrawsBitForBit) {
+  expect_patch_matches_dump(" --set image.width=128 --set image.height=128", {0, 17, 131, 255});
+}
+
+TEST(Inspect, OtherNormalModesSchemesAndAdaptiveLevelsMatchTheDraw) {
+  expect_patch_matches_dump(" --set image.width=64 --set image.height=64 --set tessellation.normal_mode=analytic", {42});
+  expect_patch_matches_dump(" --set image.width=64 --set image.height=64 --set tessellation.scheme=flat", {42});
+  // Screen-space levels: the control shader sees the render's viewport (the image size) and camera.
+  expect_patch_matches_dump(" --set image.width=512 --set image.height=384 --set tessellation.adaptive.enabled=true", {42, 100});
+}
+
+TEST(Inspect, GlslTwinsOnTheExecutorMatchTheirDraw) {
+  expect_patch_matches_dump(" --set image.width=64 --set image.height=64 --set shaders.program=twins", {3, 200});
+}
+
+TEST(Inspect, CoordinateOffThePatternIsEvaluated) {
+  TempDir dir;
+  const nlohmann::json j = inspect_json(dir, "--patch 7 --coord 0.3,0.3");
+  const nlohmann::json& p = j["evaluation_stage"]["points"][0];
+  EXPECT_TRUE(p["index"].is_null());
+  EXPECT_EQ(bits(p["gl_TessCoord"][2]), std::bit_cast<std::uint32_t>((1.0f - 0.3f) - 0.3f));
+  // The control shader's output and levels are the built-in PN program's: 3 corners, 12 everywhere.
+  EXPECT_EQ(j["control_stage"]["gl_out"].size(), 3u);
+  EXPECT_EQ(j["control_stage"]["gl_TessLevelOuter"][0], 12.0);
+  const CliRun text = run_cli("inspect --patch 7 --vertex 3");
+  EXPECT_EQ(text.exit_code, 0) << text.output;
+  EXPECT_THAT(text.output, HasSubstr("b111 (centre)"));
+  EXPECT_THAT(text.output, HasSubstr("point 3: gl_TessCoord"));
+}
+
+// fractional_odd 12.3: clamped to 12.3, rounded up to the odd 13 segments (docs/tpg.md); the counts
+// are the generator's for those levels, and each outer edge holds segments + 1 generated points.
+TEST(Inspect, PrimitiveGeneratorSummaryFollowsTheSpacingRules) {
+  TempDir dir;
+  const nlohmann::json j =
+      inspect_json(dir, "--patch 9 --set tessellation.outer=12.3 --set tessellation.inner=12.3");
+  const nlohmann::json& t = j["primitive_generator"];
+  EXPECT_EQ(t["spacing"], "fractional_odd");
+  for (int e = 0; e < 3; ++e) {
+    EXPECT_EQ(bits(t["outer_clamped"][e]), std::bit_cast<std::uint32_t>(12.3f));
+    EXPECT_EQ(t["outer_segments"][e], 13);
+  }
+  EXPECT_EQ(t["inner_segments"][0], 13);
+  EXPECT_EQ(t["rings"], 7);
+
+  const TessLevels levels{{12.3f, 12.3f, 12.3f, 1.0f}, {12.3f, 1.0f}};
+  const TessDomainPoints g = generate_tessellation(
+      TessLayout{TessDomain::Triangles, TessSpacing::FractionalOdd, TessWinding::Ccw, false}, levels);
+  EXPECT_EQ(t["domain_points"], g.coords.size());
+  EXPECT_EQ(t["primitives"], g.primitive_count());
+  // And as `tessref tpg` prints them: one line per emitted vertex, three per triangle.
+  const CliRun tpg = run_cli("tpg --spacing fractional_odd --outer 12.3,12.3,12.3 --inner 12.3");
+  ASSERT_EQ(tpg.exit_code, 0) << tpg.output;
+  std::size_t lines = 0;
+  for (char c : tpg.output) lines += c == '\n';
+  EXPECT_EQ(t["primitives"].get<std::size_t>() * 3, lines);
+
+  // Edge u = 0 is outer[0], v = 0 outer[1], w = 0 outer[2]: segments + 1 points on each.
+  int on_edge[3] = {};
+  for (const auto& p : j["evaluation_stage"]["points"])
+    for (int c = 0; c < 3; ++c) on_edge[c] += p["gl_TessCoord"][c] == 0.0;
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(on_edge[c], 14) << "edge " << c;
+}
+
+TEST(Inspect, BadRequestsExitTwoNamingTheOption) {
+  struct Case {
+    std::string args, message;
+  } cases[] = {
+      {"--patch 256", "--patch: 256 is past the draw, which has 256 patches (0..255)"},
+      {"--patch 0 --coord 0.5,0.5,0.5", "--coord: a triangle patch's gl_TessCoord has u + v + w = 1"},
+      {"--patch 0 --coord -0.5,1,0.5", "--coord: every component must lie in [0, 1]"},
+      {"--patch 0 --coord 0.5,x", "--coord: expected U,V[,W]"},
+      {"--patch 0 --coord 0.1,0.2,0.3,0.4", "--coord: expected 2 or 3 components"},
+      {"--patch 0 --vertex 147", "--vertex: 147 is past the patch's 147 generated domain points"},
+      {"--patch 0 --vertex 2 --coord 0.2,0.2,0.6", "--coord and --vertex: give one of them"},
+      {"--patch 0 --set tessellation.enabled=false", "the scene does not tessellate"},
+  };
+  for (const Case& c : cases) {
+    const CliRun r = run_cli("inspect " + c.args);
+    EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.output;
+    EXPECT_THAT(r.output, HasSubstr(c.message)) << c.args;
+  }
+  EXPECT_NE(run_cli("inspect --coord 0.2,0.2,0.6").exit_code, 0);  // --patch is required
+}
+
+}  // namespace
+}  // namespace tessref
