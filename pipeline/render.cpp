@@ -64,9 +64,9 @@ std::optional<std::uint64_t> predicted_tes_invocations(const Scene& scene, const
   const TessellationSettings& t = scene.tessellation;
   if (!t.enabled || t.adaptive.enabled || scene.shaders.program != ShaderProgram::Builtin) return std::nullopt;
   const TessLayout layout{TessDomain::Triangles, t.spacing, t.winding, false};
-  const TessDomainPoints& points =
-      make_pattern(layout, t.levels, TessProfile::llvmpipe(), t.tessellator)->points;
-  return std::uint64_t(mesh.triangle_count()) * (points.discarded ? 0 : points.coords.size());
+  // Held by name: the pattern dies with the last shared_ptr to it.
+  const std::shared_ptr<const TessPattern> pattern = make_pattern(layout, t.levels, TessProfile::llvmpipe(), t.tessellator);
+  return std::uint64_t(mesh.triangle_count()) * (pattern->points.discarded ? 0 : pattern->points.coords.size());
 }
 
 }  // namespace tessref
