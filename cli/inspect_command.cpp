@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -16,6 +17,7 @@
 #include "common/error.h"
 #include "pipeline/camera.h"
 #include "pipeline/inspect.h"
+#include "pipeline/inspect_pixel.h"
 #include "pipeline/mesh_source.h"
 #include "pipeline/scene_loader.h"
 #include "stages/schemes/pn_triangles.h"
@@ -24,7 +26,8 @@ namespace tessref::cli {
 namespace {
 
 struct InspectArgs {
-  std::string scene, coord, json;
+  std::string scene, coord, json, pixel;
+  int threads = 0;
   std::vector<std::string> sets;
   long long patch = -1, vertex = -1;
 };
@@ -264,9 +267,113 @@ nlohmann::json to_json(const Scene& scene, const InspectResult& r) {
                 {"points", points}}}};
 }
 
-void run_inspect(const InspectArgs& a) {
+// --pixel X,Y: two integers (the range is checked against the image by inspect_pixel).
+std::pair<int, int> parse_pixel(const std::string& text, const Scene& scene) {
+  const auto integer = [&](std::size_t begin, std::size_t end, int& out) {
+    const auto [ptr, ec] = std::from_chars(text.data() + begin, text.data() + end, out);
+    return begin < end && ec == std::errc() && ptr == text.data() + end;
+  };
+  const std::size_t comma = text.find(',');
+  std::pair<int, int> xy;
+  if (comma == std::string::npos || !integer(0, comma, xy.first) || !integer(comma + 1, text.size(), xy.second))
+    throw InputError("--pixel: expected X,Y (two integers: X from the left, Y down from the top row) on the " +
+                     std::to_string(scene.width) + "x" + std::to_string(scene.height) + " image, got '" + text + "'");
+  return xy;
+}
+
+std::string depth_verdict(const PixelInspectResult& r, std::size_t i) {
+  const PixelFragment& f = r.fragments[i];
+  const std::string met = g9(f.depth_before) +
+                          (f.depth_from ? ", fragment " + std::to_string(*f.depth_from) + "'s" : ", the cleared depth");
+  if (!f.passed) return "failed: " + g9(f.frag_coord.z) + " is not less than " + met;
+  std::string s = "passed: " + g9(f.frag_coord.z) + " < " + met;
+  if (f.hidden_by) return s + "; then hidden by fragment " + std::to_string(*f.hidden_by);
+  return s + "; the winner: its colour is the pixel's";
+}
+
+void print_pixel_text(const Scene& scene, const PixelInspectResult& r, double seconds) {
+  std::printf("tessref inspect: %s, pixel (%d, %d) of the %dx%d image (X from the left, Y down from the top row, as "
+              "image files are written; GL window row %d); programs: %s\n\n",
+              scene.source.c_str(), r.x, r.y, r.width, r.height, r.window_y, r.program.c_str());
+  if (r.fragments.empty()) {
+    std::printf("nothing was drawn at this pixel: the background %s remains\n", vec(r.pixel_color).c_str());
+  } else {
+    if (r.fragments.size() == 1) std::printf("1 fragment at this pixel:\n");
+    else std::printf("%zu fragments at this pixel, in the order the draw made them:\n", r.fragments.size());
+  }
+  for (std::size_t i = 0; i < r.fragments.size(); ++i) {
+    const PixelFragment& f = r.fragments[i];
+    std::printf("  fragment %zu: patch %zu, triangle %zu, %s\n", i, f.patch, f.triangle,
+                f.front_facing ? "front facing" : "back facing");
+    std::printf("      gl_TessCoord %s\n", vec(f.tess_coord).c_str());
+    std::printf("      gl_FragCoord %s\n", vec(f.frag_coord).c_str());
+    std::printf("      world position %s\n", vec(f.position).c_str());
+    std::printf("      world normal %s\n", vec(f.normal).c_str());
+    std::printf("      colour %s\n", vec(f.color).c_str());
+    std::printf("      depth test: %s\n", depth_verdict(r, i).c_str());
+  }
+  if (r.winner)
+    std::printf("\nthe pixel: colour %s, depth %s (fragment %zu, patch %zu)\n", vec(r.pixel_color).c_str(),
+                g9(r.pixel_depth).c_str(), *r.winner, r.fragments[*r.winner].patch);
+  std::printf("\n(%.1f ms)\n", seconds * 1e3);
+}
+
+nlohmann::json pixel_json(const Scene& scene, const PixelInspectResult& r) {
+  using nlohmann::json;
+  const auto opt = [](const std::optional<std::size_t>& v) { return v ? json(*v) : json(); };
+  json fragments = json::array();
+  for (std::size_t i = 0; i < r.fragments.size(); ++i) {
+    const PixelFragment& f = r.fragments[i];
+    fragments.push_back(json{{"patch", f.patch},
+                             {"triangle", f.triangle},
+                             {"gl_TessCoord", jvec(f.tess_coord)},
+                             {"gl_FragCoord", jvec(f.frag_coord)},
+                             {"front_facing", f.front_facing},
+                             {"world_position", jvec(f.position)},
+                             {"world_normal", jvec(f.normal)},
+                             {"color", jvec(f.color)},
+                             {"depth_test",
+                              {{"passed", f.passed}, {"stored_depth", num(f.depth_before)},
+                               {"stored_by", opt(f.depth_from)}}},
+                             {"hidden_by", opt(f.hidden_by)}});
+  }
+  return json{{"scene", scene.source},
+              {"program", r.program},
+              {"pixel", {{"x", r.x}, {"y", r.y}, {"y_axis", "down from the top row"}, {"window_y", r.window_y}}},
+              {"image", {{"width", r.width}, {"height", r.height}}},
+              {"fragments", fragments},
+              {"winner", opt(r.winner)},
+              {"pixel_color", jvec(r.pixel_color)},
+              {"pixel_depth", num(r.pixel_depth)}};
+}
+
+void write_json(const std::string& path, const nlohmann::json& j) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw InputError("--json: cannot create '" + path + "'");
+  out << j.dump(1) << "\n";
+  if (!out.flush()) throw InputError("--json: cannot write '" + path + "'");
+}
+
+void run_inspect_pixel(const InspectArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
-  if (a.patch < 0) throw InputError("--patch: required: which patch of the draw to inspect (counted from 0)");
+  if (a.patch >= 0 || a.vertex >= 0 || !a.coord.empty())
+    throw InputError("--pixel: give it alone (--patch, --coord and --vertex ask about a patch)");
+  Scene scene = load_scene(a.scene, a.sets);
+  const auto [x, y] = parse_pixel(a.pixel, scene);
+  std::vector<std::string> warnings;
+  const Mesh mesh = build_mesh(scene.mesh, warnings);
+  for (const std::string& w : warnings) std::fprintf(stderr, "tessref: warning: %s\n", w.c_str());
+  scene.camera = fitted_camera(scene, mesh);  // as render does
+  const PixelInspectResult r = inspect_pixel(scene, mesh, x, y, Parallel(a.threads));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!a.json.empty()) return write_json(a.json, pixel_json(scene, r));
+  print_pixel_text(scene, r, seconds);
+}
+
+void run_inspect(const InspectArgs& a) {
+  if (!a.pixel.empty()) return run_inspect_pixel(a);
+  const auto t0 = std::chrono::steady_clock::now();
+  if (a.patch < 0) throw InputError("--patch: required: which patch of the draw to inspect (counted from 0), or --pixel X,Y");
   if (a.vertex != -1 && a.vertex < 0) throw InputError("--vertex: must be 0 or more, got " + std::to_string(a.vertex));
   if (!a.coord.empty() && a.vertex >= 0)
     throw InputError("--coord and --vertex: give one of them (a coordinate, or a generated point's index)");
@@ -286,13 +393,7 @@ void run_inspect(const InspectArgs& a) {
   }
   const InspectResult r = inspect_patch(scene, mesh, request);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (!a.json.empty()) {
-    std::ofstream out(a.json, std::ios::binary);
-    if (!out) throw InputError("--json: cannot create '" + a.json + "'");
-    out << to_json(scene, r).dump(1) << "\n";
-    if (!out.flush()) throw InputError("--json: cannot write '" + a.json + "'");
-    return;
-  }
+  if (!a.json.empty()) return write_json(a.json, to_json(scene, r));
   print_text(scene, r, seconds);
 }
 
@@ -302,9 +403,15 @@ void add_inspect_command(CLI::App& app) {
   auto args = std::make_shared<InspectArgs>();
   CLI::App* cmd = app.add_subcommand(
       "inspect", "Show one patch of the scene's draw stage by stage (vertex shader, control shader, primitive "
-                 "generator, evaluation shader) with the values the draw computes (docs/inspect.md)");
+                 "generator, evaluation shader), or the fragments at one pixel, with the values the draw computes "
+                 "(docs/inspect.md)");
   add_scene_options(cmd, args->scene, args->sets);
-  cmd->add_option("--patch", args->patch, "the patch (draw order, from 0) to inspect")->check(kInteger)->required();
+  cmd->add_option("--patch", args->patch, "the patch (draw order, from 0) to inspect")->check(kInteger);
+  cmd->add_option("--pixel", args->pixel,
+                  "instead of a patch: the fragments the draw made at pixel X,Y (X from the left, Y down from the top "
+                  "row, as the image file), with their patches and the depth test's verdicts");
+  cmd->add_option("--threads", args->threads, "worker threads for --pixel's draw (0: all hardware threads)")
+      ->check(kInteger);
   cmd->add_option("--coord", args->coord, "evaluate the TES at gl_TessCoord U,V[,W] (triangles: W = (1 - U) - V if left out)");
   cmd->add_option("--vertex", args->vertex, "the patch's K-th generated domain point (from 0)")->check(kInteger);
   cmd->add_option("--json", args->json, "write the result as JSON to FILE instead of printing text");

@@ -23,6 +23,9 @@
 #include "pipeline/render.h"
 #include "pipeline/scene_loader.h"
 #include "pipeline/tess_dump.h"
+#include "pipeline/fragment_dump.h"
+#include "pipeline/check.h"
+#include "pipeline/glsl_scene.h"
 
 namespace tessref::cli {
 namespace {
@@ -31,11 +34,13 @@ struct RenderOptions {
   std::string scene;  // empty: the built-in default scene
   std::string output = "tessref.png";
   std::string depth, normals, dump_tess;
+  std::string dump_fragments;  // --dump-fragments FILE.exr (pipeline/fragment_dump.h)
   int threads = 0;
   std::uint64_t max_dump_bytes = 0;  // 0: the free space of the dump's file system
   int repeat = 1;              // frames rendered; the image is the last one's
   bool report_repeat = false;  // --repeat given: print per-stage medians over the frames
   std::vector<std::string> sets;
+  bool check = false;  // --check: NaN and infinity in every stage's outputs (pipeline/check.h)
 };
 
 using Clock = std::chrono::steady_clock;
@@ -134,6 +139,31 @@ void warn_nothing_drawn(const DrawStats& s) {
                static_cast<unsigned long long>(s.tess.patches_discarded));
 }
 
+// An argument as a POSIX shell reads it back: single-quoted unless it is plain.
+std::string shell_word(const std::string& s) {
+  if (!s.empty() && s.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                                        "0123456789_./=,:+-@%") == std::string::npos)
+    return s;
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+// --check's context: the inspect command's scene arguments and the GLSL evaluation shader's source.
+CheckContext check_context(const RenderOptions& o, const Scene& scene) {
+  CheckContext c;
+  if (!o.scene.empty()) c.inspect_args = shell_word(o.scene) + " ";
+  for (const std::string& set : o.sets) c.inspect_args += "--set " + shell_word(set) + " ";
+  if (scene.shaders.program != ShaderProgram::Builtin)
+    for (const shader::ShaderSource& src : scene_sources(scene))
+      if (src.stage == shader::Stage::TessEval) {
+        c.tes_file = src.file;
+        c.tes_text = src.text;
+        c.tes_first_line = src.first_line;
+      }
+  return c;
+}
+
 void run_render(const RenderOptions& o) {
   Scene scene = load_scene(o.scene, o.sets);
   // Every output checked before any work: its folder, its format, and no two on one file. All
@@ -175,10 +205,13 @@ void run_render(const RenderOptions& o) {
   StageTimes vertex{"vertex", {}}, tessellation{"tessellation", {}}, raster{"raster+fs", {}},
       frame{"frame", {}};
   RenderResult result;
-  {
+  std::unique_ptr<Checker> checker;
+  if (o.check) checker = std::make_unique<Checker>(check_context(o, scene));
+  try {
     ProgressBar bar;
     for (int i = 0; i < o.repeat; ++i) {
       DrawOptions options;
+      options.check = checker.get();
       options.progress = [&](double f) { bar.update((i + f) / o.repeat); };
       if (dump && i == 0)
         options.dump_tess = [&](const std::vector<TessDumpRecord>& r) {
@@ -192,7 +225,14 @@ void run_render(const RenderOptions& o) {
       tessellation.seconds.push_back(result.stats.tessellation_seconds);
       raster.seconds.push_back(result.stats.raster_seconds);
     }
+  } catch (const CheckOffence& e) {
+    // No image: the temporaries (outputs, the dump) are removed as `outputs` goes.
+    std::fprintf(stderr, "tessref render --check: non-finite value, nothing written\n%s\n", e.what());
+    set_exit_code(1);
+    return;
   }
+  if (checker)
+    for (const std::string& w : checker->warnings()) std::fprintf(stderr, "tessref: warning: %s\n", w.c_str());
   if (dump) write_as(dump_tmp, o.dump_tess, [&] { dump->close(); });
 
   t = Clock::now();
@@ -200,6 +240,7 @@ void run_render(const RenderOptions& o) {
   write_as(color_tmp, o.output, [&] { write_color_image(fb, color_tmp); });
   if (!o.depth.empty()) write_as(depth_tmp, o.depth, [&] { write_depth_image(fb, depth_tmp); });
   if (!o.normals.empty()) write_as(normals_tmp, o.normals, [&] { write_normals_image(fb, normals_tmp); });
+  if (!o.dump_fragments.empty()) write_fragment_dump(scene, mesh, parallel, o.dump_fragments);  // draws again
   outputs.commit();
   const double write_seconds = seconds_since(t);
 
@@ -266,7 +307,13 @@ void add_render_command(CLI::App& app) {
           },
           ""))
       ->type_name("BYTES");
+  cmd->add_flag("--check", opts->check,
+                 "test every stage's outputs for NaN and infinity; the first one stops the render "
+                 "(exit 1, nothing written) naming the stage, invocation, value and source line");
   cmd->add_option("--depth", opts->depth, "also write window-space depth (.exr)");
+  cmd->add_option("--dump-fragments", opts->dump_fragments,
+                  "also write each pixel's winning fragment (world P, N, patch_id, triangle, tess_coord, depth) "
+                  "as one multi-channel .exr");
   cmd->add_option("--normals", opts->normals, "also write world normals (.exr)");
   cmd->add_option("--dump-tess", opts->dump_tess,
                   "also write every tessellated vertex (patch id, gl_TessCoord, position, normal): "

@@ -5,6 +5,7 @@
 
 #include "common/error.h"
 #include "pipeline/builtin_programs.h"
+#include "pipeline/check.h"
 #include "stages/schemes/flat.h"
 #include "stages/schemes/pn_triangles.h"
 #include "stages/tess_stage.h"
@@ -78,7 +79,9 @@ void draw_tessellated(const std::vector<programs::VertexOut>& shaded, const Mesh
   TessOptions tess_options;
   tess_options.patches_per_task = std::clamp<std::size_t>(kTaskTriangles / per_patch, 1, 64);
   tess_options.tessellator = settings.tessellator;
-  if (options.dump_tess || options.tess_surface) tess_options.dump = &records;
+  if (options.dump_tess || options.tess_surface || options.check) tess_options.dump = &records;
+  if (options.check)
+    tess_options.control_check = [&](std::size_t p, const PatchOutput& o) { options.check->control_output(p, o); };
   const TessDrawInput input{control_points, mesh.indices, 3};
   const std::size_t patches = input.patch_count();
   std::size_t done = 0;
@@ -87,6 +90,10 @@ void draw_tessellated(const std::vector<programs::VertexOut>& shaded, const Mesh
   const TessStats tess = tessellate_chunks(
       input, chunk, tcs, tes, tess_options, parallel,
       [&](const TriangleBatch& batch) {
+        if (options.check)  // before the chunk is drawn: the TES offence comes first
+          options.check->evaluation_outputs(records, batch, [&](std::uint32_t p, const glm::vec3& c) {
+            return trace_evaluation(input, tcs, tes, tess_options, p, c);
+          });
         rasterize(batch);
         if (options.tess_surface) options.tess_surface(records, batch);
         if (options.dump_tess) options.dump_tess(records);
@@ -149,13 +156,24 @@ DrawStats draw_mesh(const Mesh& mesh, const programs::TransformVertexShader& ver
   });
   stats.vertices_shaded = shaded.size();
   stats.vertex_seconds += seconds_since(t0);
+  std::unique_ptr<FragmentProgram> watched;  // --check: the fragment shader's outputs watched
+  if (options.check) {
+    for (std::size_t v = 0; v < shaded.size(); ++v) {
+      options.check->vertex_output(v, "gl_Position", &shaded[v].gl_Position[0], 4, mesh.indices, 3);
+      options.check->vertex_output(v, "v_world_position", &shaded[v].v_world_position[0], 3, mesh.indices, 3);
+      options.check->vertex_output(v, "v_world_normal", &shaded[v].v_world_normal[0], 3, mesh.indices, 3);
+    }
+    watched = options.check->watch(fragment_shader);
+  }
+  const FragmentProgram& fs = watched ? *watched : fragment_shader;
 
   // Everything after the geometry stages goes through here, batch by batch, in order.
   auto rasterize = [&](const TriangleBatch& batch) {
     auto t = Clock::now();
     stats.triangles_generated += batch.triangle_count();
-    stats.raster += draw_triangles(batch, raster_state, fragment_shader, fb, parallel);
+    stats.raster += draw_triangles(batch, raster_state, fs, fb, parallel);
     stats.raster_seconds += seconds_since(t);
+    if (options.check) options.check->after_raster();
   };
 
   if (tessellation.enabled) {

@@ -14,6 +14,8 @@
 
 namespace tessref {
 
+class Checker;  // pipeline/check.h
+
 struct DrawStats {
   std::uint64_t vertices_shaded = 0;
   std::uint64_t triangles_in = 0;         // mesh triangles (patches, with tessellation)
@@ -39,6 +41,9 @@ struct DrawOptions {
   // Tessellation: receives each chunk's triangles with their vertices' records (the batch is
   // indexed; vertex k of the batch is record k), before dump_tess, on the calling thread.
   std::function<void(const std::vector<TessDumpRecord>&, const TriangleBatch&)> tess_surface;
+  // `render --check`: every stage's outputs tested for NaN and infinity; the first offence throws
+  // CheckOffence. Null: nothing is tested and nothing is added to the draw's work.
+  Checker* check = nullptr;
 };
 
 // Draws the mesh's triangles, in mesh order, into fb. The bytes of fb do not depend on

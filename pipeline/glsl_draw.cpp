@@ -3,6 +3,8 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "pipeline/check.h"
+
 namespace tessref {
 namespace {
 
@@ -19,7 +21,7 @@ constexpr std::size_t kTrianglesPerBatch = 65536;  // GL_TRIANGLES draws
 // GL_TRIANGLES: the vertex shader's gl_Position and outputs become the rasterizer's vertices.
 void draw_triangle_list(const glsl::GlslProgram& program, const std::vector<StageVertex>& shaded,
                         const GlslDrawCall& call, const RasterState& state, const FragmentProgram& fs,
-                        Framebuffer& fb, const Parallel& parallel, DrawStats& stats) {
+                        Framebuffer& fb, const Parallel& parallel, DrawStats& stats, Checker* check) {
   const std::size_t corners = call.indices.empty() ? call.count : call.indices.size();
   const std::size_t triangles = corners / 3;
   TriangleBatch batch;
@@ -41,6 +43,7 @@ void draw_triangle_list(const glsl::GlslProgram& program, const std::vector<Stag
     stats.triangles_generated += n;
     stats.raster += draw_triangles(batch, state, fs, fb, parallel);
     stats.raster_seconds += seconds_since(t);
+    if (check) check->after_raster();
   }
 }
 
@@ -66,12 +69,17 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
   DrawStats stats;
   const auto tcs = call.patches ? program.control(call.patch_vertices, call.default_outer, call.default_inner) : nullptr;
   const auto tes = call.patches ? program.evaluation() : nullptr;
-  const auto fs = program.fragment();
+  const auto program_fs = program.fragment();
+  // --check: the fragment shader's outputs watched (pipeline/check.h).
+  const auto watched = options.check ? options.check->watch(*program_fs) : nullptr;
+  const FragmentProgram* fs = watched ? watched.get() : program_fs.get();
   std::vector<StageVertex> shaded(shade_count);
   std::vector<TessDumpRecord> records;
   TessOptions tess_options;
   tess_options.patches_per_task = 4;
-  if (options.dump_tess || options.tess_surface) tess_options.dump = &records;
+  if (options.dump_tess || options.tess_surface || options.check) tess_options.dump = &records;
+  if (options.check)
+    tess_options.control_check = [&](std::size_t p, const PatchOutput& o) { options.check->control_output(p, o); };
   const std::size_t chunk = options.tess_chunk_patches ? options.tess_chunk_patches : kChunkPatches;
 
   for (int instance = 0; instance < call.instances; ++instance) {
@@ -79,9 +87,14 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
     program.run_vertices(attributes, shade_first, shade_count, instance, shaded.data(), par);
     stats.vertices_shaded += shade_count;
     stats.vertex_seconds += seconds_since(t0);
+    if (options.check)
+      for (std::size_t v = 0; v < shaded.size(); ++v)
+        for (int s = 0; s < kMaxStageAttributes; ++s)
+          options.check->vertex_output(shade_first + v, s == 0 ? "gl_Position" : "location " + std::to_string(s - 1),
+                                       &shaded[v].attr[s][0], 4, call.indices, call.patches ? call.patch_vertices : 3);
     if (!call.patches) {
       stats.triangles_in += (indexed ? call.indices.size() : call.count) / 3;
-      draw_triangle_list(program, shaded, call, raster_state, *fs, fb, par, stats);
+      draw_triangle_list(program, shaded, call, raster_state, *fs, fb, par, stats, options.check);
       continue;
     }
 
@@ -92,10 +105,15 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
     stats.triangles_in += patches;
     std::size_t done = 0;
     stats.tess += tessellate_chunks(input, chunk, *tcs, *tes, tess_options, par, [&](const TriangleBatch& batch) {
+      if (options.check)  // before the chunk is drawn: the TES offence comes first
+        options.check->evaluation_outputs(records, batch, [&](std::uint32_t p, const glm::vec3& c) {
+          return trace_evaluation(input, *tcs, *tes, tess_options, p, c);
+        });
       const auto r0 = Clock::now();
       stats.triangles_generated += batch.triangle_count();
       stats.raster += draw_triangles(batch, raster_state, *fs, fb, par);
       stats.raster_seconds += seconds_since(r0);
+      if (options.check) options.check->after_raster();
       if (options.tess_surface) options.tess_surface(records, batch);
       if (options.dump_tess) options.dump_tess(records);
       records.clear();

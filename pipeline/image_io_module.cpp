@@ -165,8 +165,21 @@ const char* diff(const char* a, const char* b, double warn_threshold, double fai
   });
 }
 
+const char* channel_names(const char* path, const char** names) {
+  return guarded(path, [&]() -> const char* {
+    thread_local std::string joined;
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) return fail(std::string(path) + ": cannot read image: " + OIIO::geterror());
+    joined.clear();
+    for (const std::string& n : in->spec().channelnames) joined += (joined.empty() ? "" : "\n") + n;
+    in->close();
+    *names = joined.c_str();
+    return nullptr;
+  });
+}
+
 const tessref_image_io_api kApi = {TESSREF_IMAGE_IO_ABI_VERSION, sizeof(tessref_image_io_api),
-                                   probe, writable_extensions, write, diff, read};
+                                   probe, writable_extensions, write, diff, read, channel_names};
 
 }  // namespace
 

@@ -10,7 +10,7 @@
 // below. Nothing but plain C types crosses the boundary, and no exception does.
 #include <stdint.h>
 
-#define TESSREF_IMAGE_IO_ABI_VERSION 2u
+#define TESSREF_IMAGE_IO_ABI_VERSION 3u
 #define TESSREF_IMAGE_IO_ENTRY "tessref_image_io_api_v1"
 #define TESSREF_IMAGE_IO_MODULE_NAME "libtessref_image_io.so"
 
@@ -55,6 +55,10 @@ struct tessref_image_io_api {
   // channels == 0: every channel of the file.
   const char* (*read)(const char* path, tessref_image_io_type type, int channels,
                       tessref_image_io_alloc_fn alloc, void* context);
+  // The first subimage's channel names in the order read() delivers them (OpenImageIO's, which
+  // for OpenEXR is not the order written), '\n'-separated, in *names (valid until the next call
+  // on the same thread).
+  const char* (*channel_names)(const char* path, const char** names);
 };
 
 typedef const tessref_image_io_api* (*tessref_image_io_entry_fn)(void);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <iterator>
 #include <map>
 #include <mutex>
@@ -251,6 +252,13 @@ void write_normals_image(const Framebuffer& fb, const std::filesystem::path& pat
   write_image(path, fb.width, fb.height, 3, TESSREF_IMAGE_IO_FLOAT, rows.data());
 }
 
+void write_float_channels(const std::filesystem::path& path, int width, int height,
+                          const std::vector<std::string>& channel_names, const std::vector<float>& pixels) {
+  std::vector<const char*> names;
+  for (const std::string& n : channel_names) names.push_back(n.c_str());
+  write_image(path, width, height, int(names.size()), TESSREF_IMAGE_IO_FLOAT, pixels.data(), names);
+}
+
 void write_rgb8_image(const Rgb8Image& image, const std::filesystem::path& path) {
   write_image(path, image.width, image.height, 3, TESSREF_IMAGE_IO_UINT8, image.pixels.data());
   // Writers that keep floats (EXR, TIFF, HDR) report failed writes themselves; the 8-bit ones
@@ -278,6 +286,19 @@ Rgb8Image read_rgb8_image(const std::filesystem::path& path) {
   img.width = target.width;
   img.height = target.height;
   return img;
+}
+
+std::vector<std::string> read_channel_names(const std::filesystem::path& path) {
+  const char* joined = nullptr;
+  check(image_io().channel_names(path.string().c_str(), &joined));
+  std::vector<std::string> names;
+  for (const char* at = joined; *at;) {
+    const char* end = std::strchr(at, '\n');
+    names.emplace_back(at, end ? end : at + std::strlen(at));
+    if (!end) break;
+    at = end + 1;
+  }
+  return names;
 }
 
 FloatImage read_float_image(const std::filesystem::path& path) {

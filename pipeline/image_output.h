@@ -50,7 +50,10 @@ void write_color_image(const Framebuffer& fb, const std::filesystem::path& path)
 void write_depth_image(const Framebuffer& fb, const std::filesystem::path& path);
 // The aux attachment's xyz (the world normal the shaders write; 0 where nothing was drawn).
 void write_normals_image(const Framebuffer& fb, const std::filesystem::path& path);
-
+// Named float channels, interleaved, top row first (render --dump-fragments): written as given,
+// for formats that keep floats and any number of channels (.exr). InputError naming the file.
+void write_float_channels(const std::filesystem::path& path, int width, int height,
+                          const std::vector<std::string>& channel_names, const std::vector<float>& pixels);
 
 // Float pixels as stored, top row first (channels per pixel as in the file).
 struct FloatImage {
@@ -58,6 +61,8 @@ struct FloatImage {
   std::vector<float> pixels;
 };
 FloatImage read_float_image(const std::filesystem::path& path);  // InputError if unreadable
+// The channel names of an image file in the order read_float_image delivers the channels.
+std::vector<std::string> read_channel_names(const std::filesystem::path& path);
 
 void write_rgb8_image(const Rgb8Image& image, const std::filesystem::path& path);
 Rgb8Image read_rgb8_image(const std::filesystem::path& path);  // InputError if unreadable

@@ -27,6 +27,13 @@ programs::PhongShader phong_shader(const Scene& scene) {
 
 }  // namespace
 
+BuiltinFragmentProgram builtin_fragment_program(const Scene& scene) {
+  BuiltinFragmentProgram p;
+  p.phong = phong_shader(scene);
+  p.use_phong = scene.shading == Shading::Phong;
+  return p;
+}
+
 programs::TransformVertexShader scene_vertex_shader(const Scene& scene) {
   const glm::mat4 view_projection =
       projection_matrix(scene.camera, scene.width, scene.height) * view_matrix(scene.camera);
@@ -51,10 +58,8 @@ DrawStats render_scene(const Scene& scene, const Mesh& mesh, const Parallel& par
   RasterState state;
   state.cull_back_faces = scene.cull_back_faces;
 
-  const programs::PhongShader phong = phong_shader(scene);
-  const programs::NormalsShader normals;
-  const FragmentProgram& fs =
-      scene.shading == Shading::Phong ? static_cast<const FragmentProgram&>(phong) : normals;
+  const BuiltinFragmentProgram program = builtin_fragment_program(scene);
+  const FragmentProgram& fs = program.get();
 
   fb.reset(scene.width, scene.height, scene.background, parallel);
   return draw_mesh(mesh, vs, scene.tessellation, state, fs, fb, parallel, options);

@@ -8,6 +8,8 @@
 #include "pipeline/mesh.h"
 #include "pipeline/scene.h"
 #include "raster/framebuffer.h"
+#include "stages/programs/normals.h"
+#include "stages/programs/phong.h"
 
 namespace tessref {
 
@@ -22,6 +24,18 @@ RenderResult render_scene(const Scene& scene, const Mesh& mesh, const Parallel& 
 // frames: --repeat, benchmarks). The bytes of fb are those render_scene would return.
 DrawStats render_scene(const Scene& scene, const Mesh& mesh, const Parallel& parallel,
                        Framebuffer& fb, const DrawOptions& options = {});
+
+// The built-in fragment program the scene's shading names, with the scene's uniforms: the object
+// render_scene draws with (shaders.program builtin), for tools that run it themselves.
+struct BuiltinFragmentProgram {
+  programs::PhongShader phong;
+  programs::NormalsShader normals;
+  bool use_phong = true;
+  const FragmentProgram& get() const {
+    return use_phong ? static_cast<const FragmentProgram&>(phong) : normals;
+  }
+};
+BuiltinFragmentProgram builtin_fragment_program(const Scene& scene);
 
 // The number of TES invocations the draw will run, where it is known before drawing: built-in
 // programs with the scene's fixed levels (every patch then has the same domain). Empty for

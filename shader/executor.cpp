@@ -12,6 +12,7 @@
 #include <spirv/unified1/GLSL.std.450.h>
 
 #include "shader/executor_runner.h"
+#include "shader/nan_trace.h"
 
 namespace tessref::shader {
 
@@ -682,6 +683,7 @@ void Runner::exec(const XIns& x) {
 }
 
 void Runner::run_block(const XBlock& b) {
+  if (trace) return traced_block(b);  // once per block: the untraced loop stays as it was
   if (!b.phis.empty()) run_phis(b);
   const XIns* code = p.code.data() + b.first;
   for (std::uint32_t i = 0; i < b.count; ++i) exec(code[i]);
@@ -871,6 +873,8 @@ std::uint32_t successor(const Terminator& t, const std::uint32_t* arena, int lan
 void Invocations::run() {
   const DecodedProgram& p = *exe_.program_;
   Runner r{*this, p, arena_.data(), lanes_, {}, false, {}, {}, {}};
+  r.trace = current_nan_trace();  // once per batch
+  if (r.trace && (r.trace->lane >= lanes_ || r.trace->found)) r.trace = nullptr;
   const std::uint64_t budget = exe_.limits().max_instructions;
   const std::string budget_message =
       "instruction budget of " + std::to_string(budget) +

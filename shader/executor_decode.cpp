@@ -63,6 +63,18 @@ struct Decoder {
     return r;
   }
 
+  // NaN provenance (nan_trace.h): which rows a value spans and which of them are floats.
+  void describe_rows(std::uint32_t row, const Type& t) {
+    if (p.value_words.size() < p.arena_rows) {
+      p.value_words.resize(p.arena_rows, 0);
+      p.float_rows.resize(p.arena_rows, 0);
+    }
+    if (t.kind == TypeKind::Pointer) return;
+    p.value_words[row] = t.words;
+    for (const FlatComponent& c : t.flat)
+      if (c.scalar == Scalar::F32) p.float_rows[row + c.word] = 1;
+  }
+
   std::uint32_t value(const Instruction& ins, std::uint32_t id) {
     if (id >= reg.size() || reg[id] == kNone) unsupported(m, ins, "operand %" + std::to_string(id) + " has no value");
     return reg[id];
@@ -111,6 +123,7 @@ struct Decoder {
       p.constant_init.push_back({row, words});
       const Type& t = m.type(m.constant_types.at(id));
       for (const FlatComponent& c : t.flat) p.constant_scalars.push_back({row + c.word, c.scalar});
+      describe_rows(row, t);
     }
   }
 
@@ -700,6 +713,7 @@ struct Decoder {
             continue;
           }
           reg[ins.result] = alloc_rows(std::max<std::uint32_t>(t.words, 1));
+          describe_rows(reg[ins.result], t);
         }
     p.blocks.resize(m.blocks.size());
     for (std::size_t i = 0; i < m.blocks.size(); ++i) decode_block(m.blocks[i], p.blocks[i]);

@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "shader/executor_program.h"
+#include "shader/nan_trace.h"
 
 namespace tessref::shader {
 
@@ -39,6 +40,7 @@ struct Runner {
   std::uint32_t uniform_prev = kNone;  // the block every active lane came from; kNone: see prev[]
   std::pair<int, int> group_runs[L];  // [first, end) lanes of each group, in order
   int num_group_runs = 0;
+  NanTrace* trace = nullptr;  // --check's re-run of one invocation (nan_trace.h); null normally
 
   template <class T>
   T* row(std::uint32_t r, std::uint32_t comp = 0) {
@@ -137,6 +139,7 @@ struct Runner {
 
   void exec(const XIns& x);
   void run_block(const XBlock& b);
+  void traced_block(const XBlock& b);  // run_block, watching trace->lane's results
   void run_phis(const XBlock& b);
   void load(const XIns& x);
   std::uint32_t uniform_offset(const std::uint32_t* off) const;

@@ -73,6 +73,7 @@ struct PatchSlot {
   std::shared_ptr<const TessPattern> pattern;
   std::size_t first_vertex = 0;
   std::size_t first_index = 0;
+  bool gathered = false;  // its vertices were in the buffer: the control shader ran
 };
 
 // What one task (a fixed batch of patches) keeps; reused from range to range.
@@ -132,7 +133,8 @@ void control_task(const TessDrawInput& input, std::size_t range_first, std::size
       slot.pattern.reset();
       ++task.stats.patches_in;
       Patch& patch = task.patches[std::size_t(count)];
-      if (!gather_patch(input, p, patch)) {
+      slot.gathered = gather_patch(input, p, patch);
+      if (!slot.gathered) {
         ++task.stats.patches_invalid;
         continue;
       }
@@ -345,6 +347,9 @@ TessStats tessellate_range(const TessDrawInput& input, std::size_t first_patch,
     const auto [a, b] = task_range(t);
     control_task(input, first_patch, a, b, tcs, layout, options, cache, ex, ex.tasks[t]);
   });
+  if (options.control_check)  // once per range: nothing per patch without it
+    for (std::size_t i = 0; i < n; ++i)
+      if (ex.slots[i].gathered) options.control_check(first_patch + i, ex.outputs[i]);
 
   // Output ranges in patch order: the batch's bytes never depend on the split into tasks.
   std::size_t vertices = first_vertex, indices = first_index;

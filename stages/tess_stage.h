@@ -169,6 +169,9 @@ struct TessOptions {
   Tessellator tessellator = Tessellator::PrimitiveGenerator;
   // Where generated patterns are looked up; null: TessPatternCache::shared().
   TessPatternCache* patterns = nullptr;
+  // Optional (`render --check`): each patch's control shader output, in patch order on the calling
+  // thread, after the control stage of each range and before its evaluation; may throw to stop.
+  std::function<void(std::size_t patch, const PatchOutput& out)> control_check;
 };
 
 // Runs TCS -> generate_tessellation -> TES for patches [first_patch, last_patch) of the draw and

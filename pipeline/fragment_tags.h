@@ -1,0 +1,33 @@
+#pragma once
+// Fragments that know where they came from: a chunk's tessellated triangles redrawn with extra
+// varyings naming the triangle, its patch and gl_TessCoord, so that the rasterizer's own
+// interpolation (coverage, perspective-correct weights, clipping) tells each fragment its origin.
+// Used by `tessref inspect --pixel` and `render --dump-fragments` (pipeline/fragment_probe.h).
+#include <cstddef>
+#include <vector>
+
+#include "raster/vertex.h"
+#include "stages/tess_stage.h"
+
+namespace tessref {
+
+// The tags follow the batch's own varyings (which keep their indices, so the scene's fragment
+// program reads them unchanged): tag k is varying num_varyings + k of the tagged batch.
+enum FragmentTag : int {
+  kTagTriangle = 0,  // the triangle's index within its patch, emission order (flat)
+  kTagPatch,         // gl_PrimitiveID of the patch (flat)
+  kTagTessU, kTagTessV, kTagTessW,  // gl_TessCoord, interpolated from the triangle's corners
+  kTagPositionX, kTagPositionY, kTagPositionZ,  // world position as --dump-tess records it
+  kTagNormalX, kTagNormalY, kTagNormalZ,        // world normal, likewise
+  kFragmentTagCount
+};
+
+// batch: one tess_surface chunk (indexed; vertex k is records[k]). The result holds the same
+// triangles in the same order as consecutive triples (a triangle index per vertex needs vertices
+// of its own; both forms draw the same bytes, raster/vertex.h). Triangles come in patch order
+// (stages/tess_stage.h), which numbers them within their patch. Triangle indices and patch ids
+// are stored as floats: exact below 2^24. InputError when the batch has too many varyings to
+// take the tags.
+TriangleBatch tagged_triangles(const std::vector<TessDumpRecord>& records, const TriangleBatch& batch);
+
+}  // namespace tessref
