@@ -79,7 +79,7 @@ void draw_tessellated(const std::vector<programs::VertexOut>& shaded, const Mesh
   TessOptions tess_options;
   tess_options.patches_per_task = std::clamp<std::size_t>(kTaskTriangles / per_patch, 1, 64);
   tess_options.tessellator = settings.tessellator;
-  if (options.dump_tess || options.tess_surface || options.check) tess_options.dump = &records;
+  if (options.wants_tess_records()) tess_options.dump = &records;
   if (options.check)
     tess_options.control_check = [&](std::size_t p, const PatchOutput& o) { options.check->control_output(p, o); };
   const TessDrawInput input{control_points, mesh.indices, 3};
@@ -95,9 +95,7 @@ void draw_tessellated(const std::vector<programs::VertexOut>& shaded, const Mesh
             return trace_evaluation(input, tcs, tes, tess_options, p, c);
           });
         rasterize(batch);
-        if (options.tess_surface) options.tess_surface(records, batch);
-        if (options.dump_tess) options.dump_tess(records);
-        records.clear();
+        options.hand_out_tess_chunk(records, batch);
         done = std::min(patches, done + chunk);
         if (options.progress) options.progress(double(done) / double(std::max<std::size_t>(1, patches)));
       });

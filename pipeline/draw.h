@@ -44,6 +44,15 @@ struct DrawOptions {
   // `render --check`: every stage's outputs tested for NaN and infinity; the first offence throws
   // CheckOffence. Null: nothing is tested and nothing is added to the draw's work.
   Checker* check = nullptr;
+
+  // Whether the executor must keep every TES invocation's record (dump_tess, tess_surface, check).
+  bool wants_tess_records() const { return dump_tess || tess_surface || check; }
+  // Hands one drawn chunk's records to tess_surface and dump_tess, then empties them for the next.
+  void hand_out_tess_chunk(std::vector<TessDumpRecord>& records, const TriangleBatch& batch) const {
+    if (tess_surface) tess_surface(records, batch);
+    if (dump_tess) dump_tess(records);
+    records.clear();
+  }
 };
 
 // Draws the mesh's triangles, in mesh order, into fb. The bytes of fb do not depend on

@@ -77,7 +77,7 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
   std::vector<TessDumpRecord> records;
   TessOptions tess_options;
   tess_options.patches_per_task = 4;
-  if (options.dump_tess || options.tess_surface || options.check) tess_options.dump = &records;
+  if (options.wants_tess_records()) tess_options.dump = &records;
   if (options.check)
     tess_options.control_check = [&](std::size_t p, const PatchOutput& o) { options.check->control_output(p, o); };
   const std::size_t chunk = options.tess_chunk_patches ? options.tess_chunk_patches : kChunkPatches;
@@ -114,9 +114,7 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
       stats.raster += draw_triangles(batch, raster_state, *fs, fb, par);
       stats.raster_seconds += seconds_since(r0);
       if (options.check) options.check->after_raster();
-      if (options.tess_surface) options.tess_surface(records, batch);
-      if (options.dump_tess) options.dump_tess(records);
-      records.clear();
+      options.hand_out_tess_chunk(records, batch);
       done = std::min(patches, done + chunk);
       if (options.progress)
         options.progress((double(instance) + double(done) / double(std::max<std::size_t>(1, patches))) /

@@ -10,8 +10,9 @@ namespace {
 
 // The vertices the triangles use, once per (patch, position): a captured stream repeats each
 // vertex for every triangle that uses it.
-std::vector<std::uint32_t> distinct_vertices(const TessSurface& s) {
+std::vector<std::uint32_t> distinct_vertices(const TessSurface& s, const std::function<bool(std::uint32_t)>& patches) {
   std::vector<std::uint32_t> v(s.indices);
+  if (patches) std::erase_if(v, [&](std::uint32_t i) { return !patches(s.points[i].patch_id); });
   const auto key = [&](std::uint32_t i) {
     const TessDumpRecord& r = s.points[i];
     return std::tuple(r.patch_id, std::bit_cast<std::uint32_t>(r.position.x), std::bit_cast<std::uint32_t>(r.position.y),
@@ -25,8 +26,9 @@ std::vector<std::uint32_t> distinct_vertices(const TessSurface& s) {
 // One direction: every distinct vertex of `from` to the surface of `to`. Chunks write their own
 // slots, merged in order, so the sums do not depend on the thread count.
 SurfaceDistance::Side one_side(const TessSurface& from, const SurfaceOracle& to, const Parallel& parallel,
-                               std::map<std::uint32_t, double>& per_patch) {
-  const std::vector<std::uint32_t> vertices = distinct_vertices(from);
+                               std::map<std::uint32_t, double>& per_patch,
+                               const std::function<bool(std::uint32_t)>& patches) {
+  const std::vector<std::uint32_t> vertices = distinct_vertices(from, patches);
   std::vector<double> distance(vertices.size());
   constexpr std::size_t kChunk = 4096;
   parallel.for_each((vertices.size() + kChunk - 1) / kChunk, [&](std::size_t c) {
@@ -51,11 +53,11 @@ SurfaceDistance::Side one_side(const TessSurface& from, const SurfaceOracle& to,
 
 SurfaceDistance surface_distance(const TessSurface& reference, const SurfaceOracle& reference_oracle,
                                  const TessSurface& tessref, const SurfaceOracle& tessref_oracle,
-                                 const Parallel& parallel) {
+                                 const Parallel& parallel, const std::function<bool(std::uint32_t)>& tessref_patches) {
   SurfaceDistance d;
   std::map<std::uint32_t, double> per_patch;
-  d.reference_to_tessref = one_side(reference, tessref_oracle, parallel, per_patch);
-  d.tessref_to_reference = one_side(tessref, reference_oracle, parallel, per_patch);
+  d.reference_to_tessref = one_side(reference, tessref_oracle, parallel, per_patch, nullptr);
+  d.tessref_to_reference = one_side(tessref, reference_oracle, parallel, per_patch, tessref_patches);
   d.hausdorff = std::max(d.reference_to_tessref.max, d.tessref_to_reference.max);
   std::vector<std::pair<std::uint32_t, double>> patches(per_patch.begin(), per_patch.end());
   const std::size_t n = std::min<std::size_t>(10, patches.size());

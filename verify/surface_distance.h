@@ -3,6 +3,7 @@
 // one to the other's triangles (Embree closest-point queries), both ways. Hausdorff = the larger
 // of the two maxima.
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "common/parallel.h"
@@ -22,8 +23,11 @@ struct SurfaceDistance {
   std::vector<std::pair<std::uint32_t, double>> worst_patches;
 };
 
+// tessref_patches: which of tessref's patches to measure from (a capture that stores a sample of
+// patches has no surface for the others to be measured against); null: all.
 SurfaceDistance surface_distance(const TessSurface& reference, const SurfaceOracle& reference_oracle,
                                  const TessSurface& tessref, const SurfaceOracle& tessref_oracle,
-                                 const Parallel& parallel);
+                                 const Parallel& parallel,
+                                 const std::function<bool(std::uint32_t)>& tessref_patches = nullptr);
 
 }  // namespace tessref

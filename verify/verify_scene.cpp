@@ -119,13 +119,6 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
   // gl_TessCoord streams and the values at them: in full for the patches tess.bin holds, by
   // digest for every patch.
   const bool tessellated = scene.tessellation.enabled && (!ref.tess.empty() || !ref.digests.empty());
-  TessSurface mine_sampled;  // tessref's triangles of the patches tess.bin holds
-  if (tessellated && ref.patch_stride > 1) {
-    mine_sampled.points = mine.points;
-    for (std::size_t t = 0; t < mine.triangle_count(); ++t)
-      if (ref.sampled(mine.patch_of(t))) mine_sampled.indices.insert(mine_sampled.indices.end(), &mine.indices[3 * t], &mine.indices[3 * t + 3]);
-  }
-  const TessSurface& mine_compared = ref.patch_stride > 1 ? mine_sampled : mine;
   if (tessellated) {
     std::vector<TessDumpRecord> compared_points;
     if (ref.patch_stride > 1)
@@ -175,7 +168,9 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
   if (tessellated) {
     const TessSurface theirs = TessSurface::from_emitted(ref.tess);
     const SurfaceOracle their_oracle(theirs);
-    const SurfaceDistance d = surface_distance(theirs, their_oracle, mine_compared, mine_oracle, parallel);
+    const SurfaceDistance d = surface_distance(
+        theirs, their_oracle, mine, mine_oracle, parallel,
+        [&](std::uint32_t patch) { return ref.sampled(patch); });
     const auto side = [&](const SurfaceDistance::Side& s) {
       return nlohmann::json{{"samples", s.samples}, {"max_of_diagonal", s.max / diagonal},
                             {"rms_of_diagonal", s.rms / diagonal}, {"worst_patch", s.worst_patch}};
