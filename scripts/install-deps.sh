@@ -9,7 +9,7 @@ pkgs=("$@")
       libglm-dev libopenimageio-dev openimageio-tools libembree-dev libtbb-dev libassimp-dev
       assimp-testmodels libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
       libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri time faketime
-      glslang-dev spirv-tools spirv-headers chromium)
+      glslang-dev glslang-tools spirv-tools spirv-headers chromium)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
