@@ -27,6 +27,8 @@ namespace {
 
 struct InspectArgs {
   std::string scene, coord, json, pixel;
+  bool trace = false;
+  std::string trace_stages = "all";
   int threads = 0;
   std::vector<std::string> sets;
   long long patch = -1, vertex = -1;
@@ -153,7 +155,9 @@ void print_text(const Scene& scene, const InspectResult& r, double seconds) {
   std::printf("\n3. Primitive generator: %s, %s, %s%s; %s\n", to_string(r.layout.domain), to_string(r.layout.spacing),
               to_string(r.layout.winding), r.layout.point_mode ? ", point_mode" : "",
               r.tessellator == Tessellator::Uniform ? "uniform subdivision (levels below are the GL generator's reading)"
-                                                    : "profile llvmpipe");
+              : r.tessellator == Tessellator::RefinementPattern
+                  ? "refinement pattern (levels below are the GL generator's reading)"
+                  : "profile llvmpipe");
   const ProcessedTessLevels& p = r.levels;
   if (p.discarded) {
     std::printf("  discarded: a relevant outer level is <= 0 or NaN\n");
@@ -190,7 +194,44 @@ void print_text(const Scene& scene, const InspectResult& r, double seconds) {
       std::printf("      in the patch's triangles %s\n", t.c_str());
     }
   }
+  if (!r.traces.empty()) {
+    std::printf("\n5. Source trace%s: each executed line, as executed, with the value it produced "
+                "(stores: the variable written)\n",
+                r.traced_twins ? " of the built-in programs' GLSL twins" : "");
+    std::fputs(format_traces(r.traces).c_str(), stdout);
+  }
   std::printf("\n(%.1f ms)\n", seconds * 1e3);
+}
+
+nlohmann::json trace_value(const shader::TraceValue& v) {
+  nlohmann::json a = nlohmann::json::array();
+  for (std::size_t i = 0; i < v.scalars.size(); ++i) {
+    if (v.scalars[i] == shader::Scalar::Bool) a.push_back(v.bits[i] != 0);
+    else a.push_back(std::strtod(v.component_text(i).c_str(), nullptr));
+  }
+  return a;
+}
+
+nlohmann::json traces_json(const std::vector<InspectTrace>& traces) {
+  using nlohmann::json;
+  json out = json::array();
+  for (const InspectTrace& t : traces) {
+    json lines = json::array();
+    for (const shader::TraceLine& l : t.trace.lines) {
+      json j{{"line", l.line}, {"source", t.source_line(l.line)}};
+      if (!l.stores.empty()) {
+        json stores = json::array();
+        for (const shader::TraceStore& s : l.stores) stores.push_back(json{{"target", s.target}, {"value", trace_value(s.value)}});
+        j["stores"] = stores;
+      }
+      if (l.has_result) j["result"] = trace_value(l.result);
+      if (l.barrier) j["barrier"] = true;
+      lines.push_back(j);
+    }
+    out.push_back(json{{"stage", shader::stage_name(t.stage)}, {"file", t.file}, {"invocation", t.invocation},
+                       {"lines", lines}, {"lines_not_kept", t.trace.dropped}});
+  }
+  return out;
 }
 
 nlohmann::json to_json(const Scene& scene, const InspectResult& r) {
@@ -217,7 +258,7 @@ nlohmann::json to_json(const Scene& scene, const InspectResult& r) {
   const TessLevels& lv = r.tcs_out.levels;
   json tpg{{"domain", to_string(r.layout.domain)}, {"spacing", to_string(r.layout.spacing)},
            {"winding", to_string(r.layout.winding)}, {"point_mode", r.layout.point_mode},
-           {"tessellator", r.tessellator == Tessellator::Uniform ? "uniform" : "primitive_generator"},
+           {"tessellator", to_string(r.tessellator)},
            {"discarded", r.levels.discarded}, {"domain_points", r.domain_points}, {"primitives", r.primitives},
            {"vertices_per_primitive", r.vertices_per_primitive}};
   if (!r.levels.discarded) {
@@ -248,7 +289,7 @@ nlohmann::json to_json(const Scene& scene, const InspectResult& r) {
                           {"world_normal", jvec(p.normal)},
                           {"primitives", p.primitives}});
   }
-  return json{{"scene", scene.source},
+  json out{{"scene", scene.source},
               {"program", r.program},
               {"patch", r.patch},
               {"patch_count", r.patch_count},
@@ -265,6 +306,8 @@ nlohmann::json to_json(const Scene& scene, const InspectResult& r) {
                {{"num_varyings", r.num_varyings},
                 {"dump_varyings", {r.dump_varyings[0], r.dump_varyings[1]}},
                 {"points", points}}}};
+  if (!r.traces.empty()) out["source_trace"] = {{"glsl_twins", r.traced_twins}, {"invocations", traces_json(r.traces)}};
+  return out;
 }
 
 // --pixel X,Y: two integers (the range is checked against the image by inspect_pixel).
@@ -391,6 +434,7 @@ void run_inspect(const InspectArgs& a) {
     request.coord = glm::vec3(c[0], c[1], c.size() == 3 ? c[2] : 0.0f);
     request.coord_has_w = c.size() == 3;
   }
+  if (a.trace) request.trace = parse_trace_stages(a.trace_stages);
   const InspectResult r = inspect_patch(scene, mesh, request);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!a.json.empty()) return write_json(a.json, to_json(scene, r));
@@ -415,6 +459,12 @@ void add_inspect_command(CLI::App& app) {
   cmd->add_option("--coord", args->coord, "evaluate the TES at gl_TessCoord U,V[,W] (triangles: W = (1 - U) - V if left out)");
   cmd->add_option("--vertex", args->vertex, "the patch's K-th generated domain point (from 0)")->check(kInteger);
   cmd->add_option("--json", args->json, "write the result as JSON to FILE instead of printing text");
+  cmd->add_flag("--trace", args->trace,
+                "also show the source-level trace: every GLSL line each invocation executed, with its values (the "
+                "built-in programs through their GLSL twins)");
+  cmd->add_option("--trace-stages", args->trace_stages,
+                  "the stages --trace covers: a comma-separated list of vertex, control, evaluation, fragment, all")
+      ->default_val("all");
   cmd->callback([args] { run_inspect(*args); });
 }
 

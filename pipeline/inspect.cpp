@@ -1,6 +1,7 @@
 #include "pipeline/inspect.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -108,8 +109,9 @@ InspectResult inspect_patch(const Scene& scene, const Mesh& mesh, const InspectR
   std::vector<glm::vec4> builtin_clip;
   std::span<const std::uint32_t> indices = mesh.indices;
   StagePrograms programs;
-  std::unique_ptr<glsl::GlslProgram> glsl_program;  // kept alive for its stage programs
   SceneProgram scene_program;
+  std::vector<glsl::VertexAttribute> attributes;
+  std::vector<shader::ShaderSource> sources;
   if (scene.shaders.program == ShaderProgram::Builtin) {
     const auto vs = scene_vertex_shader(scene);
     std::vector<programs::VertexOut> out(mesh.vertex_count());
@@ -117,17 +119,21 @@ InspectResult inspect_patch(const Scene& scene, const Mesh& mesh, const InspectR
     for (const auto& o : out) builtin_clip.push_back(o.gl_Position);
     shaded = tess_control_points(out);
     programs.builtin = builtin_tess_programs(scene.tessellation, vs, glm::vec2(float(scene.width), float(scene.height)));
-    r.builtin_pn = programs.builtin->pn;
-    r.program = programs.builtin->pn ? std::string("builtin pn (") + to_string(scene.tessellation.normal_mode) + " normals)"
-                                     : std::string("builtin flat");
+    r.builtin_pn = programs.builtin->scheme == SurfaceScheme::PN;
+    r.program = programs.builtin->scheme == SurfaceScheme::Flat
+                    ? std::string("builtin flat")
+                    : std::string("builtin ") + to_string(programs.builtin->scheme) + " (" +
+                          to_string(scene.tessellation.normal_mode) + " normals)";
   } else {
     scene_program = build_scene_program(scene);
     const glsl::GlslProgram& program = *scene_program.program;
     const GlslDrawCall call = scene_draw_call(scene, mesh);
     r.patch_vertices = call.patch_vertices;
     shaded.resize(call.vertex_count);
+    attributes = scene_attributes(scene, program, mesh);
+    if (request.trace) sources = scene_sources(scene);
     try {
-      program.run_vertices(scene_attributes(scene, program, mesh), 0, call.vertex_count, 0, shaded.data(), serial);
+      program.run_vertices(attributes, 0, call.vertex_count, 0, shaded.data(), serial);
     } catch (const glsl::StageError& e) {
       throw InputError(scene.source + ": " + e.what());
     }
@@ -225,6 +231,50 @@ InspectResult inspect_patch(const Scene& scene, const Mesh& mesh, const InspectR
     r.points.push_back(p);
   } else {
     for (std::size_t k = 0; k < records.size(); ++k) r.points.push_back(generated(k));
+  }
+
+  // ---- Source-level traces -------------------------------------------------------------------
+  if (request.trace && programs.builtin) {
+    Scene twins = scene;
+    twins.shaders.program = ShaderProgram::Twins;
+    r.traces = inspect_patch(twins, mesh, request).traces;
+    r.traced_twins = true;
+  } else if (request.trace) {
+    auto source_of = [&](shader::Stage stage) -> const shader::ShaderSource* {
+      for (const shader::ShaderSource& s : sources)
+        if (s.stage == stage) return &s;
+      return nullptr;  // no such stage (a draw without a TCS uses default levels)
+    };
+    try {
+      if (const auto* src = source_of(shader::Stage::Vertex); src && (request.trace & kTraceVertex))
+        for (std::size_t k = 0; k < r.corners.size(); ++k) {
+          const std::uint32_t v = r.corners[k].mesh_vertex;
+          r.traces.push_back(run_traced(*src, "corner " + std::to_string(k) + " = mesh vertex " + std::to_string(v), 0, [&] {
+            StageVertex out;
+            scene_program.program->run_vertices(attributes, v, 1, 0, &out, serial);
+          }));
+        }
+      if (const auto* src = source_of(shader::Stage::TessControl); src && (request.trace & kTraceControl))
+        for (int i = 0; i < r.tcs_vertices; ++i)
+          r.traces.push_back(run_traced(*src, "invocation " + std::to_string(i), i, [&] {
+            PatchOutput out = r.tcs_out;
+            const Patch* in = &*tap.input;
+            PatchOutput* o = &out;
+            programs.tcs().run_patches(&in, &o, 1);
+          }));
+      if (const auto* src = source_of(shader::Stage::TessEval);
+          src && (request.trace & kTraceEvaluation) && r.points.size() == 1) {
+        const glm::vec3 c = r.points[0].tess_coord;
+        char at[96];
+        std::snprintf(at, sizeof at, "gl_TessCoord (%.9g, %.9g, %.9g)", double(c.x), double(c.y), double(c.z));
+        r.traces.push_back(run_traced(*src, at, 0, [&] {
+          InspectPoint p = r.points[0];
+          evaluate_at(tes, r.tcs_out, int(request.patch), p, r.num_varyings);
+        }));
+      }
+    } catch (const glsl::StageError& e) {
+      throw InputError(scene.source + ": " + e.what());
+    }
   }
   return r;
 }

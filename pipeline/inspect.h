@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 
+#include "pipeline/inspect_trace.h"
 #include "pipeline/mesh.h"
 #include "pipeline/scene.h"
 #include "stages/tess_stage.h"
@@ -25,6 +26,7 @@ struct InspectRequest {
                                        // generator computes it), 0 for quads and isolines
   std::optional<std::size_t> vertex;   // the patch's K-th generated domain point
   // Neither: every generated point.
+  unsigned trace = 0;  // the stages to trace at source level (inspect_trace.h's TraceStages)
 };
 
 // One corner of the patch (gl_in[k] of the TCS).
@@ -62,6 +64,10 @@ struct InspectResult {
   int num_varyings = 0;
   std::array<int, 2> dump_varyings{kVaryingPosition, kVaryingNormal};
   std::vector<InspectPoint> points;  // the requested ones
+  // Source-level traces (request.trace): the vertex shader at each corner, each control shader
+  // invocation, the evaluation shader at the one requested point (none when all points are).
+  std::vector<InspectTrace> traces;
+  bool traced_twins = false;  // the built-in programs, traced through their GLSL twins
 };
 
 // Runs the scene's draw on one patch. The scene's camera must already be fitted (as render does).

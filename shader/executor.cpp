@@ -683,7 +683,7 @@ void Runner::exec(const XIns& x) {
 }
 
 void Runner::run_block(const XBlock& b) {
-  if (trace) return traced_block(b);  // once per block: the untraced loop stays as it was
+  if (trace || source) return traced_block(b);  // once per block: the untraced loop stays as it was
   if (!b.phis.empty()) run_phis(b);
   const XIns* code = p.code.data() + b.first;
   for (std::uint32_t i = 0; i < b.count; ++i) exec(code[i]);
@@ -875,6 +875,8 @@ void Invocations::run() {
   Runner r{*this, p, arena_.data(), lanes_, {}, false, {}, {}, {}};
   r.trace = current_nan_trace();  // once per batch
   if (r.trace && (r.trace->lane >= lanes_ || r.trace->found)) r.trace = nullptr;
+  r.source = current_source_trace();
+  if (r.source && r.source->lane >= lanes_) r.source = nullptr;
   const std::uint64_t budget = exe_.limits().max_instructions;
   const std::string budget_message =
       "instruction budget of " + std::to_string(budget) +

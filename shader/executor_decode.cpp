@@ -63,16 +63,15 @@ struct Decoder {
     return r;
   }
 
-  // NaN provenance (nan_trace.h): which rows a value spans and which of them are floats.
+  // For the traces (nan_trace.h, source_trace.h): which rows a value spans and each row's scalar.
   void describe_rows(std::uint32_t row, const Type& t) {
     if (p.value_words.size() < p.arena_rows) {
       p.value_words.resize(p.arena_rows, 0);
-      p.float_rows.resize(p.arena_rows, 0);
+      p.row_scalar.resize(p.arena_rows, Scalar::None);
     }
     if (t.kind == TypeKind::Pointer) return;
     p.value_words[row] = t.words;
-    for (const FlatComponent& c : t.flat)
-      if (c.scalar == Scalar::F32) p.float_rows[row + c.word] = 1;
+    for (const FlatComponent& c : t.flat) p.row_scalar[row + c.word] = c.scalar;
   }
 
   std::uint32_t value(const Instruction& ins, std::uint32_t id) {
@@ -255,10 +254,12 @@ struct Decoder {
       case spv::OpNop:
       case spv::OpSelectionMerge:
       case spv::OpLoopMerge:
-      case spv::OpControlBarrier:  // lanes run in lock step: see executor.h
       case spv::OpMemoryBarrier:
       case spv::OpLine:
       case spv::OpNoLine:
+        return;
+      case spv::OpControlBarrier:  // lanes run in lock step (executor.h): a mark for the source trace
+        emit(base(ins, XOp::Nop));
         return;
       case spv::OpExtInst: {
         if (o.at(0) != m.glsl_std450) return;  // NonSemantic debug info: nothing to run

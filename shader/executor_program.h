@@ -122,10 +122,11 @@ struct DecodedProgram {
   // Per-lane variables to reset at begin(): (slot index, initializer words or empty for zero).
   std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>> lane_resets;
   std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>> shared_inits;  // initializers
-  // For NaN provenance (shader/nan_trace.h) only: the words of the SSA value or constant that
-  // starts at each row (0 elsewhere), and which rows hold 32-bit floats.
+  // For the traces (shader/nan_trace.h, shader/source_trace.h) only: the words of the SSA value or
+  // constant that starts at each row (0 elsewhere), and each row's scalar (a double's second row,
+  // and rows of no value: None).
   std::vector<std::uint32_t> value_words;
-  std::vector<std::uint8_t> float_rows;
+  std::vector<Scalar> row_scalar;
 };
 
 }  // namespace tessref::shader

@@ -6,9 +6,11 @@
 #include <limits>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 #include "shader/executor_program.h"
 #include "shader/nan_trace.h"
+#include "shader/source_trace.h"
 
 namespace tessref::shader {
 
@@ -41,6 +43,10 @@ struct Runner {
   std::pair<int, int> group_runs[L];  // [first, end) lanes of each group, in order
   int num_group_runs = 0;
   NanTrace* trace = nullptr;  // --check's re-run of one invocation (nan_trace.h); null normally
+  SourceTrace* source = nullptr;  // inspect --trace (source_trace.h); null normally
+  bool source_new_line = false;   // the next line recorded starts a new execution
+  std::uint32_t source_block = 0;             // the block running
+  std::vector<std::uint32_t> source_blocks;   // the blocks the current line execution ran
 
   template <class T>
   T* row(std::uint32_t r, std::uint32_t comp = 0) {
@@ -139,7 +145,9 @@ struct Runner {
 
   void exec(const XIns& x);
   void run_block(const XBlock& b);
-  void traced_block(const XBlock& b);  // run_block, watching trace->lane's results
+  void traced_block(const XBlock& b);  // run_block, watching the traced lane's results
+  void nan_check(const XIns& x);
+  void source_record(const XIns& x);
   void run_phis(const XBlock& b);
   void load(const XIns& x);
   std::uint32_t uniform_offset(const std::uint32_t* off) const;
