@@ -352,8 +352,17 @@ void print_pixel_text(const Scene& scene, const PixelInspectResult& r, double se
     std::printf("      gl_FragCoord %s\n", vec(f.frag_coord).c_str());
     std::printf("      world position %s\n", vec(f.position).c_str());
     std::printf("      world normal %s\n", vec(f.normal).c_str());
+    if (r.program.rfind("glsl", 0) == 0) {
+      std::string v;
+      for (float x : f.inputs) v += (v.empty() ? "" : ", ") + g9(x);
+      std::printf("      varyings (%s)\n", v.c_str());
+    }
     std::printf("      colour %s\n", vec(f.color).c_str());
     std::printf("      depth test: %s\n", depth_verdict(r, i).c_str());
+    if (f.trace) {
+      std::printf("      source trace%s:\n", r.traced_twins ? " (the built-in program's GLSL twin)" : "");
+      std::fputs(format_traces({*f.trace}).c_str(), stdout);
+    }
   }
   if (r.winner)
     std::printf("\nthe pixel: colour %s, depth %s (fragment %zu, patch %zu)\n", vec(r.pixel_color).c_str(),
@@ -379,9 +388,15 @@ nlohmann::json pixel_json(const Scene& scene, const PixelInspectResult& r) {
                               {{"passed", f.passed}, {"stored_depth", num(f.depth_before)},
                                {"stored_by", opt(f.depth_from)}}},
                              {"hidden_by", opt(f.hidden_by)}});
+    json& j = fragments.back();
+    json inputs = json::array();
+    for (float x : f.inputs) inputs.push_back(num(x));
+    j["varyings"] = inputs;
+    if (f.trace) j["source_trace"] = traces_json({*f.trace}).at(0);
   }
   return json{{"scene", scene.source},
               {"program", r.program},
+              {"traced_glsl_twins", r.traced_twins},
               {"pixel", {{"x", r.x}, {"y", r.y}, {"y_axis", "down from the top row"}, {"window_y", r.window_y}}},
               {"image", {{"width", r.width}, {"height", r.height}}},
               {"fragments", fragments},
@@ -407,7 +422,8 @@ void run_inspect_pixel(const InspectArgs& a) {
   const Mesh mesh = build_mesh(scene.mesh, warnings);
   for (const std::string& w : warnings) std::fprintf(stderr, "tessref: warning: %s\n", w.c_str());
   scene.camera = fitted_camera(scene, mesh);  // as render does
-  const PixelInspectResult r = inspect_pixel(scene, mesh, x, y, Parallel(a.threads));
+  const bool trace = a.trace && (parse_trace_stages(a.trace_stages) & kTraceFragment);
+  const PixelInspectResult r = inspect_pixel(scene, mesh, x, y, Parallel(a.threads), trace);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!a.json.empty()) return write_json(a.json, pixel_json(scene, r));
   print_pixel_text(scene, r, seconds);

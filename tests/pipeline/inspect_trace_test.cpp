@@ -13,6 +13,7 @@
 
 #include "pipeline/camera.h"
 #include "pipeline/inspect.h"
+#include "pipeline/inspect_pixel.h"
 #include "pipeline/mesh_source.h"
 #include "pipeline/scene_loader.h"
 #include "test_util.h"
@@ -129,6 +130,39 @@ TEST(InspectTrace, StagesCanBeChosenAndAllPointsTraceNoEvaluation) {
   ASSERT_EQ(r.traces.size(), 3u);  // every point asked for: the evaluation shader is not traced
   for (const InspectTrace& t : r.traces) EXPECT_EQ(t.stage, shader::Stage::TessControl);
   EXPECT_THROW(parse_trace_stages("vertex,geometry"), InputError);
+}
+
+// --pixel on a GLSL program: the same fragments as the built-in programs draw (the twins agree
+// bit for bit), their varyings, and a fragment shader trace whose colour store is the fragment's.
+TEST(InspectTrace, PixelQueriesRunGlslProgramsAndTraceTheirFragmentShader) {
+  const Loaded builtin = load({});
+  const Loaded twins = load({"shaders.program=twins"});
+  const Parallel parallel(2);
+  for (const auto& [x, y] : {std::pair{512, 400}, std::pair{300, 620}}) {
+    const PixelInspectResult b = inspect_pixel(builtin.scene, builtin.mesh, x, y, parallel, true);
+    const PixelInspectResult g = inspect_pixel(twins.scene, twins.mesh, x, y, parallel, true);
+    EXPECT_TRUE(b.traced_twins);
+    EXPECT_FALSE(g.traced_twins);
+    EXPECT_EQ(g.program, "glsl twins (executor)");
+    ASSERT_FALSE(g.fragments.empty());
+    ASSERT_EQ(g.fragments.size(), b.fragments.size());
+    EXPECT_EQ(g.pixel_color, b.pixel_color);
+    for (std::size_t i = 0; i < g.fragments.size(); ++i) {
+      const PixelFragment& f = g.fragments[i];
+      EXPECT_EQ(f.patch, b.fragments[i].patch);
+      EXPECT_EQ(f.triangle, b.fragments[i].triangle);
+      EXPECT_EQ(f.color, b.fragments[i].color);
+      ASSERT_GE(f.inputs.size(), 6u);  // v_world_position, v_world_normal
+      EXPECT_EQ(glm::vec3(f.inputs[0], f.inputs[1], f.inputs[2]), f.position);
+      for (const PixelInspectResult* r : {&g, &b}) {
+        const PixelFragment& traced = r->fragments[i];
+        ASSERT_TRUE(traced.trace);
+        EXPECT_EQ(traced.trace->stage, shader::Stage::Fragment);
+        EXPECT_EQ(traced.trace->file, "phong.frag");
+        expect_bits(stores(*traced.trace).at("out_color"), traced.color, "out_color");
+      }
+    }
+  }
 }
 
 TEST(InspectTrace, CommandLinePrintsTheTraceAndItsJson) {
