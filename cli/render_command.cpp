@@ -41,6 +41,7 @@ struct RenderOptions {
   bool report_repeat = false;  // --repeat given: print per-stage medians over the frames
   std::vector<std::string> sets;
   bool check = false;  // --check: NaN and infinity in every stage's outputs (pipeline/check.h)
+  std::vector<std::string> check_ranges;  // --check-range NAME=LO,HI (pipeline/check_range.h)
 };
 
 using Clock = std::chrono::steady_clock;
@@ -149,18 +150,23 @@ std::string shell_word(const std::string& s) {
   return q + "'";
 }
 
-// --check's context: the inspect command's scene arguments and the GLSL evaluation shader's source.
+// --check's context: the inspect command's scene arguments, each GLSL stage's source, the ranges.
 CheckContext check_context(const RenderOptions& o, const Scene& scene) {
   CheckContext c;
   if (!o.scene.empty()) c.inspect_args = shell_word(o.scene) + " ";
   for (const std::string& set : o.sets) c.inspect_args += "--set " + shell_word(set) + " ";
+  c.image_height = scene.height;
   if (scene.shaders.program != ShaderProgram::Builtin)
-    for (const shader::ShaderSource& src : scene_sources(scene))
-      if (src.stage == shader::Stage::TessEval) {
-        c.tes_file = src.file;
-        c.tes_text = src.text;
-        c.tes_first_line = src.first_line;
-      }
+    for (const shader::ShaderSource& src : scene_sources(scene)) {
+      CheckSource* dst = src.stage == shader::Stage::Vertex        ? &c.vertex
+                         : src.stage == shader::Stage::TessControl ? &c.control
+                         : src.stage == shader::Stage::TessEval    ? &c.evaluation
+                         : src.stage == shader::Stage::Fragment    ? &c.fragment
+                                                                   : nullptr;
+      if (dst) *dst = CheckSource{src.file, src.text, src.first_line};
+    }
+  const std::vector<CheckOutput> outputs = evaluation_output_names(c.evaluation);
+  for (const std::string& spec : o.check_ranges) c.ranges.push_back(parse_check_range(spec, outputs));
   return c;
 }
 
@@ -206,7 +212,7 @@ void run_render(const RenderOptions& o) {
       frame{"frame", {}};
   RenderResult result;
   std::unique_ptr<Checker> checker;
-  if (o.check) checker = std::make_unique<Checker>(check_context(o, scene));
+  if (o.check || !o.check_ranges.empty()) checker = std::make_unique<Checker>(check_context(o, scene));
   try {
     ProgressBar bar;
     for (int i = 0; i < o.repeat; ++i) {
@@ -227,7 +233,8 @@ void run_render(const RenderOptions& o) {
     }
   } catch (const CheckOffence& e) {
     // No image: the temporaries (outputs, the dump) are removed as `outputs` goes.
-    std::fprintf(stderr, "tessref render --check: non-finite value, nothing written\n%s\n", e.what());
+    std::fprintf(stderr, "tessref render --check: %s, nothing written\n%s\n",
+                 e.out_of_range() ? "value out of range" : "non-finite value", e.what());
     set_exit_code(1);
     return;
   }
@@ -310,6 +317,13 @@ void add_render_command(CLI::App& app) {
   cmd->add_flag("--check", opts->check,
                  "test every stage's outputs for NaN and infinity; the first one stops the render "
                  "(exit 1, nothing written) naming the stage, invocation, value and source line");
+  cmd->add_option("--check-range", opts->check_ranges,
+                  "with --check (implied): values of NAME outside [LO, HI] are offences too; NAME: "
+                  "gl_Position[.c], an evaluation shader output[.c], length(NAME), levels, "
+                  "gl_TessLevelOuter[i], gl_TessLevelInner[i] (docs/check.md); repeatable")
+      ->type_name("NAME=LO,HI")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--depth", opts->depth, "also write window-space depth (.exr)");
   cmd->add_option("--dump-fragments", opts->dump_fragments,
                   "also write each pixel's winning fragment (world P, N, patch_id, triangle, tess_coord, depth) "

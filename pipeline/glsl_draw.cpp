@@ -78,8 +78,11 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
   TessOptions tess_options;
   tess_options.patches_per_task = 4;
   if (options.wants_tess_records()) tess_options.dump = &records;
+  const TessDrawInput* check_input = nullptr;  // --check's control shader re-run: this instance's patches
   if (options.check)
-    tess_options.control_check = [&](std::size_t p, const PatchOutput& o) { options.check->control_output(p, o); };
+    tess_options.control_check = [&](std::size_t p, const PatchOutput& o) {
+      options.check->control_output(p, o, [&](std::size_t q, int lane) { return trace_control(*check_input, *tcs, q, lane); });
+    };
   const std::size_t chunk = options.tess_chunk_patches ? options.tess_chunk_patches : kChunkPatches;
 
   for (int instance = 0; instance < call.instances; ++instance) {
@@ -87,11 +90,13 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
     program.run_vertices(attributes, shade_first, shade_count, instance, shaded.data(), par);
     stats.vertices_shaded += shade_count;
     stats.vertex_seconds += seconds_since(t0);
-    if (options.check)
+    if (options.check) {
+      const Checker::VertexTrace trace = [&](std::size_t v) { return trace_vertex(program, attributes, v, instance); };
       for (std::size_t v = 0; v < shaded.size(); ++v)
         for (int s = 0; s < kMaxStageAttributes; ++s)
           options.check->vertex_output(shade_first + v, s == 0 ? "gl_Position" : "location " + std::to_string(s - 1),
-                                       &shaded[v].attr[s][0], 4, call.indices, call.patches ? call.patch_vertices : 3);
+                                       &shaded[v].attr[s][0], 4, call.indices, call.patches ? call.patch_vertices : 3, trace);
+    }
     if (!call.patches) {
       stats.triangles_in += (indexed ? call.indices.size() : call.count) / 3;
       draw_triangle_list(program, shaded, call, raster_state, *fs, fb, par, stats, options.check);
@@ -101,6 +106,7 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
     t0 = Clock::now();
     const double raster_before = stats.raster_seconds;
     const TessDrawInput input{shaded, call.indices, call.patch_vertices};
+    check_input = &input;
     const std::size_t patches = input.patch_count();
     stats.triangles_in += patches;
     std::size_t done = 0;
