@@ -38,7 +38,8 @@ void capture_one(glref::GlContext& context, const std::string& scene_path, const
                  const std::string& command_line, const std::string& out, std::size_t tess_records) {
   Scene scene = load_scene(scene_path, sets);
   if (scene.tessellation.enabled && scene.tessellation.tessellator != Tessellator::PrimitiveGenerator)
-    throw InputError(scene.source + ": tessellation.tessellator is \"uniform\", which only tessref has; a GL driver "
+    throw InputError(scene.source + ": tessellation.tessellator is \"" + to_string(scene.tessellation.tessellator) +
+                     "\", which only tessref has; a GL driver "
                      "tessellates with its primitive generator (capture the scene with \"primitive_generator\")");
   const nlohmann::json scene_json = load_scene_json(scene_path, sets);
   std::vector<std::string> warnings;

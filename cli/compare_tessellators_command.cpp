@@ -79,7 +79,7 @@ void run(const CompareArgs& a) {
     std::filesystem::create_directories(a.images, e);
     if (e) throw InputError(a.images + ": cannot create the --images folder: " + e.message());
     for (float level : levels)
-      for (const char* kind : {"tpg", "uniform", "coverage"})
+      for (const char* kind : {"tpg", "uniform", "coverage", "refinement", "coverage-refinement"})
         image_tmp.push_back(outputs.add(
             "--images", std::filesystem::path(a.images) / (std::string(kind) + "-" + level_name(level) + ".png")));
   }
@@ -94,20 +94,25 @@ void run(const CompareArgs& a) {
                            {"scheme", to_string(scene.tessellation.scheme)},
                            {"spacing", to_string(scene.tessellation.spacing)},
                            {"mesh_triangles", mesh.triangle_count()}, {"levels", nlohmann::json::array()}};
-  std::printf("%6s %4s %10s %10s %11s %11s %11s %7s %9s %9s\n", "level", "n", "tris_tpg", "tris_unif",
-              "hausdorff", "rms_t->u", "rms_u->t", "worst", "cov_diff", "off_silh");
+  std::printf("%6s %4s %10s %10s %11s %11s %11s %7s %9s %9s | %4s %10s %11s %9s %9s\n", "level", "n", "tris_tpg",
+              "tris_unif", "hausdorff", "rms_t->u", "rms_u->t", "worst", "cov_diff", "off_silh", "rp_n", "tris_rp",
+              "hausd_rp", "cov_rp", "off_rp");
   std::size_t next_image = 0;
   for (float level : levels) {
     const TessellatorComparison c = compare_tessellators(scene, mesh, level, parallel);
     report["levels"].push_back(c.to_json());
-    std::printf("%6g %4d %10llu %10llu %11.3e %11.3e %11.3e %7lld %9llu %9llu\n", double(level), c.uniform_n,
-                (unsigned long long)c.tpg_triangles, (unsigned long long)c.uniform_triangles,
-                c.hausdorff / c.diagonal, c.tpg_to_uniform_rms / c.diagonal, c.uniform_to_tpg_rms / c.diagonal,
-                (long long)c.worst_patch, (unsigned long long)c.coverage_differs,
-                (unsigned long long)c.off_silhouette);
+    const TessellatorComparison::Versus& rp = c.refinement;
+    std::printf("%6g %4d %10llu %10llu %11.3e %11.3e %11.3e %7lld %9llu %9llu | %4d %10llu %11.3e %9llu %9llu\n",
+                double(level), c.uniform_n, (unsigned long long)c.tpg_triangles,
+                (unsigned long long)c.uniform_triangles, c.hausdorff / c.diagonal,
+                c.tpg_to_uniform_rms / c.diagonal, c.uniform_to_tpg_rms / c.diagonal, (long long)c.worst_patch,
+                (unsigned long long)c.coverage_differs, (unsigned long long)c.off_silhouette, rp.segments,
+                (unsigned long long)rp.triangles, rp.hausdorff / c.diagonal, (unsigned long long)rp.coverage_differs,
+                (unsigned long long)rp.off_silhouette);
     std::fflush(stdout);
     if (!a.images.empty())
-      for (const Rgb8Image* img : {&c.tpg_image, &c.uniform_image, &c.coverage_image})
+      for (const Rgb8Image* img : {&c.tpg_image, &c.uniform_image, &c.coverage_image, &c.refinement.image,
+                                   &c.refinement.coverage_image})
         write_rgb8_image(*img, image_tmp[next_image++]);
   }
   if (!a.json.empty()) {
@@ -124,16 +129,17 @@ void add_compare_tessellators_command(CLI::App& app) {
   auto args = std::make_shared<CompareArgs>();
   CLI::App* cmd = app.add_subcommand(
       "compare-tessellators",
-      "Tessellate the scene's patches with the GL primitive generator and with uniform subdivision at each "
-      "level and compare: triangle counts, two-sided Hausdorff and RMS distance between the surfaces (of the "
+      "Tessellate the scene's patches with the GL primitive generator, with uniform subdivision and with seed "
+      "001's refinement pattern at each level and compare each with the generator's: triangle counts, two-sided Hausdorff and RMS distance between the surfaces (of the "
       "bounding-box diagonal), pixels whose coverage differs (docs/uniform-subdivision.md)");
   add_scene_options(cmd, args->scene, args->sets);
   cmd->add_option("--levels", args->levels, "levels to compare, 1..64, comma separated (every outer and inner level)")
       ->capture_default_str();
   cmd->add_option("--json", args->json, "also write the report as JSON");
   cmd->add_option("--images", args->images,
-                  "folder for tpg-L.png, uniform-L.png and coverage-L.png per level (coverage: red where only "
-                  "the primitive generator's rendering covers a pixel, cyan where only the uniform one does)");
+                  "folder for tpg-L.png, uniform-L.png, coverage-L.png, refinement-L.png and "
+                  "coverage-refinement-L.png per level (coverage: red where only the primitive generator's rendering "
+                  "covers a pixel, cyan where only the other one does)");
   cmd->add_option("--threads", args->threads, "worker threads (0: all); the results do not depend on it")
       ->check(kInteger)
       ->check(CLI::Range(0, 4096));

@@ -21,6 +21,7 @@
 #include "pipeline/mesh_source.h"
 #include "pipeline/scene_loader.h"
 #include "stages/schemes/pn_triangles.h"
+#include "stages/schemes/quadratic_patch.h"
 
 namespace tessref::cli {
 namespace {
@@ -101,6 +102,14 @@ std::string vs_slot_name(const InspectResult& r, int s) {
   return s == 0 ? "gl_Position" : "location " + std::to_string(s - 1);
 }
 std::string tcs_slot_name(const InspectResult& r, int s) {
+  if (r.builtin_quadratic) {
+    switch (s) {
+      case kAttrPosition: return "P_i (corner)";
+      case kAttrNormal: return "N_i (unit normal)";
+      case kQuadAttrEdgePoint: return "mid-edge control point b_(i,i+1)";
+      case kQuadAttrMidNormal: return "mid-edge normal n_(i,i+1)";
+    }
+  }
   if (!r.builtin_pn) return vs_slot_name(r, s);
   switch (s) {
     case kAttrPosition: return "P_i (corner)";
@@ -114,6 +123,7 @@ std::string tcs_slot_name(const InspectResult& r, int s) {
 std::string patch_slot_name(const InspectResult& r, int s) {
   if (r.builtin_pn && s == kPnPatchCenter) return "b111 (centre)";
   if (r.builtin_pn && s == kPnPatchOrder) return "canonical corner order";
+  if (r.builtin_quadratic && s == kQuadPatchOrder) return "canonical corner order";
   return "patch slot " + std::to_string(s);
 }
 

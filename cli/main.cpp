@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   tessref::cli::add_verify_command(app);
   tessref::cli::add_compare_tessellators_command(app);
   tessref::cli::add_inspect_command(app);
+  tessref::cli::add_stats_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -5,6 +5,7 @@
 
 #include "pipeline/render.h"
 #include "stages/tpg_cache.h"
+#include "stages/tpg_refinement.h"
 #include "verify/compare.h"
 #include "verify/surface.h"
 #include "verify/surface_distance.h"
@@ -55,6 +56,37 @@ Rgb8Image coverage_image(const Framebuffer& tpg, const Framebuffer& uniform) {
 std::uint64_t pattern_triangles(const Scene& scene, Tessellator t) {
   const TessLayout layout{TessDomain::Triangles, scene.tessellation.spacing, scene.tessellation.winding, false};
   return make_pattern(layout, scene.tessellation.levels, TessProfile::llvmpipe(), t)->points.primitive_count();
+}
+
+// The refinement pattern's rendering against the TPG's: the same measures as the uniform grid's.
+TessellatorComparison::Versus versus_tpg(const Drawn& tpg, const Drawn& other, const Parallel& parallel) {
+  TessellatorComparison::Versus v;
+  v.triangles = other.surface.triangle_count();
+  {
+    const SurfaceOracle tpg_oracle(tpg.surface), other_oracle(other.surface);
+    const SurfaceDistance d = surface_distance(tpg.surface, tpg_oracle, other.surface, other_oracle, parallel);
+    v.hausdorff = d.hausdorff;
+    v.from_tpg_rms = d.reference_to_tessref.rms;
+    v.to_tpg_rms = d.tessref_to_reference.rms;
+  }
+  const Framebuffer& fa = tpg.result.framebuffer;
+  const Framebuffer& fb = other.result.framebuffer;
+  const CoverageComparison cov = compare_coverage(depth_image(fa), fb);
+  v.covered = cov.covered_tessref;
+  v.coverage_differs = cov.mismatched;
+  v.off_silhouette = cov.off_silhouette;
+  const Rgb8Image a = to_rgb8(fa);
+  v.image = to_rgb8(fb);
+  for (int y = 0; y < fa.height; ++y)
+    for (int x = 0; x < fa.width; ++x) {
+      const std::size_t i = 3 * (std::size_t(y) * fa.width + x), z = fa.index(x, fa.height - 1 - y);
+      int most = 0;
+      for (int k = 0; k < 3; ++k) most = std::max(most, std::abs(int(a.pixels[i + k]) - int(v.image.pixels[i + k])));
+      v.colour_differs += most > 0;
+      if (fa.depth[z] < 1.0f && fb.depth[z] < 1.0f) v.max_colour_difference = std::max(v.max_colour_difference, most);
+    }
+  v.coverage_image = coverage_image(fa, fb);
+  return v;
 }
 
 }  // namespace
@@ -109,6 +141,11 @@ TessellatorComparison compare_tessellators(Scene scene, const Mesh& mesh, float 
         c.max_colour_difference = std::max(c.max_colour_difference, most);
     }
   c.coverage_image = coverage_image(tpg.result.framebuffer, uni.result.framebuffer);
+
+  c.refinement = versus_tpg(tpg, draw(scene, mesh, Tessellator::RefinementPattern, parallel), parallel);
+  c.refinement.lod = refinement_lod(scene.tessellation.levels, TessProfile::llvmpipe());
+  c.refinement.segments = refinement_segments(c.refinement.lod);
+  c.refinement.pattern_triangles = pattern_triangles(scene, Tessellator::RefinementPattern);
   return c;
 }
 
@@ -127,7 +164,19 @@ nlohmann::json TessellatorComparison::to_json() const {
                         {"differs", coverage_differs}, {"on_silhouette", on_silhouette},
                         {"off_silhouette", off_silhouette}}},
           {"colour_differs", colour_differs},
-          {"max_colour_difference", max_colour_difference}};
+          {"max_colour_difference", max_colour_difference},
+          {"refinement_pattern",
+           {{"lod", refinement.lod},
+            {"segments", refinement.segments},
+            {"triangles", refinement.triangles},
+            {"triangles_per_patch", refinement.pattern_triangles},
+            {"hausdorff_of_diagonal", refinement.hausdorff / d},
+            {"tpg_to_refinement_rms_of_diagonal", refinement.from_tpg_rms / d},
+            {"refinement_to_tpg_rms_of_diagonal", refinement.to_tpg_rms / d},
+            {"coverage", {{"covered", refinement.covered}, {"differs", refinement.coverage_differs},
+                          {"off_silhouette", refinement.off_silhouette}}},
+            {"colour_differs", refinement.colour_differs},
+            {"max_colour_difference", refinement.max_colour_difference}}}};
 }
 
 }  // namespace tessref::cli

@@ -31,11 +31,22 @@ struct TessellatorComparison {
   int max_colour_difference = 0;  // the largest channel difference (of 255) where both cover
   Rgb8Image tpg_image, uniform_image, coverage_image;  // coverage: red TPG only, cyan uniform only
 
+  // Seed 001's refinement pattern against the same TPG rendering (the third tessellator).
+  struct Versus {
+    int lod = 0, segments = 1;                           // RP_lod, 2^lod segments per edge
+    std::uint64_t triangles = 0, pattern_triangles = 0;  // the whole mesh, one patch
+    double hausdorff = 0.0, to_tpg_rms = 0.0, from_tpg_rms = 0.0;
+    std::uint64_t covered = 0, coverage_differs = 0, off_silhouette = 0;
+    std::uint64_t colour_differs = 0;
+    int max_colour_difference = 0;
+    Rgb8Image image, coverage_image;  // coverage: red TPG only, cyan refinement pattern only
+  } refinement;
+
   nlohmann::json to_json() const;  // distances relative to the diagonal
 };
 
 // scene: tessellation enabled, built-in programs, fixed levels (checked by the caller); its camera
-// already fitted. Both renderings use `level` for every outer and inner level.
+// already fitted. All three renderings use `level` for every outer and inner level.
 TessellatorComparison compare_tessellators(Scene scene, const Mesh& mesh, float level,
                                            const Parallel& parallel);
 

@@ -47,6 +47,16 @@ PatchMesh::PatchMesh(GlContext& context, const PatchMeshData& data)
     glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
     glEnableVertexAttribArray(1);
   }
+  if (data.tags.size() != (data.tags.empty() ? 0 : data.positions.size()) || data.creases.size() != data.tags.size())
+    throw GlError("PatchMesh: tags and creases must come one per position, or not at all");
+  if (!data.tags.empty()) {
+    upload(GL_ARRAY_BUFFER, tags_buffer_, data.tags.data(), data.tags.size() * sizeof(glm::vec4));
+    glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), nullptr);
+    glEnableVertexAttribArray(2);
+    upload(GL_ARRAY_BUFFER, crease_buffer_, data.creases.data(), data.creases.size() * sizeof(glm::vec3));
+    glVertexAttribPointer(3, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+    glEnableVertexAttribArray(3);
+  }
   upload(GL_ELEMENT_ARRAY_BUFFER, index_buffer_, data.indices.data(), data.indices.size() * sizeof(std::uint32_t));
   glBindVertexArray(0);
   check_gl("PatchMesh: uploading the mesh");
@@ -55,7 +65,7 @@ PatchMesh::PatchMesh(GlContext& context, const PatchMeshData& data)
 PatchMesh::~PatchMesh() {
   if (query_generated_) glDeleteQueries(1, &query_generated_);
   if (query_written_) glDeleteQueries(1, &query_written_);
-  for (unsigned* b : {&position_buffer_, &normal_buffer_, &index_buffer_, &feedback_buffer_})
+  for (unsigned* b : {&position_buffer_, &normal_buffer_, &index_buffer_, &feedback_buffer_, &tags_buffer_, &crease_buffer_})
     if (*b) glDeleteBuffers(1, b);
   if (vao_) glDeleteVertexArrays(1, &vao_);
 }

@@ -20,6 +20,10 @@ struct PatchMeshData {
   std::vector<glm::vec3> normals;       // location 1; empty = not supplied (reads as 0,0,0,1)
   std::vector<std::uint32_t> indices;   // patch_vertices per patch
   int patch_vertices = 3;
+  // Scalar Tagged PN's tags (tagged_transform.vert): location 2 (tension, sharpness, bias, 0) and
+  // location 3 (crease vector); empty = not supplied.
+  std::vector<glm::vec4> tags;
+  std::vector<glm::vec3> creases;
 };
 
 class PatchMesh {
@@ -57,6 +61,7 @@ class PatchMesh {
 
   unsigned vao_ = 0, position_buffer_ = 0, normal_buffer_ = 0, index_buffer_ = 0;
   unsigned feedback_buffer_ = 0, query_generated_ = 0, query_written_ = 0;
+  unsigned tags_buffer_ = 0, crease_buffer_ = 0;
   std::size_t feedback_capacity_ = 0;
   std::size_t patch_count_ = 0;
   int patch_vertices_ = 3;

@@ -17,6 +17,7 @@
 #include "glref/tess_capture.h"
 #include "pipeline/camera.h"
 #include "pipeline/glsl_scene.h"
+#include "pipeline/vertex_tags.h"
 #include "stages/programs/transform.h"
 #include "stages/tess_levels_adaptive.h"
 
@@ -107,14 +108,16 @@ AttributeLocations attribute_locations(const Scene& scene) {
 
 std::vector<ShaderStage> twin_stages(const Scene& scene, bool for_capture) {
   if (scene.shaders.program == ShaderProgram::Custom) return custom_stages(scene, for_capture);
-  std::vector<ShaderStage> stages{{GL_VERTEX_SHADER, shader_source("transform.vert"), "transform.vert"}};
   const TessellationSettings& t = scene.tessellation;
+  // Scalar Tagged PN's control shader reads the tags the vertex stage hands on.
+  const char* vs = t.enabled && t.scheme == SurfaceScheme::ScalarTaggedPN ? "tagged_transform.vert" : "transform.vert";
+  std::vector<ShaderStage> stages{{GL_VERTEX_SHADER, shader_source(vs), vs}};
   if (t.enabled) {
-    const std::string scheme = t.scheme == SurfaceScheme::PN ? "pn_triangles" : "flat";
-    std::string tes = set_tes_layout(shader_source(scheme + ".tese"), tes_layout(t));
+    const SchemeTwins scheme = scheme_twins(t.scheme);
+    std::string tes = set_tes_layout(shader_source(scheme.tess_evaluation), tes_layout(t));
     if (for_capture) tes = wrap_tes_for_capture(tes);
-    stages.push_back({GL_TESS_CONTROL_SHADER, shader_source(scheme + ".tesc"), scheme + ".tesc"});
-    stages.push_back({GL_TESS_EVALUATION_SHADER, tes, scheme + ".tese"});
+    stages.push_back({GL_TESS_CONTROL_SHADER, shader_source(scheme.tess_control), scheme.tess_control});
+    stages.push_back({GL_TESS_EVALUATION_SHADER, tes, scheme.tess_evaluation});
   }
   if (!for_capture) {
     const char* fs = scene.shading == Shading::Phong ? "phong.frag" : "normals.frag";
@@ -141,8 +144,13 @@ SceneRenderer::SceneRenderer(GlContext& context, const Scene& scene, const Mesh&
   const TessellationSettings& t = scene_.tessellation;
   if (t.enabled) {
     const bool custom = scene_.shaders.program == ShaderProgram::Custom;
-    patches_ = std::make_unique<PatchMesh>(
-        context_, PatchMeshData{mesh.positions, mesh.normals, mesh.indices, custom ? scene_.shaders.patch_vertices : 3});
+    PatchMeshData data{mesh.positions, mesh.normals, mesh.indices, custom ? scene_.shaders.patch_vertices : 3, {}, {}};
+    if (!custom && t.scheme == SurfaceScheme::ScalarTaggedPN)
+      for (const VertexTags& v : load_vertex_tags(t, mesh)) {
+        data.tags.emplace_back(v.tension, v.sharpness, v.bias, 0.0f);
+        data.creases.push_back(v.crease);
+      }
+    patches_ = std::make_unique<PatchMesh>(context_, data);
     // Constant levels: the exact bound of every patch. Adaptive: the TCS clamps to max_level. A
     // user's control shader: any level up to the largest.
     TessLevels worst = t.levels;
@@ -207,6 +215,11 @@ void SceneRenderer::set_uniforms(const Program& program) const {
   // One name in TCS and TES: the adaptive levels' matrix and gl_Position's, both the camera's.
   if ((l = loc("u_view_proj")) >= 0) glUniformMatrix4fv(l, 1, GL_FALSE, glm::value_ptr(vs.u_view_projection));
   if ((l = loc("u_normal_mode")) >= 0) glUniform1i(l, glsl_index(t.normal_mode));
+  if ((l = loc("u_phong_alpha")) >= 0) glUniform1f(l, t.phong_alpha);
+  if ((l = loc("u_nagata_eps")) >= 0) glUniform1f(l, t.nagata_eps);
+  if ((l = loc("u_displacement")) >= 0) glUniform1i(l, t.displacement.enabled ? 1 : 0);
+  if ((l = loc("u_displacement_amplitude")) >= 0) glUniform1f(l, t.displacement.amplitude);
+  if ((l = loc("u_displacement_frequency")) >= 0) glUniform1f(l, t.displacement.frequency);
   if ((l = loc("u_adaptive")) >= 0) glUniform1i(l, lv.adaptive ? 1 : 0);
   if ((l = loc("u_outer")) >= 0) glUniform4fv(l, 1, lv.constant.outer.data());
   if ((l = loc("u_inner")) >= 0) glUniform2fv(l, 1, lv.constant.inner.data());

@@ -6,6 +6,7 @@
 #include "common/error.h"
 #include "pipeline/builtin_programs.h"
 #include "pipeline/check.h"
+#include "pipeline/vertex_tags.h"
 #include "stages/schemes/flat.h"
 #include "stages/schemes/pn_triangles.h"
 #include "stages/tess_stage.h"
@@ -52,7 +53,9 @@ void draw_tessellated(const std::vector<programs::VertexOut>& shaded, const Mesh
                       const Parallel& parallel, const DrawOptions& options, Rasterize& rasterize,
                       DrawStats& stats) {
   auto t0 = Clock::now();
-  const std::vector<StageVertex> control_points = tess_control_points(shaded);
+  std::vector<StageVertex> control_points = tess_control_points(shaded);
+  if (settings.scheme == SurfaceScheme::ScalarTaggedPN)
+    attach_vertex_tags(control_points, load_vertex_tags(settings, mesh), vs.u_normal_matrix);
   stats.vertex_seconds += seconds_since(t0);
 
   const BuiltinTessPrograms programs =
@@ -125,7 +128,20 @@ BuiltinTessPrograms builtin_tess_programs(const TessellationSettings& settings,
   p.pn_tes.spacing = settings.spacing;
   p.pn_tes.winding = settings.winding;
   p.pn_tes.view_proj = vs.u_view_projection;
-  p.pn = settings.scheme == SurfaceScheme::PN;
+  for (QuadraticTcs* q : std::initializer_list<QuadraticTcs*>{&p.phong_tcs, &p.nlsa_tcs, &p.nagata_tcs}) {
+    q->normal_mode = p.pn_tcs.normal_mode;
+    q->levels = levels;
+  }
+  p.phong_tcs.alpha = settings.phong_alpha;
+  p.nagata_tcs.eps = settings.nagata_eps;
+  p.quadratic_tes.normal_mode = p.pn_tcs.normal_mode;
+  p.quadratic_tes.spacing = settings.spacing;
+  p.quadratic_tes.winding = settings.winding;
+  p.quadratic_tes.view_proj = vs.u_view_projection;
+  p.tagged_pn_tcs.pn = p.pn_tcs;
+  p.scheme = settings.scheme;
+  p.displaced.displacement = settings.displacement;
+  p.displaced.view_proj = vs.u_view_projection;
   return p;
 }
 

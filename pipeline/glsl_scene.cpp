@@ -10,6 +10,7 @@
 #include "pipeline/camera.h"
 #include "pipeline/glsl_draw.h"
 #include "pipeline/image_output.h"
+#include "pipeline/vertex_tags.h"
 #include "shader/glsl_compile.h"
 #include "stages/glsl/twins.h"
 #include "stages/programs/transform.h"
@@ -74,6 +75,8 @@ void set_scene_uniforms(const Scene& scene, glsl::GlslProgram& program) {
   const TessellationSettings& t = scene.tessellation;
   const AdaptiveLevelSettings screen;
   set("u_normal_mode", integer(glsl_index(t.normal_mode)));
+  set("u_phong_alpha", floats({t.phong_alpha}));
+  set("u_nagata_eps", floats({t.nagata_eps}));
   set("u_adaptive", integer(t.adaptive.enabled ? 1 : 0, Scalar::Bool));
   set("u_outer", vec(t.levels.outer.data(), 4));
   set("u_inner", vec(t.levels.inner.data(), 2));
@@ -82,6 +85,9 @@ void set_scene_uniforms(const Scene& scene, glsl::GlslProgram& program) {
   set("u_min_level", floats({screen.min_level}));
   set("u_max_level", floats({screen.max_level}));
   set("u_inner_rule", integer(screen.inner_rule == InnerLevelRule::Max ? 0 : 1));
+  set("u_displacement", integer(t.displacement.enabled ? 1 : 0, Scalar::Bool));
+  set("u_displacement_amplitude", floats({t.displacement.amplitude}));
+  set("u_displacement_frequency", floats({t.displacement.frequency}));
   set("u_eye", vec(&scene.camera.eye.x, 3));
   set("u_num_lights", integer(int(scene.lights.size())));
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
@@ -203,11 +209,13 @@ std::vector<shader::ShaderSource> scene_sources(const Scene& scene) {
     auto twin = [&](Stage stage, const std::string& name) {
       out.push_back({stage, name, 1, glsl::twin_source(name)});
     };
-    const std::string scheme = scene.tessellation.scheme == SurfaceScheme::PN ? "pn_triangles" : "flat";
-    twin(Stage::Vertex, "transform.vert");
+    const SchemeTwins scheme = scheme_twins(scene.tessellation.scheme);
+    // Scalar Tagged PN's control shader reads the tags the vertex stage hands on.
+    const bool tagged = scene.tessellation.enabled && scene.tessellation.scheme == SurfaceScheme::ScalarTaggedPN;
+    twin(Stage::Vertex, tagged ? "tagged_transform.vert" : "transform.vert");
     if (scene.tessellation.enabled) {
-      twin(Stage::TessControl, scheme + ".tesc");
-      twin(Stage::TessEval, scheme + ".tese");
+      twin(Stage::TessControl, scheme.tess_control);
+      twin(Stage::TessEval, scheme.tess_evaluation);
     }
     twin(Stage::Fragment, scene.shading == Shading::Phong ? "phong.frag" : "normals.frag");
     return out;
@@ -274,6 +282,22 @@ std::vector<glsl::VertexAttribute> scene_attributes(const Scene& scene, const gl
     for (const glm::vec3& v : data)
       for (int c = 0; c < 3; ++c) a.words.push_back(std::bit_cast<std::uint32_t>(v[c]));
     attributes.push_back(std::move(a));
+  }
+  // tagged_transform.vert's in_tags (location 2) and in_crease (location 3).
+  if (scene.shaders.program == ShaderProgram::Twins && scene.tessellation.enabled &&
+      scene.tessellation.scheme == SurfaceScheme::ScalarTaggedPN) {
+    const std::vector<VertexTags> tags = load_vertex_tags(scene.tessellation, mesh);
+    glsl::VertexAttribute t, c;
+    t.location = 2;
+    t.components = 4;
+    c.location = 3;
+    c.components = 3;
+    for (const VertexTags& v : tags) {
+      for (float x : {v.tension, v.sharpness, v.bias, 0.0f}) t.words.push_back(std::bit_cast<std::uint32_t>(x));
+      for (int k = 0; k < 3; ++k) c.words.push_back(std::bit_cast<std::uint32_t>(v.crease[k]));
+    }
+    attributes.push_back(std::move(t));
+    attributes.push_back(std::move(c));
   }
   return attributes;
 }

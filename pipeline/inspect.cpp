@@ -10,6 +10,7 @@
 #include "common/parallel.h"
 #include "pipeline/builtin_programs.h"
 #include "pipeline/glsl_scene.h"
+#include "pipeline/vertex_tags.h"
 
 namespace tessref {
 namespace {
@@ -118,8 +119,12 @@ InspectResult inspect_patch(const Scene& scene, const Mesh& mesh, const InspectR
     for (std::size_t v = 0; v < out.size(); ++v) out[v] = vs.main(mesh.positions[v], mesh.normals[v]);
     for (const auto& o : out) builtin_clip.push_back(o.gl_Position);
     shaded = tess_control_points(out);
+    if (scene.tessellation.enabled && scene.tessellation.scheme == SurfaceScheme::ScalarTaggedPN)
+      attach_vertex_tags(shaded, load_vertex_tags(scene.tessellation, mesh), vs.u_normal_matrix);
     programs.builtin = builtin_tess_programs(scene.tessellation, vs, glm::vec2(float(scene.width), float(scene.height)));
     r.builtin_pn = programs.builtin->scheme == SurfaceScheme::PN;
+    const SurfaceScheme scheme = programs.builtin->scheme;
+    r.builtin_quadratic = scheme == SurfaceScheme::Phong || scheme == SurfaceScheme::NLSA || scheme == SurfaceScheme::Nagata;
     r.program = programs.builtin->scheme == SurfaceScheme::Flat
                     ? std::string("builtin flat")
                     : std::string("builtin ") + to_string(programs.builtin->scheme) + " (" +

@@ -50,6 +50,7 @@ struct InspectPoint {
 struct InspectResult {
   std::string program;           // "builtin pn (quadratic normals)", "glsl twins", "glsl custom"
   bool builtin_pn = false;       // the TCS output follows pn_triangles.h's layout
+  bool builtin_quadratic = false;  // ... quadratic_patch.h's (phong, nlsa, nagata)
   std::size_t patch = 0, patch_count = 0;
   int patch_vertices = 3;
   std::vector<InspectCorner> corners;

@@ -2,6 +2,7 @@
 
 #include "pipeline/mesh_loader.h"
 #include "pipeline/procedural.h"
+#include "pipeline/reference_meshes.h"
 
 namespace tessref {
 
@@ -15,6 +16,13 @@ Mesh build_mesh(const MeshSettings& s, std::vector<std::string>& warnings) {
       break;
     case MeshType::Cube: mesh = make_cube(s.cube_size); break;
     case MeshType::File: return load_mesh_file(s.path, warnings, s.split_normals);
+    case MeshType::Seed004Torus:
+      mesh = make_seed004_torus(s.seed004_torus_grid, s.seed004_torus_analytic_normals
+                                                          ? ReferenceNormals::Analytic
+                                                          : ReferenceNormals::FaceAverage);
+      break;
+    case MeshType::RoundedCube: mesh = make_rounded_cube(s.rounded_cube_cut, s.rounded_cube_half_size); break;
+    case MeshType::Vase: mesh = make_seed004_vase(); break;
   }
   validate_mesh(mesh, "procedural mesh");  // generators are exact: this only normalizes
   return mesh;

@@ -15,7 +15,8 @@
 
 namespace tessref {
 
-enum class MeshType { Icosphere, Torus, Cube, File };
+// Seed004Torus, RoundedCube, Vase: seed 004's meshes (pipeline/reference_meshes.h).
+enum class MeshType { Icosphere, Torus, Cube, File, Seed004Torus, RoundedCube, Vase };
 
 struct MeshSettings {
   MeshType type = MeshType::Icosphere;
@@ -31,6 +32,10 @@ struct MeshSettings {
   int torus_major_segments = 16;
   int torus_minor_segments = 8;
   float cube_size = 1.0f;
+  int seed004_torus_grid = 10;                  // j: 2 j^2 triangles
+  bool seed004_torus_analytic_normals = false;  // false: face averages (the paper's)
+  float rounded_cube_cut = 0.585f;
+  float rounded_cube_half_size = 0.68f;
 };
 
 // model = translate * rotate_z * rotate_y * rotate_x * scale (rotations in degrees).

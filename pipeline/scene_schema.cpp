@@ -15,7 +15,10 @@ bool parse(const std::string& s, MeshType& out) {
   static const std::pair<const char*, MeshType> kNames[] = {{"icosphere", MeshType::Icosphere},
                                                             {"torus", MeshType::Torus},
                                                             {"cube", MeshType::Cube},
-                                                            {"file", MeshType::File}};
+                                                            {"file", MeshType::File},
+                                                            {"seed004_torus", MeshType::Seed004Torus},
+                                                            {"rounded_cube", MeshType::RoundedCube},
+                                                            {"vase", MeshType::Vase}};
   for (const auto& [name, type] : kNames)
     if (s == name) return out = type, true;
   return false;
@@ -50,7 +53,7 @@ float extent(JsonObject& o, const std::string& key) {
 
 MeshSettings read_mesh(JsonObject o, const std::filesystem::path& base_dir) {
   MeshSettings m;
-  m.type = enum_value<MeshType>(o, "type", "icosphere, torus, cube, file");
+  m.type = enum_value<MeshType>(o, "type", "icosphere, torus, cube, file, seed004_torus, rounded_cube, vase");
   o.describe("path", "a mesh file (OBJ, PLY, STL, ... through assimp), relative to the scene file");
   if (o.has("path")) {
     std::filesystem::path p = o.string("path");
@@ -82,6 +85,30 @@ MeshSettings read_mesh(JsonObject o, const std::filesystem::path& base_dir) {
   JsonObject cube = o.object("cube");
   m.cube_size = extent(cube, "size");
   cube.finish();
+  // Seed 004's meshes (pipeline/reference_meshes.h): optional, as the default scene has none.
+  o.describe("seed004_torus", "an object: grid (3..4096), normals (face_average, analytic)");
+  o.describe("rounded_cube", "an object: cut (0..1), half_size (> 0)");
+  if (o.has("seed004_torus")) {
+    JsonObject t = o.object("seed004_torus");
+    if (t.has("grid")) m.seed004_torus_grid = t.integer("grid", 3, 4096);
+    if (t.has("normals")) {
+      const std::string n = t.string("normals");
+      t.describe("normals", "one of face_average (seed 004's), analytic");
+      if (n != "face_average" && n != "analytic")
+        t.fail("normals", "expected one of face_average, analytic, got \"" + n + "\"");
+      m.seed004_torus_analytic_normals = n == "analytic";
+    }
+    t.finish();
+  }
+  if (o.has("rounded_cube")) {
+    JsonObject c = o.object("rounded_cube");
+    if (c.has("cut")) {
+      m.rounded_cube_cut = c.number_in("cut", 0.0f, 1.0f, true, true);
+      c.describe("cut", "a number in (0, 1): where the corners are cut along each edge");
+    }
+    if (c.has("half_size")) m.rounded_cube_half_size = extent(c, "half_size");
+    c.finish();
+  }
   o.finish();
   return m;
 }
@@ -162,12 +189,12 @@ Material read_material(JsonObject o) {
 TessellationSettings read_tessellation(JsonObject o) {
   TessellationSettings t;
   t.enabled = o.boolean("enabled");
-  t.scheme = enum_value<SurfaceScheme>(o, "scheme", "flat, pn");
+  t.scheme = enum_value<SurfaceScheme>(o, "scheme", "flat, pn, phong, nlsa, nagata, scalar_tagged_pn");
   t.normal_mode =
       enum_value<NormalMode>(o, "normal_mode", "linear, quadratic, quadratic_corrected, analytic");
   t.spacing = enum_value<TessSpacing>(o, "spacing", "equal, fractional_odd, fractional_even");
   t.winding = enum_value<TessWinding>(o, "winding", "ccw, cw");
-  t.tessellator = enum_value<Tessellator>(o, "tessellator", "primitive_generator, uniform");
+  t.tessellator = enum_value<Tessellator>(o, "tessellator", "primitive_generator, uniform, refinement_pattern");
   // Every level is allowed, as a control shader may write any (docs/tpg.md: NaN or <= 0 outer
   // levels discard the patch; inner levels clamp, NaN to the lower bound).
   std::vector<float> inner = o.levels("inner", 1, 2);
@@ -180,10 +207,43 @@ TessellationSettings read_tessellation(JsonObject o) {
   t.adaptive.enabled = a.boolean("enabled");
   t.adaptive.pixels_per_segment = a.number_in("pixels_per_segment", 0.0f, kInf, true, true);
   a.finish();
+  // The quadratic schemes' parameters (docs/schemes.md), checked whatever the scheme.
+  t.phong_alpha = o.number("phong_alpha");
+  o.describe("phong_alpha", "a finite number >= 0: Phong tessellation's shape factor (0 flat, 0.75 the paper's)");
+  if (!(t.phong_alpha >= 0.0f))
+    o.fail("phong_alpha", "must not be negative (0 is the flat triangle, 1 the full tangent-plane "
+                          "projection, 0.75 Boubekeur & Alexa's choice), got " + format_float(t.phong_alpha));
+  t.nagata_eps = o.number("nagata_eps");
+  o.describe("nagata_eps", "a number in [0, 0.5]: Nagata's threshold on (1 - n0.n1)/2");
+  if (!(t.nagata_eps >= 0.0f && t.nagata_eps <= 0.5f))
+    o.fail("nagata_eps", "must be in [0, 0.5] (an edge is left straight where (1 - n0.n1)/2 <= eps or "
+                         "(1 + n0.n1)/2 <= eps: 0 only for exactly parallel normals, 0.5 for every edge), got " +
+                             format_float(t.nagata_eps));
+  o.describe("displacement", "an object {amplitude, frequency}: P + amplitude sin(frequency |P|) N");
+  if (o.has("displacement")) {
+    JsonObject d = o.object("displacement");
+    t.displacement.enabled = true;
+    t.displacement.amplitude = d.number("amplitude");
+    t.displacement.frequency = d.number("frequency");
+    d.describe("frequency", "a finite number >= 0 (radians per world unit of |P|)");
+    if (!(t.displacement.frequency >= 0.0f))
+      d.fail("frequency", "must not be negative (sin(-f r) = -sin(f r): use a negative amplitude), got " +
+                              format_float(t.displacement.frequency));
+    d.finish();
+  }
+  // Scalar Tagged PN's tags (pipeline/vertex_tags.h checks the file against the mesh at draw time).
+  o.describe("tags", "a JSON file of per-vertex tags, relative to the scene file (docs/scalar-tagged-pn.md)");
+  if (o.has("tags")) t.tags = o.string("tags");
+  o.describe("tension", "a number in [-1, 1]: every vertex's tension where tessellation.tags gives none");
+  if (o.has("tension")) t.tension = o.number_in("tension", -1.0f, 1.0f, false, false);
+  if ((!t.tags.empty() || t.tension != 0.0f) && t.scheme != SurfaceScheme::ScalarTaggedPN)
+    o.fail(t.tags.empty() ? "tension" : "tags", "applies to scheme \"scalar_tagged_pn\" only (the scheme is \"" +
+                                                   std::string(to_string(t.scheme)) + "\")", {"scheme"});
   // One n per patch from its own levels: adaptive levels would differ across a shared edge and
   // open T-junction cracks, so uniform subdivision takes fixed levels only.
-  if (t.enabled && t.tessellator == Tessellator::Uniform && t.adaptive.enabled)
-    o.fail("tessellator", "\"uniform\" needs fixed levels; it cannot be used with adaptive.enabled",
+  if (t.enabled && t.tessellator != Tessellator::PrimitiveGenerator && t.adaptive.enabled)
+    o.fail("tessellator", "\"" + std::string(to_string(t.tessellator)) +
+                              "\" needs fixed levels; it cannot be used with adaptive.enabled",
            {"adaptive.enabled", "enabled"});
   o.finish();
   return t;
@@ -312,13 +372,23 @@ Scene scene_from_json(const json& root_json, const JsonSource& source,
   s.cull_back_faces = root.boolean("cull_back_faces");
   s.tessellation = read_tessellation(root.object("tessellation"));
   s.shaders = read_shaders(root.object("shaders"), source, mesh_base_dir);
+  if (s.tessellation.tags.is_relative() && !s.tessellation.tags.empty())
+    s.tessellation.tags = mesh_base_dir / s.tessellation.tags;
   // The GLSL path's TES may declare any domain; uniform subdivision is plumbed for the built-in
   // programs only.
-  if (s.tessellation.enabled && s.tessellation.tessellator == Tessellator::Uniform &&
+  if (s.tessellation.enabled && s.tessellation.tessellator != Tessellator::PrimitiveGenerator &&
       s.shaders.program != ShaderProgram::Builtin)
     source.fail("tessellation.tessellator",
-                "\"uniform\" works with shaders.program \"builtin\" only",
+                "\"" + std::string(to_string(s.tessellation.tessellator)) +
+                    "\" works with shaders.program \"builtin\" only",
                 {"tessellation.tessellator", "shaders.program", "tessellation.enabled"});
+  // The displacement is a block of the built-in evaluation programs and of their twins; a custom
+  // TES displaces in its own code (scenes/displacement.json).
+  if (s.tessellation.displacement.enabled &&
+      (!s.tessellation.enabled || s.shaders.program == ShaderProgram::Custom))
+    source.fail("tessellation.displacement",
+                "needs tessellation.enabled and shaders.program \"builtin\" or \"twins\"",
+                {"tessellation.displacement", "tessellation.enabled", "shaders.program"});
   root.finish();
   return s;
 }

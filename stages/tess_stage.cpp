@@ -272,8 +272,9 @@ void evaluate_task(std::size_t range_first, std::size_t first, std::size_t last,
 void validate(const TessDrawInput& input, const TessControlProgram& tcs,
               const TessEvalProgram& tes, const TessOptions& options) {
   // Checked here, before any task runs, rather than in a worker generating the pattern.
-  if (options.tessellator == Tessellator::Uniform && tes.layout().domain != TessDomain::Triangles)
-    throw std::invalid_argument(std::string("tessellate: uniform tessellation needs the triangles domain, the TES has ") +
+  if (options.tessellator != Tessellator::PrimitiveGenerator && tes.layout().domain != TessDomain::Triangles)
+    throw std::invalid_argument(std::string("tessellate: ") + to_string(options.tessellator) +
+                                " tessellation needs the triangles domain, the TES has " +
                                 to_string(tes.layout().domain));
   if (input.patch_vertices < 1 || input.patch_vertices > kMaxPatchVertices)
     throw std::invalid_argument("tessellate: patch_vertices " +

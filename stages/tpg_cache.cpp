@@ -3,6 +3,7 @@
 #include <bit>
 
 #include "common/hash.h"
+#include "stages/tpg_refinement.h"
 
 namespace tessref {
 
@@ -16,6 +17,7 @@ std::shared_ptr<const TessPattern> make_pattern(const TessLayout& layout, const 
                                                 const TessProfile& profile, Tessellator tessellator) {
   auto p = std::make_shared<TessPattern>();
   if (tessellator == Tessellator::Uniform) generate_uniform(layout, levels, profile, p->points);
+  else if (tessellator == Tessellator::RefinementPattern) generate_refinement_pattern(layout, levels, profile, p->points);
   else generate_tessellation(layout, levels, profile, p->points);
   const std::size_t n = p->points.coords.size();
   const std::size_t padded = (n + kPatternPadding - 1) / kPatternPadding * kPatternPadding;

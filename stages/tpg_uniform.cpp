@@ -7,11 +7,12 @@
 namespace tessref {
 
 const char* to_string(Tessellator t) {
+  if (t == Tessellator::RefinementPattern) return "refinement_pattern";
   return t == Tessellator::Uniform ? "uniform" : "primitive_generator";
 }
 
 bool parse(const std::string& s, Tessellator& out) {
-  for (Tessellator t : {Tessellator::PrimitiveGenerator, Tessellator::Uniform})
+  for (Tessellator t : {Tessellator::PrimitiveGenerator, Tessellator::Uniform, Tessellator::RefinementPattern})
     if (s == to_string(t)) return out = t, true;
   return false;
 }

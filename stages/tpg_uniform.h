@@ -10,9 +10,11 @@
 namespace tessref {
 
 // Which pattern a patch gets from its levels.
-enum class Tessellator : std::uint8_t { PrimitiveGenerator, Uniform };
+// RefinementPattern: seed 001's refinement patterns RP_k (stages/tpg_refinement.h).
+enum class Tessellator : std::uint8_t { PrimitiveGenerator, Uniform, RefinementPattern };
 
-const char* to_string(Tessellator t);                // "primitive_generator" | "uniform"
+// "primitive_generator" | "uniform" | "refinement_pattern"
+const char* to_string(Tessellator t);
 bool parse(const std::string& s, Tessellator& out);
 
 // The number of segments per edge: the largest of the three outer levels rounded up, clamped

@@ -15,6 +15,23 @@ vec3 safe_normalize(vec3 v) {
   return v / sqrt(len2);
 }
 
+// Procedural displacement along the normal (stages/schemes/displacement.h), operation for
+// operation displace() there; off unless the scene has tessellation.displacement.
+uniform bool u_displacement;
+uniform float u_displacement_amplitude;  // a
+uniform float u_displacement_frequency;  // f
+
+void displace(inout vec3 p, inout vec3 n) {
+  if (n == vec3(0.0)) return;
+  float a = u_displacement_amplitude, f = u_displacement_frequency;
+  float r = sqrt(dot(p, p));
+  float s = sin(f * r), c = cos(f * r);
+  vec3 g = r > 0.0 ? p * (a * f * c / r) : vec3(0.0);  // the gradient of |P| is P / |P|
+  vec3 tangential = g - n * dot(g, n);
+  p = p + n * (a * s) + vec3(0.0);
+  n = safe_normalize(n - tangential) + vec3(0.0);
+}
+
 bool corner_less(vec3 pa, vec3 na, vec3 pb, vec3 nb) {
   uvec3 xa = floatBitsToUint(pa), xb = floatBitsToUint(pb);
   for (int i = 0; i < 3; ++i)
@@ -52,7 +69,9 @@ void main() {
   p += vec3(0.0);
   n += vec3(0.0);
 #endif
+  n = safe_normalize(n);
+  if (u_displacement) displace(p, n);
   v_world_position = p;
-  v_world_normal = safe_normalize(n);
+  v_world_normal = n;
   gl_Position = u_view_proj * vec4(p, 1.0);
 }

@@ -17,6 +17,23 @@ vec3 safe_normalize(vec3 v) {
   return v / sqrt(len2);
 }
 
+// Procedural displacement along the normal (stages/schemes/displacement.h), operation for
+// operation displace() there; off unless the scene has tessellation.displacement.
+uniform bool u_displacement;
+uniform float u_displacement_amplitude;  // a
+uniform float u_displacement_frequency;  // f
+
+void displace(inout vec3 p, inout vec3 n) {
+  if (n == vec3(0.0)) return;
+  float a = u_displacement_amplitude, f = u_displacement_frequency;
+  float r = sqrt(dot(p, p));
+  float s = sin(f * r), c = cos(f * r);
+  vec3 g = r > 0.0 ? p * (a * f * c / r) : vec3(0.0);  // the gradient of |P| is P / |P|
+  vec3 tangential = g - n * dot(g, n);
+  p = p + n * (a * s) + vec3(0.0);
+  n = safe_normalize(n - tangential) + vec3(0.0);
+}
+
 vec3 P(int i) { return tes_in[i].attr[0].xyz; }
 vec3 N(int i) { return tes_in[i].attr[1].xyz; }
 // Tangent coefficient at corner x towards corner y.
@@ -71,7 +88,9 @@ void main() {
     if (n == vec3(0.0)) n = safe_normalize(lin);   // degenerate tangents
     else if (dot(n, lin) < 0.0) n = -n;            // orient like the input normals
   }
+  n += vec3(0.0);
+  if (u_displacement) displace(p, n);
   v_world_position = p;
-  v_world_normal = n + vec3(0.0);
+  v_world_normal = n;
   gl_Position = u_view_proj * vec4(p, 1.0);
 }

@@ -129,7 +129,7 @@ TEST(Scene, WrongTypes) {
   EXPECT_EQ(scene_error(R"({"image": {"width": 10.5}})"),
             "scenes/x.json: image.width: expected an integer in [1, 16384], got a number (10.5)");
   EXPECT_EQ(scene_error(R"({"mesh": {"type": "teapot"}})"),
-            "scenes/x.json: mesh.type: expected one of icosphere, torus, cube, file, got \"teapot\"");
+            "scenes/x.json: mesh.type: expected one of icosphere, torus, cube, file, seed004_torus, rounded_cube, vase, got \"teapot\"");
   EXPECT_EQ(scene_error(R"({"tessellation": {"spacing": "odd"}})"),
             "scenes/x.json: tessellation.spacing: expected one of equal, fractional_odd, "
             "fractional_even, got \"odd\"");

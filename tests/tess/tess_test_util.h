@@ -1,8 +1,10 @@
 #pragma once
 // Helpers shared by the tessellation-stage tests.
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <tuple>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -61,5 +63,19 @@ struct Lcg {
   }
   glm::vec3 vec(float lo, float hi) { return {uniform(lo, hi), uniform(lo, hi), uniform(lo, hi)}; }
 };
+
+// Edge points of one patch: dump records whose gl_TessCoord is 0 for the corner opposite the
+// shared edge, keyed by their position bits.
+inline std::vector<std::tuple<glm::vec3, glm::vec3>> edge_points(
+    const std::vector<TessDumpRecord>& dump, std::uint32_t patch, int opposite) {
+  std::vector<std::tuple<glm::vec3, glm::vec3>> pts;
+  for (const auto& r : dump)
+    if (r.patch_id == patch && r.tess_coord[opposite] == 0.0f) pts.emplace_back(r.position, r.normal);
+  std::sort(pts.begin(), pts.end(), [](const auto& a, const auto& b) {
+    const glm::vec3 &p = std::get<0>(a), &q = std::get<0>(b);
+    return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
+  });
+  return pts;
+}
 
 }  // namespace tessref::test

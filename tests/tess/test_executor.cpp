@@ -13,6 +13,7 @@
 namespace tessref {
 namespace {
 
+using test::edge_points;
 using test::Lcg;
 using test::same_bits;
 using test::same_bytes;
@@ -226,20 +227,6 @@ TEST(TessExecutor, OutputDoesNotDependOnThreadsOrGrain) {
   });
   EXPECT_EQ(chunks, 13u);
   EXPECT_TRUE(same_bytes(joined, ref));
-}
-
-// Edge points of one patch: dump records whose gl_TessCoord is 0 for the corner opposite the
-// shared edge, keyed by their position bits.
-std::vector<std::tuple<glm::vec3, glm::vec3>> edge_points(const std::vector<TessDumpRecord>& dump,
-                                                          std::uint32_t patch, int opposite) {
-  std::vector<std::tuple<glm::vec3, glm::vec3>> pts;
-  for (const auto& r : dump)
-    if (r.patch_id == patch && r.tess_coord[opposite] == 0.0f) pts.emplace_back(r.position, r.normal);
-  std::sort(pts.begin(), pts.end(), [](const auto& a, const auto& b) {
-    const glm::vec3 &p = std::get<0>(a), &q = std::get<0>(b);
-    return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
-  });
-  return pts;
 }
 
 TEST(TessExecutor, SharedEdgeIsBitIdenticalInBothPatches) {

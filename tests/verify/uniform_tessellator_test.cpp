@@ -118,7 +118,7 @@ TEST(UniformTessellator, SceneKeysRefuseWhatIsNotPlumbed) {
                 .find("tessellation.tessellator: \"uniform\" works with shaders.program \"builtin\" only"),
             std::string::npos);
   EXPECT_NE(message({"tessellation.tessellator=grid"})
-                .find("tessellation.tessellator: expected one of primitive_generator, uniform, got \"grid\""),
+                .find("tessellation.tessellator: expected one of primitive_generator, uniform, refinement_pattern, got \"grid\""),
             std::string::npos);
   EXPECT_EQ(load_scene("", {}).tessellation.tessellator, Tessellator::PrimitiveGenerator);
 }
