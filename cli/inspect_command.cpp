@@ -17,6 +17,7 @@
 #include "common/error.h"
 #include "pipeline/camera.h"
 #include "pipeline/inspect.h"
+#include "pipeline/inspect_fragments.h"
 #include "pipeline/inspect_pixel.h"
 #include "pipeline/mesh_source.h"
 #include "pipeline/scene_loader.h"
@@ -28,7 +29,7 @@ namespace {
 
 struct InspectArgs {
   std::string scene, coord, json, pixel;
-  bool trace = false;
+  bool trace = false, no_fragments = false;
   std::string trace_stages = "all";
   int threads = 0;
   std::vector<std::string> sets;
@@ -134,7 +135,7 @@ int rings(const InspectResult& r) {
   return 0;
 }
 
-void print_text(const Scene& scene, const InspectResult& r, double seconds) {
+void print_text(const Scene& scene, const InspectResult& r, const std::optional<PatchFragments>& frags, double seconds) {
   std::printf("tessref inspect: %s, patch %zu of %zu (0..%zu); programs: %s\n\n", scene.source.c_str(), r.patch,
               r.patch_count, r.patch_count - 1, r.program.c_str());
   const bool builtin = r.program.rfind("builtin", 0) == 0;
@@ -210,6 +211,20 @@ void print_text(const Scene& scene, const InspectResult& r, double seconds) {
                 r.traced_twins ? " of the built-in programs' GLSL twins" : "");
     std::fputs(format_traces(r.traces).c_str(), stdout);
   }
+  if (frags) {
+    std::printf("\n%d. Fragments: %zu from the patch's %zu triangles, %zu of them visible in the image", r.traces.empty() ? 5 : 6,
+                frags->count, frags->per_triangle.size(), frags->visible);
+    if (frags->count)
+      std::printf("; pixels x %d..%d, y %d..%d (from the top row)\n", frags->min_x, frags->max_x, frags->min_y, frags->max_y);
+    else
+      std::printf(" (culled, clipped or between pixel centres)\n");
+    if (frags->nearest) {
+      const PatchFragment& f = *frags->nearest;
+      std::printf("  nearest to gl_TessCoord %s: pixel (%d, %d), triangle %zu, gl_TessCoord %s, %s; tessref inspect --pixel %d,%d\n",
+                  vec(r.points.size() == 1 ? r.points[0].tess_coord : glm::vec3(1.0f / 3.0f)).c_str(), f.x, f.y,
+                  f.triangle, vec(f.tess_coord).c_str(), f.visible ? "visible" : "hidden", f.x, f.y);
+    }
+  }
   std::printf("\n(%.1f ms)\n", seconds * 1e3);
 }
 
@@ -244,7 +259,7 @@ nlohmann::json traces_json(const std::vector<InspectTrace>& traces) {
   return out;
 }
 
-nlohmann::json to_json(const Scene& scene, const InspectResult& r) {
+nlohmann::json to_json(const Scene& scene, const InspectResult& r, const std::optional<PatchFragments>& frags) {
   using nlohmann::json;
   json corners = json::array();
   const int vs_slots = used_slots(r.corners);
@@ -316,6 +331,14 @@ nlohmann::json to_json(const Scene& scene, const InspectResult& r) {
                {{"num_varyings", r.num_varyings},
                 {"dump_varyings", {r.dump_varyings[0], r.dump_varyings[1]}},
                 {"points", points}}}};
+  if (frags) {
+    json f{{"count", frags->count}, {"visible", frags->visible}, {"per_triangle", frags->per_triangle}};
+    if (frags->count) f["pixels"] = {{"min_x", frags->min_x}, {"max_x", frags->max_x}, {"min_y", frags->min_y}, {"max_y", frags->max_y}};
+    if (frags->nearest)
+      f["nearest"] = {{"x", frags->nearest->x}, {"y", frags->nearest->y}, {"triangle", frags->nearest->triangle},
+                      {"gl_TessCoord", jvec(frags->nearest->tess_coord)}, {"visible", frags->nearest->visible}};
+    out["fragments"] = f;
+  }
   if (!r.traces.empty()) out["source_trace"] = {{"glsl_twins", r.traced_twins}, {"invocations", traces_json(r.traces)}};
   return out;
 }
@@ -462,9 +485,15 @@ void run_inspect(const InspectArgs& a) {
   }
   if (a.trace) request.trace = parse_trace_stages(a.trace_stages);
   const InspectResult r = inspect_patch(scene, mesh, request);
+  std::optional<PatchFragments> frags;
+  if (!a.no_fragments) {
+    const std::optional<glm::vec3> near =
+        r.points.size() == 1 ? std::optional<glm::vec3>(r.points[0].tess_coord) : std::nullopt;
+    frags = patch_fragments(scene, mesh, r.patch, r.vertices_per_primitive == 3 ? r.primitives : 0, near, Parallel(a.threads));
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (!a.json.empty()) return write_json(a.json, to_json(scene, r));
-  print_text(scene, r, seconds);
+  if (!a.json.empty()) return write_json(a.json, to_json(scene, r, frags));
+  print_text(scene, r, frags, seconds);
 }
 
 }  // namespace
@@ -480,11 +509,13 @@ void add_inspect_command(CLI::App& app) {
   cmd->add_option("--pixel", args->pixel,
                   "instead of a patch: the fragments the draw made at pixel X,Y (X from the left, Y down from the top "
                   "row, as the image file), with their patches and the depth test's verdicts");
-  cmd->add_option("--threads", args->threads, "worker threads for --pixel's draw (0: all hardware threads)")
+  cmd->add_option("--threads", args->threads, "worker threads for the draw of --pixel and of --patch's fragments (0: all hardware threads)")
       ->check(kInteger);
   cmd->add_option("--coord", args->coord, "evaluate the TES at gl_TessCoord U,V[,W] (triangles: W = (1 - U) - V if left out)");
   cmd->add_option("--vertex", args->vertex, "the patch's K-th generated domain point (from 0)")->check(kInteger);
   cmd->add_option("--json", args->json, "write the result as JSON to FILE instead of printing text");
+  cmd->add_flag("--no-fragments", args->no_fragments,
+                "with --patch: skip drawing the scene to find the fragments the patch became");
   cmd->add_flag("--trace", args->trace,
                 "also show the source-level trace: every GLSL line each invocation executed, with its values (the "
                 "built-in programs through their GLSL twins)");
