@@ -5,30 +5,15 @@
 
 #include <gtest/gtest.h>
 
-#include "pipeline/camera.h"
 #include "pipeline/inspect_fragments.h"
 #include "pipeline/inspect_pixel.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/scene_loader.h"
+#include "test_util.h"
 
 namespace tessref {
 namespace {
 
-struct Loaded {
-  Scene scene;
-  Mesh mesh;
-};
-
-Loaded load(const std::vector<std::string>& sets) {
-  Loaded l{load_scene("", sets), {}};
-  std::vector<std::string> warnings;
-  l.mesh = build_mesh(l.scene.mesh, warnings);
-  l.scene.camera = fitted_camera(l.scene, l.mesh);
-  return l;
-}
-
 TEST(InspectFragments, TheNearestFragmentIsWhatThePixelQueryFinds) {
-  const Loaded l = load({"image.width=256", "image.height=256"});
+  const test::LoadedScene l = test::load_default_scene({"image.width=256", "image.height=256"});
   const glm::vec3 near(0.2f, 0.3f, 0.5f);
   const PatchFragments one = patch_fragments(l.scene, l.mesh, 70, 253, near, Parallel(1));
   const PatchFragments two = patch_fragments(l.scene, l.mesh, 70, 253, near, Parallel(2));
@@ -54,7 +39,7 @@ TEST(InspectFragments, TheNearestFragmentIsWhatThePixelQueryFinds) {
 
 TEST(InspectFragments, HiddenFragmentsAreCountedApart) {
   // Without culling, the torus's far side is drawn and lost to the near side.
-  const Loaded l = load({"image.width=256", "image.height=256", "cull_back_faces=false"});
+  const test::LoadedScene l = test::load_default_scene({"image.width=256", "image.height=256", "cull_back_faces=false"});
   std::size_t hidden = 0, count = 0;
   for (std::size_t patch = 0; patch < 256; patch += 16) {
     const PatchFragments r = patch_fragments(l.scene, l.mesh, patch, 253, std::nullopt, Parallel(2));

@@ -11,30 +11,14 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "pipeline/camera.h"
 #include "pipeline/inspect.h"
 #include "pipeline/inspect_pixel.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/scene_loader.h"
 #include "test_util.h"
 
 namespace tessref {
 namespace {
 
 using ::testing::HasSubstr;
-
-struct Loaded {
-  Scene scene;
-  Mesh mesh;
-};
-
-Loaded load(const std::vector<std::string>& sets) {
-  Loaded l{load_scene("", sets), {}};
-  std::vector<std::string> warnings;
-  l.mesh = build_mesh(l.scene.mesh, warnings);
-  l.scene.camera = fitted_camera(l.scene, l.mesh);
-  return l;
-}
 
 // The traced invocation's stores, the last one to each target.
 std::map<std::string, shader::TraceValue> stores(const InspectTrace& t) {
@@ -94,7 +78,7 @@ void expect_trace_matches(const InspectResult& r) {
 }
 
 TEST(InspectTrace, GlslStoresAreTheValuesTheDrawHandsOn) {
-  const Loaded l = load({"shaders.program=twins"});
+  const test::LoadedScene l = test::load_default_scene({"shaders.program=twins"});
   for (std::size_t patch : {0u, 17u, 131u}) {
     InspectRequest q;
     q.patch = patch;
@@ -109,7 +93,7 @@ TEST(InspectTrace, GlslStoresAreTheValuesTheDrawHandsOn) {
 
 TEST(InspectTrace, BuiltinProgramsAreTracedThroughTheirTwinsBitForBit) {
   for (const char* mode : {"quadratic", "analytic", "linear"}) {
-    const Loaded l = load({std::string("tessellation.normal_mode=") + mode});
+    const test::LoadedScene l = test::load_default_scene({std::string("tessellation.normal_mode=") + mode});
     InspectRequest q;
     q.patch = 200;
     q.coord = glm::vec3(0.25f, 0.5f, 0.25f);
@@ -122,7 +106,7 @@ TEST(InspectTrace, BuiltinProgramsAreTracedThroughTheirTwinsBitForBit) {
 }
 
 TEST(InspectTrace, StagesCanBeChosenAndAllPointsTraceNoEvaluation) {
-  const Loaded l = load({"shaders.program=twins"});
+  const test::LoadedScene l = test::load_default_scene({"shaders.program=twins"});
   InspectRequest q;
   q.patch = 3;
   q.trace = parse_trace_stages("control,evaluation");
@@ -135,8 +119,8 @@ TEST(InspectTrace, StagesCanBeChosenAndAllPointsTraceNoEvaluation) {
 // --pixel on a GLSL program: the same fragments as the built-in programs draw (the twins agree
 // bit for bit), their varyings, and a fragment shader trace whose colour store is the fragment's.
 TEST(InspectTrace, PixelQueriesRunGlslProgramsAndTraceTheirFragmentShader) {
-  const Loaded builtin = load({});
-  const Loaded twins = load({"shaders.program=twins"});
+  const test::LoadedScene builtin = test::load_default_scene({});
+  const test::LoadedScene twins = test::load_default_scene({"shaders.program=twins"});
   const Parallel parallel(2);
   for (const auto& [x, y] : {std::pair{512, 400}, std::pair{300, 620}}) {
     const PixelInspectResult b = inspect_pixel(builtin.scene, builtin.mesh, x, y, parallel, true);

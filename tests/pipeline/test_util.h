@@ -5,10 +5,15 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include "pipeline/camera.h"
+#include "pipeline/mesh_source.h"
+#include "pipeline/scene_loader.h"
 
 namespace tessref::test {
 
@@ -57,6 +62,20 @@ inline CliRun run_cli(const std::string& args) {
 inline std::string read_file(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// The default scene with --set overrides, its mesh built and its camera fitted, as render and
+// inspect prepare them.
+struct LoadedScene {
+  Scene scene;
+  Mesh mesh;
+};
+inline LoadedScene load_default_scene(const std::vector<std::string>& sets) {
+  LoadedScene l{load_scene("", sets), {}};
+  std::vector<std::string> warnings;
+  l.mesh = build_mesh(l.scene.mesh, warnings);
+  l.scene.camera = fitted_camera(l.scene, l.mesh);
+  return l;
 }
 
 }  // namespace tessref::test
