@@ -10,6 +10,7 @@
 #include "common/parallel.h"
 #include "pipeline/builtin_programs.h"
 #include "pipeline/glsl_scene.h"
+#include "stages/glsl/glsl_stages.h"
 #include "pipeline/vertex_tags.h"
 
 namespace tessref {
@@ -172,7 +173,8 @@ InspectResult inspect_patch(const Scene& scene, const Mesh& mesh, const InspectR
   r.num_varyings = std::clamp(tes.num_varyings(), 0, kMaxVaryings);
   r.dump_varyings = tes.dump_varyings();
   r.tcs_vertices = tap.output_vertices();
-  r.tcs_phases = tap.phases();
+  const auto* glsl_tcs = dynamic_cast<const glsl::GlslControl*>(&programs.tcs());
+  r.tcs_phases = glsl_tcs ? glsl_tcs->gl_phases() : tap.phases();
   std::vector<TessDumpRecord> records;
   TessOptions options;
   options.dump = &records;

@@ -133,6 +133,13 @@ void GlslControl::run(int, int, const Patch&, PatchOutput&) const {
   // Never called: run_phase runs all invocations of a patch together.
 }
 
+int GlslControl::gl_phases() const {
+  int phases = 1;
+  for (const shader::Block& b : sp_.exe->module().blocks)
+    for (const shader::Instruction& ins : b.body) phases += ins.opcode == spv::OpControlBarrier;
+  return phases;
+}
+
 void GlslControl::run_phase(int, const Patch& in, PatchOutput& out) const {
   const Patch* i = &in;
   PatchOutput* o = &out;

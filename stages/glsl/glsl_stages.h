@@ -15,6 +15,10 @@ class GlslControl final : public TessControlProgram {
   void run(int phase, int invocation_id, const Patch& in, PatchOutput& out) const override;
   void run_phase(int phase, const Patch& in, PatchOutput& out) const override;
   void run_patches(const Patch* const* in, PatchOutput* const* out, int count) const override;
+  // GL's phases of the shader (its barrier() calls + 1; GLSL allows barrier() only in main(),
+  // outside control flow, so each runs once). The executor runs them in lock step, in one pass,
+  // which is why phases() stays 1.
+  int gl_phases() const;
 
  private:
   void read_outputs(shader::Invocations& inv, int group, PatchOutput& out) const;

@@ -86,6 +86,7 @@ TEST(InspectTrace, GlslStoresAreTheValuesTheDrawHandsOn) {
     q.trace = kTraceAll;
     const InspectResult r = inspect_patch(l.scene, l.mesh, q);
     EXPECT_FALSE(r.traced_twins);
+    EXPECT_EQ(r.tcs_phases, 2);  // pn_triangles.tesc's one barrier(), as the built-in program's 2 phases
     SCOPED_TRACE("patch " + std::to_string(patch));
     expect_trace_matches(r);
   }
