@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/stats_images.h"
 #include "common/error.h"
 #include "pipeline/mesh_source.h"
 #include "pipeline/output_files.h"
@@ -24,6 +25,7 @@ struct StatsArgs {
   int table = 0;  // 0: all four
   double nagata_eps = 0.0;
   int threads = 0;
+  StatsImageArgs image;  // --image: cli/stats_images.h
 };
 
 void print(const char* title, const std::string& table) {
@@ -75,15 +77,21 @@ nlohmann::json run_scene(const StatsArgs& a, const Parallel& parallel) {
 }
 
 void run(const StatsArgs& a) {
+  check_stats_image_args(a.image, a.table != 0);
   // A SCENE or a --set (over the default scene) asks for the scene's mesh.
   const bool scene_mode = !a.scene.empty() || !a.sets.empty();
   if (scene_mode && a.table != 0)
     throw InputError("--table prints one of seed 004's tables; it does not combine with a SCENE or --set");
   OutputFiles outputs;
   std::filesystem::path json_tmp;
+  std::filesystem::path image_tmp;
+  if (!a.image.kind.empty()) image_tmp = outputs.add("-o", a.image.output);
   if (!a.json.empty()) json_tmp = outputs.add("--json", a.json);
   const Parallel parallel(a.threads);
-  const nlohmann::json report = scene_mode ? run_scene(a, parallel) : run_tables(a, parallel);
+  const nlohmann::json report = !a.image.kind.empty() ? run_stats_image(a.scene, a.sets, a.image, parallel, image_tmp)
+                                : scene_mode           ? run_scene(a, parallel)
+                                                       : run_tables(a, parallel);
+  if (!a.image.kind.empty() && a.json.empty()) outputs.commit();
   if (!a.json.empty()) {
     std::ofstream out(json_tmp);
     out << report.dump(2) << "\n";
@@ -113,6 +121,7 @@ void add_stats_command(CLI::App& app) {
   cmd->add_option("--threads", args->threads, "worker threads (0: all); the results do not depend on it")
       ->check(kInteger)
       ->check(CLI::Range(0, 4096));
+  add_stats_image_options(cmd, args->image);
   cmd->callback([args] { run(*args); });
 }
 

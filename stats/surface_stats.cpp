@@ -19,6 +19,9 @@ schemes::CubicNet<double> widen(const schemes::CubicNet<float>& f) {
   return d;
 }
 
+
+}  // namespace
+
 double gaussian_curvature(const schemes::SurfacePoint<double>& s) {
   const glm::dvec3 c = glm::cross(s.du, s.dv);
   const double c2 = glm::dot(c, c);
@@ -28,8 +31,6 @@ double gaussian_curvature(const schemes::SurfacePoint<double>& s) {
   // E G - F^2 = |du x dv|^2 (Lagrange's identity).
   return (L * N - M * M) / c2;
 }
-
-}  // namespace
 
 std::vector<glm::dvec2> triangle_grid(int segments, bool interior_only) {
   if (segments < (interior_only ? 3 : 1))

@@ -42,6 +42,10 @@ enum class AnalyticSurface {
 std::vector<double> distance_samples(const std::vector<schemes::CubicNet<float>>& patches,
                                      AnalyticSurface surface, int segments, const Parallel& parallel);
 
+// Gaussian curvature K = (LN - M^2) / (EG - F^2) of a patch point from its exact derivatives;
+// NaN where du x dv vanishes.
+double gaussian_curvature(const schemes::SurfacePoint<double>& s);
+
 // Table 5: Gaussian curvature K = (LN - M^2) / (EG - F^2) from the patch's exact first and
 // second derivatives (in double, from the single-precision nets) at the interior grid points.
 // Points where du x dv vanishes give no sample.
