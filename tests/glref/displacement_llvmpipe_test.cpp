@@ -24,12 +24,7 @@ ImageComparison compare(GlContext& ctx, const std::string& name, std::vector<std
                         std::uint64_t& fragments) {
   sets.insert(sets.end(), {R"(tessellation.displacement={"amplitude": 0.03, "frequency": 30})",
                            "image.width=512", "image.height=512"});
-  const Scene scene = load_scene("", sets);
-  std::vector<std::string> warnings;
-  const Mesh mesh = build_mesh(scene.mesh, warnings);
-  const RenderResult ours = render_scene(scene, mesh, Parallel());
-  SceneRenderer renderer(ctx, scene, mesh);
-  const Framebuffer gl = renderer.render();
+  const auto [ours, gl] = testing::draw_both(ctx, sets);
   ImageComparison c = compare_framebuffers(ours.framebuffer, gl, 2, true);
   std::printf("[ figures  ] displaced %s: %s\n", name.c_str(), c.summary().c_str());
   if (c.within_tolerance != c.pixels || c.coverage_mismatch != 0) {

@@ -45,12 +45,7 @@ std::string joined(const std::vector<std::string>& sets) {
 }
 
 void expect_images_match(GlContext& ctx, const std::string& name, const std::vector<std::string>& sets) {
-  const Scene scene = load_scene("", sets);
-  std::vector<std::string> warnings;
-  const Mesh mesh = build_mesh(scene.mesh, warnings);
-  const RenderResult ours = render_scene(scene, mesh, Parallel());
-  SceneRenderer renderer(ctx, scene, mesh);
-  const Framebuffer gl = renderer.render();
+  const auto [ours, gl] = testing::draw_both(ctx, sets);
   const ImageComparison c = compare_framebuffers(ours.framebuffer, gl, kTolerance, true);
   std::printf("[ figures  ] %s: %s\n", name.c_str(), c.summary().c_str());
   if (c.within_tolerance != c.pixels || c.coverage_mismatch != 0) {

@@ -12,36 +12,20 @@
 #include "pipeline/mesh_source.h"
 #include "pipeline/render.h"
 #include "pipeline/scene_loader.h"
+#include "twins_test_util.h"
 
 namespace tessref {
 namespace {
 
 const std::string kDisplace = R"(tessellation.displacement={"amplitude": 0.03, "frequency": 30})";
 
-struct Frame {
-  Framebuffer fb;
-  std::vector<TessDumpRecord> dump;
-};
+using test::differing_records;
+using test::Frame;
 
 Frame render(std::vector<std::string> sets, int threads = 2) {
   sets.push_back("image.width=192");
   sets.push_back("image.height=192");
-  const Scene scene = load_scene("", sets);
-  std::vector<std::string> warnings;
-  const Mesh mesh = build_mesh(scene.mesh, warnings);
-  Frame f;
-  DrawOptions options;
-  options.dump_tess = [&](const std::vector<TessDumpRecord>& r) { f.dump.insert(f.dump.end(), r.begin(), r.end()); };
-  f.fb = render_scene(scene, mesh, Parallel(threads), options).framebuffer;
-  return f;
-}
-
-std::size_t differing_records(const Frame& a, const Frame& b) {
-  EXPECT_EQ(a.dump.size(), b.dump.size());
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < std::min(a.dump.size(), b.dump.size()); ++i)
-    n += std::memcmp(&a.dump[i], &b.dump[i], sizeof(TessDumpRecord)) != 0;
-  return n;
+  return test::render_frame(sets, threads);
 }
 
 std::size_t coverage_mismatch(const Frame& a, const Frame& b) {

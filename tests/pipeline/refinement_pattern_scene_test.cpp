@@ -18,28 +18,16 @@
 #include "pipeline/render.h"
 #include "pipeline/scene_loader.h"
 #include "test_util.h"
+#include "twins_test_util.h"
 
 namespace tessref {
 namespace {
 
-struct Frame {
-  Framebuffer fb;
-  std::vector<TessDumpRecord> dump;
-  DrawStats stats;
-};
+using test::Frame;
 
 Frame render(std::vector<std::string> sets) {
   sets.insert(sets.end(), {"image.width=128", "image.height=128"});
-  const Scene scene = load_scene("", sets);
-  std::vector<std::string> warnings;
-  const Mesh mesh = build_mesh(scene.mesh, warnings);
-  Frame f;
-  DrawOptions options;
-  options.dump_tess = [&](const std::vector<TessDumpRecord>& r) { f.dump.insert(f.dump.end(), r.begin(), r.end()); };
-  RenderResult r = render_scene(scene, mesh, Parallel(2), options);
-  f.fb = std::move(r.framebuffer);
-  f.stats = r.stats;
-  return f;
+  return test::render_frame(sets);
 }
 
 std::vector<std::string> rp(float level) {

@@ -16,6 +16,7 @@
 #include "pipeline/scene_loader.h"
 #include "pipeline/vertex_tags.h"
 #include "test_util.h"
+#include "twins_test_util.h"
 
 namespace tessref {
 namespace {
@@ -23,35 +24,18 @@ namespace {
 const std::vector<std::string> kIcosphere = {"mesh.type=icosphere", "mesh.icosphere.refinements=1",
                                              "image.width=160", "image.height=160"};
 
-struct Frame {
-  Framebuffer fb;
-  std::vector<TessDumpRecord> dump;
-};
+using test::differing_records;
+using test::Frame;
 
 Frame render(std::vector<std::string> sets) {
   sets.insert(sets.end(), kIcosphere.begin(), kIcosphere.end());
-  const Scene scene = load_scene("", sets);
-  std::vector<std::string> warnings;
-  const Mesh mesh = build_mesh(scene.mesh, warnings);
-  Frame f;
-  DrawOptions options;
-  options.dump_tess = [&](const std::vector<TessDumpRecord>& r) { f.dump.insert(f.dump.end(), r.begin(), r.end()); };
-  f.fb = render_scene(scene, mesh, Parallel(2), options).framebuffer;
-  return f;
+  return test::render_frame(sets);
 }
 
 Mesh icosphere() {
   const Scene scene = load_scene("", kIcosphere);
   std::vector<std::string> warnings;
   return build_mesh(scene.mesh, warnings);
-}
-
-std::size_t differing(const Frame& a, const Frame& b) {
-  EXPECT_EQ(a.dump.size(), b.dump.size());
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < std::min(a.dump.size(), b.dump.size()); ++i)
-    n += std::memcmp(&a.dump[i], &b.dump[i], sizeof(TessDumpRecord)) != 0;
-  return n;
 }
 
 std::string number(float f) { return std::to_string(double(f)); }
@@ -80,9 +64,9 @@ TEST(ScalarTaggedPnScene, UntaggedOrNeutralIsPnBitForBit) {
   for (const char* mode : {"linear", "quadratic", "analytic"}) {
     const std::string m = std::string("tessellation.normal_mode=") + mode;
     const Frame pn = render({m});
-    EXPECT_EQ(differing(pn, render({m, "tessellation.scheme=scalar_tagged_pn"})), 0u) << mode;
+    EXPECT_EQ(differing_records(pn, render({m, "tessellation.scheme=scalar_tagged_pn"})), 0u) << mode;
     const Frame tagged = render({m, "tessellation.scheme=scalar_tagged_pn", "tessellation.tags=" + neutral.string()});
-    EXPECT_EQ(differing(pn, tagged), 0u) << mode;
+    EXPECT_EQ(differing_records(pn, tagged), 0u) << mode;
     EXPECT_EQ(std::memcmp(pn.fb.color.data(), tagged.fb.color.data(), pn.fb.color.size() * sizeof(pn.fb.color[0])), 0);
   }
 }
@@ -103,9 +87,9 @@ TEST(ScalarTaggedPnScene, TwinsOnTheExecutorMatchWithACrease) {
     twin_sets.push_back("shaders.program=twins");
     const Frame twins = render(twin_sets);
     ASSERT_FALSE(cpp.dump.empty());
-    EXPECT_EQ(differing(cpp, twins), 0u) << mode;
+    EXPECT_EQ(differing_records(cpp, twins), 0u) << mode;
     // The tags did something: the patches around the three tagged vertices moved.
-    EXPECT_GT(differing(cpp, render({std::string("tessellation.normal_mode=") + mode})), 100u) << mode;
+    EXPECT_GT(differing_records(cpp, render({std::string("tessellation.normal_mode=") + mode})), 100u) << mode;
   }
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Helpers of the tests that run the built-in programs' GLSL twins on tessref's executor against
-// the C++ programs (shaders.program = twins against builtin).
+// the C++ programs (shaders.program = twins against builtin), and of the scene tests that compare
+// draws by their tessellation dump.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,9 +22,9 @@ struct Frame {
   DrawStats stats;
 };
 
-inline Frame render(std::vector<std::string> sets, int threads = 2) {
-  sets.push_back("image.width=256");
-  sets.push_back("image.height=256");
+// The default scene with the --set overrides `sets`, drawn on `threads` threads: its image, every
+// TES invocation's record and the draw's statistics.
+inline Frame render_frame(const std::vector<std::string>& sets, int threads = 2) {
   const Scene scene = load_scene("", sets);
   std::vector<std::string> warnings;
   const Mesh mesh = build_mesh(scene.mesh, warnings);
@@ -34,6 +35,12 @@ inline Frame render(std::vector<std::string> sets, int threads = 2) {
   f.fb = std::move(r.framebuffer);
   f.stats = r.stats;
   return f;
+}
+
+inline Frame render(std::vector<std::string> sets, int threads = 2) {
+  sets.push_back("image.width=256");
+  sets.push_back("image.height=256");
+  return render_frame(sets, threads);
 }
 
 inline std::vector<std::string> with(std::vector<std::string> sets, const std::string& more) {
@@ -59,6 +66,15 @@ inline void expect_equivalent(const Frame& cpp, const Frame& twins, const std::s
   EXPECT_EQ(coverage_mismatch, 0u) << what;
   EXPECT_EQ(over, 0u) << what << ": " << differ << " pixels differ at all";
   EXPECT_EQ(cpp.stats.raster.fragments_shaded, twins.stats.raster.fragments_shaded) << what;
+}
+
+// How many dump records differ in their bytes (the two dumps expected the same length).
+inline std::size_t differing_records(const Frame& a, const Frame& b) {
+  EXPECT_EQ(a.dump.size(), b.dump.size());
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < std::min(a.dump.size(), b.dump.size()); ++i)
+    n += std::memcmp(&a.dump[i], &b.dump[i], sizeof(TessDumpRecord)) != 0;
+  return n;
 }
 
 // gl_TessCoord and patch ids identical; positions and normals bit for bit (0 ULP: the twins follow

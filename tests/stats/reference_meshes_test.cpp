@@ -32,6 +32,17 @@ void expect_outward(const Mesh& m) {
   }
 }
 
+struct Counts {
+  std::size_t vertices, triangles, edges;
+};
+
+void expect_counts_and_outward(const Mesh& m, const Counts& want) {
+  EXPECT_EQ(m.vertex_count(), want.vertices);
+  EXPECT_EQ(m.triangle_count(), want.triangles);
+  EXPECT_EQ(edge_count(m), want.edges);
+  expect_outward(m);
+}
+
 TEST(ReferenceMeshes, SphereCountsForEveryRefinement) {
   for (int i = 0; i <= 3; ++i) {
     const Mesh m = make_icosphere(i, 1.0f);
@@ -44,10 +55,8 @@ TEST(ReferenceMeshes, SphereCountsForEveryRefinement) {
 TEST(ReferenceMeshes, TorusGridFromTheInnerEquator) {
   for (int j : {3, 5, 10, 19}) {
     const Mesh m = make_seed004_torus(j);
-    EXPECT_EQ(m.vertex_count(), std::size_t(j * j));
-    EXPECT_EQ(m.triangle_count(), std::size_t(2 * j * j));
-    EXPECT_EQ(edge_count(m), std::size_t(3 * j * j));
-    expect_outward(m);
+    const std::size_t n = std::size_t(j * j);
+    expect_counts_and_outward(m, {.vertices = n, .triangles = 2 * n, .edges = 3 * n});
     for (const glm::vec3& p : m.positions) EXPECT_NEAR(seed004_torus_distance(p), 0.0f, 2e-7f);
   }
   // Vertex 0 at u = 0, v = pi: the inner equator, 0.5 from the axis.
@@ -84,10 +93,7 @@ TEST(ReferenceMeshes, FaceAverageIsTheUnweightedMean) {
 
 TEST(ReferenceMeshes, RoundedCube) {
   const Mesh m = make_rounded_cube();
-  EXPECT_EQ(m.vertex_count(), 30u);
-  EXPECT_EQ(m.triangle_count(), 56u);
-  EXPECT_EQ(edge_count(m), 84u);
-  expect_outward(m);
+  expect_counts_and_outward(m, {.vertices = 30, .triangles = 56, .edges = 84});
   EXPECT_THROW(make_rounded_cube(1.0f), std::invalid_argument);
   float extent = 0.0f;
   for (const glm::vec3& p : m.positions) extent = std::max(extent, p.x);
@@ -95,11 +101,7 @@ TEST(ReferenceMeshes, RoundedCube) {
 }
 
 TEST(ReferenceMeshes, Vase) {
-  const Mesh m = make_seed004_vase();
-  EXPECT_EQ(m.vertex_count(), 241u);
-  EXPECT_EQ(m.triangle_count(), 460u);
-  EXPECT_EQ(edge_count(m), 700u);
-  expect_outward(m);
+  expect_counts_and_outward(make_seed004_vase(), {.vertices = 241, .triangles = 460, .edges = 700});
 }
 
 TEST(ReferenceMeshes, NamedInScenes) {

@@ -21,6 +21,12 @@ void expect_paper_cosines(const Summary& s, double mean, double std_dev, double 
   EXPECT_NEAR(s.max, max, 1e-6);
 }
 
+void expect_shapes(const EdgeShapes& s, const EdgeShapes& want) {
+  EXPECT_EQ(s.convex, want.convex);
+  EXPECT_EQ(s.concave, want.concave);
+  EXPECT_EQ(s.inflection, want.inflection);
+}
+
 TEST(Seed004Table4, Sphere) {
   const MeshStats s = row(seed004_table4(), "Sphere").stats;
   EXPECT_EQ(s.vertices, 162u);
@@ -29,12 +35,8 @@ TEST(Seed004Table4, Sphere) {
   EXPECT_EQ(s.normal_cosine.count, 960u);  // every triangle corner
   expect_paper_cosines(s.normal_cosine, 0.98479, 0.00113563, 0.982247, 0.985606);
   // The paper's 320/0/160: its counting; every edge of a sphere with radial normals is convex.
-  EXPECT_EQ(s.seed004_shapes.convex, 320);
-  EXPECT_EQ(s.seed004_shapes.concave, 0);
-  EXPECT_EQ(s.seed004_shapes.inflection, 160);
-  EXPECT_EQ(s.shapes.convex, 480);
-  EXPECT_EQ(s.shapes.concave, 0);
-  EXPECT_EQ(s.shapes.inflection, 0);
+  expect_shapes(s.seed004_shapes, {.convex = 320, .concave = 0, .inflection = 160});
+  expect_shapes(s.shapes, {.convex = 480, .concave = 0, .inflection = 0});
 }
 
 TEST(Seed004Table4, Torus) {
@@ -43,14 +45,10 @@ TEST(Seed004Table4, Torus) {
   EXPECT_EQ(s.edges, 300u);
   EXPECT_EQ(s.triangles, 200u);
   expect_paper_cosines(s.normal_cosine, 0.927627, 0.0169889, 0.901404, 0.951429);
-  EXPECT_EQ(s.seed004_shapes.convex, 135);
-  EXPECT_EQ(s.seed004_shapes.concave, 25);
-  EXPECT_EQ(s.seed004_shapes.inflection, 140);
+  expect_shapes(s.seed004_shapes, {.convex = 135, .concave = 25, .inflection = 140});
   // Each edge once: the 100 tube edges are convex, the 100 ring edges convex outside and concave
   // on the inner half, the diagonals convex or S-shaped.
-  EXPECT_EQ(s.shapes.convex, 210);
-  EXPECT_EQ(s.shapes.concave, 50);
-  EXPECT_EQ(s.shapes.inflection, 40);
+  expect_shapes(s.shapes, {.convex = 210, .concave = 50, .inflection = 40});
   EXPECT_EQ(s.boundary_edges, 0u);
 }
 

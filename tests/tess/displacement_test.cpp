@@ -15,11 +15,7 @@
 namespace tessref {
 namespace {
 
-using test::Lcg;
-using test::make_patch;
-using test::run_tcs;
-using test::same_bits;
-using test::vertex;
+using namespace test;  // tess_test_util.h
 
 glm::vec3 varying3(const ClipVertex& v, int at) { return {v.varyings[at], v.varyings[at + 1], v.varyings[at + 2]}; }
 

@@ -19,15 +19,7 @@
 namespace tessref {
 namespace {
 
-using test::edge_points;
-using test::Lcg;
-using test::make_patch;
-using test::run_tcs;
-using test::same_bits;
-using test::vertex;
-
-constexpr PnNormalMode kModes[] = {PnNormalMode::Linear, PnNormalMode::Quadratic,
-                                   PnNormalMode::QuadraticCorrected, PnNormalMode::Analytic};
+using namespace test;  // tess_test_util.h
 
 enum class Scheme { Phong, Nlsa, Nagata };
 constexpr Scheme kSchemes[] = {Scheme::Phong, Scheme::Nlsa, Scheme::Nagata};
@@ -81,7 +73,7 @@ TEST(QuadraticSchemes, InterpolateCornersAndTheirNormals) {
   for (int trial = 0; trial < 20; ++trial) {
     const Tri t = random_tri(rng);
     for (Scheme s : kSchemes)
-      for (PnNormalMode mode : kModes) {
+      for (PnNormalMode mode : kPnNormalModes) {
         // Nagata without threshold: no edge straightened, every tangent plane kept.
         const PatchOutput out = run_tcs(*make_tcs(s, mode, 4.0f, 0.0f), patch_of(t));
         for (int c = 0; c < 3; ++c) {
@@ -192,16 +184,12 @@ TEST(QuadraticSchemes, SharedEdgesAreBitIdenticalInBothPatches) {
     for (Scheme s : kSchemes)
       for (TessSpacing spacing : {TessSpacing::Equal, TessSpacing::FractionalOdd, TessSpacing::FractionalEven})
         for (float level : {1.0f, 3.7f, 8.0f})
-          for (PnNormalMode mode : kModes) {
+          for (PnNormalMode mode : kPnNormalModes) {
             const auto tcs = make_tcs(s, mode, level);
             QuadraticTes tes;
             tes.normal_mode = mode;
             tes.spacing = spacing;
-            std::vector<TessDumpRecord> dump;
-            TessOptions opt;
-            opt.dump = &dump;
-            TriangleBatch out;
-            tessellate(TessDrawInput{vs, idx, 3}, 0, 4, *tcs, tes, opt, Parallel(2), out);
+            const auto dump = tessellate_dump(TessDrawInput{vs, idx, 3}, 4, *tcs, tes);
             const auto ref = edge_points(dump, 0, opposite[0]);
             ASSERT_GE(ref.size(), 2u);
             const std::string what = name(s) + " " + to_string(spacing) + " level " +
@@ -225,7 +213,7 @@ TEST(QuadraticSchemes, SharedEdgesAreBitIdenticalInBothPatches) {
 TEST(QuadraticSchemes, BatchEqualsEvaluateBitForBit) {
   Lcg rng(6);
   const Tri t = random_tri(rng);
-  for (PnNormalMode mode : kModes) {
+  for (PnNormalMode mode : kPnNormalModes) {
     const PatchOutput out = run_tcs(*make_tcs(Scheme::Nagata, mode), patch_of(t));
     QuadraticTes tes;
     tes.normal_mode = mode;
@@ -259,7 +247,7 @@ TEST(QuadraticSchemes, DegenerateCornersGiveNoNaN) {
   };
   for (const Tri& t : cases)
     for (Scheme s : kSchemes)
-      for (PnNormalMode mode : kModes) {
+      for (PnNormalMode mode : kPnNormalModes) {
         const PatchOutput out = run_tcs(*make_tcs(s, mode), patch_of(t));
         for (const glm::vec3 tc : {glm::vec3(1, 0, 0), glm::vec3(0.2f, 0.3f, 0.5f), glm::vec3(0, 0.5f, 0.5f)}) {
           const glm::vec3 p = quadratic_position(out, tc), n = quadratic_normal(out, tc, mode);

@@ -15,11 +15,7 @@
 namespace tessref {
 namespace {
 
-using test::Lcg;
-using test::make_patch;
-using test::run_tcs;
-using test::same_bits;
-using test::vertex;
+using namespace test;  // tess_test_util.h
 
 StageVertex tagged(const glm::vec3& p, const glm::vec3& n, const VertexTags& t = {}) {
   StageVertex v = vertex(p, n);

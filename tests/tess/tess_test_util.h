@@ -15,6 +15,9 @@
 
 namespace tessref::test {
 
+inline constexpr PnNormalMode kPnNormalModes[] = {PnNormalMode::Linear, PnNormalMode::Quadratic,
+                                                  PnNormalMode::QuadraticCorrected, PnNormalMode::Analytic};
+
 inline StageVertex vertex(const glm::vec3& p, const glm::vec3& n) {
   StageVertex v;
   v.attr[kAttrPosition] = glm::vec4(p, 1.0f);
@@ -37,6 +40,18 @@ inline PatchOutput run_tcs(const TessControlProgram& tcs, const Patch& in) {
   for (int phase = 0; phase < tcs.phases(); ++phase)
     for (int id = 0; id < tcs.output_vertices(); ++id) tcs.run(phase, id, in, out);
   return out;
+}
+
+// Tessellates patches [0, patch_count) of the draw on two threads; every TES invocation's record.
+inline std::vector<TessDumpRecord> tessellate_dump(const TessDrawInput& input, std::size_t patch_count,
+                                                   const TessControlProgram& tcs,
+                                                   const TessEvalProgram& tes) {
+  std::vector<TessDumpRecord> dump;
+  TessOptions opt;
+  opt.dump = &dump;
+  TriangleBatch out;
+  tessellate(input, 0, patch_count, tcs, tes, opt, Parallel(2), out);
+  return dump;
 }
 
 inline std::uint32_t bits(float f) { return std::bit_cast<std::uint32_t>(f); }

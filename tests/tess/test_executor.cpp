@@ -17,6 +17,7 @@ using test::edge_points;
 using test::Lcg;
 using test::same_bits;
 using test::same_bytes;
+using test::tessellate_dump;
 using test::vertex;
 
 // Phase 0 writes gl_out[i].attr[0] = i + 1; phase 1 (after barrier()) sums every invocation's
@@ -257,11 +258,7 @@ TEST(TessExecutor, SharedEdgeIsBitIdenticalInBothPatches) {
           PnTes tes;
           tes.normal_mode = mode;
           tes.spacing = spacing;
-          std::vector<TessDumpRecord> dump;
-          TessOptions opt;
-          opt.dump = &dump;
-          TriangleBatch out;
-          tessellate(TessDrawInput{vs, idx, 3}, 0, 4, tcs, tes, opt, Parallel(2), out);
+          const auto dump = tessellate_dump(TessDrawInput{vs, idx, 3}, 4, tcs, tes);
           const auto ref = edge_points(dump, 0, opposite[0]);
           ASSERT_GE(ref.size(), 2u);
           for (std::uint32_t p = 1; p < 4; ++p) {

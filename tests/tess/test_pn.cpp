@@ -11,14 +11,7 @@
 namespace tessref {
 namespace {
 
-using test::Lcg;
-using test::make_patch;
-using test::run_tcs;
-using test::same_bits;
-using test::vertex;
-
-constexpr PnNormalMode kModes[] = {PnNormalMode::Linear, PnNormalMode::Quadratic,
-                                   PnNormalMode::QuadraticCorrected, PnNormalMode::Analytic};
+using namespace test;  // tess_test_util.h
 
 PatchOutput pn_net(const std::vector<StageVertex>& vs, PnNormalMode mode) {
   PnTcs tcs;
@@ -110,7 +103,7 @@ TEST(PnTriangles, InterpolatesCornersAndTheirNormals) {
   Lcg rng(1);
   for (int trial = 0; trial < 20; ++trial) {
     const auto vs = random_triangle(rng);
-    for (PnNormalMode mode : kModes) {
+    for (PnNormalMode mode : kPnNormalModes) {
       const PatchOutput net = pn_net(vs, mode);
       for (int c = 0; c < 3; ++c) {
         glm::vec3 tc(0.0f);
@@ -185,7 +178,7 @@ TEST(PnTriangles, FlatTriangleWithFaceNormalsStaysFlat) {
     const std::vector<StageVertex> vs =
         reversed ? std::vector<StageVertex>{vertex(p0, face), vertex(p2, face), vertex(p1, face)}
                  : std::vector<StageVertex>{vertex(p0, face), vertex(p1, face), vertex(p2, face)};
-    for (PnNormalMode mode : kModes) {
+    for (PnNormalMode mode : kPnNormalModes) {
       const PatchOutput net = pn_net(vs, mode);
       for (int i = 0; i <= 16; ++i)
         for (int j = 0; i + j <= 16; ++j) {
@@ -244,7 +237,7 @@ TEST(PnTriangles, NormalModesDifferOnAnInflectedEdge) {
                                        vertex({0.5f, 1, 0}, {0, 0, 1})};
   const glm::vec3 mid(0.5f, 0.5f, 0.0f);
   glm::vec3 n[4];
-  for (int m = 0; m < 4; ++m) n[m] = pn_normal(pn_net(vs, kModes[m]), mid, kModes[m]);
+  for (int m = 0; m < 4; ++m) n[m] = pn_normal(pn_net(vs, kPnNormalModes[m]), mid, kPnNormalModes[m]);
   const glm::vec3 &lin = n[0], &quad = n[1], &corr = n[2], &ana = n[3];
 
   // Corrected: exactly the average normal reflected across the plane perpendicular to the edge.
@@ -284,7 +277,7 @@ TEST(PnTriangles, DegenerateInputGivesNoNaN) {
       {vertex({0, 0, 0}, {0, 0, 1}), vertex({1, 0, 0}, {0, 0, 1}), vertex({2, 0, 0}, {0, 0, 1})},
   };
   for (const auto& vs : cases)
-    for (PnNormalMode mode : kModes) {
+    for (PnNormalMode mode : kPnNormalModes) {
       const PatchOutput net = pn_net(vs, mode);
       for (int i = 0; i <= 4; ++i)
         for (int j = 0; i + j <= 4; ++j) {
@@ -301,7 +294,7 @@ TEST(PnTriangles, DegenerateInputGivesNoNaN) {
 }
 
 TEST(PnTriangles, NormalModeNames) {
-  for (PnNormalMode m : kModes) {
+  for (PnNormalMode m : kPnNormalModes) {
     PnNormalMode back{};
     ASSERT_TRUE(parse(to_string(m), back));
     EXPECT_EQ(back, m);
