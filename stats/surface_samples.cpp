@@ -52,29 +52,32 @@ void check_scene(const Scene& scene, const char* option) {
 
 }  // namespace
 
-schemes::CubicNet<float> world_patch(const Scene& scene, const Mesh& mesh, std::size_t t) {
+std::vector<schemes::CubicNet<float>> world_patches(const Scene& scene, const Mesh& mesh,
+                                                    const Parallel& parallel) {
   schemes::InterpolantParams params;
   const schemes::Interpolant s = interpolant(scene.tessellation, params);
   const programs::TransformVertexShader vs = scene_vertex_shader(scene);
-  glm::vec3 p[3], n[3];
-  for (int c = 0; c < 3; ++c) {
-    const std::uint32_t v = mesh.indices[3 * t + c];
-    const programs::VertexOut out = vs.main(mesh.positions[v], mesh.normals[v]);
-    p[c] = out.v_world_position;
-    n[c] = safe_normalize(out.v_world_normal);  // as the control programs take it
-  }
-  return schemes::cubic_net<float>(s, p, n, params);
+  std::vector<schemes::CubicNet<float>> nets(mesh.triangle_count());
+  parallel.for_each(nets.size(), [&](std::size_t t) {
+    glm::vec3 p[3], n[3];
+    for (int c = 0; c < 3; ++c) {
+      const std::uint32_t v = mesh.indices[3 * t + c];
+      const programs::VertexOut out = vs.main(mesh.positions[v], mesh.normals[v]);
+      p[c] = out.v_world_position;
+      n[c] = safe_normalize(out.v_world_normal);  // as the control programs take it
+    }
+    nets[t] = schemes::cubic_net<float>(s, p, n, params);
+  });
+  return nets;
 }
 
 SurfaceSamples sample_surface(const Scene& scene, const Mesh& mesh, const Parallel& parallel,
                               const char* option) {
   check_scene(scene, option);
   const bool flat = scene.tessellation.scheme == SurfaceScheme::Flat;
-  std::vector<schemes::CubicNet<double>> nets(mesh.triangle_count());
-  parallel.for_each(nets.size(), [&](std::size_t t) {
-    const schemes::CubicNet<float> f = world_patch(scene, mesh, t);
-    for (int k = 0; k < 10; ++k) nets[t].b[k] = glm::dvec3(f.b[k]);
-  });
+  const std::vector<schemes::CubicNet<float>> float_nets = world_patches(scene, mesh, parallel);
+  std::vector<schemes::CubicNet<double>> nets;
+  for (const schemes::CubicNet<float>& f : float_nets) nets.push_back(widen(f));
 
   SurfaceSamples out;
   out.width = scene.width;

@@ -44,10 +44,11 @@ struct SurfaceSamples {
 };
 
 
-// The scheme's patch of mesh triangle t as the draw builds it: corners and normals through the
-// scene's vertex shader (world space, float), normals normalized as the control programs do,
-// the net in float as they compute it. Flat: the triangle itself (Phong with alpha 0).
-schemes::CubicNet<float> world_patch(const Scene& scene, const Mesh& mesh, std::size_t t);
+// The scheme's patch of every mesh triangle as the draw builds it: corners and normals through
+// the scene's vertex shader (world space, float), normals normalized as the control programs do,
+// the nets in float as they compute them. Flat: the triangle itself (Phong with alpha 0).
+std::vector<schemes::CubicNet<float>> world_patches(const Scene& scene, const Mesh& mesh,
+                                                    const Parallel& parallel);
 
 // Draws the scene (its camera already fitted) and samples the exact surface at every pixel.
 // InputError naming `option` when the scene's surface is not one Bézier net per patch: GLSL

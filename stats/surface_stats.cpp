@@ -11,16 +11,12 @@
 #include "pipeline/reference_meshes.h"
 
 namespace tessref::stats {
-namespace {
 
 schemes::CubicNet<double> widen(const schemes::CubicNet<float>& f) {
   schemes::CubicNet<double> d;
   for (int k = 0; k < 10; ++k) d.b[k] = glm::dvec3(f.b[k]);
   return d;
 }
-
-
-}  // namespace
 
 double gaussian_curvature(const schemes::SurfacePoint<double>& s) {
   const glm::dvec3 c = glm::cross(s.du, s.dv);

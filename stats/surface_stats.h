@@ -42,6 +42,9 @@ enum class AnalyticSurface {
 std::vector<double> distance_samples(const std::vector<schemes::CubicNet<float>>& patches,
                                      AnalyticSurface surface, int segments, const Parallel& parallel);
 
+// A float net in double, exactly (the nets are built in float, as the programs build them).
+schemes::CubicNet<double> widen(const schemes::CubicNet<float>& f);
+
 // Gaussian curvature K = (LN - M^2) / (EG - F^2) of a patch point from its exact derivatives;
 // NaN where du x dv vanishes.
 double gaussian_curvature(const schemes::SurfacePoint<double>& s);
