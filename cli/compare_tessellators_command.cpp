@@ -115,11 +115,7 @@ void run(const CompareArgs& a) {
                                    &c.refinement.coverage_image})
         write_rgb8_image(*img, image_tmp[next_image++]);
   }
-  if (!a.json.empty()) {
-    std::ofstream out(json_tmp);
-    out << report.dump(2) << "\n";
-    if (!out.flush()) throw InputError(a.json + ": cannot write");
-  }
+  if (!a.json.empty()) write_text_file(json_tmp, a.json, report.dump(2) + "\n");
   outputs.commit();
 }
 

@@ -91,13 +91,8 @@ void run(const StatsArgs& a) {
   const nlohmann::json report = !a.image.kind.empty() ? run_stats_image(a.scene, a.sets, a.image, parallel, image_tmp)
                                 : scene_mode           ? run_scene(a, parallel)
                                                        : run_tables(a, parallel);
-  if (!a.image.kind.empty() && a.json.empty()) outputs.commit();
-  if (!a.json.empty()) {
-    std::ofstream out(json_tmp);
-    out << report.dump(2) << "\n";
-    if (!out.flush()) throw InputError(a.json + ": cannot write");
-    outputs.commit();
-  }
+  if (!a.json.empty()) write_text_file(json_tmp, a.json, report.dump(2) + "\n");
+  outputs.commit();
 }
 
 }  // namespace

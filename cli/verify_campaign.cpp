@@ -17,9 +17,7 @@ using nlohmann::json;
 namespace fs = std::filesystem;
 
 void write_text(OutputFiles& outputs, const std::string& option, const fs::path& target, const std::string& text) {
-  std::ofstream out(outputs.add(option, target), std::ios::binary);
-  out << text;
-  if (!out.flush()) throw InputError(target.string() + ": cannot write");
+  write_text_file(outputs.add(option, target), target.string(), text);
 }
 
 // One scene's report and images, written together or not at all.

@@ -104,11 +104,7 @@ void run(VerifyArgs a) {
   for (const auto& w : r.report["warnings"]) std::fprintf(stderr, "tessref: warning: %s\n", w.get<std::string>().c_str());
   std::fputs(verify_summary(r.report).c_str(), stdout);
 
-  if (!a.json.empty()) {
-    std::ofstream out(json_tmp);
-    out << r.report.dump(2) << "\n";
-    if (!out.flush()) throw InputError(a.json + ": cannot write");
-  }
+  if (!a.json.empty()) write_text_file(json_tmp, a.json, r.report.dump(2) + "\n");
   if (!a.heat.empty()) write_rgb8_image(r.heat, heat_tmp);
   if (!a.images.empty()) {
     const Rgb8Image* images[4] = {&r.tessref, &r.reference, &r.difference, &r.heat};
@@ -117,9 +113,7 @@ void run(VerifyArgs a) {
   if (!a.html.empty()) {
     const Rgb8Image* images[4] = {&r.tessref, &r.reference, &r.difference, &r.heat};
     for (int k = 0; k < 4; ++k) write_rgb8_image(*images[k], html_images[k]);
-    std::ofstream out(html_tmp, std::ios::binary);
-    out << verify_scene_page(r.report, html_images, "");
-    if (!out.flush()) throw InputError(a.html + "/index.html: cannot write");
+    write_text_file(html_tmp, a.html + "/index.html", verify_scene_page(r.report, html_images, ""));
   }
   outputs.commit();
   if (!r.pass()) set_exit_code(1);

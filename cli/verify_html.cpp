@@ -272,9 +272,7 @@ void write_verify_site(const std::filesystem::path& site_folder, const std::vect
   if (ec) throw InputError(site_folder.string() + ": cannot create the --html folder: " + ec.message());
   OutputFiles outputs;
   const auto write = [&](const std::filesystem::path& target, const std::string& html) {
-    std::ofstream out(outputs.add("--html", target), std::ios::binary);
-    out << html;
-    if (!out.flush()) throw InputError(target.string() + ": cannot write");
+    write_text_file(outputs.add("--html", target), target.string(), html);
   };
   write(site_folder / "index.html", verify_index_page(scenes));
   for (const SiteScene& s : scenes) {

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <mutex>
 #include <system_error>
 
@@ -175,6 +176,12 @@ void OutputFiles::commit() {
                        ec.message() + ")");
   }
   committed_ = true;
+}
+
+void write_text_file(const std::filesystem::path& temp, const std::string& target, const std::string& text) {
+  std::ofstream out(temp, std::ios::binary);
+  out << text;
+  if (!out.flush()) throw InputError(target + ": cannot write");
 }
 
 }  // namespace tessref

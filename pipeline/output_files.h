@@ -36,4 +36,8 @@ class OutputFiles {
   bool committed_ = false;
 };
 
+// Writes `text` into `temp` (a path OutputFiles::add returned). InputError naming `target` when
+// the write fails (a full disk).
+void write_text_file(const std::filesystem::path& temp, const std::string& target, const std::string& text);
+
 }  // namespace tessref
