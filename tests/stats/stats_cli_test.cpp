@@ -1,15 +1,13 @@
 // The built `tessref stats` binary: the tables, a scene's mesh, JSON, errors.
-#include <sys/wait.h>
-
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+
+#include "../pipeline/test_util.h"
 
 namespace tessref {
 namespace {
@@ -17,28 +15,12 @@ namespace {
 using ::testing::HasSubstr;
 using ::testing::Not;
 
-const std::string kBinary = std::string(TESSREF_BINARY_DIR) + "/cli/tessref";
+using test::CliRun;
+using test::kBinary;
 
-struct CliRun {
-  int exit_code;
-  std::string output;  // stdout and stderr
-};
+using test::run_cli;
 
-CliRun run(const std::string& args) {
-  FILE* p = popen((kBinary + " " + args + " 2>&1").c_str(), "r");
-  std::string out;
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
-  const int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
-
-std::string read(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::read_file;
 
 class StatsCli : public ::testing::Test {
  protected:
@@ -52,7 +34,7 @@ class StatsCli : public ::testing::Test {
 };
 
 TEST_F(StatsCli, Table3InThePapersLayout) {
-  const CliRun r = run("stats --table 3");
+  const CliRun r = run_cli("stats --table 3");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("Sphere  i = 0   Phong            0.0153197 ± 0.00940214"));
   EXPECT_THAT(r.output, HasSubstr("Torus   j = 19  Phong"));
@@ -60,7 +42,7 @@ TEST_F(StatsCli, Table3InThePapersLayout) {
 }
 
 TEST_F(StatsCli, Table4PrintsBothEdgeCountings) {
-  const CliRun r = run("stats --table 4");
+  const CliRun r = run_cli("stats --table 4");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("Sphere       162/480/320  0.98479 ± 0.00113564"));
   EXPECT_THAT(r.output, HasSubstr("480/0/0                      320/0/160"));
@@ -69,10 +51,10 @@ TEST_F(StatsCli, Table4PrintsBothEdgeCountings) {
 
 TEST_F(StatsCli, JsonDoesNotDependOnThreads) {
   const auto one = dir_ / "one.json", three = dir_ / "three.json";
-  ASSERT_EQ(run("stats --table 6 --threads 1 --json " + one.string()).exit_code, 0);
-  ASSERT_EQ(run("stats --table 6 --threads 3 --json " + three.string()).exit_code, 0);
-  EXPECT_EQ(read(one), read(three));
-  const nlohmann::json j = nlohmann::json::parse(read(one));
+  ASSERT_EQ(run_cli("stats --table 6 --threads 1 --json " + one.string()).exit_code, 0);
+  ASSERT_EQ(run_cli("stats --table 6 --threads 3 --json " + three.string()).exit_code, 0);
+  EXPECT_EQ(read_file(one), read_file(three));
+  const nlohmann::json j = nlohmann::json::parse(read_file(one));
   ASSERT_EQ(j["table6"].size(), 16u);
   EXPECT_EQ(j["table6"][8]["mesh"], "Sphere");
   EXPECT_EQ(j["table6"][8]["scheme"], "phong");
@@ -81,22 +63,22 @@ TEST_F(StatsCli, JsonDoesNotDependOnThreads) {
 
 TEST_F(StatsCli, MeasuresASceneMesh) {
   const auto out = dir_ / "vase.json";
-  const CliRun r = run("stats --set mesh.type=vase --nagata-eps 0.06 --json " + out.string());
+  const CliRun r = run_cli("stats --set mesh.type=vase --nagata-eps 0.06 --json " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("mesh         241/700/460"));
   EXPECT_THAT(r.output, HasSubstr("mesh Nagata eps = 0.06"));
-  const nlohmann::json j = nlohmann::json::parse(read(out));
+  const nlohmann::json j = nlohmann::json::parse(read_file(out));
   EXPECT_EQ(j["mesh"]["triangles"], 460);
   EXPECT_EQ(j["mesh"]["boundary_edges"], 20);
   EXPECT_EQ(j["gaussian_curvature"].size(), 4u);
 }
 
 TEST_F(StatsCli, BadArguments) {
-  EXPECT_NE(run("stats --table 7").exit_code, 0);
-  const CliRun r = run("stats --table 3 --set mesh.type=vase");
+  EXPECT_NE(run_cli("stats --table 7").exit_code, 0);
+  const CliRun r = run_cli("stats --table 3 --set mesh.type=vase");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_THAT(r.output, HasSubstr("--table prints one of seed 004's tables"));
-  const CliRun bad = run("stats --set mesh.type=seed004_torus --set mesh.seed004_torus.grid=2");
+  const CliRun bad = run_cli("stats --set mesh.type=seed004_torus --set mesh.seed004_torus.grid=2");
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_THAT(bad.output, HasSubstr("mesh.seed004_torus.grid"));
 }

@@ -1,8 +1,6 @@
 // The built `tessref stats --image`: files, JSON, and the option errors (exit 2).
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -11,27 +9,18 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "../pipeline/test_util.h"
+
 namespace tessref {
 namespace {
 
 using ::testing::HasSubstr;
 
-const std::string kBinary = std::string(TESSREF_BINARY_DIR) + "/cli/tessref";
+using test::CliRun;
+using test::kBinary;
 const std::string kSmall = "--set image.width=48 --set image.height=48 --set camera.fit=true ";
 
-struct CliRun {
-  int exit_code;
-  std::string output;  // stdout and stderr
-};
-
-CliRun run(const std::string& args) {
-  FILE* p = popen((kBinary + " " + args + " 2>&1").c_str(), "r");
-  std::string out;
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
-  const int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
+using test::run_cli;
 
 class StatsImagesCli : public ::testing::Test {
  protected:
@@ -46,7 +35,7 @@ class StatsImagesCli : public ::testing::Test {
 };
 
 TEST_F(StatsImagesCli, CurvatureImageAndJson) {
-  const CliRun r = run("stats " + kSmall + "--set tessellation.scheme=phong --image gaussian_curvature -o " +
+  const CliRun r = run_cli("stats " + kSmall + "--set tessellation.scheme=phong --image gaussian_curvature -o " +
                        path("k.png") + " --json " + path("k.json"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("scheme phong"));
@@ -59,7 +48,7 @@ TEST_F(StatsImagesCli, CurvatureImageAndJson) {
 }
 
 TEST_F(StatsImagesCli, NormalModeDifferencePrintsTheFigures) {
-  const CliRun r = run("stats " + kSmall + "--image normal_mode_difference -o " + path("d.png"));
+  const CliRun r = run_cli("stats " + kSmall + "--image normal_mode_difference -o " + path("d.png"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("normals: max angle"));
   EXPECT_THAT(r.output, HasSubstr("covered pixels differ"));
@@ -83,7 +72,7 @@ TEST_F(StatsImagesCli, OptionErrorsExitTwoAndWriteNothing) {
        "scalar_tagged_pn is not supported"},
   };
   for (const auto& c : cases) {
-    const CliRun r = run("stats " + kSmall + c.args);
+    const CliRun r = run_cli("stats " + kSmall + c.args);
     EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.output;
     EXPECT_THAT(r.output, HasSubstr(c.message)) << c.args;
     EXPECT_FALSE(std::filesystem::exists(path("x.png"))) << c.args;
