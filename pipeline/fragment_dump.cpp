@@ -51,7 +51,6 @@ FragmentDump dump_fragments(const Scene& scene, const Mesh& mesh, const Parallel
   for (std::size_t i = 0; i < dump.pixels.size(); i += kChannels) dump.pixels[i + 6] = dump.pixels[i + 7] = -1.0f;
   DumpRecorder recorder(dump);
   TaggedRedraw redraw;
-  redraw.state.cull_back_faces = scene.cull_back_faces;
   redraw.fs = &recorder;
   Framebuffer fb;
   draw_with_tagged_redraw(scene, mesh, parallel, fb, redraw, "--dump-fragments");

@@ -48,8 +48,7 @@ PatchFragments patch_fragments(const Scene& scene, const Mesh& mesh, std::size_t
                                const Parallel& parallel) {
   PatchRecorder recorder(patch, scene.height);
   TaggedRedraw redraw;
-  redraw.state.cull_back_faces = scene.cull_back_faces;
-  redraw.state.depth_test = false;
+  redraw.depth_test = false;
   redraw.fs = &recorder;
   Framebuffer fb;
   draw_with_tagged_redraw(scene, mesh, parallel, fb, redraw, "--patch");

@@ -144,8 +144,7 @@ PixelInspectResult inspect_pixel(const Scene& scene, const Mesh& mesh, int x, in
   }
   PixelRecorder recorder(builtin ? builtin->get() : *glsl_fs, x, r.window_y, fs_source);
   TaggedRedraw redraw;
-  redraw.state.cull_back_faces = scene.cull_back_faces;
-  redraw.state.depth_test = false;
+  redraw.depth_test = false;
   redraw.fs = &recorder;
   Framebuffer fb;
   draw_with_tagged_redraw(scene, mesh, parallel, fb, redraw, "--pixel");

@@ -18,10 +18,13 @@ DrawStats draw_with_tagged_redraw(const Scene& scene, const Mesh& mesh, const Pa
   Framebuffer tagged_fb;
   tagged_fb.reset(scene.width, scene.height, scene.background, parallel);
   bool tessellated = false;
+  RasterState state;
+  state.cull_back_faces = scene.cull_back_faces;
+  state.depth_test = redraw.depth_test;
   DrawOptions options;
   options.tess_surface = [&](const std::vector<TessDumpRecord>& records, const TriangleBatch& batch) {
     tessellated = true;
-    draw_triangles(tagged_triangles(records, batch), redraw.state, *redraw.fs, tagged_fb, parallel);
+    draw_triangles(tagged_triangles(records, batch), state, *redraw.fs, tagged_fb, parallel);
     if (redraw.after_chunk) redraw.after_chunk();
   };
   const DrawStats stats = render_scene(scene, mesh, parallel, fb, options);

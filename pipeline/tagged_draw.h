@@ -16,7 +16,9 @@
 namespace tessref {
 
 struct TaggedRedraw {
-  RasterState state;                   // the redraw's: depth test on to follow the draw's winners
+  // On: the redraw keeps the draw's winners; off: every fragment arrives, losers included. Back
+  // faces are culled as the scene culls them: the redraw must see the draw's triangles.
+  bool depth_test = true;
   const FragmentProgram* fs = nullptr;  // sees the tagged fragments
   // Called after each chunk's redraw, on the calling thread (null: nothing to do).
   std::function<void()> after_chunk;
