@@ -92,7 +92,7 @@ class WatchedFragment final : public FragmentProgram {
 Checker::Checker(CheckContext context) : context_(std::move(context)) {}
 Checker::~Checker() = default;
 
-void Checker::vertex_output(std::size_t vertex, const std::string& name, const float* v, int n,
+void Checker::vertex_output(std::size_t vertex, std::string_view name, const float* v, int n,
                             std::span<const std::uint32_t> indices, int patch_vertices,
                             const VertexTrace& trace) const {
   const int c = first_bad(v, n);
@@ -105,7 +105,7 @@ void Checker::vertex_output(std::size_t vertex, const std::string& name, const f
         break;
       }
   std::string report = "stage: vertex shader\nvertex: " + std::to_string(vertex) +
-                       " (gl_VertexID; first used by patch " + std::to_string(patch) + ")\noutput: " + name +
+                       " (gl_VertexID; first used by patch " + std::to_string(patch) + ")\noutput: " + std::string(name) +
                        "." + component(c) + " = " + num(v[c]) + "\ninspect: tessref inspect " +
                        context_.inspect_args + "--patch " + std::to_string(patch);
   if (trace) report += provenance(context_.vertex, trace(vertex), "vertex");

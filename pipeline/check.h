@@ -13,6 +13,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "pipeline/check_range.h"
@@ -62,7 +63,7 @@ class Checker {
 
   // Vertex shader: `n` floats of output `name` of mesh vertex `vertex`. The patch named is the
   // first that uses the vertex (indices, patch_vertices as the draw's).
-  void vertex_output(std::size_t vertex, const std::string& name, const float* v, int n,
+  void vertex_output(std::size_t vertex, std::string_view name, const float* v, int n,
                      std::span<const std::uint32_t> indices, int patch_vertices,
                      const VertexTrace& trace = {}) const;
   // Control shader: gl_out[], patch outputs, the level ranges; NaN levels become a warning.

@@ -1,5 +1,6 @@
 #include "pipeline/glsl_draw.h"
 
+#include <array>
 #include <chrono>
 #include <stdexcept>
 
@@ -92,9 +93,11 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
     stats.vertex_seconds += seconds_since(t0);
     if (options.check) {
       const Checker::VertexTrace trace = [&](std::size_t v) { return trace_vertex(program, attributes, v, instance); };
+      std::array<std::string, kMaxStageAttributes> slot_names;  // named once, not per vertex
+      for (int s = 0; s < kMaxStageAttributes; ++s) slot_names[s] = s == 0 ? "gl_Position" : "location " + std::to_string(s - 1);
       for (std::size_t v = 0; v < shaded.size(); ++v)
         for (int s = 0; s < kMaxStageAttributes; ++s)
-          options.check->vertex_output(shade_first + v, s == 0 ? "gl_Position" : "location " + std::to_string(s - 1),
+          options.check->vertex_output(shade_first + v, slot_names[s],
                                        &shaded[v].attr[s][0], 4, call.indices, call.patches ? call.patch_vertices : 3, trace);
     }
     if (!call.patches) {
