@@ -19,30 +19,20 @@
 #include "stages/tpg_cache.h"
 #include "stages/tpg_refinement.h"
 #include "stages/tpg_uniform.h"
+#include "tpg_test_util.h"
 
 namespace tessref {
 namespace {
 
-const TessLayout kCcw{TessDomain::Triangles, TessSpacing::FractionalOdd, TessWinding::Ccw, false};
+using test::area2;
+using test::levels_of;
+const TessLayout& kCcw = test::kCcwTriangles;
 const TessProfile kProfile = TessProfile::llvmpipe();
-
-TessLevels levels_of(float outer, float inner = 1.0f) {
-  TessLevels l;
-  l.outer = {outer, outer, outer, outer};
-  l.inner = {inner, inner};
-  return l;
-}
 
 TessDomainPoints pattern(float level, const TessLayout& layout = kCcw) {
   TessDomainPoints out;
   generate_refinement_pattern(layout, levels_of(level), kProfile, out);
   return out;
-}
-
-double area2(const TessDomainPoints& p, std::size_t t) {
-  const glm::dvec3 a = p.coords[p.indices[3 * t]], b = p.coords[p.indices[3 * t + 1]],
-                   c = p.coords[p.indices[3 * t + 2]];
-  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
 }
 
 TEST(RefinementPattern, LevelOfDetailFromTheLargestOuterLevel) {

@@ -1,9 +1,11 @@
 #pragma once
-// Helpers shared by the TPG tests: random level sets with the boundary values mixed in, and the
-// segment counts the GL spec fixes for a level.
+// Helpers shared by the TPG tests: random level sets with the boundary values mixed in, the
+// segment counts the GL spec fixes for a level, and what the pattern tests measure.
 #include <cmath>
 #include <limits>
 #include <random>
+
+#include <glm/glm.hpp>
 
 #include "stages/tpg.h"
 
@@ -51,6 +53,24 @@ inline int expected_segments(float level, TessSpacing spacing, bool literal_odd 
     }
   }
   return 0;
+}
+
+// Triangles, fractional_odd, counter-clockwise: the layout the pattern tests draw with.
+inline const TessLayout kCcwTriangles{TessDomain::Triangles, TessSpacing::FractionalOdd, TessWinding::Ccw, false};
+
+// Every outer level `outer`, every inner level `inner`.
+inline TessLevels levels_of(float outer, float inner = 1.0f) {
+  TessLevels l;
+  l.outer = {outer, outer, outer, outer};
+  l.inner = {inner, inner};
+  return l;
+}
+
+// Twice the signed area in (u, v) of pattern triangle t: positive for counter-clockwise.
+inline double area2(const TessDomainPoints& p, std::size_t t) {
+  const glm::dvec3 a = p.coords[p.indices[3 * t]], b = p.coords[p.indices[3 * t + 1]],
+                   c = p.coords[p.indices[3 * t + 2]];
+  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
 }
 
 }  // namespace tessref::test
