@@ -1,5 +1,6 @@
 #include "stages/schemes/pn_triangles.h"
 
+#include "stages/schemes/bezier_nets.h"
 #include "stages/schemes/canonical.h"
 #include "stages/schemes/pn_batch.h"
 #include "stages/schemes/flat.h"
@@ -26,26 +27,6 @@ bool parse(const std::string& s, PnNormalMode& out) {
 namespace {
 
 glm::vec3 xyz(const glm::vec4& v) { return glm::vec3(v); }
-
-// Tangent coefficient next to p_i on the edge towards p_j: p_j projected into the tangent plane
-// at p_i, then 1/3 of the way. Uses only (p_i, n_i, p_j): both patches of an edge compute it alike.
-glm::vec3 tangent_coefficient(const glm::vec3& pi, const glm::vec3& ni, const glm::vec3& pj) {
-  const float w = glm::dot(pj - pi, ni);
-  return (2.0f * pi + pj - w * ni) / 3.0f;
-}
-
-// Mid-edge normal coefficient of edge a-b (a, b in canonical order).
-glm::vec3 mid_edge_normal(const glm::vec3& pa, const glm::vec3& na, const glm::vec3& pb,
-                          const glm::vec3& nb, PnNormalMode mode) {
-  const glm::vec3 d = pb - pa;
-  const float dd = glm::dot(d, d);
-  const glm::vec3 nsum = na + nb;
-  const float k = mode == PnNormalMode::QuadraticCorrected ? 4.0f : 2.0f;
-  // A zero-length edge has no plane to reflect across: keep the average direction.
-  const float v = dd > 0.0f ? k * glm::dot(d, nsum) / dd : 0.0f;
-  const glm::vec3 h = nsum - v * d;
-  return mode == PnNormalMode::QuadraticCorrected ? h : safe_normalize(h);
-}
 
 struct Net {
   glm::vec3 p[3];      // corners
@@ -91,8 +72,8 @@ void PnTcs::run(int phase, int id, const Patch& in, PatchOutput& out) const {
     auto& a = out.vertices[id].attr;
     a[kAttrPosition] = glm::vec4(pi, 1.0f);
     a[kAttrNormal] = glm::vec4(ni, 0.0f);
-    a[kPnAttrTangentNext] = glm::vec4(tangent_coefficient(pi, ni, in_pos(j)), 1.0f);
-    a[kPnAttrTangentPrev] = glm::vec4(tangent_coefficient(pi, ni, in_pos(k)), 1.0f);
+    a[kPnAttrTangentNext] = glm::vec4(schemes::pn_tangent_point(pi, ni, in_pos(j)), 1.0f);
+    a[kPnAttrTangentPrev] = glm::vec4(schemes::pn_tangent_point(pi, ni, in_pos(k)), 1.0f);
     if (id == 0) out.levels = triangle_levels(levels, in_pos(0), in_pos(1), in_pos(2));
     return;
   }
@@ -103,7 +84,10 @@ void PnTcs::run(int phase, int id, const Patch& in, PatchOutput& out) const {
   if (normal_mode == PnNormalMode::Quadratic || normal_mode == PnNormalMode::QuadraticCorrected) {
     const bool swap = corner_less(pos(j), nrm(j), pos(id), nrm(id));
     const int a = swap ? j : id, b = swap ? id : j;
-    mid = mid_edge_normal(pos(a), nrm(a), pos(b), nrm(b), normal_mode);
+    // Both patches of the edge compute it from its ends in canonical order: the same bits.
+    const bool corrected = normal_mode == PnNormalMode::QuadraticCorrected;
+    const glm::vec3 h = schemes::quadratic_normal_mid(pos(a), nrm(a), pos(b), nrm(b), corrected);
+    mid = corrected ? h : safe_normalize(h);
   }
   out.vertices[id].attr[kPnAttrMidNormal] = glm::vec4(mid, 0.0f);
   if (id != 0) return;
