@@ -58,6 +58,20 @@ std::uint64_t pattern_triangles(const Scene& scene, Tessellator t) {
   return make_pattern(layout, scene.tessellation.levels, TessProfile::llvmpipe(), t)->points.primitive_count();
 }
 
+// Pixels whose 8-bit colours (a of fa, b of fb) differ, and the largest channel difference where
+// both drew: shading only, since where one rendering shows background the difference is coverage's.
+void compare_colours(const Framebuffer& fa, const Framebuffer& fb, const Rgb8Image& a, const Rgb8Image& b,
+                     std::uint64_t& differs, int& most_where_both) {
+  for (int y = 0; y < fa.height; ++y)
+    for (int x = 0; x < fa.width; ++x) {
+      const std::size_t i = 3 * (std::size_t(y) * fa.width + x), z = fa.index(x, fa.height - 1 - y);
+      int most = 0;
+      for (int k = 0; k < 3; ++k) most = std::max(most, std::abs(int(a.pixels[i + k]) - int(b.pixels[i + k])));
+      differs += most > 0;
+      if (fa.depth[z] < 1.0f && fb.depth[z] < 1.0f) most_where_both = std::max(most_where_both, most);
+    }
+}
+
 // The refinement pattern's rendering against the TPG's: the same measures as the uniform grid's.
 TessellatorComparison::Versus versus_tpg(const Drawn& tpg, const Drawn& other, const Parallel& parallel) {
   TessellatorComparison::Versus v;
@@ -75,16 +89,8 @@ TessellatorComparison::Versus versus_tpg(const Drawn& tpg, const Drawn& other, c
   v.covered = cov.covered_tessref;
   v.coverage_differs = cov.mismatched;
   v.off_silhouette = cov.off_silhouette;
-  const Rgb8Image a = to_rgb8(fa);
   v.image = to_rgb8(fb);
-  for (int y = 0; y < fa.height; ++y)
-    for (int x = 0; x < fa.width; ++x) {
-      const std::size_t i = 3 * (std::size_t(y) * fa.width + x), z = fa.index(x, fa.height - 1 - y);
-      int most = 0;
-      for (int k = 0; k < 3; ++k) most = std::max(most, std::abs(int(a.pixels[i + k]) - int(v.image.pixels[i + k])));
-      v.colour_differs += most > 0;
-      if (fa.depth[z] < 1.0f && fb.depth[z] < 1.0f) v.max_colour_difference = std::max(v.max_colour_difference, most);
-    }
+  compare_colours(fa, fb, to_rgb8(fa), v.image, v.colour_differs, v.max_colour_difference);
   v.coverage_image = coverage_image(fa, fb);
   return v;
 }
@@ -127,19 +133,8 @@ TessellatorComparison compare_tessellators(Scene scene, const Mesh& mesh, float 
 
   c.tpg_image = to_rgb8(tpg.result.framebuffer);
   c.uniform_image = to_rgb8(uni.result.framebuffer);
-  const Framebuffer& fa = tpg.result.framebuffer;
-  const Framebuffer& fb = uni.result.framebuffer;
-  for (int y = 0; y < fa.height; ++y)
-    for (int x = 0; x < fa.width; ++x) {
-      const std::size_t i = 3 * (std::size_t(y) * fa.width + x), z = fa.index(x, fa.height - 1 - y);
-      int most = 0;
-      for (int k = 0; k < 3; ++k)
-        most = std::max(most, std::abs(int(c.tpg_image.pixels[i + k]) - int(c.uniform_image.pixels[i + k])));
-      c.colour_differs += most > 0;
-      // Shading only: where one rendering shows background the difference is coverage's.
-      if (fa.depth[z] < 1.0f && fb.depth[z] < 1.0f)
-        c.max_colour_difference = std::max(c.max_colour_difference, most);
-    }
+  compare_colours(tpg.result.framebuffer, uni.result.framebuffer, c.tpg_image, c.uniform_image, c.colour_differs,
+                  c.max_colour_difference);
   c.coverage_image = coverage_image(tpg.result.framebuffer, uni.result.framebuffer);
 
   c.refinement = versus_tpg(tpg, draw(scene, mesh, Tessellator::RefinementPattern, parallel), parallel);
