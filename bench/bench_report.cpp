@@ -252,7 +252,7 @@ int main(int argc, char** argv) {
                 {"wuson64", "Wuson (3,732 triangles), PN level 64"}};
   for (const auto& f : frames)
     rows.push_back({std::string("frame ms, ") + f.what, std::string("BM_TessrefFrame/") + f.scene + "/real_time",
-                    std::string("BM_LlvmpipeFrame/") + f.scene + "/rgba32f/real_time", Kind::FrameMs, "", 1,
+                    std::string("BM_LlvmpipeFrame/") + f.scene + "/fair/real_time", Kind::FrameMs, "", 1,
                     true, true, false, "<= 0.33"});
   for (int level : {8, 16, 64}) {
     const std::string l = std::to_string(level);

@@ -39,7 +39,8 @@ RenderTarget::RenderTarget(GlContext& context, const RenderTargetDesc& desc)
   if (desc.depth) {
     glGenTextures(1, &depth_texture_);
     glBindTexture(GL_TEXTURE_2D, depth_texture_);
-    glTexStorage2D(GL_TEXTURE_2D, 1, GL_DEPTH_COMPONENT32F, desc.width, desc.height);
+    glTexStorage2D(GL_TEXTURE_2D, 1, desc.depth24 ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT32F,
+                   desc.width, desc.height);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_texture_, 0);
   }
   glBindTexture(GL_TEXTURE_2D, 0);

@@ -1,6 +1,6 @@
 #pragma once
-// An offscreen framebuffer object for the GL runner: color attachments plus a 32-bit float depth
-// buffer, read back in tessref's convention (row 0 is the bottom row, as in GL window space).
+// An offscreen framebuffer object for the GL runner: color attachments plus a 32-bit float (or
+// 24-bit) depth buffer, read back in tessref's convention (row 0 is the bottom row, as in GL window space).
 #include <cstdint>
 #include <vector>
 
@@ -19,7 +19,10 @@ struct RenderTargetDesc {
   int height = 0;
   // One entry per color attachment (fragment output location i -> attachment i).
   std::vector<ColorFormat> colors = {ColorFormat::Rgba8};
-  bool depth = true;  // GL_DEPTH_COMPONENT32F
+  bool depth = true;
+  // GL_DEPTH_COMPONENT24 instead of GL_DEPTH_COMPONENT32F: what an application that wants only an
+  // 8-bit image asks for (the fair benchmark's target).
+  bool depth24 = false;
 };
 
 class RenderTarget {

@@ -106,8 +106,8 @@ AttributeLocations attribute_locations(const Scene& scene) {
   return out;
 }
 
-std::vector<ShaderStage> twin_stages(const Scene& scene, bool for_capture) {
-  if (scene.shaders.program == ShaderProgram::Custom) return custom_stages(scene, for_capture);
+// tessref's GLSL twins for the scene's scheme and shading (set_uniforms gives them their values).
+std::vector<ShaderStage> builtin_twin_stages(const Scene& scene, bool for_capture) {
   const TessellationSettings& t = scene.tessellation;
   // Scalar Tagged PN's control shader reads the tags the vertex stage hands on.
   const char* vs = t.enabled && t.scheme == SurfaceScheme::ScalarTaggedPN ? "tagged_transform.vert" : "transform.vert";
@@ -126,6 +126,24 @@ std::vector<ShaderStage> twin_stages(const Scene& scene, bool for_capture) {
   return stages;
 }
 
+// The uniforms SceneRendererOptions::specialize compiles in, with the values set_uniforms sets.
+std::vector<UniformConstant> scene_constants(const Scene& scene) {
+  const TessellationSettings& t = scene.tessellation;
+  auto flag = [](bool b) { return std::string(b ? "true" : "false"); };
+  return {{"u_num_lights", std::to_string(scene.lights.size())},
+          {"u_normal_mode", std::to_string(glsl_index(t.normal_mode))},
+          {"u_adaptive", flag(t.adaptive.enabled)},
+          {"u_displacement", flag(t.displacement.enabled)}};
+}
+
+std::vector<ShaderStage> twin_stages(const Scene& scene, bool for_capture, bool specialize = false) {
+  if (scene.shaders.program == ShaderProgram::Custom) return custom_stages(scene, for_capture);
+  std::vector<ShaderStage> stages = builtin_twin_stages(scene, for_capture);
+  if (specialize)
+    for (ShaderStage& s : stages) s.source = specialize_uniforms(s.source, scene_constants(scene));
+  return stages;
+}
+
 }  // namespace
 
 SceneRenderer::SceneRenderer(GlContext& context, const Scene& scene, const Mesh& mesh,
@@ -138,7 +156,7 @@ SceneRenderer::SceneRenderer(GlContext& context, const Scene& scene, const Mesh&
 
   if (!scene.shaders.textures.empty())
     throw GlError("SceneRenderer: shaders.textures are not bound on the GL side yet");
-  program_ = link_program(twin_stages(scene_, false), {}, attribute_locations(scene_));
+  program_ = link_program(twin_stages(scene_, false, options_.specialize), {}, attribute_locations(scene_));
   set_uniforms(program_);
 
   const TessellationSettings& t = scene_.tessellation;
@@ -186,6 +204,7 @@ SceneRenderer::SceneRenderer(GlContext& context, const Scene& scene, const Mesh&
   desc.width = scene_.width;
   desc.height = scene_.height;
   desc.colors = {options_.color};
+  desc.depth24 = options_.depth24;
   if (options_.normals_attachment) desc.colors.push_back(ColorFormat::Rgba32F);
   target_ = std::make_unique<RenderTarget>(context_, desc);
 }
@@ -319,6 +338,14 @@ Framebuffer SceneRenderer::read_back() {
   Framebuffer fb = target_->to_framebuffer();
   stats_.readback_seconds = seconds_since(t0);
   return fb;
+}
+
+std::vector<glm::u8vec4> SceneRenderer::read_back_rgba8() {
+  context_.make_current();
+  const auto t0 = Clock::now();
+  std::vector<glm::u8vec4> color = target_->read_rgba8(0);
+  stats_.readback_seconds = seconds_since(t0);
+  return color;
 }
 
 Framebuffer SceneRenderer::render() {

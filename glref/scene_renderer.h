@@ -30,6 +30,13 @@ struct SceneRendererOptions {
   ColorFormat color = ColorFormat::Rgba32F;
   bool normals_attachment = true;  // fragment output 1 (world normal) -> Framebuffer::aux
   std::size_t max_points_per_draw = kSafePointsPerDraw;  // tessellated draws split under this
+  bool depth24 = false;  // GL_DEPTH_COMPONENT24 instead of 32F
+  // Compile the twins for this scene, as an application compiles its shaders for one setup: the
+  // light count, normal mode, adaptive switch, inner-level rule and displacement switch become
+  // constants (glsl_rewrite.h specialize_uniforms), so the driver folds the loops and branches
+  // they drive. The image is the same; a user's own program (shaders.program custom) is left
+  // as written.
+  bool specialize = false;
 };
 
 struct SceneRenderStats {
@@ -61,6 +68,9 @@ class SceneRenderer {
   void draw();
   // Reads the target back: color, depth, and aux (normals, or 0 without that attachment).
   Framebuffer read_back();
+  // Reads attachment 0 back as RGBA8 only (GL_UNSIGNED_BYTE, the driver converts), row 0 at the
+  // bottom: what an application that writes an 8-bit image reads.
+  std::vector<glm::u8vec4> read_back_rgba8();
   // draw() then read_back().
   Framebuffer render();
 

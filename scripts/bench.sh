@@ -88,9 +88,9 @@ run() {
 log "machine_limits"
 "$build/bench/machine_limits" $limits_flag --json "$results/limits.json" | tee "$results/limits.log" >&2
 run frames frame_bench "$r_frame" \
-  --benchmark_filter='^BM_(Tessref|Llvmpipe)Frame/(pn12|ico64|wuson12)/'
+  --benchmark_filter='^BM_(TessrefFrame/(pn12|ico64|wuson12)|LlvmpipeFrame/(pn12|ico64|wuson12)/fair)'
 run frames_wuson64 frame_bench "$r_heavy" \
-  --benchmark_filter='^BM_(TessrefFrame/wuson64|LlvmpipeFrame/wuson64/rgba32f)/'
+  --benchmark_filter='^BM_(TessrefFrame/wuson64|LlvmpipeFrame/wuson64/fair)'
 run tpg tpg_bench "$r_tpg"
 run pn pn_bench "$r_pn" \
   --benchmark_filter='^BM_(TessrefPn/(12/256|64/16)|ExecutorPn/(12/256|64/16)/(256|1)|LlvmpipePnDiscard/(12|64)|LlvmpipeFlatDiscard/(12|64))/'
