@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
+#include <regex>
 #include <iostream>
 #include <map>
 #include <set>
@@ -71,7 +73,11 @@ struct Runs {
   void read(const std::string& path) {
     std::ifstream in(path);
     if (!in) throw std::runtime_error("cannot read " + path);
-    const json j = json::parse(in);
+    // Google Benchmark writes a constant counter's coefficient of variation (0 / 0) as a bare
+    // NaN, which is not JSON; such a value is no figure, so it becomes null.
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    static const std::regex not_a_number(R"(:\s*-?(NaN|nan|inf|Infinity)\b)");
+    const json j = json::parse(std::regex_replace(text, not_a_number, ": null"));
     if (context.is_null() && j.contains("context")) context = j["context"];
     std::map<std::string, std::vector<const json*>> by_run;
     const json benchmarks = j.value("benchmarks", json::array());

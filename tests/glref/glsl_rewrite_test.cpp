@@ -24,6 +24,26 @@ TessLayout layout_of(TessDomain d, TessSpacing s, TessWinding w = TessWinding::C
   return l;
 }
 
+TEST(GlslRewrite, SpecializeUniformsRewritesOnlyTheNamedScalarDeclarations) {
+  const std::string src =
+      "#version 450\n"
+      "uniform int u_num_lights;  // how many\n"
+      "uniform int u_num_lights2;\n"
+      "uniform vec3 u_light_position[8];\n"
+      "  uniform   bool u_adaptive ;\n"
+      "void main() { }\n";
+  const std::string out = specialize_uniforms(
+      src, {{"u_num_lights", "1"}, {"u_adaptive", "false"}, {"u_light_position", "x"}, {"u_absent", "3"}});
+  EXPECT_EQ(out,
+            "#version 450\n"
+            "const int u_num_lights = 1;  // how many\n"
+            "uniform int u_num_lights2;\n"
+            "uniform vec3 u_light_position[8];\n"
+            "const bool u_adaptive = false;\n"
+            "void main() { }\n");
+  EXPECT_EQ(specialize_uniforms(src, {}), src);
+}
+
 TEST(GlslRewrite, LayoutQualifier) {
   EXPECT_EQ(tes_layout_qualifier(layout_of(TessDomain::Triangles, TessSpacing::FractionalOdd)),
             "layout(triangles, fractional_odd_spacing, ccw) in;\n");
