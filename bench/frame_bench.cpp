@@ -31,6 +31,7 @@
 
 #include "bench_common.h"
 #include "common/parallel.h"
+#include "pipeline/image_compare.h"
 #include "pipeline/image_output.h"
 #include "pipeline/mesh_source.h"
 #include "pipeline/render.h"
@@ -135,28 +136,6 @@ void tessref_frame(benchmark::State& state, std::size_t which) {
 // with the last bit of a TES position. Measured: docs/benchmarks.md.
 constexpr std::size_t kMaxDifferingPixels = 64;
 
-struct ImageCheck {
-  std::size_t over_one = 0;  // pixels with a channel more than 1/255 apart
-  int max_difference = 0;    // in 1/255
-};
-
-// tessref's frame as its PNG holds it (to_rgb8, top row first) against llvmpipe's RGBA8 read-back
-// (row 0 at the bottom).
-ImageCheck compare_rgb8(const Framebuffer& tessref_fb, const std::vector<glm::u8vec4>& gl) {
-  const Rgb8Image t = to_rgb8(tessref_fb);
-  ImageCheck c;
-  for (int y = 0; y < t.height; ++y)
-    for (int x = 0; x < t.width; ++x) {
-      const std::uint8_t* p = &t.pixels[(std::size_t(y) * t.width + x) * 3];
-      const glm::u8vec4 q = gl[std::size_t(t.height - 1 - y) * t.width + x];
-      int d = 0;
-      for (int k = 0; k < 3; ++k) d = std::max(d, std::abs(int(p[k]) - int(q[k])));
-      c.max_difference = std::max(c.max_difference, d);
-      if (d > 1) ++c.over_one;
-    }
-  return c;
-}
-
 void llvmpipe_frame(benchmark::State& state, std::size_t which, bool fair) {
   glref::GlContext* ctx = bench::gl_context();
   if (!ctx) return state.SkipWithError("no GL context");
@@ -174,11 +153,15 @@ void llvmpipe_frame(benchmark::State& state, std::size_t which, bool fair) {
     renderer.draw();
     Framebuffer fb;
     render_scene(f.scene, f.mesh, parallel(), fb);
-    const ImageCheck check = compare_rgb8(fb, renderer.read_back_rgba8());
-    state.counters["pixels_over_1"] = double(check.over_one);
+    // tessref's frame as its PNG holds it against llvmpipe's RGBA8 read-back.
+    const ImageComparison check = compare_images(
+        to_rgb8(fb), glref::rgb8_top_first(renderer.read_back_rgba8(), fb.width, fb.height),
+        f.scene.background, 1);
+    const std::size_t over_one = check.pixels - check.within_tolerance;
+    state.counters["pixels_over_1"] = double(over_one);
     state.counters["max_diff"] = check.max_difference;
-    if (check.over_one > kMaxDifferingPixels) {
-      const std::string why = "the images differ: " + std::to_string(check.over_one) +
+    if (over_one > kMaxDifferingPixels) {
+      const std::string why = "the images differ: " + std::to_string(over_one) +
                               " pixels over 1/255 (at most " + std::to_string(kMaxDifferingPixels) +
                               " allowed), max " + std::to_string(check.max_difference) + "/255";
       return state.SkipWithError(why.c_str());

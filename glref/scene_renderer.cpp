@@ -381,4 +381,17 @@ std::vector<TessOutputVertex> SceneRenderer::capture_tess() {
   return out;
 }
 
+Rgb8Image rgb8_top_first(const std::vector<glm::u8vec4>& bottom_first, int width, int height) {
+  Rgb8Image out{width, height, std::vector<std::uint8_t>(std::size_t(width) * std::size_t(height) * 3)};
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const glm::u8vec4 c = bottom_first[std::size_t(height - 1 - y) * std::size_t(width) + std::size_t(x)];
+      std::uint8_t* p = &out.pixels[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3];
+      p[0] = c.r;
+      p[1] = c.g;
+      p[2] = c.b;
+    }
+  return out;
+}
+
 }  // namespace tessref::glref

@@ -15,6 +15,7 @@
 #include "glref/draw_split.h"
 #include "glref/gl_program.h"
 #include "glref/render_target.h"
+#include "pipeline/image_output.h"
 #include "pipeline/mesh.h"
 #include "pipeline/scene.h"
 #include "raster/framebuffer.h"
@@ -98,5 +99,9 @@ class SceneRenderer {
   std::unique_ptr<RenderTarget> target_;
   SceneRenderStats stats_;
 };
+
+// An RGBA8 read-back (row 0 at the bottom) as the 8-bit RGB image a PNG holds (top row first), to
+// compare with tessref's to_rgb8 (pipeline/image_compare.h compare_images).
+Rgb8Image rgb8_top_first(const std::vector<glm::u8vec4>& bottom_first, int width, int height);
 
 }  // namespace tessref::glref

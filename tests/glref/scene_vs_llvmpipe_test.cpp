@@ -133,24 +133,16 @@ TEST(SceneVsLlvmpipe, SpecializedRgba8Depth24TargetGivesTessrefsImage) {
     fair.specialize = true;
     SceneRenderer renderer(*ctx, scene, mesh, fair);
     renderer.draw();
-    const std::vector<glm::u8vec4> gl = renderer.read_back_rgba8();
-    const Rgb8Image ti = to_rgb8(t.framebuffer);
-    std::size_t over_one = 0, drawn = 0;
-    for (int y = 0; y < ti.height; ++y)
-      for (int x = 0; x < ti.width; ++x) {
-        const std::uint8_t* p = &ti.pixels[(std::size_t(y) * ti.width + x) * 3];
-        const glm::u8vec4 q = gl[std::size_t(ti.height - 1 - y) * ti.width + x];
-        int d = 0;
-        for (int k = 0; k < 3; ++k) d = std::max(d, std::abs(int(p[k]) - int(q[k])));
-        over_one += d > 1;
-        drawn += q.r != gl[0].r || q.g != gl[0].g || q.b != gl[0].b;
-      }
-    std::printf("[ figures  ] fair target, %d light(s): %zu of %d pixels over 1/255, %zu not background\n",
-                lights, over_one, ti.width * ti.height, drawn);
+    const ImageComparison c =
+        compare_images(to_rgb8(t.framebuffer), rgb8_top_first(renderer.read_back_rgba8(), scene.width, scene.height),
+                       scene.background, 1);
+    const std::size_t over_one = c.pixels - c.within_tolerance;
+    std::printf("[ figures  ] fair target, %d light(s): %s\n", lights, c.summary().c_str());
     // Measured 0 at 1024x1024 with one light (docs/benchmarks.md); a handful allowed for depth
     // ties that 24-bit and float depth resolve differently.
     EXPECT_LE(over_one, 16u) << lights << " light(s)";
-    EXPECT_GT(drawn, 20000u);  // the torus was drawn, not just the background
+    EXPECT_GT(t.stats.raster.fragments_shaded, 20000u);  // the torus was drawn, not only the background
+    EXPECT_EQ(c.coverage_mismatch, 0u);
   }
 }
 
