@@ -141,13 +141,8 @@ void llvmpipe_frame(benchmark::State& state, std::size_t which, bool fair) {
   if (!ctx) return state.SkipWithError("no GL context");
   const Frame& f = frame(which);
   if (!f.error.empty()) return state.SkipWithError(f.error.c_str());
-  glref::SceneRendererOptions options;
-  if (fair) {
-    options.color = glref::ColorFormat::Rgba8;
-    options.normals_attachment = false;
-    options.depth24 = true;
-    options.specialize = true;
-  }
+  const glref::SceneRendererOptions options = fair ? glref::SceneRendererOptions::fair_rgba8()
+                                                   : glref::SceneRendererOptions{};
   glref::SceneRenderer renderer(*ctx, f.scene, f.mesh, options);
   if (fair) {
     renderer.draw();

@@ -139,8 +139,9 @@ std::vector<UniformConstant> scene_constants(const Scene& scene) {
 std::vector<ShaderStage> twin_stages(const Scene& scene, bool for_capture, bool specialize = false) {
   if (scene.shaders.program == ShaderProgram::Custom) return custom_stages(scene, for_capture);
   std::vector<ShaderStage> stages = builtin_twin_stages(scene, for_capture);
-  if (specialize)
-    for (ShaderStage& s : stages) s.source = specialize_uniforms(s.source, scene_constants(scene));
+  if (!specialize) return stages;
+  const std::vector<UniformConstant> constants = scene_constants(scene);
+  for (ShaderStage& s : stages) s.source = specialize_uniforms(s.source, constants);
   return stages;
 }
 

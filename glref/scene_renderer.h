@@ -33,11 +33,21 @@ struct SceneRendererOptions {
   std::size_t max_points_per_draw = kSafePointsPerDraw;  // tessellated draws split under this
   bool depth24 = false;  // GL_DEPTH_COMPONENT24 instead of 32F
   // Compile the twins for this scene, as an application compiles its shaders for one setup: the
-  // light count, normal mode, adaptive switch, inner-level rule and displacement switch become
-  // constants (glsl_rewrite.h specialize_uniforms), so the driver folds the loops and branches
+  // light count, normal mode, adaptive switch and displacement switch become constants (glsl_rewrite.h specialize_uniforms), so the driver folds the loops and branches
   // they drive. The image is the same; a user's own program (shaders.program custom) is left
   // as written.
   bool specialize = false;
+
+  // llvmpipe at its best for an 8-bit image, the benchmarks' baseline: one RGBA8 attachment,
+  // 24-bit depth, no normals target, the twins specialized (read back with read_back_rgba8).
+  static SceneRendererOptions fair_rgba8() {
+    SceneRendererOptions o;
+    o.color = ColorFormat::Rgba8;
+    o.normals_attachment = false;
+    o.depth24 = true;
+    o.specialize = true;
+    return o;
+  }
 };
 
 struct SceneRenderStats {

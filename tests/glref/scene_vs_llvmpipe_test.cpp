@@ -126,12 +126,7 @@ TEST(SceneVsLlvmpipe, SpecializedRgba8Depth24TargetGivesTessrefsImage) {
     std::vector<std::string> warnings;
     const Mesh mesh = build_mesh(scene.mesh, warnings);
     const RenderResult t = render_scene(scene, mesh, Parallel());
-    SceneRendererOptions fair;
-    fair.color = ColorFormat::Rgba8;
-    fair.normals_attachment = false;
-    fair.depth24 = true;
-    fair.specialize = true;
-    SceneRenderer renderer(*ctx, scene, mesh, fair);
+    SceneRenderer renderer(*ctx, scene, mesh, SceneRendererOptions::fair_rgba8());
     renderer.draw();
     const ImageComparison c =
         compare_images(to_rgb8(t.framebuffer), rgb8_top_first(renderer.read_back_rgba8(), scene.width, scene.height),
