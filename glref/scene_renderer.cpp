@@ -16,6 +16,7 @@
 #include "glref/shader_source.h"
 #include "glref/tess_capture.h"
 #include "pipeline/camera.h"
+#include "pipeline/draw_scene.h"
 #include "pipeline/glsl_scene.h"
 #include "pipeline/vertex_tags.h"
 #include "stages/programs/transform.h"
@@ -157,11 +158,15 @@ SceneRenderer::SceneRenderer(GlContext& context, const Scene& scene, const Mesh&
 
   if (!scene.shaders.textures.empty())
     throw GlError("SceneRenderer: shaders.textures are not bound on the GL side yet");
-  program_ = link_program(twin_stages(scene_, false, options_.specialize), {}, attribute_locations(scene_));
+  // A scene's draws name their inputs themselves: no glBindAttribLocation from shaders.attributes.
+  program_ = link_program(twin_stages(scene_, false, options_.specialize), {},
+                          scene_.draws.empty() ? attribute_locations(scene_) : AttributeLocations{});
   set_uniforms(program_);
 
   const TessellationSettings& t = scene_.tessellation;
-  if (t.enabled) {
+  if (!scene_.draws.empty()) {
+    draws_ = std::make_unique<GlDraws>(scene_, load_buffers(scene_), program_.id());
+  } else if (t.enabled) {
     const bool custom = scene_.shaders.program == ShaderProgram::Custom;
     PatchMeshData data{mesh.positions, mesh.normals, mesh.indices, custom ? scene_.shaders.patch_vertices : 3, {}, {}};
     if (!custom && t.scheme == SurfaceScheme::ScalarTaggedPN)
@@ -214,6 +219,7 @@ SceneRenderer::~SceneRenderer() {
   context_.make_current();
   target_.reset();
   patches_.reset();
+  draws_.reset();
   if (buffers_[0]) glDeleteBuffers(3, buffers_);
   if (vao_) glDeleteVertexArrays(1, &vao_);
 }
@@ -318,7 +324,11 @@ void SceneRenderer::draw() {
     glFrontFace(GL_CCW);
   }
   program_.use();
-  if (patches_) {
+  if (draws_) {
+    glDisable(GL_DEPTH_TEST);  // each draw sets its own state
+    draws_->draw();
+    stats_.draws = scene_.draws.size();
+  } else if (patches_) {
     stats_.draws = patches_->draw(program_, point_bounds_, options_.max_points_per_draw);
   } else {
     glBindVertexArray(vao_);

@@ -25,6 +25,17 @@ struct DrawStats {
   double vertex_seconds = 0.0;            // vertex shader and primitive assembly
   double tessellation_seconds = 0.0;
   double raster_seconds = 0.0;            // rasterization and fragment shading
+  DrawStats& operator+=(const DrawStats& o) {
+    vertices_shaded += o.vertices_shaded;
+    triangles_in += o.triangles_in;
+    triangles_generated += o.triangles_generated;
+    raster += o.raster;
+    tess += o.tess;
+    vertex_seconds += o.vertex_seconds;
+    tessellation_seconds += o.tessellation_seconds;
+    raster_seconds += o.raster_seconds;
+    return *this;
+  }
 };
 
 struct DrawOptions {

@@ -64,8 +64,12 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
   const Parallel serial(1);
   const Parallel& par = program.uses_atomic_counters() ? serial : parallel;
   const bool indexed = !call.indices.empty();
-  const std::size_t shade_first = indexed ? 0 : call.first;
-  const std::size_t shade_count = indexed ? call.vertex_count : call.count;
+  const bool by_id = !call.vertex_ids.empty();
+  const std::size_t shade_first = indexed || by_id ? 0 : call.first;
+  const std::size_t shade_count = by_id ? call.vertex_ids.size() : indexed ? call.vertex_count : call.count;
+  std::vector<glsl::VertexAttribute> instance_attributes;  // the draw's, then this instance's
+  if (call.instance_attributes) instance_attributes = attributes;
+  const std::vector<glsl::VertexAttribute>& vertex_attributes = call.instance_attributes ? instance_attributes : attributes;
 
   DrawStats stats;
   const auto tcs = call.patches ? program.control(call.patch_vertices, call.default_outer, call.default_inner) : nullptr;
@@ -88,11 +92,16 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
 
   for (int instance = 0; instance < call.instances; ++instance) {
     auto t0 = Clock::now();
-    program.run_vertices(attributes, shade_first, shade_count, instance, shaded.data(), par);
+    if (call.instance_attributes) {
+      instance_attributes.resize(attributes.size());
+      call.instance_attributes(instance, instance_attributes);
+    }
+    program.run_vertices(vertex_attributes, shade_first, shade_count, instance, shaded.data(), par,
+                         by_id ? call.vertex_ids.data() : nullptr);
     stats.vertices_shaded += shade_count;
     stats.vertex_seconds += seconds_since(t0);
     if (options.check) {
-      const Checker::VertexTrace trace = [&](std::size_t v) { return trace_vertex(program, attributes, v, instance); };
+      const Checker::VertexTrace trace = [&](std::size_t v) { return trace_vertex(program, vertex_attributes, v, instance); };
       std::array<std::string, kMaxStageAttributes> slot_names;  // named once, not per vertex
       for (int s = 0; s < kMaxStageAttributes; ++s) slot_names[s] = s == 0 ? "gl_Position" : "location " + std::to_string(s - 1);
       for (std::size_t v = 0; v < shaded.size(); ++v)

@@ -3,6 +3,7 @@
 // GL_PATCHES, TCS -> primitive generator -> TES, then rasterizer -> fragment shader, instance by
 // instance.
 #include <cstddef>
+#include <functional>
 #include <span>
 
 #include "pipeline/draw.h"
@@ -17,6 +18,11 @@ struct GlslDrawCall {
   std::size_t first = 0, count = 0;
   std::span<const std::uint32_t> indices;
   std::size_t vertex_count = 0;
+  // When set (draw/vertex_fetch.h): the vertex shader runs once for each entry, with that
+  // gl_VertexID, and indices (or, without indices, the order) refer to positions in this list.
+  std::span<const std::uint32_t> vertex_ids;
+  // Appends the attributes that change with the instance (instanced arrays) to the draw's.
+  std::function<void(int instance, std::vector<glsl::VertexAttribute>&)> instance_attributes;
   int instances = 1;
   bool patches = true;               // GL_PATCHES; false: GL_TRIANGLES, no tessellation stages
   int patch_vertices = 3;            // GL_PATCH_VERTICES

@@ -251,7 +251,9 @@ SceneProgram build_scene_program(const Scene& scene) {
   } catch (const shader::SpirvError& e) {
     throw InputError(scene.source + ": shaders: " + e.what());
   }
-  if (scene.tessellation.enabled != program->has_tes())
+  // A scene's draws name their modes (GL_PATCHES needs a tessellation evaluation shader, checked
+  // per draw); the mesh path takes its mode from tessellation.enabled.
+  if (scene.draws.empty() && scene.tessellation.enabled != program->has_tes())
     throw InputError(scene.source + (program->has_tes()
                                          ? ": shaders: the program has tessellation shaders but tessellation.enabled is false"
                                          : ": shaders: tessellation.enabled is true but the program has no tessellation evaluation shader"));

@@ -182,6 +182,16 @@ int JsonObject::integer(const std::string& key, int lo, int hi) {
   return static_cast<int>(d);
 }
 
+std::int64_t JsonObject::integer64(const std::string& key, std::int64_t lo, std::int64_t hi) {
+  describe(key, "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  const json& v = value(key);
+  const double d = v.is_number() ? v.get<double>() : 0.0;
+  if (!v.is_number() || !std::isfinite(d) || d != std::floor(d) || d < double(lo) || d > double(hi))
+    fail(key, "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
+                  describe_json(v));
+  return static_cast<std::int64_t>(d);
+}
+
 namespace {
 // Reads an array of n finite numbers (n in [min_n, max_n]) into out.
 template <typename Fail>

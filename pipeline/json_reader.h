@@ -1,6 +1,7 @@
 #pragma once
 // Typed, strict access to one JSON object of a scene: every read names its key path in errors, and
 // finish() rejects the keys nobody read. Errors are InputError "<source>: <key.path>: <what>".
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,8 @@ class JsonObject {
 
   bool has(const std::string& key);  // an optional key: known, read only if present
   std::string path_of(const std::string& key) const;
+  const std::string& path() const { return path_; }
+  const JsonSource& source() const { return source_; }
   const nlohmann::json& value(const std::string& key);  // required; marks the key as read
   // `also`: sibling keys the failed rule reads besides `key` (named when --set changed them).
   [[noreturn]] void fail(const std::string& key, const std::string& what,
@@ -57,6 +60,7 @@ class JsonObject {
   float number(const std::string& key);  // finite
   float number_in(const std::string& key, float lo, float hi, bool lo_open, bool hi_open);
   int integer(const std::string& key, int lo, int hi);
+  std::int64_t integer64(const std::string& key, std::int64_t lo, std::int64_t hi);  // |bounds| < 2^53
   glm::vec3 vec3(const std::string& key);             // array of 3 finite numbers
   glm::vec3 vec3_or_scalar(const std::string& key);   // a number s means (s, s, s)
   glm::vec4 rgba(const std::string& key);             // 3 numbers (alpha 1) or 4

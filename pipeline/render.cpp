@@ -2,6 +2,7 @@
 
 #include "pipeline/builtin_programs.h"
 #include "pipeline/camera.h"
+#include "pipeline/draw_scene.h"
 #include "pipeline/glsl_scene.h"
 #include "stages/programs/normals.h"
 #include "stages/programs/phong.h"
@@ -52,6 +53,7 @@ DrawStats render_scene(const Scene& scene, const Mesh& mesh, const Parallel& par
   if (scene.shaders.program != ShaderProgram::Builtin) {
     const SceneProgram program = build_scene_program(scene);
     fb.reset(scene.width, scene.height, scene.background, parallel);
+    if (!scene.draws.empty()) return draw_scene_draws(scene, *program.program, fb, parallel, options);
     return draw_glsl_scene(scene, *program.program, mesh, fb, parallel, options);
   }
   const auto vs = scene_vertex_shader(scene);

@@ -4,12 +4,14 @@
 // initializers below only serve code that builds a Scene by hand.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "draw/vertex_fetch.h"
 #include "pipeline/tessellation_settings.h"
 #include "stages/programs/phong.h"
 
@@ -103,6 +105,42 @@ struct ShaderSettings {
   std::uint64_t max_instructions = 50'000'000;  // shader::ExecLimits::max_instructions
 };
 
+// buffers.NAME: a buffer object's bytes, from a file (read when drawn) or written inline.
+struct BufferSetting {
+  std::string name;
+  std::filesystem::path file;  // resolved against the scene file's folder; empty: `data`
+  std::vector<std::byte> data;
+};
+
+// draws[].mode: the primitive type of glDraw*(mode, ...).
+enum class DrawMode { Patches, Triangles, TriangleStrip, TriangleFan };
+
+// draws[].vertex_arrays.INPUT: a vertex shader input (its name, or a location as digits) and the
+// array that feeds it; the location is resolved against the program when drawn.
+struct VertexArraySetting {
+  std::string input;
+  draw::VertexArray array;  // array.buffer: an index into Scene::buffers
+};
+
+// draws[]: one glDraw* call, or a list of them (calls: the multi-draw and indirect forms), with
+// the vertex array object and the state it is drawn with. The scene's `shaders` program draws it.
+struct DrawSetting {
+  std::string key;  // "draws.0", for messages
+  DrawMode mode = DrawMode::Patches;
+  int patch_vertices = 3;                    // GL_PATCH_VERTICES
+  glm::vec4 default_outer{1.0f};             // GL_PATCH_DEFAULT_OUTER_LEVEL
+  glm::vec2 default_inner{1.0f};             // GL_PATCH_DEFAULT_INNER_LEVEL
+  std::vector<VertexArraySetting> vertex_arrays;
+  std::optional<draw::ElementArray> elements;  // glDrawElements* when set (element.buffer: into buffers)
+  draw::PrimitiveRestart restart;
+  draw::FetchRules rules;
+  std::vector<draw::DrawCall> calls;
+  // enable: glEnable(GL_DEPTH_TEST) (depth func GL_LESS, depth writes on) and glEnable(GL_CULL_FACE)
+  // (glCullFace(GL_BACK), glFrontFace(GL_CCW)); GL's defaults are off.
+  bool depth_test = false;
+  bool cull_back_faces = false;
+};
+
 struct Scene {
   std::string source;  // the scene file, or "<default scene>": prefixes error messages
   MeshSettings mesh;
@@ -116,6 +154,10 @@ struct Scene {
   bool cull_back_faces = true;
   TessellationSettings tessellation;
   ShaderSettings shaders;
+  // A scene with draws describes GL draws (README, "Draws"): they replace the mesh and the
+  // built-in programs, and the `shaders` program draws them in order into one framebuffer.
+  std::vector<BufferSetting> buffers;
+  std::vector<DrawSetting> draws;
 };
 
 inline constexpr int kMaxLights = programs::kMaxLights;  // phong.frag's arrays

@@ -10,6 +10,7 @@
 #include "common/error.h"
 #include "pipeline/json_reader.h"
 #include "pipeline/scene_overrides.h"
+#include "pipeline/draw_schema.h"
 #include "pipeline/scene_schema.h"
 
 namespace tessref {
@@ -155,6 +156,12 @@ std::vector<SchemaKey> scene_keys() {
   const json defaults = parse_json(default_scene_json(), "<default scene>");
   JsonSource source{"<default scene>", {}, &keys};
   scene_from_json(defaults, source, ".");
+  // The draw keys, which the default scene does not have.
+  const json example_json = parse_json(draw_keys_example(), "<draw keys>");
+  JsonObject example(example_json, "", source);
+  std::vector<BufferSetting> buffers;
+  std::vector<DrawSetting> draws;
+  read_draw_keys(example, source, ".", buffers, draws);
   return keys;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "pipeline/draw_schema.h"
 #include "shader/executor.h"
 
 namespace tessref {
@@ -372,6 +373,9 @@ Scene scene_from_json(const json& root_json, const JsonSource& source,
   s.cull_back_faces = root.boolean("cull_back_faces");
   s.tessellation = read_tessellation(root.object("tessellation"));
   s.shaders = read_shaders(root.object("shaders"), source, mesh_base_dir);
+  read_draw_keys(root, source, mesh_base_dir, s.buffers, s.draws);
+  if (!s.draws.empty() && s.shaders.program != ShaderProgram::Custom)
+    source.fail("draws", "are drawn by the scene's GLSL program: set shaders.program to \"custom\"", {"draws", "shaders.program"});
   if (s.tessellation.tags.is_relative() && !s.tessellation.tags.empty())
     s.tessellation.tags = mesh_base_dir / s.tessellation.tags;
   // The GLSL path's TES may declare any domain; uniform subdivision is plumbed for the built-in

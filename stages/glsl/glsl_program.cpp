@@ -393,8 +393,8 @@ int GlslProgram::tcs_output_vertices() const { return tcs_ ? tcs_->exe->module()
 
 void GlslProgram::run_vertices(const std::vector<VertexAttribute>& attributes, std::size_t first,
                                std::size_t count, int instance, StageVertex* out,
-                               const Parallel& parallel) const {
-  run_vertex_stage(*vs_, attributes, first, count, instance, out, parallel);
+                               const Parallel& parallel, const std::uint32_t* vertex_ids) const {
+  run_vertex_stage(*vs_, attributes, first, count, instance, out, parallel, vertex_ids);
 }
 
 std::unique_ptr<TessControlProgram> GlslProgram::control(int patch_vertices, const glm::vec4& default_outer,

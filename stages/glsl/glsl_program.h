@@ -59,6 +59,9 @@ struct VertexAttribute {
   int components = 4;
   shader::Scalar scalar = shader::Scalar::F32;
   std::vector<std::uint32_t> words;  // vertex v's component k at v * components + k (doubles: 2 words)
+  // Every vertex reads the first element: an instanced array's element for this instance, or a
+  // disabled array's current value (glVertexAttrib*).
+  bool constant = false;
 };
 
 // A default-block uniform's GLSL type: columns x rows of scalar (1 x N for a vector), elements
@@ -99,10 +102,12 @@ class GlslProgram {
   TessLayout tes_layout() const;
   int tcs_output_vertices() const;
 
-  // Runs the vertex shader for vertices [first, first + count) of the attribute arrays (gl_VertexID
-  // = first + i) of instance `instance`; out receives gl_Position and the outputs as I/O slots.
+  // Runs the vertex shader for vertices [first, first + count) of the attribute arrays of instance
+  // `instance` (gl_InstanceID); gl_VertexID is vertex_ids[i] when given, else first + i. out
+  // receives gl_Position and the outputs as I/O slots.
   void run_vertices(const std::vector<VertexAttribute>& attributes, std::size_t first, std::size_t count,
-                    int instance, StageVertex* out, const Parallel& parallel) const;
+                    int instance, StageVertex* out, const Parallel& parallel,
+                    const std::uint32_t* vertex_ids = nullptr) const;
 
   // Stage programs for tessellate() and draw_triangles(). default_outer/inner: the levels used when
   // there is no control stage (glPatchParameterfv); patch_vertices: GL_PATCH_VERTICES.

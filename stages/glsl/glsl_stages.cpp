@@ -369,7 +369,7 @@ FragmentOutput GlslFragment::shade(const FragmentInput& in) const {
 
 void run_vertex_stage(const StageProgram& sp, const std::vector<VertexAttribute>& attributes,
                       std::size_t first, std::size_t count, int instance, StageVertex* out,
-                      const Parallel& parallel) {
+                      const Parallel& parallel, const std::uint32_t* vertex_ids) {
   const std::size_t step = std::size_t(std::clamp(sp.exe->limits().batch_lanes, 1, shader::kMaxLanes));
   const std::size_t batches = (count + step - 1) / step;
   auto run_batch = [&](std::size_t b) {
@@ -380,7 +380,9 @@ void run_vertex_stage(const StageProgram& sp, const std::vector<VertexAttribute>
     for (const IoVariable& v : sp.io.inputs) {
       if (v.kind == IoKind::VertexId || v.kind == IoKind::InstanceId) {
         for (int l = 0; l < n; ++l)
-          inv.row(*v.slot, 0)[l] = v.kind == IoKind::VertexId ? std::uint32_t(first + start + l) : std::uint32_t(instance);
+          inv.row(*v.slot, 0)[l] = v.kind == IoKind::InstanceId ? std::uint32_t(instance)
+                                   : vertex_ids                 ? vertex_ids[start + std::size_t(l)]
+                                                                : std::uint32_t(first + start + std::size_t(l));
         continue;
       }
       if (v.kind != IoKind::User) continue;
@@ -392,7 +394,7 @@ void run_vertex_stage(const StageProgram& sp, const std::vector<VertexAttribute>
         for (int l = 0; l < n; ++l) {
           // Missing components read as GL's defaults: (0, 0, 0, 1).
           std::uint32_t value[2] = {word == 3 && w.scalar == Scalar::F32 ? bits(1.0f) : 0u, 0u};
-          const std::size_t vtx = first + start + std::size_t(l);
+          const std::size_t vtx = a && a->constant ? 0 : first + start + std::size_t(l);
           if (a && word < std::uint32_t(a->components) && (vtx + 1) * a->components <= a->words.size()) {
             value[0] = a->words[vtx * a->components + word];
             if (w.scalar == Scalar::F64 && word + 1 < std::uint32_t(a->components)) value[1] = a->words[vtx * a->components + word + 1];
@@ -404,7 +406,8 @@ void run_vertex_stage(const StageProgram& sp, const std::vector<VertexAttribute>
     try {
       inv.run();
     } catch (const shader::ShaderRuntimeError& e) {
-      sp.rethrow(e, "vertex " + std::to_string(first + start + std::size_t(e.lane)));
+      sp.rethrow(e, "vertex " + std::to_string(vertex_ids ? vertex_ids[start + std::size_t(e.lane)]
+                                                          : first + start + std::size_t(e.lane)));
     }
     sp.finish(inv);
     for (int l = 0; l < n; ++l) out[start + std::size_t(l)] = StageVertex{};

@@ -81,6 +81,6 @@ class GlslFragment final : public FragmentProgram {
 
 void run_vertex_stage(const StageProgram& sp, const std::vector<VertexAttribute>& attributes,
                       std::size_t first, std::size_t count, int instance, StageVertex* out,
-                      const Parallel& parallel);
+                      const Parallel& parallel, const std::uint32_t* vertex_ids = nullptr);
 
 }  // namespace tessref::glsl

@@ -1,0 +1,168 @@
+#include "glref/gl_draws.h"
+
+#include <epoxy/gl.h>
+
+#include "glref/gl_error.h"
+
+namespace tessref::glref {
+namespace {
+
+GLenum gl_type(draw::ComponentType t) {
+  using CT = draw::ComponentType;
+  switch (t) {
+    case CT::Byte: return GL_BYTE;
+    case CT::UnsignedByte: return GL_UNSIGNED_BYTE;
+    case CT::Short: return GL_SHORT;
+    case CT::UnsignedShort: return GL_UNSIGNED_SHORT;
+    case CT::Int: return GL_INT;
+    case CT::UnsignedInt: return GL_UNSIGNED_INT;
+    case CT::Fixed: return GL_FIXED;
+    case CT::HalfFloat: return GL_HALF_FLOAT;
+    case CT::Float: return GL_FLOAT;
+    case CT::Double: return GL_DOUBLE;
+    case CT::Int2101010Rev: return GL_INT_2_10_10_10_REV;
+    case CT::UnsignedInt2101010Rev: return GL_UNSIGNED_INT_2_10_10_10_REV;
+    case CT::UnsignedInt10F11F11FRev: return GL_UNSIGNED_INT_10F_11F_11F_REV;
+  }
+  return GL_NONE;
+}
+
+GLenum gl_index_type(draw::IndexType t) {
+  return t == draw::IndexType::UnsignedByte ? GL_UNSIGNED_BYTE
+         : t == draw::IndexType::UnsignedShort ? GL_UNSIGNED_SHORT : GL_UNSIGNED_INT;
+}
+
+GLenum gl_mode(DrawMode m) {
+  switch (m) {
+    case DrawMode::Patches: return GL_PATCHES;
+    case DrawMode::Triangles: return GL_TRIANGLES;
+    case DrawMode::TriangleStrip: return GL_TRIANGLE_STRIP;
+    case DrawMode::TriangleFan: return GL_TRIANGLE_FAN;
+  }
+  return GL_NONE;
+}
+
+// glVertexAttrib4f / I4i / I4ui / L4d with the array's current value.
+void set_current(std::uint32_t location, const draw::VertexArray& a) {
+  const auto& w = a.current.words;
+  switch (a.format.pointer) {
+    case draw::AttribPointer::Float: glVertexAttrib4fv(location, reinterpret_cast<const GLfloat*>(w.data())); break;
+    case draw::AttribPointer::Integer:
+      if (a.format.type == draw::ComponentType::UnsignedInt || a.format.type == draw::ComponentType::UnsignedShort ||
+          a.format.type == draw::ComponentType::UnsignedByte)
+        glVertexAttribI4uiv(location, w.data());
+      else
+        glVertexAttribI4iv(location, reinterpret_cast<const GLint*>(w.data()));
+      break;
+    case draw::AttribPointer::Double: glVertexAttribL4dv(location, reinterpret_cast<const GLdouble*>(w.data())); break;
+  }
+}
+
+}  // namespace
+
+GlDraws::GlDraws(const Scene& scene, const std::vector<draw::Buffer>& buffers, unsigned program) : scene_(scene) {
+  buffers_.resize(buffers.size());
+  if (!buffers_.empty()) glGenBuffers(GLsizei(buffers_.size()), buffers_.data());
+  for (std::size_t i = 0; i < buffers.size(); ++i) {
+    glBindBuffer(GL_ARRAY_BUFFER, buffers_[i]);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(buffers[i].bytes.size()), buffers[i].bytes.data(), GL_STATIC_DRAW);
+  }
+  vaos_.resize(scene.draws.size());
+  glGenVertexArrays(GLsizei(vaos_.size()), vaos_.data());
+  current_.resize(scene.draws.size());
+  for (std::size_t d = 0; d < scene.draws.size(); ++d) {
+    const DrawSetting& draw = scene.draws[d];
+    glBindVertexArray(vaos_[d]);
+    for (const VertexArraySetting& s : draw.vertex_arrays) {
+      const draw::VertexArray& a = s.array;
+      GLint location;
+      if (s.input.find_first_not_of("0123456789") == std::string::npos) {
+        location = GLint(std::stoul(s.input));
+      } else {
+        location = glGetAttribLocation(program, s.input.c_str());
+        if (location < 0) throw GlError(a.key + ": the driver reports no active vertex input \"" + s.input + "\"");
+      }
+      if (!a.enabled) {
+        current_[d].push_back({std::uint32_t(location), a});
+        continue;
+      }
+      glBindBuffer(GL_ARRAY_BUFFER, buffers_[a.buffer]);
+      const GLint size = a.format.bgra ? GL_BGRA : a.format.size;
+      const auto* pointer = reinterpret_cast<const void*>(std::uintptr_t(a.offset));
+      switch (a.format.pointer) {
+        case draw::AttribPointer::Float:
+          glVertexAttribPointer(GLuint(location), size, gl_type(a.format.type), a.format.normalized ? GL_TRUE : GL_FALSE,
+                                GLsizei(a.stride), pointer);
+          break;
+        case draw::AttribPointer::Integer:
+          glVertexAttribIPointer(GLuint(location), size, gl_type(a.format.type), GLsizei(a.stride), pointer);
+          break;
+        case draw::AttribPointer::Double:
+          glVertexAttribLPointer(GLuint(location), size, GL_DOUBLE, GLsizei(a.stride), pointer);
+          break;
+      }
+      glVertexAttribDivisor(GLuint(location), a.divisor);
+      glEnableVertexAttribArray(GLuint(location));
+    }
+    if (draw.elements) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers_[draw.elements->buffer]);
+    check_gl((draw.key + ": setting up the vertex array").c_str());
+  }
+  glBindVertexArray(0);
+}
+
+GlDraws::~GlDraws() {
+  if (!vaos_.empty()) glDeleteVertexArrays(GLsizei(vaos_.size()), vaos_.data());
+  if (!buffers_.empty()) glDeleteBuffers(GLsizei(buffers_.size()), buffers_.data());
+}
+
+void GlDraws::draw() const {
+  for (std::size_t d = 0; d < scene_.draws.size(); ++d) {
+    const DrawSetting& draw = scene_.draws[d];
+    glBindVertexArray(vaos_[d]);
+    for (const auto& [location, a] : current_[d]) set_current(location, a);
+    if (draw.depth_test) {
+      glEnable(GL_DEPTH_TEST);
+      glDepthFunc(GL_LESS);
+      glDepthMask(GL_TRUE);
+    } else {
+      glDisable(GL_DEPTH_TEST);
+    }
+    if (draw.cull_back_faces) {
+      glEnable(GL_CULL_FACE);
+      glCullFace(GL_BACK);
+      glFrontFace(GL_CCW);
+    } else {
+      glDisable(GL_CULL_FACE);
+    }
+    glDisable(GL_PRIMITIVE_RESTART);
+    glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
+    if (draw.restart.enabled && draw.restart.fixed_index) glEnable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
+    if (draw.restart.enabled && !draw.restart.fixed_index) {
+      glEnable(GL_PRIMITIVE_RESTART);
+      glPrimitiveRestartIndex(draw.restart.index);
+    }
+    if (draw.mode == DrawMode::Patches) {
+      glPatchParameteri(GL_PATCH_VERTICES, draw.patch_vertices);
+      glPatchParameterfv(GL_PATCH_DEFAULT_OUTER_LEVEL, &draw.default_outer.x);
+      glPatchParameterfv(GL_PATCH_DEFAULT_INNER_LEVEL, &draw.default_inner.x);
+    }
+    for (const draw::DrawCall& c : draw.calls) {
+      if (draw.elements)
+        glDrawElementsInstancedBaseVertexBaseInstance(
+            gl_mode(draw.mode), GLsizei(c.count), gl_index_type(draw.elements->type),
+            reinterpret_cast<const void*>(std::uintptr_t(draw.elements->offset)), GLsizei(c.instance_count),
+            GLint(c.base_vertex), c.base_instance);
+      else
+        glDrawArraysInstancedBaseInstance(gl_mode(draw.mode), GLint(c.first), GLsizei(c.count),
+                                          GLsizei(c.instance_count), c.base_instance);
+    }
+    check_gl((draw.key + ": drawing").c_str());
+  }
+  glBindVertexArray(0);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_PRIMITIVE_RESTART);
+  glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
+}
+
+}  // namespace tessref::glref

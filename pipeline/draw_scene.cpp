@@ -1,0 +1,126 @@
+#include "pipeline/draw_scene.h"
+
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+#include "common/error.h"
+
+namespace tessref {
+
+std::vector<draw::Buffer> load_buffers(const Scene& scene) {
+  std::vector<draw::Buffer> out;
+  for (const BufferSetting& b : scene.buffers) {
+    draw::Buffer buffer{b.name, b.data};
+    if (!b.file.empty()) {
+      std::ifstream in(b.file, std::ios::binary);
+      if (!in)
+        throw InputError(scene.source + ": buffers." + b.name + ".file: cannot read '" + b.file.string() + "'");
+      const std::vector<char> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+      if (in.bad())
+        throw InputError(scene.source + ": buffers." + b.name + ".file: error reading '" + b.file.string() + "'");
+      buffer.bytes.resize(bytes.size());
+      std::memcpy(buffer.bytes.data(), bytes.data(), bytes.size());
+    }
+    out.push_back(std::move(buffer));
+  }
+  return out;
+}
+
+std::vector<std::uint32_t> assemble(DrawMode mode, int patch_vertices,
+                                    const std::vector<std::vector<std::uint32_t>>& runs) {
+  std::vector<std::uint32_t> out;
+  for (const std::vector<std::uint32_t>& r : runs) {
+    switch (mode) {
+      case DrawMode::Patches:
+      case DrawMode::Triangles: {
+        const std::size_t n = mode == DrawMode::Patches ? std::size_t(patch_vertices) : 3;
+        out.insert(out.end(), r.begin(), r.begin() + std::ptrdiff_t(r.size() / n * n));
+        break;
+      }
+      case DrawMode::TriangleStrip:
+        // GL 4.5, 10.1.8: triangle i is (i, i+1, i+2), with i and i+1 swapped for odd i so that
+        // every triangle keeps the strip's winding.
+        for (std::size_t i = 0; i + 2 < r.size(); ++i) {
+          const bool odd = i % 2;
+          out.insert(out.end(), {r[odd ? i + 1 : i], r[odd ? i : i + 1], r[i + 2]});
+        }
+        break;
+      case DrawMode::TriangleFan:
+        for (std::size_t i = 0; i + 2 < r.size(); ++i) out.insert(out.end(), {r[0], r[i + 1], r[i + 2]});
+        break;
+    }
+  }
+  return out;
+}
+
+namespace {
+
+// The draw's arrays with their inputs resolved to the program's locations.
+std::vector<draw::VertexArray> resolve_arrays(const Scene& scene, const DrawSetting& d, const glsl::GlslProgram& program) {
+  std::vector<draw::VertexArray> arrays;
+  for (const VertexArraySetting& s : d.vertex_arrays) {
+    draw::VertexArray a = s.array;
+    const bool by_location = s.input.find_first_not_of("0123456789") == std::string::npos;
+    if (by_location) {
+      a.location = std::uint32_t(std::stoul(s.input));
+    } else {
+      const auto location = program.attribute_location(s.input);
+      if (!location)
+        throw InputError(scene.source + ": " + a.key + ": the vertex shader has no active input named \"" +
+                         s.input + "\" (glGetAttribLocation would return -1; name an input or give a location)");
+      a.location = *location;
+    }
+    arrays.push_back(std::move(a));
+  }
+  return arrays;
+}
+
+}  // namespace
+
+DrawStats draw_scene_draws(const Scene& scene, const glsl::GlslProgram& program, Framebuffer& fb,
+                           const Parallel& parallel, const DrawOptions& options) {
+  const std::vector<draw::Buffer> buffers = load_buffers(scene);
+  DrawStats stats;
+  for (const DrawSetting& d : scene.draws) {
+    const std::vector<draw::VertexArray> arrays = resolve_arrays(scene, d, program);
+    RasterState state;
+    state.cull_back_faces = d.cull_back_faces;
+    state.depth_test = d.depth_test;
+    for (const draw::DrawCall& c : d.calls) {
+      draw::VertexInput input;
+      try {
+        input = draw::fetch_vertices(buffers, arrays, d.elements, d.restart, c, d.rules);
+      } catch (const InputError& e) {
+        throw InputError(scene.source + ": " + e.what());
+      }
+      const std::vector<std::uint32_t> indices = assemble(d.mode, d.patch_vertices, input.runs);
+      if (indices.empty() || c.instance_count == 0) continue;
+      GlslDrawCall call;
+      call.indices = indices;
+      call.vertex_ids = input.vertex_ids;
+      call.vertex_count = input.vertex_ids.size();
+      call.instances = int(c.instance_count);
+      call.patches = d.mode == DrawMode::Patches;
+      call.patch_vertices = d.patch_vertices;
+      call.default_outer = d.default_outer;
+      call.default_inner = d.default_inner;
+      if (!input.instanced.empty())
+        call.instance_attributes = [&](int instance, std::vector<glsl::VertexAttribute>& out) {
+          draw::fetch_instanced(buffers, arrays, input, c, std::uint32_t(instance), d.rules, out);
+        };
+      try {
+        stats += draw_glsl(program, input.per_vertex, call, state, fb, parallel, options);
+      } catch (const InputError& e) {  // an instanced array's fetch
+        throw InputError(scene.source + ": " + e.what());
+      } catch (const glsl::StageError& e) {
+        throw InputError(scene.source + ": " + d.key + ": " + e.what());
+      } catch (const std::invalid_argument& e) {
+        throw InputError(scene.source + ": " + d.key + ": " + e.what());
+      }
+    }
+  }
+  return stats;
+}
+
+}  // namespace tessref

@@ -1,0 +1,26 @@
+#pragma once
+// A scene's GL draws (Scene::draws): the buffers loaded, each call's vertices pulled through its
+// vertex arrays (draw/vertex_fetch.h), its primitives assembled and drawn with the scene's GLSL
+// program, in order, into one framebuffer.
+#include <vector>
+
+#include "draw/vertex_fetch.h"
+#include "pipeline/glsl_draw.h"
+#include "pipeline/scene.h"
+
+namespace tessref {
+
+// The scene's buffers with their bytes (files read now). InputError naming buffers.NAME.file.
+std::vector<draw::Buffer> load_buffers(const Scene& scene);
+
+// The primitives' vertices for `mode`, as positions into the fetched vertices: each restarted run
+// cut to whole primitives (GL ignores a partial last one), strips and fans as triangle lists in
+// GL's vertex order (the last vertex of each triangle is GL's provoking vertex).
+std::vector<std::uint32_t> assemble(DrawMode mode, int patch_vertices,
+                                    const std::vector<std::vector<std::uint32_t>>& runs);
+
+// Draws every draw of the scene into fb (already cleared).
+DrawStats draw_scene_draws(const Scene& scene, const glsl::GlslProgram& program, Framebuffer& fb,
+                           const Parallel& parallel, const DrawOptions& options);
+
+}  // namespace tessref

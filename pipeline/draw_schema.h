@@ -1,0 +1,19 @@
+#pragma once
+// The scene format's GL draws (README.md, "Draws"): `buffers` and `draws`, every key checked
+// against GL's own rules for the call it stands for.
+#include <filesystem>
+#include <vector>
+
+#include "pipeline/json_reader.h"
+#include "pipeline/scene.h"
+
+namespace tessref {
+
+// Reads root.buffers and root.draws (both optional). Relative buffer files resolve against base_dir.
+void read_draw_keys(JsonObject& root, const JsonSource& source, const std::filesystem::path& base_dir,
+                    std::vector<BufferSetting>& buffers, std::vector<DrawSetting>& draws);
+
+// A scene with every draw key once, read only to list the keys (`tessref scene --keys`).
+const char* draw_keys_example();
+
+}  // namespace tessref

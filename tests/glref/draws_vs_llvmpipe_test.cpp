@@ -1,0 +1,57 @@
+// Scenes that describe GL draws (buffers, vertex arrays, glDraw* calls) drawn by tessref and by
+// the GL driver from the same scene file: the driver gets the same bytes through the same GL
+// calls an application would make (glref/gl_draws.h). Figures are printed; on failure the diff
+// and both images go to the build directory.
+#include <cstdio>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "gl_fixture.h"
+#include "glref/scene_renderer.h"
+#include "pipeline/image_compare.h"
+#include "pipeline/image_output.h"
+#include "pipeline/mesh_source.h"
+#include "pipeline/render.h"
+#include "pipeline/scene_loader.h"
+
+namespace tessref::glref {
+namespace {
+
+struct DrawsOutcome {
+  ImageComparison within1;  // tolerance 1/255
+  DrawStats stats;
+};
+
+DrawsOutcome compare_draws(GlContext& ctx, const std::string& file, const std::vector<std::string>& sets = {}) {
+  const Scene scene = load_scene(std::string(TESSREF_SOURCE_DIR) + "/tests/data/draws/" + file, sets);
+  std::vector<std::string> warnings;
+  const Mesh mesh = build_mesh(scene.mesh, warnings);
+  const RenderResult ours = render_scene(scene, mesh, Parallel());
+  SceneRenderer renderer(ctx, scene, mesh);
+  const Framebuffer gl = renderer.render();
+  DrawsOutcome out{compare_framebuffers(ours.framebuffer, gl, 1, true), ours.stats};
+  std::printf("[ figures  ] %s: %s; %llu fragments shaded\n", file.c_str(), out.within1.summary().c_str(),
+              static_cast<unsigned long long>(ours.stats.raster.fragments_shaded));
+  if (out.within1.within_tolerance != out.within1.pixels) {
+    const std::string base = std::string(TESSREF_BINARY_DIR) + "/draws_vs_llvmpipe_" + file;
+    write_rgb8_image(out.within1.diff, base + "_diff.png");
+    write_color_image(ours.framebuffer, base + "_tessref.png");
+    write_color_image(gl, base + "_gl.png");
+    std::printf("[ figures  ] wrote %s_{diff,tessref,gl}.png\n", base.c_str());
+  }
+  return out;
+}
+
+// Two 16-control-point bicubic patches from glDrawArrays(GL_PATCHES, 0, 32) with no index buffer.
+TEST(DrawsVsLlvmpipe, BicubicPatchesFromDrawArrays) {
+  TESSREF_REQUIRE_GL(ctx);
+  const DrawsOutcome o = compare_draws(*ctx, "bicubic_arrays.json");
+  EXPECT_GT(o.stats.raster.fragments_shaded, 10000u);
+  EXPECT_EQ(o.stats.tess.patches_in, 2u);
+  EXPECT_LE(o.within1.coverage_mismatch, 4u) << o.within1.summary();
+  EXPECT_LE(o.within1.pixels - o.within1.within_tolerance, o.within1.coverage_mismatch) << o.within1.summary();
+}
+
+}  // namespace
+}  // namespace tessref::glref

@@ -1,0 +1,88 @@
+// Scenes with GL draws (README "Draws") on tessref alone: what is drawn, determinism across
+// thread counts, and the errors a bad draw description gets.
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "common/error.h"
+#include "common/hash.h"
+#include "pipeline/draw_scene.h"
+#include "pipeline/mesh_source.h"
+#include "pipeline/render.h"
+#include "pipeline/scene_loader.h"
+
+namespace tessref {
+namespace {
+
+const std::string kDraws = std::string(TESSREF_SOURCE_DIR) + "/tests/data/draws/";
+
+RenderResult render_file(const std::string& file, const std::vector<std::string>& sets = {}, int threads = 0) {
+  const Scene scene = load_scene(kDraws + file, sets);
+  std::vector<std::string> warnings;
+  const Mesh mesh = build_mesh(scene.mesh, warnings);
+  return render_scene(scene, mesh, threads ? Parallel(threads) : Parallel());
+}
+
+std::string error_of(const std::string& file, const std::vector<std::string>& sets) {
+  try {
+    render_file(file, sets);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(DrawsScene, BicubicPatchesFromDrawArrays) {
+  const RenderResult r = render_file("bicubic_arrays.json");
+  EXPECT_EQ(r.stats.vertices_shaded, 32u);
+  EXPECT_EQ(r.stats.tess.patches_in, 2u);
+  EXPECT_EQ(r.stats.triangles_generated, 2u * 12u * 12u * 2u);  // quads at level 12: 288 triangles a patch
+  EXPECT_GT(r.stats.raster.fragments_shaded, 10000u);
+}
+
+TEST(DrawsScene, SameBytesAtOneAndEightThreads) {
+  const RenderResult one = render_file("bicubic_arrays.json", {}, 1);
+  const RenderResult eight = render_file("bicubic_arrays.json", {}, 8);
+  EXPECT_EQ(one.framebuffer.color, eight.framebuffer.color);
+  EXPECT_EQ(one.framebuffer.depth, eight.framebuffer.depth);
+}
+
+TEST(DrawsScene, AssemblesStripsFansAndRestartedRunsAsGlDoes) {
+  const std::vector<std::vector<std::uint32_t>> runs{{0, 1, 2, 3, 4}, {5, 6, 7, 8}};
+  EXPECT_EQ(assemble(DrawMode::TriangleStrip, 3, runs),
+            (std::vector<std::uint32_t>{0, 1, 2, 2, 1, 3, 2, 3, 4, 5, 6, 7, 7, 6, 8}));
+  EXPECT_EQ(assemble(DrawMode::TriangleFan, 3, runs),
+            (std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3, 0, 3, 4, 5, 6, 7, 5, 7, 8}));
+  // A partial last primitive of each run is dropped.
+  EXPECT_EQ(assemble(DrawMode::Triangles, 3, runs), (std::vector<std::uint32_t>{0, 1, 2, 5, 6, 7}));
+  EXPECT_EQ(assemble(DrawMode::Patches, 4, runs), (std::vector<std::uint32_t>{0, 1, 2, 3, 5, 6, 7, 8}));
+}
+
+TEST(DrawsScene, BadDrawsNameTheKeyAndTheRule) {
+  const std::string f = "bicubic_arrays.json";
+  EXPECT_NE(error_of(f, {"draws.0.count=33"}).find(
+                "draws.0.vertex_arrays.in_position: gl_VertexID 32 reads bytes [384, 396) of buffer 'control_points', "
+                "which holds 384 bytes"),
+            std::string::npos)
+      << error_of(f, {"draws.0.count=33"});
+  EXPECT_NE(error_of(f, {"draws.0.patch_vertices=33"}).find("draws.0.patch_vertices: glPatchParameteri(GL_PATCH_VERTICES) takes 1..32"),
+            std::string::npos);
+  EXPECT_NE(error_of(f, {"draws.0.vertex_arrays.in_position.normalized=true"}).find("normalized applies to integer types"),
+            std::string::npos);
+  EXPECT_NE(error_of(f, {"draws.0.vertex_arrays.in_position.stride=4096"}).find("GL_MAX_VERTEX_ATTRIB_STRIDE"),
+            std::string::npos);
+  EXPECT_NE(error_of(f, {"draws.0.vertex_arrays.in_position.type=\"GL_INT_2_10_10_10_REV\""}).find("needs size 4 or GL_BGRA"),
+            std::string::npos);
+  EXPECT_NE(error_of(f, {"draws.0.vertex_arrays.in_position.buffer=\"nope\""}).find("no buffer named \"nope\" (buffers: control_points)"),
+            std::string::npos);
+  EXPECT_NE(error_of(f, {"draws.0.mode=\"GL_TRIANGLES\""}).find("draws.0.mode: the patch parameters apply to GL_PATCHES only"),
+            std::string::npos);
+  EXPECT_NE(error_of(f, {"draws.0.vertex_arrays={\"in_positon\": {\"buffer\": \"control_points\", \"size\": 3}}"})
+                .find("no active input named \"in_positon\""),
+            std::string::npos);
+  EXPECT_NE(error_of(f, {"draws.0.basevertex=1"}).find("glDrawArrays* takes no basevertex"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace tessref
