@@ -134,17 +134,19 @@ std::optional<std::string> format_error(const VertexFormat& f) {
   return std::nullopt;
 }
 
+// GL fixes the formulas but not their rounding (section 2.3.4.1 allows about one ulp). tessref
+// rounds as llvmpipe does, which tests/glref/vertex_formats_vs_llvmpipe_test.cpp checks bit for
+// bit: the integer converted to float, times the reciprocal rounded to float.
 float unsigned_normalized(std::uint32_t c, int bits) {
-  // Correctly rounded c / (2^b - 1): exact in float for b <= 24, through double for 32 bits
-  // (a double quotient of integers below 2^32 rounds to float as the real quotient would).
-  if (bits <= 24) return float(c) / float((1u << bits) - 1u);
-  return float(double(c) / 4294967295.0);
+  if (bits <= 24) return float(c) * float(1.0 / double((1u << bits) - 1u));
+  // 32 bits: the top 23 bits as an exact float fraction, scaled by 2^23 / (2^23 - 1).
+  const float top = float(c >> 9) * (1.0f / 8388608.0f);
+  return top * float(8388608.0 / 8388607.0);
 }
 
 float signed_normalized(std::int32_t c, int bits) {
-  const double max = double((std::uint64_t(1) << (bits - 1)) - 1);
-  const float f = bits <= 24 ? float(c) / float(max) : float(double(c) / max);
-  return std::max(f, -1.0f);
+  const float f = float(c) * float(1.0 / double((std::uint64_t(1) << (bits - 1)) - 1));
+  return std::max(f, -1.0f);  // GL 4.2's rule: the most negative value is -1 too
 }
 
 float half_to_float(std::uint16_t h) { return glm::unpackHalf1x16(h); }

@@ -5,8 +5,11 @@
 # verdict lines (paths relative to arb_tessellation_shader/) and its closing line
 # `N passed, M failed, K skipped`.
 #
-#   scripts/piglit-tess.sh [--table FILE] [--expect-pass N] [TESSREF OPTIONS...]
+#   scripts/piglit-tess.sh [--suite DIR] [--table FILE] [--expect-pass N] [TESSREF OPTIONS...]
 #
+# --suite DIR       another folder under tests/spec/ instead (e.g.
+#                   arb_enhanced_layouts/execution/component-layout): its files with a
+#                   tessellation control or evaluation shader.
 # --table FILE      also writes a Markdown table: file, tessref's verdict and reason, and
 #                   llvmpipe's verdict from tests/data/piglit/llvmpipe_verdicts.txt (measured by
 #                   scripts/piglit-llvmpipe.sh).
@@ -27,12 +30,13 @@ usage() { sed -n '2,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "$0"; }
 
 table=""
 expect=""
+suite=""
 pass_through=()
 while [ $# -gt 0 ]; do
   case $1 in
-    --table | --expect-pass)
+    --table | --expect-pass | --suite)
       [ $# -ge 2 ] || die "$1 needs a value"
-      if [ "$1" = --table ]; then table=$2; else expect=$2; fi
+      case $1 in --table) table=$2 ;; --suite) suite=$2 ;; *) expect=$2 ;; esac
       shift 2
       ;;
     --table=*) table=${1#--table=} && shift ;;
@@ -58,13 +62,15 @@ bin=${TESSREF_BIN:-build/cli/tessref}
 [[ $bin == /* ]] || bin=$PWD/$bin
 
 spec=$("$root/scripts/fetch-piglit.sh" | tail -n1) || die "scripts/fetch-piglit.sh failed"
-tess=$spec/arb_tessellation_shader
+tess=$spec/${suite:-arb_tessellation_shader}
 [ -d "$tess" ] || die "$tess not found (fetch-piglit.sh printed '$spec')"
+pattern='\[tessellation evaluation shader\]'
+[ -z "$suite" ] || pattern='\[tessellation (control|evaluation) shader\]'
 
 cd "$tess"
 mapfile -t files < <(find . -name '*.shader_test' -type f -print0 |
-  xargs -0 grep -lF '[tessellation evaluation shader]' | sed 's|^\./||' | LC_ALL=C sort)
-[ ${#files[@]} -gt 0 ] || die "no .shader_test with a [tessellation evaluation shader] in $tess"
+  xargs -0 grep -lE "$pattern" | sed 's|^\./||' | LC_ALL=C sort)
+[ ${#files[@]} -gt 0 ] || die "no .shader_test with a tessellation shader in $tess"
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/piglit-tess.XXXXXX")
 trap 'rm -rf "$work"' EXIT

@@ -127,7 +127,8 @@ struct IoVariable {
   std::string name;
   const glslang::TType* type;
   std::optional<glslang::TSourceLoc> first_use;  // none: not statically used
-  int location;  // explicit, or -1
+  int location;   // explicit, or -1
+  int component;  // layout(component), 0 without one
 };
 
 // The type a linker compares: without the per-vertex array, with `patch`.
@@ -206,7 +207,8 @@ std::vector<IoVariable> interface_of(Stage stage, const glslang::TIntermediate& 
       IoVariable v{q.storage == glslang::EvqVaryingIn, q.isArrayedIo(lang),
                    interface_name(*symbol), &symbol->getType(),
                    use == live.first_use.end() ? std::nullopt : std::optional(use->second),
-                   q.hasLocation() ? static_cast<int>(q.layoutLocation) : -1};
+                   q.hasLocation() ? static_cast<int>(q.layoutLocation) : -1,
+                   q.hasComponent() ? static_cast<int>(q.layoutComponent) : 0};
       vars.push_back(v);
     }
   }
@@ -226,8 +228,10 @@ struct StageInterface {
   std::vector<IoVariable> vars;
 };
 
-// GL's rules between adjacent stages: every statically used input has an output of the same
-// name (or, for an input with a location, at that location) and type.
+// GL's rules between adjacent stages (OpenGL 4.5, 7.4.1; GLSL 4.50, 4.4.1): an output matches an
+// input when both have the same location and component, or when neither has a location and
+// their names agree; a location on one side only matches nothing (Mesa links it so: the input
+// then reads undefined values). Every statically used input needs a match of the same type.
 void check_links(const std::vector<StageInterface>& stages, std::vector<std::string>& errors) {
   for (std::size_t i = 1; i < stages.size(); ++i) {
     const StageInterface& producer = stages[i - 1];
@@ -239,20 +243,33 @@ void check_links(const std::vector<StageInterface>& stages, std::vector<std::str
           if (!out.input && matches(out)) return &out;
         return nullptr;
       };
-      const IoVariable* out = output([&](const IoVariable& o) { return o.name == in.name; });
-      if (!out && in.location >= 0)
-        out = output([&](const IoVariable& o) { return o.location == in.location; });
+      const IoVariable* out =
+          in.location >= 0
+              ? output([&](const IoVariable& o) { return o.location == in.location && o.component == in.component; })
+              : output([&](const IoVariable& o) { return o.location < 0 && o.name == in.name; });
       const std::string head = where(*in.first_use) + ": error: link error: " +
                                stage_name(consumer.stage) + " input '" + in.name + "'";
       const std::string other = std::string(stage_name(producer.stage)) + " output";
-      if (!out)
-        errors.push_back(head + " has no matching output in the " + stage_name(producer.stage));
-      else if (!same_type(in, *out))
-        errors.push_back(head + " is " + type_text(in) + " but the " + other + used_at(*out) +
-                         " is " + type_text(*out));
-      else if (in.location >= 0 && out->location >= 0 && in.location != out->location)
-        errors.push_back(head + " has location " + std::to_string(in.location) + " but the " +
-                         other + used_at(*out) + " has location " + std::to_string(out->location));
+      if (!out) {
+        const IoVariable* named = output([&](const IoVariable& o) { return o.name == in.name; });
+        if (named && (named->location < 0) != (in.location < 0))
+          errors.push_back(head + (in.location >= 0 ? " has location " + std::to_string(in.location) + " but the " + other +
+                                                          used_at(*named) + " of that name has none"
+                                                    : " has no location but the " + other + used_at(*named) +
+                                                          " of that name has location " + std::to_string(named->location)) +
+                           ": GL matches by name only when neither side has a location, so on a driver the input "
+                           "would have no matching output (give both the same location, or neither)");
+        else if (in.location >= 0)
+          errors.push_back(head + " has location " + std::to_string(in.location) +
+                           (in.component ? " component " + std::to_string(in.component) : std::string()) +
+                           " but no " + other + " has that location" +
+                           (in.component ? " and component" : ""));
+        else
+          errors.push_back(head + " has no matching output in the " + stage_name(producer.stage));
+      } else if (!same_type(in, *out)) {
+        errors.push_back(head + " is " + type_text(in) + " but the " + other + " '" + out->name + "'" +
+                         used_at(*out) + " is " + type_text(*out));
+      }
     }
   }
 }

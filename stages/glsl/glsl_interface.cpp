@@ -36,7 +36,7 @@ struct Walker {
   std::vector<IoWord>& out;
 
   // Lays out type t from `location` (component `component`): each scalar or vector starts a new
-  // location unless a Component decoration places it; doubles take two words.
+  // location, at the variable's Component decoration (0 without one); doubles take two words.
   void walk(std::uint32_t type_id, std::uint32_t var_word, std::uint32_t& location,
             std::uint32_t component) {
     const Type& t = m.type(type_id);
@@ -51,8 +51,10 @@ struct Walker {
         break;
       }
       case TypeKind::Matrix: case TypeKind::Array: {
+        // GLSL 4.50, 4.4.1.3: a component qualifier on an array or matrix applies to each element
+        // (column), which sit at that component of consecutive locations.
         const std::uint32_t ew = m.type(t.element).words;
-        for (std::uint32_t i = 0; i < t.count; ++i) walk(t.element, var_word + i * ew, location, 0);
+        for (std::uint32_t i = 0; i < t.count; ++i) walk(t.element, var_word + i * ew, location, component);
         break;
       }
       case TypeKind::Struct:

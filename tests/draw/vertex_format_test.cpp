@@ -56,18 +56,18 @@ TEST(VertexFormat, ElementSizes) {
   EXPECT_EQ(element_bytes({2, false, CT::HalfFloat, false, AttribPointer::Float}), 4u);
 }
 
-// GL 4.5, equation 2.2: f = c / (2^b - 1), exactly representable ends.
+// GL 4.5, equation 2.2: f = c / (2^b - 1), with the ends exact; rounded as llvmpipe rounds it
+// (the integer as a float times the reciprocal as a float), which the GL comparison checks.
 TEST(VertexFormat, UnsignedNormalizedEndsAndRounding) {
   for (int bits : {2, 8, 10, 16, 32}) {
     EXPECT_EQ(unsigned_normalized(0, bits), 0.0f) << bits;
     EXPECT_EQ(unsigned_normalized(std::uint32_t((std::uint64_t(1) << bits) - 1), bits), 1.0f) << bits;
   }
-  // Correctly rounded: every 8- and 16-bit value is the float nearest the real quotient.
   for (std::uint32_t c = 0; c < 65536; ++c) {
-    const double exact = double(c) / 65535.0;
-    const float f = unsigned_normalized(c, 16);
-    EXPECT_LE(std::abs(double(f) - exact), std::abs(double(std::nextafter(f, 2.0f)) - exact)) << c;
-    EXPECT_LE(std::abs(double(f) - exact), std::abs(double(std::nextafter(f, -1.0f)) - exact)) << c;
+    EXPECT_EQ(unsigned_normalized(c, 16), float(c) * float(1.0 / 65535.0)) << c;
+    // Within one ulp of the real quotient.
+    const double exact = double(c) / 65535.0, f = unsigned_normalized(c, 16);
+    EXPECT_LE(std::abs(f - exact), std::abs(double(std::nextafter(float(f), 2.0f)) - f)) << c;
   }
 }
 
@@ -78,7 +78,7 @@ TEST(VertexFormat, SignedNormalizedGl42Rule) {
   EXPECT_EQ(signed_normalized(-127, 8), -1.0f);
   EXPECT_EQ(signed_normalized(0, 8), 0.0f);
   EXPECT_EQ(signed_normalized(127, 8), 1.0f);
-  EXPECT_EQ(signed_normalized(64, 8), 64.0f / 127.0f);
+  EXPECT_EQ(signed_normalized(64, 8), 64.0f * float(1.0 / 127.0));
   EXPECT_EQ(signed_normalized(-32768, 16), -1.0f);
   EXPECT_EQ(signed_normalized(-2, 2), -1.0f);
   EXPECT_EQ(signed_normalized(1, 2), 1.0f);
@@ -107,9 +107,9 @@ TEST(VertexFormat, MissingComponentsAreZeroZeroZeroOne) {
 TEST(VertexFormat, IntegersThroughVertexAttribPointer) {
   const AttributeValue u = convert<std::uint8_t>({4, false, CT::UnsignedByte, true, AttribPointer::Float}, {0, 51, 255, 128});
   EXPECT_EQ(component(u, 0), 0.0f);
-  EXPECT_EQ(component(u, 1), 0.2f);
+  EXPECT_EQ(component(u, 1), 51.0f * float(1.0 / 255.0));  // one ulp above 0.2f, as llvmpipe gives
   EXPECT_EQ(component(u, 2), 1.0f);
-  EXPECT_EQ(component(u, 3), 128.0f / 255.0f);
+  EXPECT_EQ(component(u, 3), 128.0f * float(1.0 / 255.0));
   const AttributeValue raw = convert<std::int32_t>({2, false, CT::Int, false, AttribPointer::Float}, {-3, 16777217});
   EXPECT_EQ(component(raw, 0), -3.0f);
   EXPECT_EQ(component(raw, 1), 16777216.0f);  // round to nearest even, as the conversion to float
@@ -122,7 +122,7 @@ TEST(VertexFormat, IntegersThroughVertexAttribPointer) {
 
 TEST(VertexFormat, BgraSwapsRedAndBlue) {
   const AttributeValue v = convert<std::uint8_t>({4, true, CT::UnsignedByte, true, AttribPointer::Float}, {255, 0, 51, 0});
-  EXPECT_EQ(component(v, 0), 0.2f);  // R is the third byte
+  EXPECT_EQ(component(v, 0), 51.0f * float(1.0 / 255.0));  // R is the third byte
   EXPECT_EQ(component(v, 1), 0.0f);
   EXPECT_EQ(component(v, 2), 1.0f);  // B the first
   EXPECT_EQ(component(v, 3), 0.0f);
@@ -134,17 +134,17 @@ TEST(VertexFormat, Packed2101010) {
   const AttributeValue n = convert<std::uint32_t>({4, false, CT::Int2101010Rev, true, AttribPointer::Float}, {w});
   EXPECT_EQ(component(n, 0), -1.0f);
   EXPECT_EQ(component(n, 1), 1.0f);
-  EXPECT_EQ(component(n, 2), 1.0f / 511.0f);
+  EXPECT_EQ(component(n, 2), float(1.0 / 511.0));
   EXPECT_EQ(component(n, 3), -1.0f);
   const AttributeValue raw = convert<std::uint32_t>({4, false, CT::Int2101010Rev, false, AttribPointer::Float}, {w});
   EXPECT_EQ(component(raw, 0), -512.0f);
   EXPECT_EQ(component(raw, 3), -2.0f);
   const AttributeValue u = convert<std::uint32_t>({4, false, CT::UnsignedInt2101010Rev, true, AttribPointer::Float}, {w});
-  EXPECT_EQ(component(u, 0), 512.0f / 1023.0f);
-  EXPECT_EQ(component(u, 3), 2.0f / 3.0f);
+  EXPECT_EQ(component(u, 0), 512.0f * float(1.0 / 1023.0));
+  EXPECT_EQ(component(u, 3), 2.0f * float(1.0 / 3.0));
   const AttributeValue bgra = convert<std::uint32_t>({4, true, CT::UnsignedInt2101010Rev, true, AttribPointer::Float}, {w});
-  EXPECT_EQ(component(bgra, 0), 1.0f / 1023.0f);    // R from bits 20-29
-  EXPECT_EQ(component(bgra, 2), 512.0f / 1023.0f);  // B from bits 0-9
+  EXPECT_EQ(component(bgra, 0), float(1.0 / 1023.0));    // R from bits 20-29
+  EXPECT_EQ(component(bgra, 2), 512.0f * float(1.0 / 1023.0));  // B from bits 0-9
 }
 
 TEST(VertexFormat, Packed10F11F11F) {

@@ -235,28 +235,26 @@ TEST(GlslCompile, MatchingNamesShareLocationsAcrossStages) {
   EXPECT_NE(tcs.location("tcs_out"), tcs.location("centre"));
 }
 
-TEST(GlslCompile, ExplicitLocationsAreKeptAndLent) {
+TEST(GlslCompile, ExplicitLocationsAreKeptAndNamesShareOne) {
   const char* vertex = R"(#version 450
 layout(location = 0) out vec4 first;
 out vec4 second;
 layout(location = 3) out vec4 third;
-out vec4 fifth;
-void main() { gl_Position = vec4(0.0); first = second = third = fifth = vec4(1.0); }
+void main() { gl_Position = vec4(0.0); first = second = third = vec4(1.0); }
 )";
   const char* fragment = R"(#version 450
-in vec4 first;
+layout(location = 0) in vec4 first;
 in vec4 second;
-in vec4 third;
-layout(location = 5) in vec4 fifth;
+layout(location = 3) in vec4 third;
 layout(location = 0) out vec4 out_color;
-void main() { out_color = first + second + third + fifth; }
+void main() { out_color = first + second + third; }
 )";
   const CompiledProgram program = compile_program(
       {{Stage::Vertex, "p.vert", 1, vertex}, {Stage::Fragment, "p.frag", 1, fragment}});
   const Module vs = module(program, Stage::Vertex), fs = module(program, Stage::Fragment);
   EXPECT_EQ(fs.location("first"), 0u);
   EXPECT_EQ(fs.location("third"), 3u);
-  EXPECT_EQ(vs.location("fifth"), 5u);
+  // Matched by name on both sides: one location, clear of the explicit ones.
   EXPECT_EQ(vs.location("second"), fs.location("second"));
   EXPECT_NE(vs.location("second"), 0u);
   EXPECT_NE(vs.location("second"), 3u);
@@ -431,7 +429,28 @@ void main() { out_color = vec4(color, 1.0); }
   EXPECT_EQ(error_of({{Stage::Vertex, "m.vert", 1, kVertex},
                       {Stage::Fragment, "m.frag", 1, fragment}}),
             "m.frag:4: error: link error: fragment shader input 'color' is vec3 but the vertex "
-            "shader output (m.vert:7) is vec4");
+            "shader output 'color' (m.vert:7) is vec4");
+}
+
+// GL matches by location when both sides have one (names aside), by name when neither has; a
+// location on one side only is no match, as Mesa links it (the GPU would read undefined values).
+TEST(GlslCompile, LocationOnOneSideOnlyMatchesNothing) {
+  const char* vertex = "#version 450\nlayout(location = 0) in vec4 p;\nout vec4 color;\n"
+                       "void main() { color = p; gl_Position = p; }\n";
+  const char* located_fragment = "#version 450\nlayout(location = 2) in vec4 color;\nout vec4 c;\nvoid main() {\n  c = color;\n}\n";
+  EXPECT_EQ(error_of({{Stage::Vertex, "a.vert", 1, vertex}, {Stage::Fragment, "a.frag", 1, located_fragment}}),
+            "a.frag:5: error: link error: fragment shader input 'color' has location 2 but the vertex shader "
+            "output (a.vert:4) of that name has none: GL matches by name only when neither side has a "
+            "location, so on a driver the input would have no matching output (give both the same location, "
+            "or neither)");
+  const char* located_vertex = "#version 450\nlayout(location = 0) in vec4 p;\nlayout(location = 3) out vec4 color;\n"
+                               "void main() { color = p; gl_Position = p; }\n";
+  const char* fragment = "#version 450\nin vec4 color;\nout vec4 c;\nvoid main() {\n  c = color;\n}\n";
+  EXPECT_THAT(error_of({{Stage::Vertex, "b.vert", 1, located_vertex}, {Stage::Fragment, "b.frag", 1, fragment}}),
+              HasSubstr("input 'color' has no location but the vertex shader output (b.vert:4) of that name has location 3"));
+  // Both located: the names need not agree.
+  const char* other_name = "#version 450\nlayout(location = 3) in vec4 tint;\nout vec4 c;\nvoid main() {\n  c = tint;\n}\n";
+  EXPECT_EQ(error_of({{Stage::Vertex, "c.vert", 1, located_vertex}, {Stage::Fragment, "c.frag", 1, other_name}}), "");
 }
 
 TEST(GlslCompile, UnusedInputNeedsNoOutput) {
