@@ -2,6 +2,8 @@
 
 #include <epoxy/gl.h>
 
+#include <utility>
+
 #include "glref/gl_error.h"
 
 namespace tessref::glref {
@@ -60,7 +62,8 @@ void set_current(std::uint32_t location, const draw::VertexArray& a) {
 
 }  // namespace
 
-GlDraws::GlDraws(const Scene& scene, const std::vector<draw::Buffer>& buffers, unsigned program) : scene_(scene) {
+GlDraws::GlDraws(const Scene& scene, const std::vector<draw::Buffer>& buffers, std::vector<unsigned> programs)
+    : scene_(scene), programs_(std::move(programs)) {
   buffers_.resize(buffers.size());
   if (!buffers_.empty()) glGenBuffers(GLsizei(buffers_.size()), buffers_.data());
   for (std::size_t i = 0; i < buffers.size(); ++i) {
@@ -79,7 +82,7 @@ GlDraws::GlDraws(const Scene& scene, const std::vector<draw::Buffer>& buffers, u
       if (s.input.find_first_not_of("0123456789") == std::string::npos) {
         location = GLint(std::stoul(s.input));
       } else {
-        location = glGetAttribLocation(program, s.input.c_str());
+        location = glGetAttribLocation(programs_[d], s.input.c_str());
         if (location < 0) throw GlError(a.key + ": the driver reports no active vertex input \"" + s.input + "\"");
       }
       if (!a.enabled) {
@@ -118,6 +121,7 @@ GlDraws::~GlDraws() {
 void GlDraws::draw() const {
   for (std::size_t d = 0; d < scene_.draws.size(); ++d) {
     const DrawSetting& draw = scene_.draws[d];
+    glUseProgram(programs_[d]);
     glBindVertexArray(vaos_[d]);
     for (const auto& [location, a] : current_[d]) set_current(location, a);
     if (draw.depth_test) {
@@ -159,6 +163,7 @@ void GlDraws::draw() const {
     check_gl((draw.key + ": drawing").c_str());
   }
   glBindVertexArray(0);
+  glUseProgram(0);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   glDisable(GL_PRIMITIVE_RESTART);

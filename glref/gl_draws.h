@@ -11,19 +11,20 @@ namespace tessref::glref {
 
 class GlDraws {
  public:
-  // The context must be current; `program` linked from the scene's shaders. GlError for a
-  // vertex input name the program does not have.
-  GlDraws(const Scene& scene, const std::vector<draw::Buffer>& buffers, unsigned program);
+  // The context must be current; programs[i] is the linked program of scene.draws[i] (with its
+  // uniforms set). GlError for a vertex input name the program does not have.
+  GlDraws(const Scene& scene, const std::vector<draw::Buffer>& buffers, std::vector<unsigned> programs);
   ~GlDraws();
   GlDraws(const GlDraws&) = delete;
   GlDraws& operator=(const GlDraws&) = delete;
 
-  // Every draw into the bound framebuffer, with the program in use; the state is left as GL's
-  // defaults afterwards (depth test and culling off).
+  // Every draw into the bound framebuffer, each with its program and state; the state is left as
+  // GL's defaults afterwards (depth test and culling off, program 0).
   void draw() const;
 
  private:
   const Scene& scene_;
+  std::vector<unsigned> programs_;  // per draw
   std::vector<unsigned> buffers_;
   std::vector<unsigned> vaos_;  // one per draw
   std::vector<std::vector<std::pair<std::uint32_t, draw::VertexArray>>> current_;  // disabled arrays per draw

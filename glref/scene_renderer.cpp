@@ -73,9 +73,9 @@ GLenum gl_stage(shader::Stage stage) {
 
 // The user's files (shaders.program custom), as tessref's executor runs them; for capture the
 // evaluation shader is wrapped as the twins' is, and the fragment shader left out.
-std::vector<ShaderStage> custom_stages(const Scene& scene, bool for_capture) {
+std::vector<ShaderStage> custom_stages(const Scene& scene, const ShaderSettings& shaders, bool for_capture) {
   std::vector<ShaderStage> stages;
-  for (const shader::ShaderSource& src : scene_sources(scene)) {
+  for (const shader::ShaderSource& src : scene_sources(scene, shaders)) {
     if (for_capture && src.stage == shader::Stage::Fragment) continue;
     std::string text = src.text;
     if (for_capture && src.stage == shader::Stage::TessEval) text = wrap_tes_for_capture(text);
@@ -138,7 +138,7 @@ std::vector<UniformConstant> scene_constants(const Scene& scene) {
 }
 
 std::vector<ShaderStage> twin_stages(const Scene& scene, bool for_capture, bool specialize = false) {
-  if (scene.shaders.program == ShaderProgram::Custom) return custom_stages(scene, for_capture);
+  if (scene.shaders.program == ShaderProgram::Custom) return custom_stages(scene, scene.shaders, for_capture);
   std::vector<ShaderStage> stages = builtin_twin_stages(scene, for_capture);
   if (!specialize) return stages;
   const std::vector<UniformConstant> constants = scene_constants(scene);
@@ -156,17 +156,35 @@ SceneRenderer::SceneRenderer(GlContext& context, const Scene& scene, const Mesh&
   view_projection_ =
       projection_matrix(scene.camera, scene.width, scene.height) * view_matrix(scene.camera);
 
-  if (!scene.shaders.textures.empty())
-    throw GlError("SceneRenderer: shaders.textures are not bound on the GL side yet");
-  // A scene's draws name their inputs themselves: no glBindAttribLocation from shaders.attributes.
-  program_ = link_program(twin_stages(scene_, false, options_.specialize), {},
-                          scene_.draws.empty() ? attribute_locations(scene_) : AttributeLocations{});
-  set_uniforms(program_);
+  bool shared_program = scene_.draws.empty();
+  for (const DrawSetting& d : scene_.draws) {
+    if (d.shaders && !d.shaders->textures.empty())
+      throw GlError("SceneRenderer: " + d.key + ".shaders.textures are not bound on the GL side yet");
+    shared_program = shared_program || !d.shaders;
+  }
+  if (shared_program) {
+    if (!scene.shaders.textures.empty())
+      throw GlError("SceneRenderer: shaders.textures are not bound on the GL side yet");
+    // A scene's draws name their inputs themselves: no glBindAttribLocation from shaders.attributes.
+    program_ = link_program(twin_stages(scene_, false, options_.specialize), {},
+                            scene_.draws.empty() ? attribute_locations(scene_) : AttributeLocations{});
+    set_uniforms(program_, scene_.shaders);
+  }
 
-  const TessellationSettings& t = scene_.tessellation;
   if (!scene_.draws.empty()) {
-    draws_ = std::make_unique<GlDraws>(scene_, load_buffers(scene_), program_.id());
-  } else if (t.enabled) {
+    // Each draw's program: its own (draws[].shaders) or the scene's.
+    std::vector<unsigned> programs;
+    draw_programs_.resize(scene_.draws.size());
+    for (std::size_t i = 0; i < scene_.draws.size(); ++i) {
+      const DrawSetting& d = scene_.draws[i];
+      if (d.shaders) {
+        draw_programs_[i] = link_program(custom_stages(scene_, *d.shaders, false));
+        set_uniforms(draw_programs_[i], *d.shaders);
+      }
+      programs.push_back(d.shaders ? draw_programs_[i].id() : program_.id());
+    }
+    draws_ = std::make_unique<GlDraws>(scene_, load_buffers(scene_), programs);
+  } else if (const TessellationSettings& t = scene_.tessellation; t.enabled) {
     const bool custom = scene_.shaders.program == ShaderProgram::Custom;
     PatchMeshData data{mesh.positions, mesh.normals, mesh.indices, custom ? scene_.shaders.patch_vertices : 3, {}, {}};
     if (!custom && t.scheme == SurfaceScheme::ScalarTaggedPN)
@@ -226,7 +244,7 @@ SceneRenderer::~SceneRenderer() {
 
 // Every uniform the twins read, with the values render_scene/draw_mesh give the C++ programs.
 // Uniforms the driver optimized away (e.g. the lights in normals.frag) are skipped.
-void SceneRenderer::set_uniforms(const Program& program) const {
+void SceneRenderer::set_uniforms(const Program& program, const ShaderSettings& shaders) const {
   program.use();
   auto loc = [&](const char* name) { return glGetUniformLocation(program.id(), name); };
   const auto vs = programs::TransformVertexShader::from(model_, view_projection_);
@@ -273,7 +291,7 @@ void SceneRenderer::set_uniforms(const Program& program) const {
   if ((l = loc("u_shininess")) >= 0) glUniform1f(l, scene_.material.shininess);
   if ((l = loc("u_color")) >= 0) glUniform3fv(l, 1, glm::value_ptr(scene_.material.color));
   check_gl("SceneRenderer: setting uniforms");
-  for (const UniformSetting& u : scene_.shaders.uniforms) set_user_uniform(program, u);
+  for (const UniformSetting& u : shaders.uniforms) set_user_uniform(program, u);
 }
 
 // shaders.uniforms, by the type GL reports (tessref's executor has checked the values against
@@ -323,14 +341,15 @@ void SceneRenderer::draw() {
     glCullFace(GL_BACK);
     glFrontFace(GL_CCW);
   }
-  program_.use();
   if (draws_) {
-    glDisable(GL_DEPTH_TEST);  // each draw sets its own state
+    glDisable(GL_DEPTH_TEST);  // each draw sets its own state and program
     draws_->draw();
     stats_.draws = scene_.draws.size();
   } else if (patches_) {
+    program_.use();
     stats_.draws = patches_->draw(program_, point_bounds_, options_.max_points_per_draw);
   } else {
+    program_.use();
     glBindVertexArray(vao_);
     glDrawElements(GL_TRIANGLES, GLsizei(index_count_), GL_UNSIGNED_INT, nullptr);
     glBindVertexArray(0);
@@ -372,7 +391,7 @@ std::vector<TessOutputVertex> SceneRenderer::capture_tess() {
     capture_program_ = link_program(twin_stages(scene_, true),
                                     FeedbackVaryings{{outputs[0], outputs[1], "tf_tess_coord", "tf_patch_id"}, true},
                                     attribute_locations(scene_));
-    set_uniforms(capture_program_);
+    set_uniforms(capture_program_, scene_.shaders);
   }
   const std::vector<std::uint32_t> words =
       patches_->capture(capture_program_, kCaptureWords, GL_TRIANGLES, point_bounds_,

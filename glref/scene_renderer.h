@@ -94,7 +94,7 @@ class SceneRenderer {
   const glm::mat4& view_projection() const { return view_projection_; }
 
  private:
-  void set_uniforms(const Program& program) const;
+  void set_uniforms(const Program& program, const ShaderSettings& shaders) const;
   void set_user_uniform(const Program& program, const UniformSetting& u) const;
 
   GlContext& context_;
@@ -102,7 +102,8 @@ class SceneRenderer {
   SceneRendererOptions options_;
   glm::mat4 model_{1.0f}, view_projection_{1.0f};
   std::vector<std::size_t> point_bounds_;  // per patch, for splitting tessellated draws
-  Program program_;
+  Program program_;  // the scene's shaders (none when every draw has its own)
+  std::vector<Program> draw_programs_;  // draws[].shaders, by draw (empty: the scene's)
   Program capture_program_;  // linked on first capture_tess()
   std::unique_ptr<PatchMesh> patches_;  // tessellation on
   std::unique_ptr<GlDraws> draws_;      // the scene's GL draws (Scene::draws), replacing the mesh

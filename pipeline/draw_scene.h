@@ -1,7 +1,7 @@
 #pragma once
 // A scene's GL draws (Scene::draws): the buffers loaded, each call's vertices pulled through its
-// vertex arrays (draw/vertex_fetch.h), its primitives assembled and drawn with the scene's GLSL
-// program, in order, into one framebuffer.
+// vertex arrays (draw/vertex_fetch.h), its primitives assembled and drawn with its GLSL program,
+// in order, into one framebuffer.
 #include <vector>
 
 #include "draw/vertex_fetch.h"
@@ -19,8 +19,10 @@ std::vector<draw::Buffer> load_buffers(const Scene& scene);
 std::vector<std::uint32_t> assemble(DrawMode mode, int patch_vertices,
                                     const std::vector<std::vector<std::uint32_t>>& runs);
 
-// Draws every draw of the scene into fb (already cleared).
-DrawStats draw_scene_draws(const Scene& scene, const glsl::GlslProgram& program, Framebuffer& fb,
+// Draws every draw of the scene into fb (already cleared): a draw with its own `shaders` with its
+// program (all compiled before the first draw, so a broken one draws nothing), the others with
+// scene_program (may be null when every draw has its own).
+DrawStats draw_scene_draws(const Scene& scene, const glsl::GlslProgram* scene_program, Framebuffer& fb,
                            const Parallel& parallel, const DrawOptions& options);
 
 }  // namespace tessref

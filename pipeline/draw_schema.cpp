@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "pipeline/scene_schema.h"
+
 namespace tessref {
 namespace {
 
@@ -223,6 +225,10 @@ draw::DrawCall read_call(JsonObject& o, bool elements) {
   draw::DrawCall c;
   o.describe("count", "vertices (glDrawArrays*) or indices (glDrawElements*), 0..2^31-1");
   c.count = std::size_t(o.integer64("count", 0, kMaxCount));
+  o.describe("first", "glDrawArrays*: the first vertex, 0..2^31-1 (default 0)");
+  o.describe("instancecount", "instances, 0..2^31-1 (default 1)");
+  o.describe("basevertex", "glDrawElements*: added to every index, -2^31..2^31-1 (default 0)");
+  o.describe("baseinstance", "added to an instanced array's element number, 0..2^32-1 (default 0)");
   if (o.has("first")) {
     if (elements) o.fail("first", "glDrawElements* takes no first (the element array's offset says where to start)");
     c.first = std::size_t(o.integer64("first", 0, kMaxCount));
@@ -236,9 +242,47 @@ draw::DrawCall read_call(JsonObject& o, bool elements) {
   return c;
 }
 
-DrawSetting read_draw(JsonObject o, const std::vector<BufferSetting>& buffers) {
+// draws[].shaders: a custom program of the draw's own; stages it does not name are absent.
+ShaderSettings read_draw_shaders(JsonObject& o, const ShaderSettings& scene_shaders, const std::filesystem::path& base_dir) {
+  const json& given = o.value("shaders");
+  if (!given.is_object()) o.fail("shaders", "expected an object {vertex, tess_control, tess_evaluation, fragment, uniforms, textures}, got " + describe_json(given));
+  if (given.contains("program") && given["program"] != "custom")
+    o.fail("shaders", "a draw's own program is a custom one: leave out program or set it to \"custom\"");
+  for (const char* key : {"attributes", "patch_vertices"})
+    if (given.contains(key))
+      o.fail("shaders", std::string("a draw feeds its inputs through vertex_arrays and patch_vertices; shaders.") + key +
+                            " belongs to the mesh path");
+  // The keys a draw's shaders take, for the schema; the merged object below is read without one
+  // (its filled-in keys are not the user's).
+  JsonObject listed(given, o.path_of("shaders"), o.source());
+  for (const auto& [key, allowed] : std::initializer_list<std::pair<const char*, const char*>>{
+           {"vertex", "a GLSL file (or twin:NAME), relative to the scene file"},
+           {"tess_control", "a GLSL file; none: no control shader (the default patch levels apply)"},
+           {"tess_evaluation", "a GLSL file; none: the draw is not tessellated"},
+           {"fragment", "a GLSL file"},
+           {"uniforms", "an object of uniform name: value, as the scene's shaders.uniforms"},
+           {"textures", "an object of sampler name: image file, as the scene's shaders.textures"}}) {
+    listed.has(key);
+    listed.describe(key, allowed);
+  }
+  JsonSource quiet = o.source();
+  quiet.schema = nullptr;
+  json merged = {{"program", "custom"},
+                 {"uniforms", json::object()},
+                 {"attributes", json::object()},
+                 {"patch_vertices", 3},
+                 {"batch_lanes", scene_shaders.batch_lanes},
+                 {"max_instructions", scene_shaders.max_instructions}};
+  merged.update(given);
+  return read_shaders(JsonObject(merged, o.path_of("shaders"), quiet), quiet, base_dir);
+}
+
+DrawSetting read_draw(JsonObject o, const std::vector<BufferSetting>& buffers, const ShaderSettings& scene_shaders,
+                      const std::filesystem::path& base_dir) {
   DrawSetting d;
   d.key = o.path();
+  o.describe("shaders", "an object {vertex, tess_control, tess_evaluation, fragment, uniforms, textures}: this draw's own program");
+  if (o.has("shaders")) d.shaders = read_draw_shaders(o, scene_shaders, base_dir);
   o.describe("mode", "one of GL_PATCHES, GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN");
   const std::string mode = o.string("mode");
   if (mode == "GL_PATCHES") d.mode = DrawMode::Patches;
@@ -304,6 +348,7 @@ DrawSetting read_draw(JsonObject o, const std::vector<BufferSetting>& buffers) {
   o.describe("robust_buffer_access", "a boolean (default false): a fetch outside a buffer reads zero instead of being an error");
   o.describe("calls", "an array of {count, first | basevertex, instancecount, baseinstance}: glMultiDraw* and indirect draws");
   const bool flat = o.has("count");
+  o.describe("count", "vertices (glDrawArrays*) or indices (glDrawElements*), 0..2^31-1; or calls");
   if (o.has("calls")) {
     if (flat) o.fail("calls", "give either calls or count (with first, basevertex, instancecount, baseinstance), not both", {"count"});
     const json& calls = o.value("calls");
@@ -326,7 +371,8 @@ DrawSetting read_draw(JsonObject o, const std::vector<BufferSetting>& buffers) {
 }  // namespace
 
 void read_draw_keys(JsonObject& root, const JsonSource& source, const std::filesystem::path& base_dir,
-                    std::vector<BufferSetting>& buffers, std::vector<DrawSetting>& draws) {
+                    const ShaderSettings& scene_shaders, std::vector<BufferSetting>& buffers,
+                    std::vector<DrawSetting>& draws) {
   root.describe("buffers", "an object of buffer name: {file} or {type, data}");
   if (root.has("buffers")) {
     const json& b = root.value("buffers");
@@ -339,7 +385,7 @@ void read_draw_keys(JsonObject& root, const JsonSource& source, const std::files
     const json& d = root.value("draws");
     if (!d.is_array() || d.empty()) root.fail("draws", "expected a non-empty array of draws, got " + describe_json(d));
     for (std::size_t i = 0; i < d.size(); ++i)
-      draws.push_back(read_draw(JsonObject(d[i], "draws." + std::to_string(i), source), buffers));
+      draws.push_back(read_draw(JsonObject(d[i], "draws." + std::to_string(i), source), buffers, scene_shaders, base_dir));
   }
 }
 
@@ -347,6 +393,7 @@ const char* draw_keys_example() {
   return R"({
   "buffers": { "b": { "type": "GL_FLOAT", "data": [0] }, "f": { "file": "x.bin" } },
   "draws": [{
+    "shaders": { "vertex": "a.vert", "fragment": "a.frag" },
     "mode": "GL_PATCHES", "patch_vertices": 3,
     "patch_default_outer_level": [1, 1, 1, 1], "patch_default_inner_level": [1, 1],
     "vertex_arrays": {

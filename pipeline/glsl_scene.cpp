@@ -22,11 +22,11 @@ namespace {
 using shader::Scalar;
 using shader::Stage;
 
-std::string read_file(const Scene& scene, const char* key, const std::filesystem::path& path) {
+std::string read_file(const Scene& scene, const ShaderSettings& s, const char* key, const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream text;
   if (!in || !(text << in.rdbuf()))
-    throw InputError(scene.source + ": shaders." + key + ": cannot read '" + path.string() + "'");
+    throw InputError(scene.source + ": " + s.key + "." + key + ": cannot read '" + path.string() + "'");
   return text.str();
 }
 
@@ -102,9 +102,9 @@ void set_scene_uniforms(const Scene& scene, glsl::GlslProgram& program) {
 }
 
 // shaders.uniforms: the scene's numbers in the uniform's own GLSL type.
-void set_user_uniforms(const Scene& scene, glsl::GlslProgram& program) {
-  for (const UniformSetting& u : scene.shaders.uniforms) {
-    const std::string key = scene.source + ": shaders.uniforms." + u.name;
+void set_user_uniforms(const Scene& scene, const ShaderSettings& shaders, glsl::GlslProgram& program) {
+  for (const UniformSetting& u : shaders.uniforms) {
+    const std::string key = scene.source + ": " + shaders.key + ".uniforms." + u.name;
     const auto shape = program.uniform_shape(u.name);
     if (!shape) {
       std::string active;
@@ -147,10 +147,10 @@ void set_user_uniforms(const Scene& scene, glsl::GlslProgram& program) {
 
 // shaders.textures: each image (RGBA; fewer channels: gray, gray + alpha, RGB with alpha 1) on its
 // own texture unit, the sampler uniform set to that unit.
-void bind_textures(const Scene& scene, glsl::GlslProgram& program, SceneProgram& out) {
+void bind_textures(const Scene& scene, const ShaderSettings& shaders, glsl::GlslProgram& program, SceneProgram& out) {
   std::uint32_t unit = 0;
-  for (const TextureSetting& t : scene.shaders.textures) {
-    const std::string key = scene.source + ": shaders.textures." + t.sampler;
+  for (const TextureSetting& t : shaders.textures) {
+    const std::string key = scene.source + ": " + shaders.key + ".textures." + t.sampler;
     const auto shape = program.uniform_shape(t.sampler);
     if (!shape || shape->glsl_name != "sampler")
       throw InputError(key + ": the program has no active sampler2D uniform of that name");
@@ -202,8 +202,9 @@ shader::CompiledProgram compile_cached(const std::vector<shader::ShaderSource>& 
 
 }  // namespace
 
-std::vector<shader::ShaderSource> scene_sources(const Scene& scene) {
-  const ShaderSettings& s = scene.shaders;
+std::vector<shader::ShaderSource> scene_sources(const Scene& scene) { return scene_sources(scene, scene.shaders); }
+
+std::vector<shader::ShaderSource> scene_sources(const Scene& scene, const ShaderSettings& s) {
   std::vector<shader::ShaderSource> out;
   if (s.program == ShaderProgram::Twins) {
     auto twin = [&](Stage stage, const std::string& name) {
@@ -227,11 +228,11 @@ std::vector<shader::ShaderSource> scene_sources(const Scene& scene) {
       try {
         out.push_back({stage, name.substr(5), 1, glsl::twin_source(name.substr(5))});
       } catch (const std::invalid_argument& e) {
-        throw InputError(scene.source + ": shaders." + key + ": " + e.what());
+        throw InputError(scene.source + ": " + s.key + "." + key + ": " + e.what());
       }
       return;
     }
-    out.push_back({stage, name, 1, read_file(scene, key, path)});
+    out.push_back({stage, name, 1, read_file(scene, s, key, path)});
   };
   file(Stage::Vertex, "vertex", s.vertex);
   file(Stage::TessControl, "tess_control", s.tess_control);
@@ -240,16 +241,18 @@ std::vector<shader::ShaderSource> scene_sources(const Scene& scene) {
   return out;
 }
 
-SceneProgram build_scene_program(const Scene& scene) {
-  const std::vector<shader::ShaderSource> sources = scene_sources(scene);
+SceneProgram build_scene_program(const Scene& scene) { return build_scene_program(scene, scene.shaders); }
+
+SceneProgram build_scene_program(const Scene& scene, const ShaderSettings& shaders) {
+  const std::vector<shader::ShaderSource> sources = scene_sources(scene, shaders);
   shader::ExecLimits limits;
-  limits.batch_lanes = scene.shaders.batch_lanes;
-  limits.max_instructions = scene.shaders.max_instructions;
+  limits.batch_lanes = shaders.batch_lanes;
+  limits.max_instructions = shaders.max_instructions;
   std::unique_ptr<glsl::GlslProgram> program;
   try {
     program = std::make_unique<glsl::GlslProgram>(compile_cached(sources), limits);
   } catch (const shader::SpirvError& e) {
-    throw InputError(scene.source + ": shaders: " + e.what());
+    throw InputError(scene.source + ": " + shaders.key + ": " + e.what());
   }
   // A scene's draws name their modes (GL_PATCHES needs a tessellation evaluation shader, checked
   // per draw); the mesh path takes its mode from tessellation.enabled.
@@ -259,13 +262,13 @@ SceneProgram build_scene_program(const Scene& scene) {
                                          : ": shaders: tessellation.enabled is true but the program has no tessellation evaluation shader"));
   // The twins' TES layout line names one spacing and winding; the scene chooses them (the
   // real-GL runner rewrites the line the same way).
-  if (scene.shaders.program == ShaderProgram::Twins && program->has_tes())
+  if (shaders.program == ShaderProgram::Twins && program->has_tes())
     program->override_tes_layout(TessLayout{TessDomain::Triangles, scene.tessellation.spacing,
                                             scene.tessellation.winding, false});
   set_scene_uniforms(scene, *program);
-  set_user_uniforms(scene, *program);
+  set_user_uniforms(scene, shaders, *program);
   SceneProgram out;
-  bind_textures(scene, *program, out);
+  bind_textures(scene, shaders, *program, out);
   out.program = std::move(program);
   return out;
 }

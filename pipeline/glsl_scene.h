@@ -23,11 +23,14 @@ struct SceneProgram {
 // The GLSL of the scene's program, stage by stage: the twins, or the user's files (`twin:NAME`
 // resolved). InputError when a file cannot be read. The real-GL runner draws the same sources.
 std::vector<shader::ShaderSource> scene_sources(const Scene& scene);
+// The same for one draw's own program (Scene::draws[].shaders), with the scene's uniforms.
+std::vector<shader::ShaderSource> scene_sources(const Scene& scene, const ShaderSettings& shaders);
 
 // Compiles the scene's program (InputError: a file that cannot be read, compile and link errors
 // with file and line, a uniform value whose type does not fit, an unreadable texture) with its
 // uniforms set and its textures bound.
 SceneProgram build_scene_program(const Scene& scene);
+SceneProgram build_scene_program(const Scene& scene, const ShaderSettings& shaders);
 
 // The draw's vertex attribute arrays (shaders.attributes: the mesh's positions and normals by input
 // name or location) and the draw call (indices, GL_PATCH_VERTICES) draw_glsl_scene makes; also

@@ -92,6 +92,7 @@ struct TextureSetting {
 };
 
 struct ShaderSettings {
+  std::string key = "shaders";  // where the scene gives them ("draws.1.shaders"), for messages
   ShaderProgram program = ShaderProgram::Builtin;
   // Custom: GLSL files, resolved against the scene file's folder (tess_control may be empty).
   std::filesystem::path vertex, tess_control, tess_evaluation, fragment;
@@ -123,7 +124,7 @@ struct VertexArraySetting {
 };
 
 // draws[]: one glDraw* call, or a list of them (calls: the multi-draw and indirect forms), with
-// the vertex array object and the state it is drawn with. The scene's `shaders` program draws it.
+// the vertex array object, the program and the state it is drawn with.
 struct DrawSetting {
   std::string key;  // "draws.0", for messages
   DrawMode mode = DrawMode::Patches;
@@ -134,6 +135,8 @@ struct DrawSetting {
   std::optional<draw::ElementArray> elements;  // glDrawElements* when set (element.buffer: into buffers)
   draw::PrimitiveRestart restart;
   draw::FetchRules rules;
+  // draws[].shaders: this draw's own program (a custom one); none: the scene's `shaders`.
+  std::optional<ShaderSettings> shaders;
   std::vector<draw::DrawCall> calls;
   // enable: glEnable(GL_DEPTH_TEST) (depth func GL_LESS, depth writes on) and glEnable(GL_CULL_FACE)
   // (glCullFace(GL_BACK), glFrontFace(GL_CCW)); GL's defaults are off.

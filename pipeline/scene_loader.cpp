@@ -161,7 +161,7 @@ std::vector<SchemaKey> scene_keys() {
   JsonObject example(example_json, "", source);
   std::vector<BufferSetting> buffers;
   std::vector<DrawSetting> draws;
-  read_draw_keys(example, source, ".", buffers, draws);
+  read_draw_keys(example, source, ".", ShaderSettings{}, buffers, draws);
   return keys;
 }
 

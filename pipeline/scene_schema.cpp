@@ -250,8 +250,11 @@ TessellationSettings read_tessellation(JsonObject o) {
   return t;
 }
 
+}  // namespace
+
 ShaderSettings read_shaders(JsonObject o, const JsonSource& source, const std::filesystem::path& base_dir) {
   ShaderSettings s;
+  s.key = o.path();
   const std::string program = o.string("program");
   o.describe("program", "one of builtin, twins, custom");
   if (program == "builtin") s.program = ShaderProgram::Builtin;
@@ -346,8 +349,6 @@ ShaderSettings read_shaders(JsonObject o, const JsonSource& source, const std::f
   return s;
 }
 
-}  // namespace
-
 Scene scene_from_json(const json& root_json, const JsonSource& source,
                       const std::filesystem::path& mesh_base_dir) {
   JsonObject root(root_json, "", source);
@@ -373,9 +374,11 @@ Scene scene_from_json(const json& root_json, const JsonSource& source,
   s.cull_back_faces = root.boolean("cull_back_faces");
   s.tessellation = read_tessellation(root.object("tessellation"));
   s.shaders = read_shaders(root.object("shaders"), source, mesh_base_dir);
-  read_draw_keys(root, source, mesh_base_dir, s.buffers, s.draws);
-  if (!s.draws.empty() && s.shaders.program != ShaderProgram::Custom)
-    source.fail("draws", "are drawn by the scene's GLSL program: set shaders.program to \"custom\"", {"draws", "shaders.program"});
+  read_draw_keys(root, source, mesh_base_dir, s.shaders, s.buffers, s.draws);
+  for (const DrawSetting& d : s.draws)
+    if (!d.shaders && s.shaders.program != ShaderProgram::Custom)
+      source.fail(d.key, "has no shaders of its own, so the scene's GLSL program draws it: set shaders.program to \"custom\" or give the draw its own shaders",
+                  {d.key, "shaders.program"});
   if (s.tessellation.tags.is_relative() && !s.tessellation.tags.empty())
     s.tessellation.tags = mesh_base_dir / s.tessellation.tags;
   // The GLSL path's TES may declare any domain; uniform subdivision is plumbed for the built-in

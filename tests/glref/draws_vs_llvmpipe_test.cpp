@@ -53,5 +53,17 @@ TEST(DrawsVsLlvmpipe, BicubicPatchesFromDrawArrays) {
   EXPECT_LE(o.within1.pixels - o.within1.within_tolerance, o.within1.coverage_mismatch) << o.within1.summary();
 }
 
+// A frame of two draws with a program each: an untessellated triangle strip, then bicubic patches
+// depth-tested against it. Where the surface crosses the plane the two depths are near-equal, so
+// a pixel or two may resolve differently (GL_LESS on depths that differ in the last bits).
+TEST(DrawsVsLlvmpipe, TessellatedDrawDepthTestedAgainstAnEarlierOne) {
+  TESSREF_REQUIRE_GL(ctx);
+  const DrawsOutcome o = compare_draws(*ctx, "two_draws_depth.json");
+  EXPECT_EQ(o.stats.tess.patches_in, 2u);
+  EXPECT_GT(o.stats.raster.fragments_shaded, 30000u);
+  EXPECT_LE(o.within1.coverage_mismatch, 4u) << o.within1.summary();
+  EXPECT_LE(o.within1.pixels - o.within1.within_tolerance, 2u) << o.within1.summary();
+}
+
 }  // namespace
 }  // namespace tessref::glref

@@ -48,6 +48,36 @@ TEST(DrawsScene, SameBytesAtOneAndEightThreads) {
   EXPECT_EQ(one.framebuffer.depth, eight.framebuffer.depth);
 }
 
+// Each draw with its own program: a flat-coloured strip, then the patches depth-tested against it.
+TEST(DrawsScene, EachDrawUsesItsOwnProgram) {
+  const RenderResult r = render_file("two_draws_depth.json");
+  EXPECT_EQ(r.stats.vertices_shaded, 4u + 32u);
+  EXPECT_EQ(r.stats.tess.patches_in, 2u);
+  // The strip's colour (u_fill, draw 0's own uniform) where the plane hides the surface: the
+  // image's centre bottom row of the plane, checked against the scene's value.
+  std::size_t fill = 0;
+  for (const glm::vec4& c : r.framebuffer.color)
+    fill += c == glm::vec4(0.15f, 0.35f, 0.75f, 1.0f);
+  EXPECT_GT(fill, 5000u);
+  const RenderResult one = render_file("two_draws_depth.json", {}, 1);
+  const RenderResult eight = render_file("two_draws_depth.json", {}, 8);
+  EXPECT_EQ(one.framebuffer.color, eight.framebuffer.color);
+}
+
+TEST(DrawsScene, ADrawsOwnShadersAreCheckedByKey) {
+  const std::string f = "two_draws_depth.json";
+  EXPECT_NE(error_of(f, {"draws.0.shaders.patch_vertices=4"}).find("draws.0.shaders: a draw feeds its inputs through vertex_arrays and patch_vertices"),
+            std::string::npos) << error_of(f, {"draws.0.shaders.patch_vertices=4"});
+  EXPECT_NE(error_of(f, {"draws.1.shaders.program=\"twins\""}).find("a draw's own program is a custom one"), std::string::npos);
+  EXPECT_NE(error_of(f, {"draws.0.shaders.uniforms.u_fill=[1, 0, 0]"}).find("draws.0.shaders.uniforms.u_fill"), std::string::npos)
+      << error_of(f, {"draws.0.shaders.uniforms.u_fill=[1, 0, 0]"});
+  EXPECT_NE(error_of(f, {"draws.1.shaders.vertex=\"missing.vert\""}).find("draws.1.shaders.vertex: cannot read"), std::string::npos)
+      << error_of(f, {"draws.1.shaders.vertex=\"missing.vert\""});
+  // Without shaders of its own a draw needs the scene's custom program.
+  const std::string none = error_of("bicubic_arrays.json", {"shaders.program=\"builtin\""});
+  EXPECT_NE(none.find("draws.0: has no shaders of its own"), std::string::npos) << none;
+}
+
 TEST(DrawsScene, AssemblesStripsFansAndRestartedRunsAsGlDoes) {
   const std::vector<std::vector<std::uint32_t>> runs{{0, 1, 2, 3, 4}, {5, 6, 7, 8}};
   EXPECT_EQ(assemble(DrawMode::TriangleStrip, 3, runs),

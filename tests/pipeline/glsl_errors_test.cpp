@@ -230,7 +230,7 @@ void main() {
   EXPECT_EQ(r.verdict, Verdict::Fail);
   EXPECT_EQ(r.reason, "type.shader_test:" + str(line_of(text, "+ offset[0]")) +
                           ": error: link error: tessellation evaluation shader input 'offset' is vec4 but the "
-                          "tessellation control shader output (type.shader_test:" +
+                          "tessellation control shader output 'offset' (type.shader_test:" +
                           str(line_of(text, "offset[gl_InvocationID] =")) + ") is vec3");
 }
 
@@ -254,7 +254,7 @@ void main() {
   EXPECT_EQ(r.verdict, Verdict::Fail);
   EXPECT_EQ(r.reason, "vs.shader_test:" + str(line_of(text, "float(weight[0])")) +
                           ": error: link error: tessellation control shader input 'weight' is int but the "
-                          "vertex shader output (vs.shader_test:" + str(line_of(text, "weight = 1.0")) +
+                          "vertex shader output 'weight' (vs.shader_test:" + str(line_of(text, "weight = 1.0")) +
                           ") is float");
 }
 
