@@ -79,22 +79,20 @@ std::vector<draw::VertexArray> resolve_arrays(const Scene& scene, const DrawSett
 
 }  // namespace
 
-DrawStats draw_scene_draws(const Scene& scene, const glsl::GlslProgram* scene_program, Framebuffer& fb,
-                           const Parallel& parallel, const DrawOptions& options) {
+DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& parallel, const DrawOptions& options) {
   const std::vector<draw::Buffer> buffers = load_buffers(scene);
+  // The scene's program is built once, and only if a draw has no shaders of its own (the scene
+  // format then requires it to be custom).
+  SceneProgram shared;
   std::vector<SceneProgram> own(scene.draws.size());
   for (std::size_t i = 0; i < scene.draws.size(); ++i) {
-    if (scene.draws[i].shaders) {
-      own[i] = build_scene_program(scene, *scene.draws[i].shaders);
-    } else if (!scene_program) {
-      throw InputError(scene.source + ": " + scene.draws[i].key +
-                       ": has no shaders of its own and the scene's shaders.program is not \"custom\"");
-    }
+    if (scene.draws[i].shaders) own[i] = build_scene_program(scene, *scene.draws[i].shaders);
+    else if (!shared.program) shared = build_scene_program(scene);
   }
   DrawStats stats;
   for (std::size_t i = 0; i < scene.draws.size(); ++i) {
     const DrawSetting& d = scene.draws[i];
-    const glsl::GlslProgram& program = own[i].program ? *own[i].program : *scene_program;
+    const glsl::GlslProgram& program = own[i].program ? *own[i].program : *shared.program;
     const std::vector<draw::VertexArray> arrays = resolve_arrays(scene, d, program);
     RasterState state;
     state.cull_back_faces = d.cull_back_faces;

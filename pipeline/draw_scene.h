@@ -20,9 +20,8 @@ std::vector<std::uint32_t> assemble(DrawMode mode, int patch_vertices,
                                     const std::vector<std::vector<std::uint32_t>>& runs);
 
 // Draws every draw of the scene into fb (already cleared): a draw with its own `shaders` with its
-// program (all compiled before the first draw, so a broken one draws nothing), the others with
-// scene_program (may be null when every draw has its own).
-DrawStats draw_scene_draws(const Scene& scene, const glsl::GlslProgram* scene_program, Framebuffer& fb,
-                           const Parallel& parallel, const DrawOptions& options);
+// program, the others with the scene's (all compiled before the first draw, so a broken one
+// draws nothing).
+DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& parallel, const DrawOptions& options);
 
 }  // namespace tessref

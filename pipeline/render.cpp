@@ -1,7 +1,5 @@
 #include "pipeline/render.h"
 
-#include <algorithm>
-
 #include "pipeline/builtin_programs.h"
 #include "pipeline/camera.h"
 #include "pipeline/draw_scene.h"
@@ -53,11 +51,8 @@ RenderResult render_scene(const Scene& scene, const Mesh& mesh, const Parallel& 
 DrawStats render_scene(const Scene& scene, const Mesh& mesh, const Parallel& parallel,
                        Framebuffer& fb, const DrawOptions& options) {
   if (!scene.draws.empty()) {
-    // The scene's program only where a draw has none of its own.
-    const bool shared = std::any_of(scene.draws.begin(), scene.draws.end(), [](const DrawSetting& d) { return !d.shaders; });
-    const SceneProgram program = shared ? build_scene_program(scene) : SceneProgram{};
     fb.reset(scene.width, scene.height, scene.background, parallel);
-    return draw_scene_draws(scene, program.program.get(), fb, parallel, options);
+    return draw_scene_draws(scene, fb, parallel, options);
   }
   if (scene.shaders.program != ShaderProgram::Builtin) {
     const SceneProgram program = build_scene_program(scene);
