@@ -14,10 +14,11 @@ namespace {
 
 const char* kVertexShader = R"(#version 450 core
 layout(location = 0) in vec4 position;
+layout(location = 0) uniform int corners;  // vertices per primitive
 flat out int v_id;
 void main() {
   gl_Position = position;
-  v_id = gl_VertexID / 3;
+  v_id = gl_VertexID / corners;
 }
 )";
 
@@ -75,11 +76,13 @@ CoverageProber::CoverageProber(GlContext& context, int width, int height)
 CoverageProber::~CoverageProber() = default;
 
 CoverageProbe CoverageProber::draw(const std::vector<glm::vec4>& clip_positions,
-                                   unsigned depth_func) {
-  if (clip_positions.size() % 3 != 0 ||
-      clip_positions.size() / 3 > static_cast<std::size_t>(kProbeMaxTriangles))
+                                   unsigned depth_func, unsigned mode, unsigned polygon_mode) {
+  const int corners = mode == GL_TRIANGLES ? 3 : mode == GL_LINES ? 2 : mode == GL_POINTS ? 1 : 0;
+  if (corners == 0) throw GlError("CoverageProber::draw: mode must be GL_TRIANGLES, GL_LINES or GL_POINTS");
+  if (clip_positions.size() % std::size_t(corners) != 0 ||
+      clip_positions.size() / std::size_t(corners) > static_cast<std::size_t>(kProbeMaxTriangles))
     throw GlError("CoverageProber::draw: " + std::to_string(clip_positions.size()) +
-                  " vertices, want whole triangles, at most " +
+                  " vertices, want whole primitives, at most " +
                   std::to_string(kProbeMaxTriangles));
   Impl& s = *impl_;
   s.context.make_current();
@@ -109,8 +112,11 @@ CoverageProbe CoverageProber::draw(const std::vector<glm::vec4>& clip_positions,
   glBlendFunc(GL_ONE, GL_ONE);
   glBlendEquation(GL_FUNC_ADD);
   s.program.use();
+  glUniform1i(0, corners);
+  glPolygonMode(GL_FRONT_AND_BACK, GLenum(polygon_mode));
   glBindVertexArray(s.vao);
-  glDrawArrays(GL_TRIANGLES, 0, GLsizei(clip_positions.size()));
+  glDrawArrays(GLenum(mode), 0, GLsizei(clip_positions.size()));
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   glBindVertexArray(0);
   glUseProgram(0);
   glDisablei(GL_BLEND, 0);
@@ -129,8 +135,9 @@ CoverageProbe CoverageProber::draw(const std::vector<glm::vec4>& clip_positions,
   out.mask.assign(n, {0, 0, 0});
   out.last.resize(n);
   out.frag_coord.resize(n);
+  const bool sets = polygon_mode == GL_FILL;
   for (std::size_t i = 0; i < n; ++i) {
-    for (int c = 0; c < 8; ++c) {
+    for (int c = 0; c < 8 && sets; ++c) {
       const float v = c < 4 ? m0[i][c] : m1[i][c - 4];
       // Integers below 2^24 (each id at most once); the bits of channel c are ids 24c + k.
       const auto bits = static_cast<std::uint64_t>(v);

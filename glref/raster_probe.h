@@ -38,10 +38,15 @@ class CoverageProber {
 
   // Clears, then draws consecutive vertex triples (gl_Position as given, viewport the whole
   // target, depth range [0, 1]) as GL_TRIANGLES, no culling, depth test with depth_func
-  // (GL_LESS by default; 0 turns the test off). At most kProbeMaxTriangles triangles.
+  // (GL_LESS by default; 0 turns the test off). At most kProbeMaxTriangles primitives.
+  // mode GL_LINES or GL_POINTS: vertex pairs or single vertices (1 pixel wide, size 1).
+  // polygon_mode GL_LINE or GL_POINT (glPolygonMode for triangles): a triangle's edges may cover
+  // a pixel twice, so only `last` and `frag_coord` are read back (mask stays empty).
   // Throws GlError on GL failure.
   CoverageProbe draw(const std::vector<glm::vec4>& clip_positions,
-                     unsigned depth_func = 0x0201 /* GL_LESS */);
+                     unsigned depth_func = 0x0201 /* GL_LESS */,
+                     unsigned mode = 0x0004 /* GL_TRIANGLES */,
+                     unsigned polygon_mode = 0x1B02 /* GL_FILL */);
 
  private:
   struct Impl;

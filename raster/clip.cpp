@@ -46,8 +46,10 @@ ClipRecord cut(const ClipRecord& in, const ClipRecord& out, float d_in, float d_
 // One Sutherland-Hodgman pass against plane i.
 // generated[k]: whether vertex k was made by clipping (it then gets Mesa's unfused viewport
 // transform, see setup.cpp).
+// boundary: per vertex, whether its edge to the next vertex lies on an input edge.
 int clip_against(const Planes& planes, int i, const ClipRecord* src, const bool* src_generated,
-                 int n, ClipRecord* dst, bool* dst_generated, int num_varyings) {
+                 const bool* src_boundary, int n, ClipRecord* dst, bool* dst_generated,
+                 bool* dst_boundary, int num_varyings) {
   int m = 0;
   for (int k = 0; k < n; ++k) {
     const ClipRecord& cur = src[k];
@@ -58,10 +60,13 @@ int clip_against(const Planes& planes, int i, const ClipRecord* src, const bool*
     bool next_in = dn >= 0.0f;
     if (cur_in) {
       dst_generated[m] = src_generated[k];
+      dst_boundary[m] = src_boundary[k];
       dst[m++] = cur;
     }
     if (cur_in != next_in) {
       dst_generated[m] = true;
+      // Leaving: the edge from the exit point runs along the plane. Entering: the rest of k's edge.
+      dst_boundary[m] = !cur_in && src_boundary[k];
       dst[m++] = cur_in ? cut(cur, next, dc, dn, num_varyings) : cut(next, cur, dn, dc, num_varyings);
     }
   }
@@ -96,16 +101,19 @@ ClipResult clip_triangle(const float* a, const float* b, const float* c, int num
   const std::uint32_t to_clip = (ca | cb | cc) & kClipPlanes;
   out.count = 3;
   out.generated = {};
+  out.boundary.fill(true);
   if (to_clip) {
     std::array<ClipRecord, kMaxClipVertices> tmp;
-    std::array<bool, kMaxClipVertices> tmp_generated{};
+    std::array<bool, kMaxClipVertices> tmp_generated{}, tmp_boundary{};
     for (int i = 0; i < kClipPlaneCount && out.count >= 3; ++i) {
       if (!(to_clip & (1u << i))) continue;
-      int n = clip_against(planes, i, out.v.data(), out.generated.data(), out.count, tmp.data(),
-                           tmp_generated.data(), num_varyings);
+      int n = clip_against(planes, i, out.v.data(), out.generated.data(), out.boundary.data(),
+                           out.count, tmp.data(), tmp_generated.data(), tmp_boundary.data(),
+                           num_varyings);
       for (int k = 0; k < n; ++k) {
         out.v[k] = tmp[k];
         out.generated[k] = tmp_generated[k];
+        out.boundary[k] = tmp_boundary[k];
       }
       out.count = n;
     }
@@ -116,6 +124,48 @@ ClipResult clip_triangle(const float* a, const float* b, const float* c, int num
   for (int k = 0; k < out.count; ++k) {
     if (!(out.v[k].position.w > 0.0f) || !finite(out.v[k].position)) return ClipResult::kInvalid;
   }
+  return ClipResult::kKept;
+}
+
+ClipResult clip_line(const float* a, const float* b, int num_varyings, float guard_x,
+                     float guard_y, ClipRecord out[2], bool generated[2]) {
+  num_varyings = std::clamp(num_varyings, 0, kMaxVaryings);
+  const float* in[2] = {a, b};
+  for (int k = 0; k < 2; ++k) {
+    out[k].position = glm::vec4(in[k][0], in[k][1], in[k][2], in[k][3]);
+    std::copy_n(in[k] + 4, num_varyings, out[k].varyings.begin());
+    generated[k] = false;
+  }
+  const ClipRecord v0 = out[0], v1 = out[1];
+  if (!finite(v0.position) || !finite(v1.position)) return ClipResult::kInvalid;
+  const Planes planes{guard_x, guard_y};
+  const std::uint32_t c0 = clip_outcode(v0.position, guard_x, guard_y) & ~kNonPositiveW;
+  const std::uint32_t c1 = clip_outcode(v1.position, guard_x, guard_y) & ~kNonPositiveW;
+  if (c0 & c1) return ClipResult::kRejected;
+  const std::uint32_t to_clip = (c0 | c1) & kClipPlanes;
+  float t0 = 0.0f, t1 = 0.0f;
+  for (int i = 0; i < kClipPlaneCount; ++i) {
+    if (!(to_clip & (1u << i))) continue;
+    const float d0 = planes.distance(i, v0.position), d1 = planes.distance(i, v1.position);
+    if (d1 < 0.0f) t1 = std::max(t1, d1 / (d1 - d0));
+    if (d0 < 0.0f) t0 = std::max(t0, d0 / (d0 - d1));
+    if (t0 + t1 >= 1.0f) return ClipResult::kRejected;
+  }
+  auto lerp = [&](ClipRecord& dst, float t, const ClipRecord& from, const ClipRecord& to) {
+    dst.position = from.position + t * (to.position - from.position);
+    for (int k = 0; k < num_varyings; ++k)
+      dst.varyings[k] = from.varyings[k] + t * (to.varyings[k] - from.varyings[k]);
+  };
+  if (c0 & kClipPlanes) {
+    lerp(out[0], t0, v0, v1);
+    generated[0] = true;
+  }
+  if (c1 & kClipPlanes) {
+    lerp(out[1], t1, v1, v0);
+    generated[1] = true;
+  }
+  for (int k = 0; k < 2; ++k)
+    if (!(out[k].position.w > 0.0f) || !finite(out[k].position)) return ClipResult::kInvalid;
   return ClipResult::kKept;
 }
 

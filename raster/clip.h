@@ -25,6 +25,9 @@ struct ClipPolygon {
   int count = 0;
   std::array<ClipRecord, kMaxClipVertices> v;
   std::array<bool, kMaxClipVertices> generated{};  // made by clipping, not an input vertex
+  // Edge k -> k + 1 lies on an input edge (false: made by clipping, along a clip plane). Mesa's
+  // clipper clears the edge flags of such edges, so polygon mode line does not draw them.
+  std::array<bool, kMaxClipVertices> boundary{};
 };
 
 enum class ClipResult {
@@ -97,5 +100,12 @@ inline ClipResult clip_triangle(const ClipVertex& a, const ClipVertex& b, const 
   return clip_triangle(&a.position.x, &b.position.x, &c.position.x,
                        std::min(num_varyings, kRecordVaryings), guard_x, guard_y, out);
 }
+
+// Clips the line a -> b (each gl_Position then num_varyings varyings) as Mesa's draw clipper
+// does (draw_pipe_clip.c, do_clip_line): per plane crossed, the fraction cut from each end, both
+// from the unclipped ends; a cut end is a + t0 (b - a) or b + t1 (a - b). out[0], out[1] are the
+// kept ends, generated[k] whether end k was cut.
+ClipResult clip_line(const float* a, const float* b, int num_varyings, float guard_x,
+                     float guard_y, ClipRecord out[2], bool generated[2]);
 
 }  // namespace tessref::raster

@@ -27,7 +27,24 @@ RasterStats& RasterStats::operator+=(const RasterStats& o) {
 
 namespace {
 
+using raster::SetupQuad;
 using raster::SetupTriangle;
+
+// What the binner and the tile scan need of each kind of set-up primitive.
+const SetupTriangle& box_of(const SetupTriangle& t) { return t; }
+const SetupTriangle& box_of(const SetupQuad& q) { return q.t; }
+bool may_cover(const SetupTriangle& t, const raster::PixelRect& r) {
+  return raster::triangle_may_cover(t, r);
+}
+bool may_cover(const SetupQuad& q, const raster::PixelRect& r) { return raster::quad_may_cover(q, r); }
+void scan(const SetupTriangle& t, const float* varyings, int nv, const raster::PixelRect& r,
+          raster::FragmentSink& sink) {
+  raster::raster_triangle(t, varyings, nv, r, sink);
+}
+void scan(const SetupQuad& q, const float* varyings, int nv, const raster::PixelRect& r,
+          raster::FragmentSink& sink) {
+  raster::raster_quad(q, varyings, nv, r, sink);
+}
 
 constexpr int kTileSize = 64;                    // pixels
 constexpr std::size_t kChunkTriangles = 1024;    // input triangles per setup task
@@ -37,8 +54,9 @@ constexpr std::size_t kMinBinnedForTasks = 256;  // fewer (triangle, tile) pairs
 constexpr std::size_t kPassTriangles = 64 * 1024;
 constexpr std::size_t kProjectVertices = 8192;  // vertices per projection task
 
+template <class Setup>
 struct Chunk {
-  std::vector<SetupTriangle> tris;
+  std::vector<Setup> tris;
   std::vector<float> varyings;
   std::vector<std::uint32_t> tile_begin;  // per tile: start in tile_tris; num_tiles + 1 entries
   std::vector<std::uint32_t> tile_tris;   // indices into tris, grouped by tile, in order
@@ -52,20 +70,20 @@ struct TileGrid {
   std::size_t count() const { return std::size_t(tiles_x) * tiles_y; }
 };
 
-void setup_chunk(const TriangleBatch& batch, const raster::ProjectedVertex* projected,
-                 std::size_t first, std::size_t last, const raster::Viewport& vp, bool cull,
-                 const TileGrid& grid, Chunk& chunk) {
+// setup_one(i, prims, varyings, pieces) sets up input primitive i (raster::setup_triangle and its
+// kin).
+template <class Setup, class SetupOne>
+void setup_chunk(int num_varyings, std::size_t first, std::size_t last, const TileGrid& grid,
+                 const SetupOne& setup_one, Chunk<Setup>& chunk) {
   chunk.tris.clear();
   chunk.varyings.clear();
   chunk.tris.reserve(last - first);
-  chunk.varyings.reserve((last - first) * 3 *
-                         std::size_t(std::clamp(batch.num_varyings, 0, kMaxVaryings)));
+  chunk.varyings.reserve((last - first) * 3 * std::size_t(num_varyings));
   chunk.stats = RasterStats{};
   for (std::size_t i = first; i < last; ++i) {
     int pieces = 0;
     ++chunk.stats.triangles_in;
-    switch (raster::setup_triangle(batch, i, projected, vp, cull, chunk.tris, chunk.varyings,
-                                   pieces)) {
+    switch (setup_one(i, chunk.tris, chunk.varyings, pieces)) {
       case raster::SetupOutcome::kClippedAway: ++chunk.stats.triangles_clipped_away; break;
       case raster::SetupOutcome::kCulled: ++chunk.stats.triangles_culled; break;
       case raster::SetupOutcome::kRasterized: chunk.stats.triangles_rasterized += pieces; break;
@@ -74,7 +92,8 @@ void setup_chunk(const TriangleBatch& batch, const raster::ProjectedVertex* proj
 
   // Counting sort of (tile, triangle) pairs by tile; triangle order within a tile is kept.
   chunk.tile_begin.assign(grid.count() + 1, 0);
-  auto for_tiles = [&](const SetupTriangle& t, auto&& fn) {
+  auto for_tiles = [&](const Setup& prim, auto&& fn) {
+    const SetupTriangle& t = box_of(prim);
     if (t.min_x > t.max_x || t.min_y > t.max_y) return;
     const int tx0 = t.min_x / kTileSize, tx1 = t.max_x / kTileSize;
     const int ty0 = t.min_y / kTileSize, ty1 = t.max_y / kTileSize;
@@ -86,7 +105,7 @@ void setup_chunk(const TriangleBatch& batch, const raster::ProjectedVertex* proj
                                      std::max(ty * kTileSize, t.min_y),
                                      std::min((tx + 1) * kTileSize - 1, t.max_x),
                                      std::min((ty + 1) * kTileSize - 1, t.max_y)};
-        if (single || raster::triangle_may_cover(t, rect))
+        if (single || may_cover(prim, rect))
           fn(std::size_t(ty) * grid.tiles_x + tx);
       }
   };
@@ -94,7 +113,7 @@ void setup_chunk(const TriangleBatch& batch, const raster::ProjectedVertex* proj
   constexpr std::uint32_t kSeveralTiles = ~0u;
   chunk.single_tile.resize(chunk.tris.size());
   for (std::size_t k = 0; k < chunk.tris.size(); ++k) {
-    const SetupTriangle& t = chunk.tris[k];
+    const SetupTriangle& t = box_of(chunk.tris[k]);
     const int tx0 = t.min_x / kTileSize, ty0 = t.min_y / kTileSize;
     if (t.min_x <= t.max_x && t.min_y <= t.max_y && tx0 == t.max_x / kTileSize &&
         ty0 == t.max_y / kTileSize) {
@@ -103,7 +122,7 @@ void setup_chunk(const TriangleBatch& batch, const raster::ProjectedVertex* proj
       ++chunk.tile_begin[tile + 1];
     } else {
       chunk.single_tile[k] = kSeveralTiles;
-      for_tiles(t, [&](std::size_t tile) { ++chunk.tile_begin[tile + 1]; });
+      for_tiles(chunk.tris[k], [&](std::size_t tile) { ++chunk.tile_begin[tile + 1]; });
     }
   }
   for (std::size_t k = 1; k < chunk.tile_begin.size(); ++k)
@@ -119,12 +138,14 @@ void setup_chunk(const TriangleBatch& batch, const raster::ProjectedVertex* proj
   }
 }
 
-}  // namespace
 
-RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
-                           const FragmentProgram& fs, Framebuffer& fb, const Parallel& parallel) {
+// The draw of any primitive kind: Setup is what setup_one(i, prims, varyings, pieces) makes of
+// input primitive i of batch.
+template <class Setup, class Batch, class SetupOne>
+RasterStats draw_batch(const Batch& batch, const RasterState& state, const FragmentProgram& fs,
+                       Framebuffer& fb, const Parallel& parallel, const SetupOne& setup_one) {
   RasterStats total;
-  const std::size_t n = batch.triangle_count();
+  const std::size_t n = batch.primitive_count();
   if (fb.width <= 0 || fb.height <= 0) {
     total.triangles_in = n;
     total.triangles_clipped_away = n;
@@ -139,8 +160,9 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
     throw std::invalid_argument("draw_triangles: framebuffer attachments do not match its size");
 
   if (batch.indexed) {
-    if (batch.indices.size() % 3 != 0)
-      throw std::invalid_argument("draw_triangles: index count not a multiple of 3");
+    if (batch.indices.size() % Batch::kCorners != 0)
+      throw std::invalid_argument("draw_triangles: index count not a multiple of " +
+                                  std::to_string(Batch::kCorners));
     std::uint32_t largest = 0;  // a max reduction (vectorizes), then one test
     for (std::uint32_t i : batch.indices) largest = std::max(largest, i);
     if (!batch.indices.empty() && largest >= batch.vertex_count())
@@ -156,9 +178,9 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
   // Scratch kept per calling thread: reallocating (and page-faulting) tens of megabytes on every
   // draw would cost more than small draws themselves. Bound to a reference here, on the calling
   // thread: the tasks below run on other threads, whose own thread_local would be another object.
-  thread_local std::vector<Chunk> scratch;
+  thread_local std::vector<Chunk<Setup>> scratch;
   thread_local std::vector<raster::ProjectedVertex> projected_scratch;
-  std::vector<Chunk>& chunks = scratch;
+  std::vector<Chunk<Setup>>& chunks = scratch;
 
   // Per-vertex clip-space work once per vertex (shared by the triangles that index it).
   std::vector<raster::ProjectedVertex>& projected = projected_scratch;
@@ -184,8 +206,10 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
 
     parallel.for_each(num_chunks, [&](std::size_t c) {
       const std::size_t first = pass_first + c * kChunkTriangles;
-      setup_chunk(batch, projected.data(), first, std::min(pass_last, first + kChunkTriangles), vp,
-                  state.cull_back_faces, grid, chunks[c]);
+      setup_chunk(num_varyings, first, std::min(pass_last, first + kChunkTriangles), grid,
+                  [&](std::size_t i, std::vector<Setup>& prims, std::vector<float>& varyings,
+                      int& pieces) { return setup_one(projected.data(), vp, i, prims, varyings, pieces); },
+                  chunks[c]);
     });
 
     // Only tiles that received triangles get a task.
@@ -207,11 +231,10 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
                                    std::min(fb.height, (ty + 1) * kTileSize) - 1};
       raster::FragmentSink sink(fs, fb, num_varyings, state.depth_test, &batch.flat_varyings);
       for (std::size_t c = 0; c < num_chunks; ++c) {
-        const Chunk& chunk = chunks[c];
+        const Chunk<Setup>& chunk = chunks[c];
         for (std::uint32_t k = chunk.tile_begin[tile]; k < chunk.tile_begin[tile + 1]; ++k) {
-          const SetupTriangle& t = chunk.tris[chunk.tile_tris[k]];
-          raster::raster_triangle(t, chunk.varyings.data() + t.varying_offset, num_varyings, rect,
-                                  sink);
+          const Setup& prim = chunk.tris[chunk.tile_tris[k]];
+          scan(prim, chunk.varyings.data() + box_of(prim).varying_offset, num_varyings, rect, sink);
         }
       }
       sink.flush();
@@ -228,6 +251,47 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
     for (std::uint64_t f : tile_fragments) total.fragments_shaded += f;
   }
   return total;
+}
+
+}  // namespace
+
+RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
+                           const FragmentProgram& fs, Framebuffer& fb, const Parallel& parallel) {
+  if (state.polygon_mode == PolygonMode::kFill)
+    return draw_batch<SetupTriangle>(
+        batch, state, fs, fb, parallel,
+        [&](const raster::ProjectedVertex* projected, const raster::Viewport& vp, std::size_t i,
+            std::vector<SetupTriangle>& tris, std::vector<float>& varyings, int& pieces) {
+          return raster::setup_triangle(batch, i, projected, vp, state.cull_back_faces, tris,
+                                        varyings, pieces);
+        });
+  return draw_batch<SetupQuad>(
+      batch, state, fs, fb, parallel,
+      [&](const raster::ProjectedVertex* projected, const raster::Viewport& vp, std::size_t i,
+          std::vector<SetupQuad>& quads, std::vector<float>& varyings, int& pieces) {
+        return raster::setup_triangle_outline(batch, i, projected, vp, state.cull_back_faces,
+                                              state.polygon_mode, quads, varyings, pieces);
+      });
+}
+
+RasterStats draw_lines(const LineBatch& batch, const RasterState& state, const FragmentProgram& fs,
+                       Framebuffer& fb, const Parallel& parallel) {
+  return draw_batch<SetupQuad>(
+      batch, state, fs, fb, parallel,
+      [&](const raster::ProjectedVertex* projected, const raster::Viewport& vp, std::size_t i,
+          std::vector<SetupQuad>& quads, std::vector<float>& varyings, int& pieces) {
+        return raster::setup_line(batch, i, projected, vp, quads, varyings, pieces);
+      });
+}
+
+RasterStats draw_points(const PointBatch& batch, const RasterState& state,
+                        const FragmentProgram& fs, Framebuffer& fb, const Parallel& parallel) {
+  return draw_batch<SetupQuad>(
+      batch, state, fs, fb, parallel,
+      [&](const raster::ProjectedVertex* projected, const raster::Viewport& vp, std::size_t i,
+          std::vector<SetupQuad>& quads, std::vector<float>& varyings, int& pieces) {
+        return raster::setup_point(batch, i, projected, vp, quads, varyings, pieces);
+      });
 }
 
 }  // namespace tessref

@@ -50,13 +50,20 @@ struct FragmentProgram {
   virtual bool may_discard() const { return false; }
 };
 
+// glPolygonMode(GL_FRONT_AND_BACK, GL_FILL / GL_LINE / GL_POINT).
+enum class PolygonMode { kFill, kLine, kPoint };
+
 struct RasterState {
   bool cull_back_faces = false;  // CCW front faces, as glFrontFace(GL_CCW)
+  // glPolygonMode(GL_FRONT_AND_BACK, ...): triangles filled, or drawn as their edges or corners
+  // (raster::setup_triangle_outline).
+  PolygonMode polygon_mode = PolygonMode::kFill;
   bool depth_test = true;        // LESS, with depth writes; false: neither (glDisable(GL_DEPTH_TEST))
   float depth_range_near = 0.0f;
   float depth_range_far = 1.0f;
 };
 
+// Counts of primitives: triangles, or lines and points for draw_lines and draw_points.
 struct RasterStats {
   std::uint64_t triangles_in = 0;
   std::uint64_t triangles_clipped_away = 0;  // wholly outside the view volume
@@ -70,5 +77,13 @@ struct RasterStats {
 // concatenated batches. The framebuffer bytes do not depend on parallel.threads().
 RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
                            const FragmentProgram& fs, Framebuffer& fb, const Parallel& parallel);
+
+// GL_LINES (1 pixel wide, diamond-exit rule) and GL_POINTS (size 1), with llvmpipe's coverage
+// (raster/line_setup.h); the same depth test, order and determinism as draw_triangles.
+// state.cull_back_faces and polygon_mode do not apply (lines and points have no face).
+RasterStats draw_lines(const LineBatch& batch, const RasterState& state, const FragmentProgram& fs,
+                       Framebuffer& fb, const Parallel& parallel);
+RasterStats draw_points(const PointBatch& batch, const RasterState& state,
+                        const FragmentProgram& fs, Framebuffer& fb, const Parallel& parallel);
 
 }  // namespace tessref

@@ -250,6 +250,19 @@ void project_vertices(const ClipVertex* vertices, std::size_t count, int records
   }
 }
 
+ProjectedVertex project_position(const glm::vec4& position, const Viewport& vp, bool generated) {
+  const WindowVertex w = to_window(position, nullptr, vp, generated);
+  ProjectedVertex p;
+  p.x = w.x;
+  p.y = w.y;
+  p.xf = w.xf;
+  p.yf = w.yf;
+  p.z = w.z;
+  p.inv_w = w.inv_w;
+  p.code = 0;
+  return p;
+}
+
 SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index,
                             const ProjectedVertex* projected, const Viewport& vp,
                             bool cull_back_faces, std::vector<SetupTriangle>& tris,

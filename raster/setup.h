@@ -51,6 +51,11 @@ inline constexpr int kSmallTrianglePixels = 8;
 void project_vertices(const ClipVertex* vertices, std::size_t count, int records,
                       const Viewport& vp, ProjectedVertex* out);
 
+// One clip-space position through the perspective divide and the viewport transform, as the
+// triangle setup projects it; generated: a vertex made by clipping (Mesa's unfused arithmetic).
+// The position must be finite with w > 0.
+ProjectedVertex project_position(const glm::vec4& position, const Viewport& vp, bool generated);
+
 // Sets up triangle `index` of batch, whose vertices were projected into `projected` (indexed like
 // batch.vertices): clips it if needed and appends its pieces (0 to 7 triangles) to tris, their
 // varyings to varyings. pieces_out receives the number of pieces set up; a piece whose bounding

@@ -63,6 +63,30 @@ Span row_span(const Edge* edges, int x0, int x1, int y) {
   return span;
 }
 
+// The covered run of row y within [x0, x1] of a line's or point's four half-planes: E > 0 for
+// all, E linear in X, so again one span, found exactly by division.
+Span quad_row_span(const HalfPlane* planes, int x0, int x1, int y) {
+  std::int64_t k_lo = 0, k_hi = x1 - x0;
+  for (int i = 0; i < 4; ++i) {
+    // E(x0 + k) = c0 + k s with s = -256 dcdx; inside when E >= 1.
+    const std::int64_t c = planes[i].at(x0, y) - 1;
+    const std::int64_t s = -planes[i].dcdx * fixed::kSubpixelOne;
+    if (s == 0) {
+      if (c < 0) k_hi = -1;
+    } else if (s < 0) {
+      k_hi = std::min(k_hi, floor_div(c, -s));
+    } else {
+      k_lo = std::max(k_lo, ceil_div(-c, s));
+    }
+  }
+  Span span;
+  if (k_lo <= k_hi) {
+    span.lo = x0 + int(k_lo);
+    span.hi = x0 + int(k_hi);
+  }
+  return span;
+}
+
 // The per-pixel interpolation of one triangle: the one definition both scan paths below use.
 // Barycentrics come from the planes through the float positions (see SetupTriangle); window
 // depth is linear in window space; varyings are perspective-correct (attribute/w and 1/w
@@ -118,6 +142,15 @@ bool triangle_may_cover(const SetupTriangle& t, const PixelRect& rect) {
     const std::int64_t best = std::max(std::max(e.at(cx0, cy0), e.at(cx1, cy0)),
                                        std::max(e.at(cx0, cy1), e.at(cx1, cy1)));
     if (best + e.bias < 0) return false;
+  }
+  return true;
+}
+
+bool quad_may_cover(const SetupQuad& q, const PixelRect& rect) {
+  for (const HalfPlane& p : q.plane) {
+    const std::int64_t best = std::max(std::max(p.at(rect.x0, rect.y0), p.at(rect.x1, rect.y0)),
+                                       std::max(p.at(rect.x0, rect.y1), p.at(rect.x1, rect.y1)));
+    if (best <= 0) return false;
   }
   return true;
 }
@@ -183,6 +216,103 @@ void FragmentSink::flush() {
   batch_.quads = 0;
 }
 
+// The row loop both primitive kinds share: coverage comes from row_span(lo, hi, y), the covered
+// run of row y within [lo, hi]; depth and varyings from t's interpolation planes.
+struct Scanner {
+  template <class RowSpan>
+  static std::uint64_t rows(const SetupTriangle& t, const float* varyings, int num_varyings,
+                            int x0, int x1, int y0, int y1, FragmentSink& sink,
+                            RowSpan&& span_of_row) {
+    const PixelInterpolation ip(t);
+    const float* __restrict a0 = varyings;
+    const float* __restrict d1 = varyings + num_varyings;
+    const float* __restrict d2 = varyings + 2 * num_varyings;
+    Framebuffer& fb = sink.fb_;
+    FragmentBatch& batch = sink.batch_;
+    std::uint64_t passed = 0;
+    // Quad rows (aligned row pairs), each cut into segments of at most a batch of quads. The
+    // per-pixel formulas run over a whole row segment or batch range in loops without branches
+    // (so they vectorize).
+    for (int qy = y0 & ~1; qy <= y1; qy += 2) {
+      Span span[2];
+      for (int r = 0; r < 2; ++r)
+        if (qy + r >= y0 && qy + r <= y1) span[r] = span_of_row(x0, x1, qy + r);
+      const bool has0 = span[0].lo <= span[0].hi, has1 = span[1].lo <= span[1].hi;
+      if (!has0 && !has1) continue;
+      const int lo = !has1 ? span[0].lo : !has0 ? span[1].lo : std::min(span[0].lo, span[1].lo);
+      const int hi = !has1 ? span[0].hi : !has0 ? span[1].hi : std::max(span[0].hi, span[1].hi);
+      for (int seg_x = lo & ~1; seg_x <= hi; seg_x += 2 * kFragmentQuads) {
+        const int seg_quads = std::min(kFragmentQuads, (hi - seg_x) / 2 + 1);
+        if (batch.quads + seg_quads > kFragmentQuads) sink.flush();
+        const int base = 4 * batch.quads;
+        const int lanes = 4 * seg_quads;
+        for (int l = base; l < base + lanes; ++l) batch.live[l] = 0;
+
+        // Depth, row by row: barycentrics and depth over the covered run, then the test.
+        for (int r = 0; r < 2; ++r) {
+          const int y = qy + r;
+          const int xs = std::max(span[r].lo, seg_x);
+          const int xe = std::min(span[r].hi, seg_x + 2 * seg_quads - 1);
+          const int n = xe - xs + 1;
+          if (n <= 0) continue;
+          double b1[2 * kFragmentQuads], b2[2 * kFragmentQuads];
+          float z[2 * kFragmentQuads];
+          for (int i = 0; i < n; ++i) {
+            ip.barycentrics(xs + i, y, b1[i], b2[i]);
+            z[i] = ip.depth(b1[i], b2[i]);
+          }
+          float* depth = fb.depth.data() + fb.index(xs, y);
+          for (int i = 0; i < n; ++i) {
+            if (sink.depth_test_) {
+              if (!(z[i] < depth[i])) continue;
+              if (!sink.late_depth_) depth[i] = z[i];  // no discard: the depth write is final
+            }
+            const int x = xs + i;
+            const int lane = base + 2 * (x - seg_x) - (x & 1) + 2 * r;  // 4 * quad + (x & 1) + 2r
+            batch.live[lane] = 1;
+            sink.b1_[lane] = b1[i];
+            sink.b2_[lane] = b2[i];
+            batch.frag_coord[0][lane] = float(x) + 0.5f;
+            batch.frag_coord[1][lane] = float(y) + 0.5f;
+            batch.frag_coord[2][lane] = z[i];
+            sink.pixel_[lane] = fb.index(x, y);
+            ++passed;
+          }
+        }
+
+        // Varyings of the segment's lanes (dead lanes compute what they hold, unused).
+        float w1[kFragmentLanes], w2[kFragmentLanes];
+        for (int l = base; l < base + lanes; ++l)
+          batch.frag_coord[3][l] = float(ip.perspective(sink.b1_[l], sink.b2_[l], w1[l], w2[l]));
+        for (int j = 0; j < num_varyings; ++j) {
+          float* __restrict out = batch.varyings[j];
+          const float a = a0[j], e1 = d1[j], e2 = d2[j];
+          if (sink.is_flat(j)) {  // the provoking vertex's bits, not a sum (see FragmentSink)
+            for (int l = base; l < base + lanes; ++l) out[l] = a;
+            continue;
+          }
+          for (int l = base; l < base + lanes; ++l) out[l] = PixelInterpolation::varying(a, e1, e2, w1[l], w2[l]);
+        }
+        for (int l = base; l < base + lanes; ++l) batch.front_facing[l] = t.front_facing;
+
+    // Keep only quads with a live lane.
+        int kept = batch.quads;
+        for (int q = 0; q < seg_quads; ++q) {
+          const int src = base + 4 * q;
+          if (!(batch.live[src] | batch.live[src + 1] | batch.live[src + 2] | batch.live[src + 3]))
+            continue;
+          const int dst = 4 * kept++;
+          if (dst != src) sink.move_quad(src, dst);
+        }
+        batch.quads = kept;
+        if (batch.quads == kFragmentQuads) sink.flush();
+      }
+    }
+    sink.shaded_ += passed;
+    return passed;
+  }
+};
+
 std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int num_varyings,
                               const PixelRect& rect, FragmentSink& sink) {
   const int x0 = std::max(rect.x0, t.min_x), x1 = std::min(rect.x1, t.max_x);
@@ -238,86 +368,18 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
     return passed;
   }
   const TriangleEdges te(t.x, t.y);
-  // Quad rows (aligned row pairs), each cut into segments of at most a batch of quads. The
-  // per-pixel formulas run over a whole row segment or batch range in loops without branches
-  // (so they vectorize).
-  for (int qy = y0 & ~1; qy <= y1; qy += 2) {
-    Span span[2];
-    for (int r = 0; r < 2; ++r)
-      if (qy + r >= y0 && qy + r <= y1) span[r] = row_span(te.e, x0, x1, qy + r);
-    const bool has0 = span[0].lo <= span[0].hi, has1 = span[1].lo <= span[1].hi;
-    if (!has0 && !has1) continue;
-    const int lo = !has1 ? span[0].lo : !has0 ? span[1].lo : std::min(span[0].lo, span[1].lo);
-    const int hi = !has1 ? span[0].hi : !has0 ? span[1].hi : std::max(span[0].hi, span[1].hi);
-    for (int seg_x = lo & ~1; seg_x <= hi; seg_x += 2 * kFragmentQuads) {
-      const int seg_quads = std::min(kFragmentQuads, (hi - seg_x) / 2 + 1);
-      if (batch.quads + seg_quads > kFragmentQuads) sink.flush();
-      const int base = 4 * batch.quads;
-      const int lanes = 4 * seg_quads;
-      for (int l = base; l < base + lanes; ++l) batch.live[l] = 0;
+  return Scanner::rows(t, varyings, num_varyings, x0, x1, y0, y1, sink,
+                       [&](int lo, int hi, int y) { return row_span(te.e, lo, hi, y); });
+}
 
-      // Depth, row by row: barycentrics and depth over the covered run, then the test.
-      for (int r = 0; r < 2; ++r) {
-        const int y = qy + r;
-        const int xs = std::max(span[r].lo, seg_x);
-        const int xe = std::min(span[r].hi, seg_x + 2 * seg_quads - 1);
-        const int n = xe - xs + 1;
-        if (n <= 0) continue;
-        double b1[2 * kFragmentQuads], b2[2 * kFragmentQuads];
-        float z[2 * kFragmentQuads];
-        for (int i = 0; i < n; ++i) {
-          ip.barycentrics(xs + i, y, b1[i], b2[i]);
-          z[i] = ip.depth(b1[i], b2[i]);
-        }
-        float* depth = fb.depth.data() + fb.index(xs, y);
-        for (int i = 0; i < n; ++i) {
-          if (sink.depth_test_) {
-            if (!(z[i] < depth[i])) continue;
-            if (!sink.late_depth_) depth[i] = z[i];  // no discard: the depth write is final
-          }
-          const int x = xs + i;
-          const int lane = base + 2 * (x - seg_x) - (x & 1) + 2 * r;  // 4 * quad + (x & 1) + 2r
-          batch.live[lane] = 1;
-          sink.b1_[lane] = b1[i];
-          sink.b2_[lane] = b2[i];
-          batch.frag_coord[0][lane] = float(x) + 0.5f;
-          batch.frag_coord[1][lane] = float(y) + 0.5f;
-          batch.frag_coord[2][lane] = z[i];
-          sink.pixel_[lane] = fb.index(x, y);
-          ++passed;
-        }
-      }
-
-      // Varyings of the segment's lanes (dead lanes compute what they hold, unused).
-      float w1[kFragmentLanes], w2[kFragmentLanes];
-      for (int l = base; l < base + lanes; ++l)
-        batch.frag_coord[3][l] = float(ip.perspective(sink.b1_[l], sink.b2_[l], w1[l], w2[l]));
-      for (int j = 0; j < num_varyings; ++j) {
-        float* __restrict out = batch.varyings[j];
-        const float a = a0[j], e1 = d1[j], e2 = d2[j];
-        if (sink.is_flat(j)) {  // the provoking vertex's bits, not a sum (see FragmentSink)
-          for (int l = base; l < base + lanes; ++l) out[l] = a;
-          continue;
-        }
-        for (int l = base; l < base + lanes; ++l) out[l] = PixelInterpolation::varying(a, e1, e2, w1[l], w2[l]);
-      }
-      for (int l = base; l < base + lanes; ++l) batch.front_facing[l] = t.front_facing;
-
-  // Keep only quads with a live lane.
-      int kept = batch.quads;
-      for (int q = 0; q < seg_quads; ++q) {
-        const int src = base + 4 * q;
-        if (!(batch.live[src] | batch.live[src + 1] | batch.live[src + 2] | batch.live[src + 3]))
-          continue;
-        const int dst = 4 * kept++;
-        if (dst != src) sink.move_quad(src, dst);
-      }
-      batch.quads = kept;
-      if (batch.quads == kFragmentQuads) sink.flush();
-    }
-  }
-  sink.shaded_ += passed;
-  return passed;
+std::uint64_t raster_quad(const SetupQuad& q, const float* varyings, int num_varyings,
+                          const PixelRect& rect, FragmentSink& sink) {
+  const SetupTriangle& t = q.t;
+  const int x0 = std::max(rect.x0, t.min_x), x1 = std::min(rect.x1, t.max_x);
+  const int y0 = std::max(rect.y0, t.min_y), y1 = std::min(rect.y1, t.max_y);
+  if (x0 > x1 || y0 > y1) return 0;
+  return Scanner::rows(t, varyings, num_varyings, x0, x1, y0, y1, sink,
+                       [&](int lo, int hi, int y) { return quad_row_span(q.plane, lo, hi, y); });
 }
 
 void FragmentSink::move_quad(int src, int dst) {

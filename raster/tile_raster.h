@@ -2,6 +2,7 @@
 // Scan conversion of one set-up triangle inside one screen rectangle (a tile).
 #include <cstdint>
 
+#include "raster/line_setup.h"
 #include "raster/setup.h"
 
 namespace tessref::raster {
@@ -32,6 +33,7 @@ class FragmentSink {
  private:
   friend std::uint64_t raster_triangle(const SetupTriangle&, const float*, int, const PixelRect&,
                                        FragmentSink&);
+  friend struct Scanner;
   void move_quad(int src_lane, int dst_lane);  // lanes src..src+3 to dst..dst+3
   const VaryingMask* flat_;
   const FragmentProgram& fs_;
@@ -62,5 +64,11 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
 // binner skip tiles that a large triangle's bounding box overlaps but the triangle misses. Exact
 // and conservative: true whenever raster_triangle would cover a pixel of rect.
 bool triangle_may_cover(const SetupTriangle& t, const PixelRect& rect);
+
+// The same for a set-up line or point (line_setup.h): its covered pixels of rect, in the order
+// raster_triangle sends them.
+std::uint64_t raster_quad(const SetupQuad& q, const float* varyings, int num_varyings,
+                          const PixelRect& rect, FragmentSink& sink);
+bool quad_may_cover(const SetupQuad& q, const PixelRect& rect);
 
 }  // namespace tessref::raster

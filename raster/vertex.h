@@ -32,16 +32,19 @@ constexpr int vertex_records(int num_varyings) {
 // Bit j: varying j is flat.
 using VaryingMask = std::bitset<kMaxVaryings>;
 
-// Triangles in submission order: the order is part of the result (depth ties resolve to the
-// earlier triangle), so producers must fill it deterministically. Indexed (3 indices per triangle
-// into `vertices`, each vertex stored and transformed once) or, with no indices, consecutive
-// vertex triples. Both forms of the same triangles draw the same bytes.
-struct TriangleBatch {
+// Primitives of `Corners` vertices (3 triangles, 2 lines, 1 points) in submission order: the
+// order is part of the result (depth ties resolve to the earlier primitive), so producers must fill
+// it deterministically. Indexed (Corners indices per primitive into `vertices`, each vertex stored
+// and transformed once) or, with no indices, consecutive vertex groups. Both forms of the same
+// primitives draw the same bytes.
+template <int Corners>
+struct PrimitiveBatch {
+  static constexpr int kCorners = Corners;
   std::vector<ClipVertex> vertices;  // records(): vertex v starts at vertices[v * records()]
   std::vector<std::uint32_t> indices;  // used when indexed
   bool indexed = false;
   int num_varyings = 0;
-  // Bit j set: varying j is flat (not interpolated): every fragment of a triangle gets the value
+  // Bit j set: varying j is flat (not interpolated): every fragment of a primitive gets the value
   // of its provoking vertex, the last one (GL_LAST_VERTEX_CONVENTION).
   VaryingMask flat_varyings;
   int records() const { return vertex_records(num_varyings); }
@@ -50,20 +53,26 @@ struct TriangleBatch {
   const float* vertex_data(std::size_t v) const {
     return reinterpret_cast<const float*>(vertices.data() + v * std::size_t(records()));
   }
-  std::size_t triangle_count() const { return (indexed ? indices.size() : vertex_count()) / 3; }
-  std::size_t vertex_index(std::size_t triangle, int corner) const {
-    const std::size_t k = 3 * triangle + std::size_t(corner);
+  std::size_t primitive_count() const {
+    return (indexed ? indices.size() : vertex_count()) / std::size_t(Corners);
+  }
+  std::size_t triangle_count() const requires(Corners == 3) { return primitive_count(); }
+  std::size_t vertex_index(std::size_t primitive, int corner) const {
+    const std::size_t k = std::size_t(Corners) * primitive + std::size_t(corner);
     return indexed ? indices[k] : k;
   }
   // A corner's first record (its varyings continue in the following records).
-  const ClipVertex& corner(std::size_t triangle, int corner) const {
-    return vertices[vertex_index(triangle, corner) * std::size_t(records())];
+  const ClipVertex& corner(std::size_t primitive, int corner) const {
+    return vertices[vertex_index(primitive, corner) * std::size_t(records())];
   }
   void clear() {
     vertices.clear();
     indices.clear();
   }
 };
+using TriangleBatch = PrimitiveBatch<3>;
+using LineBatch = PrimitiveBatch<2>;   // GL_LINES: each line's own two vertices
+using PointBatch = PrimitiveBatch<1>;
 
 // The same triangles as consecutive triples (for tools and tests that walk corners in order).
 TriangleBatch expand_indices(const TriangleBatch& batch);
