@@ -253,14 +253,17 @@ void run_render(const RenderOptions& o) {
 
   const DrawStats& s = result.stats;
   std::string tessellated;
-  if (scene.tessellation.enabled)
+  // A scene of draws counts GL's primitives (patches, triangles, lines, points); the mesh path its
+  // triangles.
+  const bool draws = !scene.draws.empty();
+  if (draws ? s.tess.patches_in > 0 : scene.tessellation.enabled)
     tessellated = ", " + std::to_string(s.triangles_generated) + " after tessellation";
   std::printf(
-      "tessref render: %s -> %s (%dx%d, %d threads): %llu triangles in%s, %llu rasterized, "
+      "tessref render: %s -> %s (%dx%d, %d threads): %llu %s in%s, %llu rasterized, "
       "%llu fragments shaded; mesh %s, vertex %s, tessellation %s, raster+fs %s, write %s\n",
       drawn_scene_name(scene, o.sets).c_str(), written_files(o, dump.get()).c_str(), scene.width,
       scene.height, parallel.threads(), static_cast<unsigned long long>(s.triangles_in),
-      tessellated.c_str(), static_cast<unsigned long long>(s.raster.triangles_rasterized),
+      draws ? "primitives" : "triangles", tessellated.c_str(), static_cast<unsigned long long>(s.raster.triangles_rasterized),
       static_cast<unsigned long long>(s.raster.fragments_shaded), ms(mesh_seconds).c_str(),
       ms(s.vertex_seconds).c_str(), ms(s.tessellation_seconds).c_str(),
       ms(s.raster_seconds).c_str(), ms(write_seconds).c_str());

@@ -40,8 +40,16 @@ GLenum gl_mode(DrawMode m) {
     case DrawMode::Triangles: return GL_TRIANGLES;
     case DrawMode::TriangleStrip: return GL_TRIANGLE_STRIP;
     case DrawMode::TriangleFan: return GL_TRIANGLE_FAN;
+    case DrawMode::Lines: return GL_LINES;
+    case DrawMode::LineStrip: return GL_LINE_STRIP;
+    case DrawMode::LineLoop: return GL_LINE_LOOP;
+    case DrawMode::Points: return GL_POINTS;
   }
   return GL_NONE;
+}
+
+GLenum gl_polygon_mode(PolygonMode m) {
+  return m == PolygonMode::kLine ? GL_LINE : m == PolygonMode::kPoint ? GL_POINT : GL_FILL;
 }
 
 // glVertexAttrib4f / I4i / I4ui / L4d with the array's current value.
@@ -138,6 +146,7 @@ void GlDraws::draw() const {
     } else {
       glDisable(GL_CULL_FACE);
     }
+    glPolygonMode(GL_FRONT_AND_BACK, gl_polygon_mode(draw.polygon_mode));
     glDisable(GL_PRIMITIVE_RESTART);
     glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
     if (draw.restart.enabled && draw.restart.fixed_index) glEnable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
@@ -168,6 +177,7 @@ void GlDraws::draw() const {
   glDisable(GL_CULL_FACE);
   glDisable(GL_PRIMITIVE_RESTART);
   glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
 }
 
 }  // namespace tessref::glref

@@ -341,6 +341,9 @@ void SceneRenderer::draw() {
     glCullFace(GL_BACK);
     glFrontFace(GL_CCW);
   }
+  glPolygonMode(GL_FRONT_AND_BACK, scene_.polygon_mode == PolygonMode::kLine    ? GL_LINE
+                                   : scene_.polygon_mode == PolygonMode::kPoint ? GL_POINT
+                                                                                : GL_FILL);
   if (draws_) {
     glDisable(GL_DEPTH_TEST);  // each draw sets its own state and program
     draws_->draw();
@@ -358,6 +361,7 @@ void SceneRenderer::draw() {
   glFinish();
   glDisable(GL_CULL_FACE);
   glDisable(GL_DEPTH_TEST);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   check_gl("SceneRenderer::draw");
   stats_.draw_seconds = seconds_since(t0);
 }

@@ -28,6 +28,16 @@ std::vector<draw::Buffer> load_buffers(const Scene& scene) {
   return out;
 }
 
+int primitive_corners(DrawMode mode) {
+  switch (mode) {
+    case DrawMode::Lines:
+    case DrawMode::LineStrip:
+    case DrawMode::LineLoop: return 2;
+    case DrawMode::Points: return 1;
+    default: return 3;
+  }
+}
+
 std::vector<std::uint32_t> assemble(DrawMode mode, int patch_vertices,
                                     const std::vector<std::vector<std::uint32_t>>& runs) {
   std::vector<std::uint32_t> out;
@@ -50,6 +60,14 @@ std::vector<std::uint32_t> assemble(DrawMode mode, int patch_vertices,
       case DrawMode::TriangleFan:
         for (std::size_t i = 0; i + 2 < r.size(); ++i) out.insert(out.end(), {r[0], r[i + 1], r[i + 2]});
         break;
+      case DrawMode::Lines: out.insert(out.end(), r.begin(), r.begin() + std::ptrdiff_t(r.size() / 2 * 2)); break;
+      case DrawMode::LineStrip:
+      case DrawMode::LineLoop:
+        // GL 4.5, 10.1.3 and 10.1.4: segment i joins vertices i and i+1; a loop adds the last to the first.
+        for (std::size_t i = 0; i + 1 < r.size(); ++i) out.insert(out.end(), {r[i], r[i + 1]});
+        if (mode == DrawMode::LineLoop && r.size() >= 2) out.insert(out.end(), {r.back(), r[0]});
+        break;
+      case DrawMode::Points: out.insert(out.end(), r.begin(), r.end()); break;
     }
   }
   return out;
@@ -97,6 +115,7 @@ DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& 
     RasterState state;
     state.cull_back_faces = d.cull_back_faces;
     state.depth_test = d.depth_test;
+    state.polygon_mode = d.polygon_mode;
     for (const draw::DrawCall& c : d.calls) {
       draw::VertexInput input;
       try {
@@ -112,6 +131,7 @@ DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& 
       call.vertex_count = input.vertex_ids.size();
       call.instances = int(c.instance_count);
       call.patches = d.mode == DrawMode::Patches;
+      call.corners = primitive_corners(d.mode);
       call.patch_vertices = d.patch_vertices;
       call.default_outer = d.default_outer;
       call.default_inner = d.default_inner;

@@ -13,9 +13,13 @@ namespace tessref {
 // The scene's buffers with their bytes (files read now). InputError naming buffers.NAME.file.
 std::vector<draw::Buffer> load_buffers(const Scene& scene);
 
+// Vertices per assembled primitive of an untessellated mode: 3, 2 (lines) or 1 (points).
+int primitive_corners(DrawMode mode);
+
 // The primitives' vertices for `mode`, as positions into the fetched vertices: each restarted run
 // cut to whole primitives (GL ignores a partial last one), strips and fans as triangle lists in
 // GL's vertex order (the last vertex of each triangle is GL's provoking vertex).
+// Line strips and loops become line lists, points a point list.
 std::vector<std::uint32_t> assemble(DrawMode mode, int patch_vertices,
                                     const std::vector<std::vector<std::uint32_t>>& runs);
 

@@ -1,5 +1,6 @@
 #include "pipeline/draw_schema.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -283,16 +284,20 @@ DrawSetting read_draw(JsonObject o, const std::vector<BufferSetting>& buffers, c
   d.key = o.path();
   o.describe("shaders", "an object {vertex, tess_control, tess_evaluation, fragment, uniforms, textures}: this draw's own program");
   if (o.has("shaders")) d.shaders = read_draw_shaders(o, scene_shaders, base_dir);
-  o.describe("mode", "one of GL_PATCHES, GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN");
+  static constexpr const char* kModes =
+      "GL_PATCHES, GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_LINES, GL_LINE_STRIP, GL_LINE_LOOP or GL_POINTS";
+  o.describe("mode", std::string("one of ") + kModes);
   const std::string mode = o.string("mode");
-  if (mode == "GL_PATCHES") d.mode = DrawMode::Patches;
-  else if (mode == "GL_TRIANGLES") d.mode = DrawMode::Triangles;
-  else if (mode == "GL_TRIANGLE_STRIP") d.mode = DrawMode::TriangleStrip;
-  else if (mode == "GL_TRIANGLE_FAN") d.mode = DrawMode::TriangleFan;
-  else if (mode == "GL_POINTS" || mode == "GL_LINES" || mode == "GL_LINE_STRIP" || mode == "GL_LINE_LOOP" ||
-           mode.find("_ADJACENCY") != std::string::npos)
-    o.fail("mode", mode + " is a GL mode tessref does not rasterize yet (triangles and patches only)");
-  else o.fail("mode", "expected GL_PATCHES, GL_TRIANGLES, GL_TRIANGLE_STRIP or GL_TRIANGLE_FAN, got \"" + mode + "\"");
+  static const std::pair<const char*, DrawMode> kNames[] = {
+      {"GL_PATCHES", DrawMode::Patches},         {"GL_TRIANGLES", DrawMode::Triangles},
+      {"GL_TRIANGLE_STRIP", DrawMode::TriangleStrip}, {"GL_TRIANGLE_FAN", DrawMode::TriangleFan},
+      {"GL_LINES", DrawMode::Lines},             {"GL_LINE_STRIP", DrawMode::LineStrip},
+      {"GL_LINE_LOOP", DrawMode::LineLoop},      {"GL_POINTS", DrawMode::Points}};
+  const auto named = std::find_if(std::begin(kNames), std::end(kNames), [&](const auto& n) { return mode == n.first; });
+  if (named != std::end(kNames)) d.mode = named->second;
+  else if (mode.find("_ADJACENCY") != std::string::npos)
+    o.fail("mode", mode + " needs a geometry shader, which tessref does not run yet");
+  else o.fail("mode", std::string("expected ") + kModes + ", got \"" + mode + "\"");
   if (o.has("patch_vertices")) {
     o.describe("patch_vertices", "GL_PATCH_VERTICES: 1..32 (GL_MAX_PATCH_VERTICES)");
     const json& v = o.value("patch_vertices");
@@ -343,6 +348,14 @@ DrawSetting read_draw(JsonObject o, const std::vector<BufferSetting>& buffers, c
         o.fail("enable", "primitive restart is the key primitive_restart (with its index)");
       else o.fail("enable", "expected GL_DEPTH_TEST or GL_CULL_FACE, got " + describe_json(cap));
     }
+  }
+  o.describe("polygon_mode", "glPolygonMode(GL_FRONT_AND_BACK, ...): GL_FILL (default), GL_LINE or GL_POINT");
+  if (o.has("polygon_mode")) {
+    const std::string m = o.string("polygon_mode");
+    if (m == "GL_FILL") d.polygon_mode = PolygonMode::kFill;
+    else if (m == "GL_LINE") d.polygon_mode = PolygonMode::kLine;
+    else if (m == "GL_POINT") d.polygon_mode = PolygonMode::kPoint;
+    else o.fail("polygon_mode", "expected GL_FILL, GL_LINE or GL_POINT, got \"" + m + "\"");
   }
   if (o.has("robust_buffer_access")) d.rules.robust_buffer_access = o.boolean("robust_buffer_access");
   o.describe("robust_buffer_access", "a boolean (default false): a fetch outside a buffer reads zero instead of being an error");

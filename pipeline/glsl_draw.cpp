@@ -17,23 +17,41 @@ double seconds_since(Clock::time_point t0) {
 // Patches per tessellated chunk when the caller sets none: a user's control shader may write any
 // level, so chunks are sized for the largest (64: about 6,000 triangles a patch).
 constexpr std::size_t kChunkPatches = 64;
-constexpr std::size_t kTrianglesPerBatch = 65536;  // GL_TRIANGLES draws
+constexpr std::size_t kPrimitivesPerBatch = 65536;  // untessellated draws
 
-// GL_TRIANGLES: the vertex shader's gl_Position and outputs become the rasterizer's vertices.
-void draw_triangle_list(const glsl::GlslProgram& program, const std::vector<StageVertex>& shaded,
-                        const GlslDrawCall& call, const RasterState& state, const FragmentProgram& fs,
-                        Framebuffer& fb, const Parallel& parallel, DrawStats& stats, Checker* check) {
+// The rasterizer's entry for each primitive kind.
+RasterStats draw_batch(const TriangleBatch& b, const RasterState& s, const FragmentProgram& fs,
+                       Framebuffer& fb, const Parallel& p) {
+  return draw_triangles(b, s, fs, fb, p);
+}
+RasterStats draw_batch(const LineBatch& b, const RasterState& s, const FragmentProgram& fs,
+                       Framebuffer& fb, const Parallel& p) {
+  return draw_lines(b, s, fs, fb, p);
+}
+RasterStats draw_batch(const PointBatch& b, const RasterState& s, const FragmentProgram& fs,
+                       Framebuffer& fb, const Parallel& p) {
+  return draw_points(b, s, fs, fb, p);
+}
+
+// Untessellated primitives: the vertex shader's gl_Position and outputs become the rasterizer's
+// vertices.
+template <class Batch>
+void draw_primitive_list(const glsl::GlslProgram& program, const std::vector<StageVertex>& shaded,
+                         const GlslDrawCall& call, const RasterState& state, const FragmentProgram& fs,
+                         Framebuffer& fb, const Parallel& parallel, DrawStats& stats, Checker* check) {
+  constexpr std::size_t kCorners = Batch::kCorners;
   const std::size_t corners = call.indices.empty() ? call.count : call.indices.size();
-  const std::size_t triangles = corners / 3;
-  TriangleBatch batch;
+  const std::size_t primitives = corners / kCorners;
+  Batch batch;
   batch.num_varyings = program.varyings();
   batch.flat_varyings = program.flat_varyings();
   const std::size_t records = std::size_t(batch.records());
-  for (std::size_t first = 0; first < triangles; first += kTrianglesPerBatch) {
-    const std::size_t n = std::min(kTrianglesPerBatch, triangles - first);
-    batch.vertices.assign(3 * n * records, ClipVertex{});
-    for (std::size_t k = 0; k < 3 * n; ++k) {
-      const std::size_t v = call.indices.empty() ? 3 * first + k : call.indices[3 * first + k];
+  for (std::size_t first = 0; first < primitives; first += kPrimitivesPerBatch) {
+    const std::size_t n = std::min(kPrimitivesPerBatch, primitives - first);
+    batch.vertices.assign(kCorners * n * records, ClipVertex{});
+    for (std::size_t k = 0; k < kCorners * n; ++k) {
+      const std::size_t at = kCorners * first + k;
+      const std::size_t v = call.indices.empty() ? at : call.indices[at];
       if (v >= shaded.size()) throw std::invalid_argument("draw: index " + std::to_string(v) + " past the vertex arrays");
       // I/O slot words (glsl_interface.h): gl_Position, then location L at 4 + 4L = varying 4L.
       const auto* src = reinterpret_cast<const float*>(shaded[v].attr.data());
@@ -42,10 +60,26 @@ void draw_triangle_list(const glsl::GlslProgram& program, const std::vector<Stag
     }
     const auto t = Clock::now();
     stats.triangles_generated += n;
-    stats.raster += draw_triangles(batch, state, fs, fb, parallel);
+    stats.raster += draw_batch(batch, state, fs, fb, parallel);
     stats.raster_seconds += seconds_since(t);
     if (check) check->after_raster();
   }
+}
+
+// Isolines and point mode: the evaluated vertices the tessellator collected for this chunk.
+template <class Batch>
+void draw_tess_primitives(std::vector<ClipVertex>& vertices, const TessEvalProgram& tes,
+                          const RasterState& state, const FragmentProgram& fs, Framebuffer& fb,
+                          const Parallel& parallel, DrawStats& stats) {
+  if (vertices.empty()) return;
+  Batch batch;
+  batch.num_varyings = tes.num_varyings();
+  batch.flat_varyings = tes.flat_varyings();
+  batch.vertices.swap(vertices);
+  stats.triangles_generated += batch.primitive_count();
+  stats.raster += draw_batch(batch, state, fs, fb, parallel);
+  batch.vertices.swap(vertices);
+  vertices.clear();
 }
 
 }  // namespace
@@ -83,6 +117,10 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
   TessOptions tess_options;
   tess_options.patches_per_task = 4;
   if (options.wants_tess_records()) tess_options.dump = &records;
+  // Isolines and point mode: the tessellator hands their vertices over here, chunk by chunk.
+  std::vector<ClipVertex> lines, points;
+  tess_options.lines = &lines;
+  tess_options.points = &points;
   const TessDrawInput* check_input = nullptr;  // --check's control shader re-run: this instance's patches
   if (options.check)
     tess_options.control_check = [&](std::size_t p, const PatchOutput& o) {
@@ -110,8 +148,12 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
                                        &shaded[v].attr[s][0], 4, call.indices, call.patches ? call.patch_vertices : 3, trace);
     }
     if (!call.patches) {
-      stats.triangles_in += (indexed ? call.indices.size() : call.count) / 3;
-      draw_triangle_list(program, shaded, call, raster_state, *fs, fb, par, stats, options.check);
+      stats.triangles_in += (indexed ? call.indices.size() : call.count) / std::size_t(call.corners);
+      switch (call.corners) {
+        case 1: draw_primitive_list<PointBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options.check); break;
+        case 2: draw_primitive_list<LineBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options.check); break;
+        default: draw_primitive_list<TriangleBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options.check);
+      }
       continue;
     }
 
@@ -130,6 +172,8 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
       const auto r0 = Clock::now();
       stats.triangles_generated += batch.triangle_count();
       stats.raster += draw_triangles(batch, raster_state, *fs, fb, par);
+      draw_tess_primitives<LineBatch>(lines, *tes, raster_state, *fs, fb, par, stats);
+      draw_tess_primitives<PointBatch>(points, *tes, raster_state, *fs, fb, par, stats);
       stats.raster_seconds += seconds_since(r0);
       if (options.check) options.check->after_raster();
       options.hand_out_tess_chunk(records, batch);

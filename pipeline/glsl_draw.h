@@ -24,7 +24,8 @@ struct GlslDrawCall {
   // Appends the attributes that change with the instance (instanced arrays) to the draw's.
   std::function<void(int instance, std::vector<glsl::VertexAttribute>&)> instance_attributes;
   int instances = 1;
-  bool patches = true;               // GL_PATCHES; false: GL_TRIANGLES, no tessellation stages
+  bool patches = true;               // GL_PATCHES; false: no tessellation stages, and
+  int corners = 3;                   // vertices per primitive: 3 triangles, 2 lines, 1 points
   int patch_vertices = 3;            // GL_PATCH_VERTICES
   glm::vec4 default_outer{1.0f};     // GL_PATCH_DEFAULT_OUTER_LEVEL (no control shader)
   glm::vec2 default_inner{1.0f};     // GL_PATCH_DEFAULT_INNER_LEVEL

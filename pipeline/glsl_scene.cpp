@@ -322,6 +322,7 @@ DrawStats draw_glsl_scene(const Scene& scene, const glsl::GlslProgram& program, 
   const GlslDrawCall call = scene_draw_call(scene, mesh);
   RasterState state;
   state.cull_back_faces = scene.cull_back_faces;
+  state.polygon_mode = scene.polygon_mode;
   try {
     return draw_glsl(program, attributes, call, state, fb, parallel, options);
   } catch (const glsl::StageError& e) {

@@ -62,6 +62,7 @@ DrawStats render_scene(const Scene& scene, const Mesh& mesh, const Parallel& par
   const auto vs = scene_vertex_shader(scene);
   RasterState state;
   state.cull_back_faces = scene.cull_back_faces;
+  state.polygon_mode = scene.polygon_mode;
 
   const BuiltinFragmentProgram program = builtin_fragment_program(scene);
   const FragmentProgram& fs = program.get();

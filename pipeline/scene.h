@@ -13,6 +13,7 @@
 
 #include "draw/vertex_fetch.h"
 #include "pipeline/tessellation_settings.h"
+#include "raster/rasterizer.h"
 #include "stages/programs/phong.h"
 
 namespace tessref {
@@ -114,7 +115,7 @@ struct BufferSetting {
 };
 
 // draws[].mode: the primitive type of glDraw*(mode, ...).
-enum class DrawMode { Patches, Triangles, TriangleStrip, TriangleFan };
+enum class DrawMode { Patches, Triangles, TriangleStrip, TriangleFan, Lines, LineStrip, LineLoop, Points };
 
 // draws[].vertex_arrays.INPUT: a vertex shader input (its name, or a location as digits) and the
 // array that feeds it; the location is resolved against the program when drawn.
@@ -142,6 +143,7 @@ struct DrawSetting {
   // (glCullFace(GL_BACK), glFrontFace(GL_CCW)); GL's defaults are off.
   bool depth_test = false;
   bool cull_back_faces = false;
+  PolygonMode polygon_mode = PolygonMode::kFill;  // glPolygonMode(GL_FRONT_AND_BACK, ...)
 };
 
 struct Scene {
@@ -155,6 +157,7 @@ struct Scene {
   glm::vec4 background{0.0f, 0.0f, 0.0f, 1.0f};
   Shading shading = Shading::Phong;
   bool cull_back_faces = true;
+  PolygonMode polygon_mode = PolygonMode::kFill;  // the mesh's draw: glPolygonMode
   TessellationSettings tessellation;
   ShaderSettings shaders;
   // A scene with draws describes GL draws (README, "Draws"): they replace the mesh and the

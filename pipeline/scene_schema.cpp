@@ -31,6 +31,13 @@ bool parse(const std::string& s, Shading& out) {
   return false;
 }
 
+bool parse(const std::string& s, PolygonMode& out) {
+  if (s == "GL_FILL") return out = PolygonMode::kFill, true;
+  if (s == "GL_LINE") return out = PolygonMode::kLine, true;
+  if (s == "GL_POINT") return out = PolygonMode::kPoint, true;
+  return false;
+}
+
 template <typename Enum>
 Enum enum_value(JsonObject& o, const std::string& key, const char* choices) {
   std::string s = o.string(key);
@@ -372,6 +379,7 @@ Scene scene_from_json(const json& root_json, const JsonSource& source,
   s.background = root.rgba("background");
   s.shading = enum_value<Shading>(root, "shading", "phong, normals");
   s.cull_back_faces = root.boolean("cull_back_faces");
+  s.polygon_mode = enum_value<PolygonMode>(root, "polygon_mode", "GL_FILL, GL_LINE, GL_POINT");
   s.tessellation = read_tessellation(root.object("tessellation"));
   s.shaders = read_shaders(root.object("shaders"), source, mesh_base_dir);
   read_draw_keys(root, source, mesh_base_dir, s.shaders, s.buffers, s.draws);

@@ -20,6 +20,7 @@ DrawStats draw_with_tagged_redraw(const Scene& scene, const Mesh& mesh, const Pa
   bool tessellated = false;
   RasterState state;
   state.cull_back_faces = scene.cull_back_faces;
+  state.polygon_mode = scene.polygon_mode;
   state.depth_test = redraw.depth_test;
   DrawOptions options;
   options.tess_surface = [&](const std::vector<TessDumpRecord>& records, const TriangleBatch& batch) {

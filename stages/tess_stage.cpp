@@ -261,10 +261,11 @@ void evaluate_task(std::size_t range_first, std::size_t first, std::size_t last,
     }
     if (sink) {
       const std::size_t base = sink->size();
-      sink->resize(base + used);  // geometric growth; the task's buffers are reused across chunks
+      sink->resize(base + used * records);  // geometric growth; the task's buffers are reused
       ClipVertex* dst = sink->data() + base;
-      // Lines and points keep a vertex's first record (gl_Position and 12 varyings).
-      for (std::size_t i = 0; i < used; ++i) dst[i] = evaluated[domain.indices[i] * records];
+      // Each vertex with all its records (LineBatch / PointBatch layout).
+      for (std::size_t i = 0; i < used; ++i)
+        std::copy_n(evaluated + domain.indices[i] * records, records, dst + i * records);
     }
   }
 }

@@ -161,7 +161,9 @@ struct TessOptions {
   // Optional: every TES invocation's record, in patch order then generation order.
   std::vector<TessDumpRecord>* dump = nullptr;
   // Optional: isoline segments (2 vertices each) and points (1 each) in emission order, for TES
-  // layouts that do not produce triangles. Without them such primitives are only counted.
+  // layouts that do not produce triangles, each vertex as vertex_records(tes.num_varyings())
+  // records (a LineBatch's or PointBatch's vertices). Without them such primitives are only
+  // counted.
   std::vector<ClipVertex>* lines = nullptr;
   std::vector<ClipVertex>* points = nullptr;
   // Which pattern each patch's levels give: the primitive generator (GL) or uniform subdivision

@@ -65,5 +65,30 @@ TEST(DrawsVsLlvmpipe, TessellatedDrawDepthTestedAgainstAnEarlierOne) {
   EXPECT_LE(o.within1.pixels - o.within1.within_tolerance, 2u) << o.within1.summary();
 }
 
+// Isolines: grass blades from 4-vertex ground patches, depth-tested, then a GL_LINE_LOOP and
+// GL_POINTS. Lines between window positions computed by the same GLSL on both sides; llvmpipe's
+// JIT may fuse a multiply-add in the projection, moving an end by an ulp, which changes a pixel
+// only where a line end sits on a diamond-exit tie (measured: 0 pixels).
+TEST(DrawsVsLlvmpipe, GrassIsolinesLineLoopAndPoints) {
+  TESSREF_REQUIRE_GL(ctx);
+  const DrawsOutcome o = compare_draws(*ctx, "grass_isolines.json");
+  EXPECT_EQ(o.stats.tess.patches_in, 2u);
+  EXPECT_EQ(o.stats.tess.lines_out, 2u * 40u * 6u);
+  EXPECT_GT(o.stats.raster.fragments_shaded, 2000u);
+  EXPECT_LE(o.within1.coverage_mismatch, 4u) << o.within1.summary();
+  EXPECT_LE(o.within1.pixels - o.within1.within_tolerance, o.within1.coverage_mismatch) << o.within1.summary();
+}
+
+// Point mode over a wireframe (glPolygonMode(GL_LINE)) and a GL_LINE_STRIP.
+TEST(DrawsVsLlvmpipe, PointModeOverAWireframe) {
+  TESSREF_REQUIRE_GL(ctx);
+  const DrawsOutcome o = compare_draws(*ctx, "dome_points.json");
+  EXPECT_EQ(o.stats.tess.patches_in, 2u);
+  EXPECT_EQ(o.stats.tess.points_out, o.stats.tess.domain_points);
+  EXPECT_GT(o.stats.raster.fragments_shaded, 1000u);
+  EXPECT_LE(o.within1.coverage_mismatch, 4u) << o.within1.summary();
+  EXPECT_LE(o.within1.pixels - o.within1.within_tolerance, o.within1.coverage_mismatch) << o.within1.summary();
+}
+
 }  // namespace
 }  // namespace tessref::glref

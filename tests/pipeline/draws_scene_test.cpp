@@ -89,6 +89,36 @@ TEST(DrawsScene, AssemblesStripsFansAndRestartedRunsAsGlDoes) {
   EXPECT_EQ(assemble(DrawMode::Patches, 4, runs), (std::vector<std::uint32_t>{0, 1, 2, 3, 5, 6, 7, 8}));
 }
 
+TEST(DrawsScene, AssemblesLineStripsLoopsAndPointsAsGlDoes) {
+  const std::vector<std::vector<std::uint32_t>> runs{{0, 1, 2, 3}, {4, 5, 6}, {7}};
+  EXPECT_EQ(assemble(DrawMode::LineStrip, 3, runs), (std::vector<std::uint32_t>{0, 1, 1, 2, 2, 3, 4, 5, 5, 6}));
+  EXPECT_EQ(assemble(DrawMode::LineLoop, 3, runs),
+            (std::vector<std::uint32_t>{0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 4}));
+  EXPECT_EQ(assemble(DrawMode::Lines, 3, runs), (std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5}));
+  EXPECT_EQ(assemble(DrawMode::Points, 3, runs), (std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5, 6, 7}));
+  EXPECT_EQ(primitive_corners(DrawMode::LineLoop), 2);
+  EXPECT_EQ(primitive_corners(DrawMode::Points), 1);
+  EXPECT_EQ(primitive_corners(DrawMode::TriangleFan), 3);
+}
+
+// Isolines and point mode reach the rasterizer: every blade segment and domain point is drawn, the
+// same bytes at 1 and 8 threads.
+TEST(DrawsScene, IsolinesAndPointModeAreDrawnAndDeterministic) {
+  const RenderResult grass = render_file("grass_isolines.json");
+  EXPECT_EQ(grass.stats.tess.lines_out, 480u);  // 2 patches x 40 blades x 6 segments
+  EXPECT_EQ(grass.stats.raster.triangles_in, 480u + 4u + 4u);  // + the loop's 4 lines and 4 points
+  EXPECT_GT(grass.stats.raster.fragments_shaded, 2000u);
+  const RenderResult dome = render_file("dome_points.json");
+  EXPECT_EQ(dome.stats.tess.points_out, dome.stats.tess.domain_points);
+  EXPECT_GT(dome.stats.tess.points_out, 300u);
+  for (const char* f : {"grass_isolines.json", "dome_points.json"}) {
+    const RenderResult one = render_file(f, {}, 1);
+    const RenderResult eight = render_file(f, {}, 8);
+    EXPECT_EQ(one.framebuffer.color, eight.framebuffer.color) << f;
+    EXPECT_EQ(one.framebuffer.depth, eight.framebuffer.depth) << f;
+  }
+}
+
 TEST(DrawsScene, BadDrawsNameTheKeyAndTheRule) {
   const std::string f = "bicubic_arrays.json";
   EXPECT_NE(error_of(f, {"draws.0.count=33"}).find(
@@ -112,6 +142,9 @@ TEST(DrawsScene, BadDrawsNameTheKeyAndTheRule) {
                 .find("no active input named \"in_positon\""),
             std::string::npos);
   EXPECT_NE(error_of(f, {"draws.0.basevertex=1"}).find("glDrawArrays* takes no basevertex"), std::string::npos);
+  EXPECT_NE(error_of(f, {"draws.0.polygon_mode=\"GL_WIRE\""}).find("draws.0.polygon_mode: expected GL_FILL, GL_LINE or GL_POINT"),
+            std::string::npos);
+  EXPECT_NE(error_of(f, {"draws.0.mode=\"GL_LINES_ADJACENCY\""}).find("needs a geometry shader"), std::string::npos);
 }
 
 }  // namespace
