@@ -70,13 +70,15 @@ void set_current(std::uint32_t location, const draw::VertexArray& a) {
 
 }  // namespace
 
-GlDraws::GlDraws(const Scene& scene, const std::vector<draw::Buffer>& buffers, std::vector<unsigned> programs)
-    : scene_(scene), programs_(std::move(programs)) {
+GlDraws::GlDraws(const Scene& scene, const std::vector<draw::Buffer>& buffers, std::vector<unsigned> programs,
+                 std::vector<const GlTextures*> textures)
+    : scene_(scene), programs_(std::move(programs)), textures_(std::move(textures)) {
   buffers_.resize(buffers.size());
   if (!buffers_.empty()) glGenBuffers(GLsizei(buffers_.size()), buffers_.data());
   for (std::size_t i = 0; i < buffers.size(); ++i) {
     glBindBuffer(GL_ARRAY_BUFFER, buffers_[i]);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(buffers[i].bytes.size()), buffers[i].bytes.data(), GL_STATIC_DRAW);
+    buffer_sizes_.push_back(buffers[i].bytes.size());
   }
   vaos_.resize(scene.draws.size());
   glGenVertexArrays(GLsizei(vaos_.size()), vaos_.data());
@@ -130,6 +132,7 @@ void GlDraws::draw() const {
   for (std::size_t d = 0; d < scene_.draws.size(); ++d) {
     const DrawSetting& draw = scene_.draws[d];
     glUseProgram(programs_[d]);
+    if (textures_[d]) textures_[d]->bind();
     glBindVertexArray(vaos_[d]);
     for (const auto& [location, a] : current_[d]) set_current(location, a);
     if (draw.depth_test) {
@@ -147,6 +150,10 @@ void GlDraws::draw() const {
       glDisable(GL_CULL_FACE);
     }
     glPolygonMode(GL_FRONT_AND_BACK, gl_polygon_mode(draw.polygon_mode));
+    for (const UniformBufferSetting& u : draw.uniform_buffers) {
+      const std::size_t size = u.size.value_or(buffer_sizes_[u.buffer] - u.offset);
+      glBindBufferRange(GL_UNIFORM_BUFFER, u.binding, buffers_[u.buffer], GLintptr(u.offset), GLsizeiptr(size));
+    }
     glDisable(GL_PRIMITIVE_RESTART);
     glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
     if (draw.restart.enabled && draw.restart.fixed_index) glEnable(GL_PRIMITIVE_RESTART_FIXED_INDEX);

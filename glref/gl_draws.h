@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "draw/vertex_fetch.h"
+#include "glref/gl_textures.h"
 #include "pipeline/scene.h"
 
 namespace tessref::glref {
@@ -12,8 +13,10 @@ namespace tessref::glref {
 class GlDraws {
  public:
   // The context must be current; programs[i] is the linked program of scene.draws[i] (with its
-  // uniforms set). GlError for a vertex input name the program does not have.
-  GlDraws(const Scene& scene, const std::vector<draw::Buffer>& buffers, std::vector<unsigned> programs);
+  // uniforms set), textures[i] its textures (bound before the draw). GlError for a vertex input
+  // name the program does not have.
+  GlDraws(const Scene& scene, const std::vector<draw::Buffer>& buffers, std::vector<unsigned> programs,
+          std::vector<const GlTextures*> textures);
   ~GlDraws();
   GlDraws(const GlDraws&) = delete;
   GlDraws& operator=(const GlDraws&) = delete;
@@ -25,7 +28,9 @@ class GlDraws {
  private:
   const Scene& scene_;
   std::vector<unsigned> programs_;  // per draw
+  std::vector<const GlTextures*> textures_;  // per draw
   std::vector<unsigned> buffers_;
+  std::vector<std::size_t> buffer_sizes_;
   std::vector<unsigned> vaos_;  // one per draw
   std::vector<std::vector<std::pair<std::uint32_t, draw::VertexArray>>> current_;  // disabled arrays per draw
 };

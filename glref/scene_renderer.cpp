@@ -157,33 +157,34 @@ SceneRenderer::SceneRenderer(GlContext& context, const Scene& scene, const Mesh&
       projection_matrix(scene.camera, scene.width, scene.height) * view_matrix(scene.camera);
 
   bool shared_program = scene_.draws.empty();
-  for (const DrawSetting& d : scene_.draws) {
-    if (d.shaders && !d.shaders->textures.empty())
-      throw GlError("SceneRenderer: " + d.key + ".shaders.textures are not bound on the GL side yet");
-    shared_program = shared_program || !d.shaders;
-  }
+  for (const DrawSetting& d : scene_.draws) shared_program = shared_program || !d.shaders;
   if (shared_program) {
-    if (!scene.shaders.textures.empty())
-      throw GlError("SceneRenderer: shaders.textures are not bound on the GL side yet");
     // A scene's draws name their inputs themselves: no glBindAttribLocation from shaders.attributes.
     program_ = link_program(twin_stages(scene_, false, options_.specialize), {},
                             scene_.draws.empty() ? attribute_locations(scene_) : AttributeLocations{});
     set_uniforms(program_, scene_.shaders);
+    textures_ = std::make_unique<GlTextures>(scene_.source, scene_.shaders);
+    textures_->set_samplers(program_.id());
   }
 
   if (!scene_.draws.empty()) {
     // Each draw's program: its own (draws[].shaders) or the scene's.
     std::vector<unsigned> programs;
+    std::vector<const GlTextures*> textures;
     draw_programs_.resize(scene_.draws.size());
+    draw_textures_.resize(scene_.draws.size());
     for (std::size_t i = 0; i < scene_.draws.size(); ++i) {
       const DrawSetting& d = scene_.draws[i];
       if (d.shaders) {
         draw_programs_[i] = link_program(custom_stages(scene_, *d.shaders, false));
         set_uniforms(draw_programs_[i], *d.shaders);
+        draw_textures_[i] = std::make_unique<GlTextures>(scene_.source, *d.shaders);
+        draw_textures_[i]->set_samplers(draw_programs_[i].id());
       }
       programs.push_back(d.shaders ? draw_programs_[i].id() : program_.id());
+      textures.push_back(d.shaders ? draw_textures_[i].get() : textures_.get());
     }
-    draws_ = std::make_unique<GlDraws>(scene_, load_buffers(scene_), programs);
+    draws_ = std::make_unique<GlDraws>(scene_, load_buffers(scene_), programs, textures);
   } else if (const TessellationSettings& t = scene_.tessellation; t.enabled) {
     const bool custom = scene_.shaders.program == ShaderProgram::Custom;
     PatchMeshData data{mesh.positions, mesh.normals, mesh.indices, custom ? scene_.shaders.patch_vertices : 3, {}, {}};
@@ -303,27 +304,58 @@ void SceneRenderer::set_user_uniform(const Program& program, const UniformSettin
   GLuint index = GL_INVALID_INDEX;
   glGetUniformIndices(program.id(), 1, &name, &index);
   GLint type = 0;
-  if (index == GL_INVALID_INDEX) {  // an array element by name: ask for the array
-    const std::string base = u.name.substr(0, u.name.find('[')) + "[0]";
+  if (index == GL_INVALID_INDEX && u.name.back() == ']') {  // "u[3]": GL lists the array as "u[0]"
+    const std::string base = u.name.substr(0, u.name.rfind('[')) + "[0]";
     const char* b = base.c_str();
     glGetUniformIndices(program.id(), 1, &b, &index);
   }
   if (index != GL_INVALID_INDEX) glGetActiveUniformsiv(program.id(), 1, &index, GL_UNIFORM_TYPE, &type);
-  std::vector<float> f(u.values.begin(), u.values.end());
-  std::vector<GLint> i(u.values.begin(), u.values.end());
-  const GLsizei n = 1;
+  // Components per element of each GL type, and glUniform*v with as many elements as were given
+  // (several in a row set an array from this one on).
+  const std::vector<float> f(u.values.begin(), u.values.end());
+  const std::vector<double> d(u.values.begin(), u.values.end());
+  std::vector<GLint> i;
+  std::vector<GLuint> ui;
+  for (double x : u.values) {
+    i.push_back(GLint(x));
+    ui.push_back(x < 0.0 ? GLuint(GLint(x)) : GLuint(x));
+  }
+  auto count = [&](std::size_t components) { return GLsizei(u.values.size() / components); };
   switch (type) {
-    case GL_FLOAT: glUniform1fv(location, n, f.data()); break;
-    case GL_FLOAT_VEC2: glUniform2fv(location, n, f.data()); break;
-    case GL_FLOAT_VEC3: glUniform3fv(location, n, f.data()); break;
-    case GL_FLOAT_VEC4: glUniform4fv(location, n, f.data()); break;
-    case GL_FLOAT_MAT2: glUniformMatrix2fv(location, n, GL_FALSE, f.data()); break;
-    case GL_FLOAT_MAT3: glUniformMatrix3fv(location, n, GL_FALSE, f.data()); break;
-    case GL_FLOAT_MAT4: glUniformMatrix4fv(location, n, GL_FALSE, f.data()); break;
-    case GL_INT: case GL_BOOL: glUniform1iv(location, n, i.data()); break;
-    case GL_INT_VEC2: case GL_BOOL_VEC2: glUniform2iv(location, n, i.data()); break;
-    case GL_INT_VEC3: case GL_BOOL_VEC3: glUniform3iv(location, n, i.data()); break;
-    case GL_INT_VEC4: case GL_BOOL_VEC4: glUniform4iv(location, n, i.data()); break;
+    case GL_FLOAT: glUniform1fv(location, count(1), f.data()); break;
+    case GL_FLOAT_VEC2: glUniform2fv(location, count(2), f.data()); break;
+    case GL_FLOAT_VEC3: glUniform3fv(location, count(3), f.data()); break;
+    case GL_FLOAT_VEC4: glUniform4fv(location, count(4), f.data()); break;
+    case GL_DOUBLE: glUniform1dv(location, count(1), d.data()); break;
+    case GL_DOUBLE_VEC2: glUniform2dv(location, count(2), d.data()); break;
+    case GL_DOUBLE_VEC3: glUniform3dv(location, count(3), d.data()); break;
+    case GL_DOUBLE_VEC4: glUniform4dv(location, count(4), d.data()); break;
+    case GL_INT: case GL_BOOL: case GL_SAMPLER_2D: glUniform1iv(location, count(1), i.data()); break;
+    case GL_INT_VEC2: case GL_BOOL_VEC2: glUniform2iv(location, count(2), i.data()); break;
+    case GL_INT_VEC3: case GL_BOOL_VEC3: glUniform3iv(location, count(3), i.data()); break;
+    case GL_INT_VEC4: case GL_BOOL_VEC4: glUniform4iv(location, count(4), i.data()); break;
+    case GL_UNSIGNED_INT: glUniform1uiv(location, count(1), ui.data()); break;
+    case GL_UNSIGNED_INT_VEC2: glUniform2uiv(location, count(2), ui.data()); break;
+    case GL_UNSIGNED_INT_VEC3: glUniform3uiv(location, count(3), ui.data()); break;
+    case GL_UNSIGNED_INT_VEC4: glUniform4uiv(location, count(4), ui.data()); break;
+    case GL_FLOAT_MAT2: glUniformMatrix2fv(location, count(4), GL_FALSE, f.data()); break;
+    case GL_FLOAT_MAT3: glUniformMatrix3fv(location, count(9), GL_FALSE, f.data()); break;
+    case GL_FLOAT_MAT4: glUniformMatrix4fv(location, count(16), GL_FALSE, f.data()); break;
+    case GL_FLOAT_MAT2x3: glUniformMatrix2x3fv(location, count(6), GL_FALSE, f.data()); break;
+    case GL_FLOAT_MAT2x4: glUniformMatrix2x4fv(location, count(8), GL_FALSE, f.data()); break;
+    case GL_FLOAT_MAT3x2: glUniformMatrix3x2fv(location, count(6), GL_FALSE, f.data()); break;
+    case GL_FLOAT_MAT3x4: glUniformMatrix3x4fv(location, count(12), GL_FALSE, f.data()); break;
+    case GL_FLOAT_MAT4x2: glUniformMatrix4x2fv(location, count(8), GL_FALSE, f.data()); break;
+    case GL_FLOAT_MAT4x3: glUniformMatrix4x3fv(location, count(12), GL_FALSE, f.data()); break;
+    case GL_DOUBLE_MAT2: glUniformMatrix2dv(location, count(4), GL_FALSE, d.data()); break;
+    case GL_DOUBLE_MAT3: glUniformMatrix3dv(location, count(9), GL_FALSE, d.data()); break;
+    case GL_DOUBLE_MAT4: glUniformMatrix4dv(location, count(16), GL_FALSE, d.data()); break;
+    case GL_DOUBLE_MAT2x3: glUniformMatrix2x3dv(location, count(6), GL_FALSE, d.data()); break;
+    case GL_DOUBLE_MAT2x4: glUniformMatrix2x4dv(location, count(8), GL_FALSE, d.data()); break;
+    case GL_DOUBLE_MAT3x2: glUniformMatrix3x2dv(location, count(6), GL_FALSE, d.data()); break;
+    case GL_DOUBLE_MAT3x4: glUniformMatrix3x4dv(location, count(12), GL_FALSE, d.data()); break;
+    case GL_DOUBLE_MAT4x2: glUniformMatrix4x2dv(location, count(8), GL_FALSE, d.data()); break;
+    case GL_DOUBLE_MAT4x3: glUniformMatrix4x3dv(location, count(12), GL_FALSE, d.data()); break;
     default: throw GlError("SceneRenderer: uniform " + u.name + " has a type the GL runner does not set yet");
   }
   check_gl(("SceneRenderer: setting uniform " + u.name).c_str());
@@ -350,9 +382,11 @@ void SceneRenderer::draw() {
     stats_.draws = scene_.draws.size();
   } else if (patches_) {
     program_.use();
+    textures_->bind();
     stats_.draws = patches_->draw(program_, point_bounds_, options_.max_points_per_draw);
   } else {
     program_.use();
+    textures_->bind();
     glBindVertexArray(vao_);
     glDrawElements(GL_TRIANGLES, GLsizei(index_count_), GL_UNSIGNED_INT, nullptr);
     glBindVertexArray(0);
@@ -396,7 +430,9 @@ std::vector<TessOutputVertex> SceneRenderer::capture_tess() {
                                     FeedbackVaryings{{outputs[0], outputs[1], "tf_tess_coord", "tf_patch_id"}, true},
                                     attribute_locations(scene_));
     set_uniforms(capture_program_, scene_.shaders);
+    textures_->set_samplers(capture_program_.id());
   }
+  textures_->bind();
   const std::vector<std::uint32_t> words =
       patches_->capture(capture_program_, kCaptureWords, GL_TRIANGLES, point_bounds_,
                         options_.max_points_per_draw);

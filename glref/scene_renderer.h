@@ -14,6 +14,7 @@
 
 #include "glref/draw_split.h"
 #include "glref/gl_draws.h"
+#include "glref/gl_textures.h"
 #include "glref/gl_program.h"
 #include "glref/render_target.h"
 #include "pipeline/image_output.h"
@@ -107,6 +108,8 @@ class SceneRenderer {
   Program capture_program_;  // linked on first capture_tess()
   std::unique_ptr<PatchMesh> patches_;  // tessellation on
   std::unique_ptr<GlDraws> draws_;      // the scene's GL draws (Scene::draws), replacing the mesh
+  std::unique_ptr<GlTextures> textures_;  // the scene program's shaders.textures
+  std::vector<std::unique_ptr<GlTextures>> draw_textures_;  // each draw's own, by draw
   unsigned vao_ = 0, buffers_[3] = {0, 0, 0};  // tessellation off: plain GL_TRIANGLES
   std::size_t index_count_ = 0;
   std::unique_ptr<RenderTarget> target_;

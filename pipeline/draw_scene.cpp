@@ -1,6 +1,9 @@
 #include "pipeline/draw_scene.h"
 
+#include <algorithm>
 #include <cstring>
+#include <map>
+#include <span>
 #include <fstream>
 #include <iterator>
 
@@ -95,6 +98,41 @@ std::vector<draw::VertexArray> resolve_arrays(const Scene& scene, const DrawSett
   return arrays;
 }
 
+// glBindBufferRange(GL_UNIFORM_BUFFER, ...) state: binding -> the range bound there. GL keeps it
+// from draw to draw, and so does a scene.
+using UniformBindings = std::map<std::uint32_t, std::pair<const UniformBufferSetting*, std::span<const std::byte>>>;
+
+// Binds d's uniform buffers (added to the bindings the earlier draws left) to the program's blocks.
+void bind_uniform_buffers(const Scene& scene, const DrawSetting& d, const std::vector<draw::Buffer>& buffers,
+                          UniformBindings& bindings, glsl::GlslProgram& program) {
+  for (const UniformBufferSetting& u : d.uniform_buffers) {
+    const draw::Buffer& b = buffers[u.buffer];
+    const std::size_t size = u.size.value_or(b.bytes.size() > u.offset ? b.bytes.size() - u.offset : 0);
+    if (u.offset + size > b.bytes.size() || size == 0)
+      throw InputError(scene.source + ": " + u.key + ": bytes [" + std::to_string(u.offset) + ", " +
+                       std::to_string(u.offset + size) + ") of buffer '" + b.name + "', which holds " +
+                       std::to_string(b.bytes.size()) + " bytes");
+    bindings[u.binding] = {&u, std::span<const std::byte>(b.bytes).subspan(u.offset, size)};
+    const std::vector<glsl::GlslProgram::UniformBlock> program_blocks = program.uniform_blocks();
+    if (std::none_of(program_blocks.begin(), program_blocks.end(),
+                     [&](const glsl::GlslProgram::UniformBlock& k) { return k.binding == u.binding; })) {
+      std::string blocks;
+      for (const auto& k : program_blocks)
+        blocks += (blocks.empty() ? "" : ", ") + k.name + " at " + std::to_string(k.binding);
+      throw InputError(scene.source + ": " + u.key + ".binding: the program has no uniform block at binding " +
+                       std::to_string(u.binding) + " (its blocks: " + (blocks.empty() ? "none" : blocks) +
+                       "; a block is placed with layout(binding = N))");
+    }
+  }
+  for (const auto& [binding, bound] : bindings) {
+    try {
+      program.bind_uniform_buffer(binding, bound.second);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(scene.source + ": " + bound.first->key + ": " + e.what());
+    }
+  }
+}
+
 }  // namespace
 
 DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& parallel, const DrawOptions& options) {
@@ -108,9 +146,11 @@ DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& 
     else if (!shared.program) shared = build_scene_program(scene);
   }
   DrawStats stats;
+  UniformBindings uniform_bindings;
   for (std::size_t i = 0; i < scene.draws.size(); ++i) {
     const DrawSetting& d = scene.draws[i];
-    const glsl::GlslProgram& program = own[i].program ? *own[i].program : *shared.program;
+    glsl::GlslProgram& program = own[i].program ? *own[i].program : *shared.program;
+    bind_uniform_buffers(scene, d, buffers, uniform_bindings, program);
     const std::vector<draw::VertexArray> arrays = resolve_arrays(scene, d, program);
     RasterState state;
     state.cull_back_faces = d.cull_back_faces;

@@ -222,6 +222,45 @@ std::optional<draw::ElementArray> read_elements(JsonObject& d, const std::vector
   return e;
 }
 
+// GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT is implementation-dependent, at most 256 (GL 4.5, table
+// 23.64): a multiple of 256 works on every driver (llvmpipe reports 16, NVIDIA 256).
+constexpr std::int64_t kUniformOffsetAlignment = 256;
+constexpr int kMaxUniformBufferBindings = 72;  // GL 4.5's minimum GL_MAX_UNIFORM_BUFFER_BINDINGS
+
+std::vector<UniformBufferSetting> read_uniform_buffers(JsonObject& d, const std::vector<BufferSetting>& buffers) {
+  d.describe("uniform_buffers", "an array of {binding, buffer, offset, size}: glBindBufferRange(GL_UNIFORM_BUFFER, ...) "
+                                "for the program's uniform blocks, read through their std140/std430 layout");
+  std::vector<UniformBufferSetting> out;
+  if (!d.has("uniform_buffers")) return out;
+  const json& list = d.value("uniform_buffers");
+  if (!list.is_array()) d.fail("uniform_buffers", "expected an array of {binding, buffer, offset, size}, got " + describe_json(list));
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    JsonObject o(list[i], d.path_of("uniform_buffers") + "." + std::to_string(i), d.source());
+    UniformBufferSetting u;
+    u.key = o.path();
+    o.describe("binding", "the uniform block binding point (layout(binding = N)), 0..71");
+    u.binding = std::uint32_t(o.integer("binding", 0, kMaxUniformBufferBindings - 1));
+    for (const UniformBufferSetting& other : out)
+      if (other.binding == u.binding)
+        o.fail("binding", "binding " + std::to_string(u.binding) + " is already bound by " + other.key);
+    u.buffer = buffer_index(o, "buffer", buffers);
+    if (o.has("offset")) {
+      o.describe("offset", "a byte offset into the buffer, a multiple of 256 (default 0)");
+      u.offset = std::size_t(o.integer64("offset", 0, kMaxOffset));
+      if (std::int64_t(u.offset) % kUniformOffsetAlignment)
+        o.fail("offset", std::to_string(u.offset) + " is not a multiple of 256: GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT may be "
+                         "as large as 256, and glBindBufferRange refuses an offset that is not a multiple of it");
+    }
+    if (o.has("size")) {
+      o.describe("size", "bytes bound, > 0 (default: the rest of the buffer)");
+      u.size = std::size_t(o.integer64("size", 1, kMaxOffset));
+    }
+    o.finish();
+    out.push_back(u);
+  }
+  return out;
+}
+
 draw::DrawCall read_call(JsonObject& o, bool elements) {
   draw::DrawCall c;
   o.describe("count", "vertices (glDrawArrays*) or indices (glDrawElements*), 0..2^31-1");
@@ -322,6 +361,7 @@ DrawSetting read_draw(JsonObject o, const std::vector<BufferSetting>& buffers, c
       d.vertex_arrays.push_back(read_vertex_array(JsonObject(value, o.path_of("vertex_arrays") + "." + input, o.source()), input, buffers));
   }
   d.elements = read_elements(o, buffers);
+  d.uniform_buffers = read_uniform_buffers(o, buffers);
   o.describe("primitive_restart", "false, \"fixed_index\" (GL_PRIMITIVE_RESTART_FIXED_INDEX) or an index "
                                   "(GL_PRIMITIVE_RESTART with glPrimitiveRestartIndex)");
   if (o.has("primitive_restart")) {
@@ -416,6 +456,8 @@ const char* draw_keys_example() {
     },
     "elements": { "buffer": "b", "type": "GL_UNSIGNED_INT", "offset": 0 },
     "primitive_restart": false, "robust_buffer_access": false, "enable": ["GL_DEPTH_TEST"],
+    "polygon_mode": "GL_FILL",
+    "uniform_buffers": [{ "binding": 0, "buffer": "b", "offset": 0, "size": 16 }],
     "calls": [{ "count": 0, "basevertex": 0, "instancecount": 1, "baseinstance": 0 }]
   }]
 })";

@@ -112,14 +112,26 @@ void set_user_uniforms(const Scene& scene, const ShaderSettings& shaders, glsl::
       throw InputError(key + ": the program has no active uniform of that name (active: " +
                        (active.empty() ? "none" : active) + ")");
     }
+    if (shape->is_struct) {
+      std::string members;
+      for (const std::string& m : shape->members) members += (members.empty() ? "" : ", ") + m;
+      throw InputError(key + ": the uniform is a " + shape->glsl_name + ": give an object of its members (" + members +
+                       ")" + (shape->elements > 1 ? ", one per element" : ""));
+    }
     glsl::UniformValue v;
     v.scalar = shape->scalar;
     v.columns = shape->columns;
     v.rows = shape->rows;
     const std::size_t want = std::size_t(shape->columns * shape->rows * shape->elements);
-    if (u.values.size() != want && u.values.size() != std::size_t(shape->columns * shape->rows))
-      throw InputError(key + ": the uniform is a " + shape->glsl_name + ", which takes " + std::to_string(want) +
-                       " values, got " + std::to_string(u.values.size()));
+    const std::size_t one = std::size_t(shape->columns * shape->rows);
+    if (u.values.size() != want && u.values.size() != one) {
+      const bool element = u.name.back() == ']';
+      throw InputError(key + ": the uniform is a " + shape->glsl_name + ", which takes " +
+                       (element && want != one ? std::to_string(one) + " values (this element) or " + std::to_string(want) +
+                                                     " (the elements from it to the end of the array)"
+                                               : std::to_string(want) + " values") +
+                       ", got " + std::to_string(u.values.size()));
+    }
     if (u.boolean != (shape->scalar == Scalar::Bool))
       throw InputError(key + ": the uniform is a " + shape->glsl_name + (u.boolean ? ", not a bool" : ", give true or false"));
     for (double x : u.values) {
@@ -145,37 +157,20 @@ void set_user_uniforms(const Scene& scene, const ShaderSettings& shaders, glsl::
   }
 }
 
-// shaders.textures: each image (RGBA; fewer channels: gray, gray + alpha, RGB with alpha 1) on its
-// own texture unit, the sampler uniform set to that unit.
+// shaders.textures: each image on its own texture unit (its index), the sampler uniform set to
+// that unit.
 void bind_textures(const Scene& scene, const ShaderSettings& shaders, glsl::GlslProgram& program, SceneProgram& out) {
   std::uint32_t unit = 0;
   for (const TextureSetting& t : shaders.textures) {
     const std::string key = scene.source + ": " + shaders.key + ".textures." + t.sampler;
     const auto shape = program.uniform_shape(t.sampler);
-    if (!shape || shape->glsl_name != "sampler")
-      throw InputError(key + ": the program has no active sampler2D uniform of that name");
-    FloatImage image;
-    try {
-      image = read_float_image(t.path);
-    } catch (const InputError& e) {
-      throw InputError(key + ": " + e.what());
-    }
-    auto tex = std::make_unique<shader::Texture>();
-    tex->width = image.width;
-    tex->height = image.height;
-    tex->linear = t.linear;
-    using Wrap = shader::Texture::Wrap;
-    tex->wrap_s = tex->wrap_t = t.wrap == "repeat" ? Wrap::Repeat : t.wrap == "mirrored_repeat" ? Wrap::MirroredRepeat
-                                                                                                  : Wrap::ClampToEdge;
-    tex->texels.resize(std::size_t(image.width) * image.height * 4);
-    const int ch = image.channels;
-    for (int y = 0; y < image.height; ++y)
-      for (int x = 0; x < image.width; ++x) {
-        const float* src = image.pixels.data() + (std::size_t(image.height - 1 - y) * image.width + x) * ch;
-        float* dst = tex->texels.data() + (std::size_t(y) * image.width + x) * 4;
-        for (int c = 0; c < 3; ++c) dst[c] = src[ch >= 3 ? c : 0];
-        dst[3] = ch == 4 ? src[3] : ch == 2 ? src[1] : 1.0f;
-      }
+    if (!shape || shape->glsl_name.find("sampler") == std::string::npos)
+      throw InputError(key + ": the program has no active sampler2D uniform of that name" +
+                       (shape ? " (it is a " + shape->glsl_name + ")" : std::string()));
+    if (shape->glsl_name != "sampler2D")
+      throw InputError(key + ": the uniform is a " + shape->glsl_name + ", but textures are 2D images (GL_TEXTURE_2D); "
+                       "GL draws nothing from a sampler whose unit holds a texture of another target");
+    auto tex = std::make_unique<shader::Texture>(load_texture(t, key));
     program.bind_texture(unit, tex.get());
     program.set_uniform(t.sampler, integer(int(unit)));
     out.textures.push_back(std::move(tex));
@@ -328,6 +323,33 @@ DrawStats draw_glsl_scene(const Scene& scene, const glsl::GlslProgram& program, 
   } catch (const glsl::StageError& e) {
     throw InputError(scene.source + ": " + e.what());
   }
+}
+
+shader::Texture load_texture(const TextureSetting& t, const std::string& key) {
+  FloatImage image;
+  try {
+    image = read_float_image(t.path);
+  } catch (const InputError& e) {
+    throw InputError(key + ": " + e.what());
+  }
+  shader::Texture tex;
+  tex.width = image.width;
+  tex.height = image.height;
+  tex.linear = t.linear;
+  using Wrap = shader::Texture::Wrap;
+  tex.wrap_s = tex.wrap_t = t.wrap == "repeat"            ? Wrap::Repeat
+                            : t.wrap == "mirrored_repeat" ? Wrap::MirroredRepeat
+                                                          : Wrap::ClampToEdge;
+  tex.texels.resize(std::size_t(image.width) * image.height * 4);
+  const int ch = image.channels;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const float* src = image.pixels.data() + (std::size_t(image.height - 1 - y) * image.width + x) * ch;
+      float* dst = tex.texels.data() + (std::size_t(y) * image.width + x) * 4;
+      for (int c = 0; c < 3; ++c) dst[c] = src[ch >= 3 ? c : 0];
+      dst[3] = ch == 4 ? src[3] : ch == 2 ? src[1] : 1.0f;
+    }
+  return tex;
 }
 
 }  // namespace tessref

@@ -20,6 +20,11 @@ struct SceneProgram {
   std::vector<std::unique_ptr<shader::Texture>> textures;
 };
 
+// shaders.textures[k]'s image as a texture (RGBA; fewer channels: gray, gray + alpha, RGB with
+// alpha 1; rows from the bottom, as GL numbers them) with its filter and wrap: what tessref
+// samples and the GL runner uploads. key: "SCENE: shaders.textures.NAME" for InputError.
+shader::Texture load_texture(const TextureSetting& t, const std::string& key);
+
 // The GLSL of the scene's program, stage by stage: the twins, or the user's files (`twin:NAME`
 // resolved). InputError when a file cannot be read. The real-GL runner draws the same sources.
 std::vector<shader::ShaderSource> scene_sources(const Scene& scene);

@@ -124,6 +124,15 @@ struct VertexArraySetting {
   draw::VertexArray array;  // array.buffer: an index into Scene::buffers
 };
 
+// draws[].uniform_buffers[]: glBindBufferRange(GL_UNIFORM_BUFFER, binding, buffer, offset, size).
+struct UniformBufferSetting {
+  std::string key;  // "draws.0.uniform_buffers.1", for messages
+  std::uint32_t binding = 0;
+  std::size_t buffer = 0;  // into Scene::buffers
+  std::size_t offset = 0;
+  std::optional<std::size_t> size;  // none: to the end of the buffer
+};
+
 // draws[]: one glDraw* call, or a list of them (calls: the multi-draw and indirect forms), with
 // the vertex array object, the program and the state it is drawn with.
 struct DrawSetting {
@@ -144,6 +153,7 @@ struct DrawSetting {
   bool depth_test = false;
   bool cull_back_faces = false;
   PolygonMode polygon_mode = PolygonMode::kFill;  // glPolygonMode(GL_FRONT_AND_BACK, ...)
+  std::vector<UniformBufferSetting> uniform_buffers;
 };
 
 struct Scene {

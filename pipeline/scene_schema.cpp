@@ -1,6 +1,7 @@
 #include "pipeline/scene_schema.h"
 
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include "pipeline/draw_schema.h"
@@ -284,10 +285,28 @@ ShaderSettings read_shaders(JsonObject o, const JsonSource& source, const std::f
     for (const char* key : {"vertex", "fragment"})
       if (path(key).empty())
         o.fail(key, "required when shaders.program is \"custom\" (a GLSL file relative to the scene file)");
-  o.describe("uniforms", "an object of uniform name: number, boolean or array");
+  o.describe("uniforms", "an object of uniform name (a GL name: \"u\", \"u[2]\", \"lights[1].color\"): number, boolean, "
+                         "array, or for a struct an object of its members (an array of such objects for an array of structs)");
   const nlohmann::json& uniforms = o.value("uniforms");
   if (!uniforms.is_object()) o.fail("uniforms", "expected an object of name: value, got " + describe_json(uniforms));
-  for (const auto& [name, value] : uniforms.items()) {
+  // Structs and arrays of structs are given as JSON objects (and arrays of them): each leaf becomes
+  // the uniform of its GL name, "name.member" or "name[i].member", as an application sets them.
+  std::function<void(const std::string&, const nlohmann::json&)> read_uniform = [&](const std::string& name,
+                                                                                    const nlohmann::json& value) {
+    if (value.is_object()) {
+      if (value.empty()) o.fail("uniforms." + name, "has no value (an empty struct)");
+      for (const auto& [member, v] : value.items()) read_uniform(name + "." + member, v);
+      return;
+    }
+    if (value.is_array() && !value.empty() && value[0].is_object()) {
+      for (std::size_t i = 0; i < value.size(); ++i) {
+        if (!value[i].is_object())
+          o.fail("uniforms." + name, "an array of structs takes an object per element; element " + std::to_string(i) +
+                                     " is " + describe_json(value[i]));
+        read_uniform(name + "[" + std::to_string(i) + "]", value[i]);
+      }
+      return;
+    }
     UniformSetting u{name, {}, false};
     auto add = [&](const nlohmann::json& v) {
       if (v.is_boolean()) {
@@ -297,7 +316,7 @@ ShaderSettings read_shaders(JsonObject o, const JsonSource& source, const std::f
         u.values.push_back(v.get<double>());
       } else {
         o.fail("uniforms." + u.name, "expected numbers or booleans (a vector as an array, a matrix as an "
-                                   "array of columns), got " + describe_json(v));
+                                   "array of columns, a struct as an object), got " + describe_json(v));
       }
     };
     if (value.is_array()) {
@@ -310,7 +329,8 @@ ShaderSettings read_shaders(JsonObject o, const JsonSource& source, const std::f
     }
     if (u.values.empty()) o.fail("uniforms." + name, "has no value");
     s.uniforms.push_back(std::move(u));
-  }
+  };
+  for (const auto& [name, value] : uniforms.items()) read_uniform(name, value);
   o.describe("attributes", "an object of vertex input name: \"position\" or \"normal\"");
   const nlohmann::json& attributes = o.value("attributes");
   if (!attributes.is_object()) o.fail("attributes", "expected an object of input name: attribute, got " + describe_json(attributes));

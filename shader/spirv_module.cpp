@@ -42,6 +42,9 @@ void apply_decoration(Decorations& d, std::uint32_t decoration, std::span<const 
     case spv::DecorationBinding: d.binding = arg(); break;
     case spv::DecorationBuiltIn: d.builtin = arg(); break;
     case spv::DecorationOffset: d.offset = arg(); break;
+    case spv::DecorationArrayStride: d.array_stride = arg(); break;
+    case spv::DecorationMatrixStride: d.matrix_stride = arg(); break;
+    case spv::DecorationRowMajor: d.row_major = true; break;
     case spv::DecorationPatch: d.patch = true; break;
     case spv::DecorationFlat: d.flat = true; break;
     case spv::DecorationNoPerspective: d.noperspective = true; break;
@@ -445,6 +448,12 @@ Module read_module(std::span<const std::uint32_t> words) {
   };
   for (Variable& v : m.variables) attach(v);
   for (Variable& v : m.function_variables) attach(v);
+  // The explicit layout of every type (uniform blocks read from buffer bytes: buffer_layout.h).
+  for (const auto& [id, t] : m.types) {
+    (void)t;
+    if (auto it = decorations.find(id); it != decorations.end()) m.type_decorations[id] = it->second;
+  }
+  m.member_decorations = std::move(member_decorations);
   for (const Variable& v : m.variables) {
     std::uint32_t t = v.type;
     while (m.type(t).kind == TypeKind::Array) t = m.type(t).element;

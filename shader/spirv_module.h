@@ -51,6 +51,10 @@ struct Type {
 
 struct Decorations {
   std::optional<std::uint32_t> location, component, binding, builtin, offset;
+  // Explicit layout (uniform blocks): ArrayStride on array types, MatrixStride and RowMajor on the
+  // struct members that hold matrices.
+  std::optional<std::uint32_t> array_stride, matrix_stride;
+  bool row_major = false;
   bool patch = false, flat = false, noperspective = false, block = false, buffer_block = false;
 };
 
@@ -100,6 +104,8 @@ struct Module {
   std::vector<Variable> variables;                                 // every OpVariable
   std::map<std::uint32_t, std::string> names;
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::string> member_names;  // (struct, member)
+  std::map<std::uint32_t, Decorations> type_decorations;  // OpDecorate on types (ArrayStride, Block)
+  std::map<std::pair<std::uint32_t, std::uint32_t>, Decorations> member_decorations;  // (struct, member)
   std::map<std::uint32_t, std::string> files;                      // OpString id -> file name
   std::uint32_t glsl_std450 = 0;                                   // OpExtInstImport id, 0 if none
   std::vector<Block> blocks;                                       // the entry function, in order

@@ -7,6 +7,7 @@
 
 #include <spirv/unified1/spirv.hpp>
 
+#include "shader/buffer_layout.h"
 #include "stages/glsl/glsl_stages.h"
 
 namespace tessref::glsl {
@@ -99,7 +100,25 @@ struct Shape {
   Scalar scalar = Scalar::None;
   int columns = 1, rows = 1;
   bool sampler = false;
+  std::string sampler_name;  // "sampler2D", "usampler3D", "samplerCube", ...
 };
+
+// A sampled image type's GLSL name.
+std::string sampler_glsl_name(const shader::Module& m, const shader::Type& image) {
+  const Scalar s = m.type(image.image_sampled_type).scalar;
+  const std::string prefix = s == Scalar::I32 ? "i" : s == Scalar::U32 ? "u" : "";
+  std::string dim;
+  switch (image.image_dim) {
+    case spv::Dim1D: dim = "1D"; break;
+    case spv::Dim2D: dim = "2D"; break;
+    case spv::Dim3D: dim = "3D"; break;
+    case spv::DimCube: dim = "Cube"; break;
+    case spv::DimRect: dim = "2DRect"; break;
+    case spv::DimBuffer: dim = "Buffer"; break;
+    default: dim = "?"; break;
+  }
+  return prefix + "sampler" + dim + (image.image_arrayed ? "Array" : "");
+}
 
 Shape shape_of(const shader::Module& m, std::uint32_t type) {
   const shader::Type& t = m.type(type);
@@ -112,7 +131,11 @@ Shape shape_of(const shader::Module& m, std::uint32_t type) {
       s.columns = int(t.count);
       s.rows = int(m.type(t.element).count);
       break;
-    case TypeKind::SampledImage: s.sampler = true; s.scalar = Scalar::I32; break;
+    case TypeKind::SampledImage:
+      s.sampler = true;
+      s.scalar = Scalar::I32;
+      s.sampler_name = sampler_glsl_name(m, t);
+      break;
     default: break;
   }
   return s;
@@ -130,7 +153,7 @@ const char* scalar_name(Scalar s) {
 }
 
 std::string shape_name(const Shape& s) {
-  if (s.sampler) return "sampler";
+  if (s.sampler) return s.sampler_name;
   std::string base = scalar_name(s.scalar);
   if (s.columns == 1 && s.rows == 1) return base;
   const std::string prefix = s.scalar == Scalar::F32 ? "" : s.scalar == Scalar::F64 ? "d"
@@ -140,8 +163,7 @@ std::string shape_name(const Shape& s) {
 }
 
 // A default-block uniform by its name, or a uniform block's member by "member" or "Block.member"
-// (its value lives in the block's words: tessref has no buffer layout to follow): the type and
-// word offset in the variable, or nullopt.
+// (its value lives in the block's words): the type and word offset in the variable, or nullopt.
 std::optional<std::pair<std::uint32_t, std::uint32_t>> find_uniform(const shader::Module& m, const shader::Variable& v,
                                                                     const std::string& name) {
   if (v.storage == spv::StorageClassUniformConstant) {
@@ -158,6 +180,67 @@ std::optional<std::pair<std::uint32_t, std::uint32_t>> find_uniform(const shader
       return std::pair{block.members[k], block.member_word[k]};
   }
   return std::nullopt;
+}
+
+// A uniform by its full GL name: a head find_uniform knows, then any ".member" (struct members)
+// and "[i]" (array elements) after it, as glGetUniformLocation takes them ("lights[2].color").
+struct UniformAt {
+  std::uint32_t type = 0, word = 0;
+  std::uint32_t remaining = 1;  // elements from this one to the end of its array (1: not an element)
+};
+
+std::optional<UniformAt> resolve_uniform(const shader::Module& m, const shader::Variable& v, const std::string& name) {
+  // Heads: up to the first accessor, or (Block.member) up to the second '.'.
+  std::vector<std::size_t> heads;
+  const std::size_t first = name.find_first_of(".[");
+  heads.push_back(first);
+  if (first != std::string::npos && name[first] == '.') heads.push_back(name.find_first_of(".[", first + 1));
+  for (const std::size_t head : heads) {
+    const auto found = find_uniform(m, v, name.substr(0, head));
+    if (!found) continue;
+    UniformAt at{found->first, found->second, 1};
+    std::size_t p = head;
+    bool ok = true;
+    while (ok && p != std::string::npos && p < name.size()) {
+      const shader::Type& t = m.type(at.type);
+      if (name[p] == '[') {
+        const std::size_t close = name.find(']', p);
+        const std::string digits = close == std::string::npos ? "" : name.substr(p + 1, close - p - 1);
+        if (t.kind != TypeKind::Array || digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) {
+          ok = false;
+          break;
+        }
+        const unsigned long i = std::stoul(digits);
+        if (i >= t.count)
+          throw std::invalid_argument("uniform '" + name + "': index " + digits + " past the array's " +
+                                      std::to_string(t.count) + " elements");
+        at = {t.element, at.word + std::uint32_t(i) * m.type(t.element).words, t.count - std::uint32_t(i)};
+        p = close + 1;
+      } else if (name[p] == '.') {
+        const std::size_t end = name.find_first_of(".[", p + 1);
+        const std::string member = name.substr(p + 1, end == std::string::npos ? std::string::npos : end - p - 1);
+        ok = false;
+        if (t.kind == TypeKind::Struct)
+          for (std::uint32_t k = 0; k < t.members.size(); ++k)
+            if (const auto mn = m.member_names.find({at.type, k}); mn != m.member_names.end() && mn->second == member) {
+              at = {t.members[k], at.word + t.member_word[k], 1};
+              ok = true;
+              break;
+            }
+        p = end;
+      } else {
+        ok = false;
+      }
+    }
+    if (ok) return at;
+  }
+  return std::nullopt;
+}
+
+// "struct Light" for a struct type (its GLSL name from OpName).
+std::string struct_name(const shader::Module& m, std::uint32_t type) {
+  const auto n = m.names.find(type);
+  return "struct " + (n != m.names.end() ? n->second : std::string("?"));
 }
 
 // Every name find_uniform knows in the module.
@@ -285,77 +368,133 @@ StageProgram* GlslProgram::find(shader::Stage s) {
   }
 }
 
-void GlslProgram::set_uniform(const std::string& full_name, const UniformValue& value) {
-  // "name" or "name[i]"
-  std::string name = full_name;
-  std::uint32_t index = 0;
-  bool indexed = false;
-  if (auto open = name.find('['); open != std::string::npos && name.back() == ']') {
-    index = std::uint32_t(std::stoul(name.substr(open + 1, name.size() - open - 2)));
-    name = name.substr(0, open);
-    indexed = true;
-  }
+void GlslProgram::set_uniform(const std::string& name, const UniformValue& value) {
   bool found = false;
   for (StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), fs_.get()}) {
     if (!sp) continue;
     const shader::Module& m = sp->exe->module();
     for (const shader::Variable& v : m.variables) {
-      const auto found_at = find_uniform(m, v, name);
-      if (!found_at) continue;
-      std::uint32_t type = found_at->first, offset = found_at->second, count = 1;
-      const shader::Type& t = m.type(type);
-      if (t.kind == TypeKind::Array) {
-        type = t.element;
-        const std::uint32_t ew = m.type(type).words;
-        if (index >= t.count)
-          throw std::invalid_argument("uniform '" + full_name + "': index past the array's " +
-                                      std::to_string(t.count) + " elements");
-        offset += index * ew;
-        count = indexed ? 1 : t.count;
-      } else if (indexed && index != 0) {
-        throw std::invalid_argument("uniform '" + name + "' is not an array");
+      const auto at = resolve_uniform(m, v, name);
+      if (!at) continue;
+      std::uint32_t type = at->type, count = at->remaining;
+      if (m.type(type).kind == TypeKind::Array) {  // "u" for u[N]: its elements from 0
+        count = m.type(type).count;
+        type = m.type(type).element;
       }
+      if (m.type(type).kind == TypeKind::Struct || m.type(type).kind == TypeKind::Array)
+        throw std::invalid_argument("uniform '" + name + "' is a " +
+                                    (m.type(type).kind == TypeKind::Struct ? struct_name(m, type) : std::string("array of arrays")) +
+                                    ": set its members or elements by their GL names ('" + name +
+                                    (m.type(type).kind == TypeKind::Struct ? ".member" : "[i]") + "')");
       const Shape want = shape_of(m, type);
-      const Shape got{value.scalar, value.columns, value.rows, false};
+      const Shape got{value.scalar, value.columns, value.rows, false, {}};
       const bool sampler_ok = want.sampler && value.scalar == Scalar::I32 && value.columns == 1 && value.rows == 1;
       if (!sampler_ok && (want.scalar != got.scalar || want.columns != got.columns || want.rows != got.rows))
-        throw std::invalid_argument("uniform '" + full_name + "' is a " + shape_name(want) + ", not a " +
+        throw std::invalid_argument("uniform '" + name + "' is a " + shape_name(want) + ", not a " +
                                     shape_name(got));
       const std::uint32_t ew = m.type(type).words;
-      const std::uint32_t base = sp->exe->slot(v.id)->base + offset;
-      // Several array elements may be given at once (count values in a row).
-      const std::uint32_t given = std::min<std::uint32_t>(count, std::uint32_t(value.words.size() / ew));
-      for (std::uint32_t k = 0; k < std::max(given, 1u) && k * ew < value.words.size(); ++k)
-        std::copy_n(value.words.begin() + k * ew, std::min<std::size_t>(ew, value.words.size() - k * ew),
-                    sp->uniforms.begin() + base + k * ew);
+      if (value.words.size() > std::size_t(count) * ew)
+        throw std::invalid_argument("uniform '" + name + "': " + std::to_string(value.words.size() / std::max(ew, 1u)) +
+                                    " values for " + std::to_string(count) + " array elements");
+      const std::uint32_t base = sp->exe->slot(v.id)->base + at->word;
+      // Several array elements may be given at once (count values in a row, as glUniform*v).
+      std::copy(value.words.begin(), value.words.end(), sp->uniforms.begin() + base);
       found = true;
     }
   }
   if (!found) throw std::invalid_argument("no active uniform named '" + name + "'");
 }
 
-std::optional<UniformShape> GlslProgram::uniform_shape(const std::string& full_name) const {
-  const std::string name = full_name.substr(0, full_name.find('['));
-  const bool element = name.size() != full_name.size();
+std::optional<UniformShape> GlslProgram::uniform_shape(const std::string& name) const {
   for (const StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), fs_.get()}) {
     if (!sp) continue;
     const shader::Module& m = sp->exe->module();
     for (const shader::Variable& v : m.variables) {
-      const auto found = find_uniform(m, v, name);
-      if (!found) continue;
-      std::uint32_t type = found->first;
-      int elements = 1;
-      if (m.type(type).kind == TypeKind::Array) {
-        elements = element ? 1 : int(m.type(type).count);
+      const auto at = resolve_uniform(m, v, name);
+      if (!at) continue;
+      std::uint32_t type = at->type;
+      int elements = int(at->remaining);  // "u[i]": elements i.. may be given in a row
+      const bool whole_array = m.type(type).kind == TypeKind::Array;
+      if (whole_array) {
+        elements = int(m.type(type).count);
         type = m.type(type).element;
       }
-      const Shape s = shape_of(m, type);
-      UniformShape u{s.scalar, s.columns, s.rows, elements, shape_name(s)};
-      if (elements > 1) u.glsl_name += "[" + std::to_string(elements) + "]";
+      UniformShape u;
+      u.elements = elements;
+      if (m.type(type).kind == TypeKind::Struct) {
+        u.is_struct = true;
+        u.glsl_name = struct_name(m, type);
+        for (std::uint32_t k = 0; k < m.type(type).members.size(); ++k)
+          if (const auto mn = m.member_names.find({type, k}); mn != m.member_names.end()) u.members.push_back(mn->second);
+      } else {
+        const Shape s = shape_of(m, type);
+        u.scalar = s.scalar;
+        u.columns = s.columns;
+        u.rows = s.rows;
+        u.glsl_name = shape_name(s);
+      }
+      if (whole_array && elements > 1) u.glsl_name += "[" + std::to_string(elements) + "]";
       return u;
     }
   }
   return std::nullopt;
+}
+
+namespace {
+
+// Calls fn(variable, element, block type, binding) for every uniform block (each element of a
+// block array: binding + element) of the module.
+template <class Fn>
+void for_each_block(const shader::Module& m, const Fn& fn) {
+  for (const shader::Variable& v : m.variables) {
+    if (v.storage != spv::StorageClassUniform || !v.decorations.block) continue;
+    std::uint32_t type = v.type, count = 1;
+    if (m.type(type).kind == TypeKind::Array) {
+      count = m.type(type).count;
+      type = m.type(type).element;
+    }
+    const std::uint32_t binding = v.decorations.binding.value_or(0);
+    for (std::uint32_t e = 0; e < count; ++e) fn(v, e, type, binding + e);
+  }
+}
+
+}  // namespace
+
+std::vector<GlslProgram::UniformBlock> GlslProgram::uniform_blocks() const {
+  std::vector<UniformBlock> out;
+  for (const StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), fs_.get()}) {
+    if (!sp) continue;
+    const shader::Module& m = sp->exe->module();
+    for_each_block(m, [&](const shader::Variable&, std::uint32_t, std::uint32_t type, std::uint32_t binding) {
+      const auto n = m.names.find(type);
+      UniformBlock b{n != m.names.end() ? n->second : m.name_of(type), binding, shader::explicit_layout_extent(m, type)};
+      if (std::none_of(out.begin(), out.end(), [&](const UniformBlock& o) { return o.binding == b.binding && o.name == b.name; }))
+        out.push_back(b);
+    });
+  }
+  return out;
+}
+
+bool GlslProgram::bind_uniform_buffer(std::uint32_t binding, std::span<const std::byte> range) {
+  bool found = false;
+  for (StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), fs_.get()}) {
+    if (!sp) continue;
+    const shader::Module& m = sp->exe->module();
+    for_each_block(m, [&](const shader::Variable& v, std::uint32_t element, std::uint32_t type, std::uint32_t b) {
+      if (b != binding) return;
+      const std::size_t extent = shader::explicit_layout_extent(m, type);
+      if (range.size() < extent) {
+        const auto n = m.names.find(type);
+        throw std::invalid_argument("uniform block '" + (n != m.names.end() ? n->second : m.name_of(type)) +
+                                    "' (binding " + std::to_string(binding) + ") reads " + std::to_string(extent) +
+                                    " bytes; the bound range holds " + std::to_string(range.size()));
+      }
+      std::uint32_t* out = sp->uniforms.data() + sp->exe->slot(v.id)->base + element * m.type(type).words;
+      shader::read_explicit_layout(m, type, range, out);
+      found = true;
+    });
+  }
+  return found;
 }
 
 std::vector<std::string> GlslProgram::uniform_names() const {

@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -64,12 +65,15 @@ struct VertexAttribute {
   bool constant = false;
 };
 
-// A default-block uniform's GLSL type: columns x rows of scalar (1 x N for a vector), elements
-// for an array.
+// A uniform's GLSL type: columns x rows of scalar (1 x N for a vector), elements for an array
+// (for an element "u[i]": the elements from i to the end, which may be set in a row); or a
+// struct (whose members are set by their own names).
 struct UniformShape {
   shader::Scalar scalar = shader::Scalar::F32;
   int columns = 1, rows = 1, elements = 1;
-  std::string glsl_name;  // "vec3", "mat4", "int[8]", "sampler"
+  std::string glsl_name;  // "vec3", "mat4", "int[8]", "sampler2D", "struct Light[4]"
+  bool is_struct = false;
+  std::vector<std::string> members;  // a struct's member names, in order
 };
 
 class GlslProgram {
@@ -80,12 +84,26 @@ class GlslProgram {
   explicit GlslProgram(const shader::CompiledProgram& compiled, shader::ExecLimits limits = {});
   ~GlslProgram();
 
-  // Sets a uniform by name (optionally "name[i]") in every stage that declares it. Throws
-  // std::invalid_argument if no stage has it or its GLSL type differs from the value's.
+  // Sets a uniform by its GL name ("u", "u[i]", "lights[2].color", "Block.member") in every stage
+  // that declares it; values for several array elements in a row set them from that one on, as
+  // glUniform*v does. Throws std::invalid_argument if no stage has it, its GLSL type differs from
+  // the value's, it is a struct (set its members), or there are more values than elements.
   void set_uniform(const std::string& name, const UniformValue& value);
   std::vector<std::string> uniform_names() const;  // sorted, without duplicates
-  // The type of the uniform `name` (or of an element, for "name[i]"); nullopt if no stage has it.
+  // The type of the uniform with this GL name (an element's, for "name[i]"); nullopt if no stage
+  // has it.
   std::optional<UniformShape> uniform_shape(const std::string& name) const;
+  // A uniform block of the program: its GL name, binding point and the bytes its layout reads.
+  struct UniformBlock {
+    std::string name;
+    std::uint32_t binding = 0;
+    std::size_t extent = 0;  // shader::explicit_layout_extent
+  };
+  std::vector<UniformBlock> uniform_blocks() const;  // every stage's, without duplicates
+  // glBindBufferRange(GL_UNIFORM_BUFFER, binding, ...): the blocks at `binding` (in every stage)
+  // take their values from range through their explicit layout. Returns false when no block uses
+  // the binding; throws std::invalid_argument when range is shorter than a block's extent.
+  bool bind_uniform_buffer(std::uint32_t binding, std::span<const std::byte> range);
   // Binds a texture to a sampler's binding (texture unit). The texture must outlive the draws.
   void bind_texture(std::uint32_t unit, const shader::Texture* texture);
   // Atomic counter buffers (binding -> 32-bit counters). A program that uses atomic counters is

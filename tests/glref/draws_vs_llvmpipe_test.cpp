@@ -90,5 +90,35 @@ TEST(DrawsVsLlvmpipe, PointModeOverAWireframe) {
   EXPECT_LE(o.within1.pixels - o.within1.within_tolerance, o.within1.coverage_mismatch) << o.within1.summary();
 }
 
+// Instanced and indexed, with interleaved normalized attributes, a uniform struct array and a
+// std140 block bound at byte 256 of a buffer (its padding full of 77s a wrong stride would read).
+TEST(DrawsVsLlvmpipe, InstancedIndexedWithAStructArrayAndAStd140Block) {
+  TESSREF_REQUIRE_GL(ctx);
+  const DrawsOutcome o = compare_draws(*ctx, "instanced_blocks.json");
+  EXPECT_EQ(o.stats.tess.patches_in, 6u);  // 2 patches x 3 instances
+  EXPECT_GT(o.stats.raster.fragments_shaded, 5000u);
+  EXPECT_LE(o.within1.coverage_mismatch, 4u) << o.within1.summary();
+  EXPECT_LE(o.within1.pixels - o.within1.within_tolerance, o.within1.coverage_mismatch) << o.within1.summary();
+}
+
+// The same uniforms through glUniform* on the driver (struct members and elements by GL name,
+// uvec, bvec, dvec, non-square matrices, glUniform1iv from an element on): the same colour.
+TEST(DrawsVsLlvmpipe, UniformsOfEveryKindByTheirGlNames) {
+  TESSREF_REQUIRE_GL(ctx);
+  const DrawsOutcome o = compare_draws(*ctx, "uniform_types.json");
+  EXPECT_EQ(o.within1.identical, o.within1.pixels) << o.within1.summary();
+}
+
+// Terrain: 4-vertex quad patches from glDrawArrays, displaced by a height map the TES samples with
+// textureLod at level 0; the GL runner uploads the same texels (GL_RGBA32F) to the same unit.
+TEST(DrawsVsLlvmpipe, TerrainFromAHeightMapSampledInTheTes) {
+  TESSREF_REQUIRE_GL(ctx);
+  const DrawsOutcome o = compare_draws(*ctx, "terrain.json");
+  EXPECT_EQ(o.stats.tess.patches_in, 4u);
+  EXPECT_GT(o.stats.raster.fragments_shaded, 20000u);
+  EXPECT_LE(o.within1.coverage_mismatch, 4u) << o.within1.summary();
+  EXPECT_LE(o.within1.pixels - o.within1.within_tolerance, o.within1.coverage_mismatch) << o.within1.summary();
+}
+
 }  // namespace
 }  // namespace tessref::glref

@@ -119,6 +119,61 @@ TEST(DrawsScene, IsolinesAndPointModeAreDrawnAndDeterministic) {
   }
 }
 
+// Uniforms by GL name: struct members, arrays of structs, nested, non-square matrices, unsigned,
+// boolean and double vectors, array elements from an index on. The colour is exact.
+TEST(DrawsScene, UniformsOfEveryKindByTheirGlNames) {
+  const RenderResult r = render_file("uniform_types.json");
+  ASSERT_EQ(r.stats.raster.fragments_shaded, 256u);
+  for (const glm::vec4& c : r.framebuffer.color) ASSERT_EQ(c, glm::vec4(0.25f, 0.5f, 0.5f, 0.625f));
+  const std::string f = "uniform_types.json";
+  const std::string is_struct = error_of(f, {"draws.0.shaders.uniforms.u_rig=1"});
+  EXPECT_NE(is_struct.find("draws.0.shaders.uniforms.u_rig: the uniform is a struct Rig: give an object of its members (lights, m)"),
+            std::string::npos) << is_struct;
+  const std::string member = error_of(f, {"draws.0.shaders.uniforms.u_rig.lights.0.colour=[1, 1, 1]"});
+  EXPECT_NE(member.find("u_rig.lights[0].colour: the program has no active uniform of that name"), std::string::npos) << member;
+  const std::string past = error_of(f, {"draws.0.shaders.uniforms.u_i[1]=[1, 2, 3]"});
+  EXPECT_NE(past.find("takes 1 values (this element) or 2 (the elements from it to the end of the array), got 3"),
+            std::string::npos) << past;
+}
+
+// A height map sampled in the TES; a sampler of another target is refused.
+TEST(DrawsScene, TexturesAreBoundPerDrawAndCheckedAgainstTheSamplerTarget) {
+  const RenderResult r = render_file("terrain.json");
+  EXPECT_EQ(r.stats.tess.patches_in, 4u);
+  EXPECT_GT(r.stats.raster.fragments_shaded, 20000u);
+  // Flattened (the height map's texels all 0): another image.
+  const RenderResult flat = render_file("terrain.json", {"draws.0.shaders.uniforms.u_scale=0"});
+  EXPECT_NE(r.framebuffer.color, flat.framebuffer.color);
+  const std::string wrong = error_of("uniform_types.json", {"draws.0.shaders.fragment=\"sampler3d.frag\"",
+                                                            "draws.0.shaders.uniforms={}",
+                                                            "draws.0.shaders.textures={\"u_volume\": \"heightmap.pgm\"}"});
+  // The executor samples 2D textures only (more targets are the texture work's): a sampler3D is
+  // refused when the program is built, naming the stage and line; bind_textures's target check
+  // ("the uniform is a sampler3D, but textures are 2D images") takes over once it runs them.
+  EXPECT_NE(wrong.find("draws.0.shaders: fragment shader: unsupported construct (line 7): a sampler other than sampler2D"),
+            std::string::npos) << wrong;
+}
+
+// A std140 block from buffer bytes, bound at an offset: the errors name the key and GL's rule.
+TEST(DrawsScene, UniformBuffersAreCheckedAgainstTheBlocks) {
+  const std::string f = "instanced_blocks.json";
+  const RenderResult r = render_file(f);
+  EXPECT_EQ(r.stats.tess.patches_in, 6u);
+  // The block read from byte 0 instead (64 floats of 9): another image.
+  const RenderResult shifted = render_file(f, {"draws.0.uniform_buffers.0.offset=0"});
+  EXPECT_NE(r.framebuffer.color, shifted.framebuffer.color);
+  const std::string unaligned = error_of(f, {"draws.0.uniform_buffers.0.offset=128"});
+  EXPECT_NE(unaligned.find("draws.0.uniform_buffers.0.offset: 128 is not a multiple of 256"), std::string::npos) << unaligned;
+  const std::string unbound = error_of(f, {"draws.0.uniform_buffers.0.binding=3"});
+  EXPECT_NE(unbound.find("draws.0.uniform_buffers.0.binding: the program has no uniform block at binding 3 (its blocks: Shading at 1"),
+            std::string::npos) << unbound;
+  const std::string short_range = error_of(f, {"draws.0.uniform_buffers.0.size=64"});
+  EXPECT_NE(short_range.find("draws.0.uniform_buffers.0: uniform block 'Shading' (binding 1) reads 120 bytes; the bound range holds 64"),
+            std::string::npos) << short_range;
+  const std::string past_end = error_of(f, {"draws.0.uniform_buffers.0.size=1024"});
+  EXPECT_NE(past_end.find("bytes [256, 1280) of buffer 'shading', which holds 376 bytes"), std::string::npos) << past_end;
+}
+
 TEST(DrawsScene, BadDrawsNameTheKeyAndTheRule) {
   const std::string f = "bicubic_arrays.json";
   EXPECT_NE(error_of(f, {"draws.0.count=33"}).find(
