@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "glref/gl_error.h"
+#include "glref/gl_raster_state.h"
 
 namespace tessref::glref {
 namespace {
@@ -48,9 +49,7 @@ GLenum gl_mode(DrawMode m) {
   return GL_NONE;
 }
 
-GLenum gl_polygon_mode(PolygonMode m) {
-  return m == PolygonMode::kLine ? GL_LINE : m == PolygonMode::kPoint ? GL_POINT : GL_FILL;
-}
+
 
 // glVertexAttrib4f / I4i / I4ui / L4d with the array's current value.
 void set_current(std::uint32_t location, const draw::VertexArray& a) {
@@ -135,21 +134,7 @@ void GlDraws::draw() const {
     if (textures_[d]) textures_[d]->bind();
     glBindVertexArray(vaos_[d]);
     for (const auto& [location, a] : current_[d]) set_current(location, a);
-    if (draw.depth_test) {
-      glEnable(GL_DEPTH_TEST);
-      glDepthFunc(GL_LESS);
-      glDepthMask(GL_TRUE);
-    } else {
-      glDisable(GL_DEPTH_TEST);
-    }
-    if (draw.cull_back_faces) {
-      glEnable(GL_CULL_FACE);
-      glCullFace(GL_BACK);
-      glFrontFace(GL_CCW);
-    } else {
-      glDisable(GL_CULL_FACE);
-    }
-    glPolygonMode(GL_FRONT_AND_BACK, gl_polygon_mode(draw.polygon_mode));
+    apply_raster_state(draw.raster);
     for (const UniformBufferSetting& u : draw.uniform_buffers) {
       const std::size_t size = u.size.value_or(buffer_sizes_[u.buffer] - u.offset);
       glBindBufferRange(GL_UNIFORM_BUFFER, u.binding, buffers_[u.buffer], GLintptr(u.offset), GLsizeiptr(size));
@@ -180,11 +165,9 @@ void GlDraws::draw() const {
   }
   glBindVertexArray(0);
   glUseProgram(0);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_CULL_FACE);
+  reset_raster_state();
   glDisable(GL_PRIMITIVE_RESTART);
   glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
-  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
 }
 
 }  // namespace tessref::glref

@@ -152,10 +152,7 @@ DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& 
     glsl::GlslProgram& program = own[i].program ? *own[i].program : *shared.program;
     bind_uniform_buffers(scene, d, buffers, uniform_bindings, program);
     const std::vector<draw::VertexArray> arrays = resolve_arrays(scene, d, program);
-    RasterState state;
-    state.cull_back_faces = d.cull_back_faces;
-    state.depth_test = d.depth_test;
-    state.polygon_mode = d.polygon_mode;
+    const RasterState& state = d.raster;
     for (const draw::DrawCall& c : d.calls) {
       draw::VertexInput input;
       try {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "pipeline/raster_state_schema.h"
 #include "pipeline/scene_schema.h"
 
 namespace tessref {
@@ -377,26 +378,7 @@ DrawSetting read_draw(JsonObject o, const std::vector<BufferSetting>& buffers, c
     if (d.restart.enabled && !d.elements)
       o.fail("primitive_restart", "applies to glDrawElements* only (GL restarts no glDrawArrays* command)", {"elements"});
   }
-  o.describe("enable", "an array of GL capabilities glEnable turns on: GL_DEPTH_TEST (GL_LESS), GL_CULL_FACE (GL_BACK, GL_CCW)");
-  if (o.has("enable")) {
-    const json& e = o.value("enable");
-    if (!e.is_array()) o.fail("enable", "expected an array of GL_DEPTH_TEST, GL_CULL_FACE, got " + describe_json(e));
-    for (const json& cap : e) {
-      if (cap == "GL_DEPTH_TEST") d.depth_test = true;
-      else if (cap == "GL_CULL_FACE") d.cull_back_faces = true;
-      else if (cap == "GL_PRIMITIVE_RESTART" || cap == "GL_PRIMITIVE_RESTART_FIXED_INDEX")
-        o.fail("enable", "primitive restart is the key primitive_restart (with its index)");
-      else o.fail("enable", "expected GL_DEPTH_TEST or GL_CULL_FACE, got " + describe_json(cap));
-    }
-  }
-  o.describe("polygon_mode", "glPolygonMode(GL_FRONT_AND_BACK, ...): GL_FILL (default), GL_LINE or GL_POINT");
-  if (o.has("polygon_mode")) {
-    const std::string m = o.string("polygon_mode");
-    if (m == "GL_FILL") d.polygon_mode = PolygonMode::kFill;
-    else if (m == "GL_LINE") d.polygon_mode = PolygonMode::kLine;
-    else if (m == "GL_POINT") d.polygon_mode = PolygonMode::kPoint;
-    else o.fail("polygon_mode", "expected GL_FILL, GL_LINE or GL_POINT, got \"" + m + "\"");
-  }
+  d.raster = read_raster_state(o);
   if (o.has("robust_buffer_access")) d.rules.robust_buffer_access = o.boolean("robust_buffer_access");
   o.describe("robust_buffer_access", "a boolean (default false): a fetch outside a buffer reads zero instead of being an error");
   o.describe("calls", "an array of {count, first | basevertex, instancecount, baseinstance}: glMultiDraw* and indirect draws");
@@ -456,7 +438,10 @@ const char* draw_keys_example() {
     },
     "elements": { "buffer": "b", "type": "GL_UNSIGNED_INT", "offset": 0 },
     "primitive_restart": false, "robust_buffer_access": false, "enable": ["GL_DEPTH_TEST"],
-    "polygon_mode": "GL_FILL",
+    "polygon_mode": "GL_FILL", "depth_func": "GL_LESS", "depth_mask": true, "cull_face": "GL_BACK",
+    "front_face": "GL_CCW", "scissor": [0, 0, 1, 1], "color_mask": [true, true, true, true],
+    "blend": { "equation": "GL_FUNC_ADD", "equation_alpha": "GL_FUNC_ADD", "src": "GL_ONE", "dst": "GL_ZERO",
+               "src_alpha": "GL_ONE", "dst_alpha": "GL_ZERO", "color": [0, 0, 0, 0] },
     "uniform_buffers": [{ "binding": 0, "buffer": "b", "offset": 0, "size": 16 }],
     "calls": [{ "count": 0, "basevertex": 0, "instancecount": 1, "baseinstance": 0 }]
   }]

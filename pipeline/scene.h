@@ -124,6 +124,14 @@ struct VertexArraySetting {
   draw::VertexArray array;  // array.buffer: an index into Scene::buffers
 };
 
+// GL's initial state for a draw: no depth test (RasterState's own default has it on, as the
+// mesh path draws).
+inline RasterState default_draw_state() {
+  RasterState r;
+  r.depth_test = false;
+  return r;
+}
+
 // draws[].uniform_buffers[]: glBindBufferRange(GL_UNIFORM_BUFFER, binding, buffer, offset, size).
 struct UniformBufferSetting {
   std::string key;  // "draws.0.uniform_buffers.1", for messages
@@ -148,11 +156,9 @@ struct DrawSetting {
   // draws[].shaders: this draw's own program (a custom one); none: the scene's `shaders`.
   std::optional<ShaderSettings> shaders;
   std::vector<draw::DrawCall> calls;
-  // enable: glEnable(GL_DEPTH_TEST) (depth func GL_LESS, depth writes on) and glEnable(GL_CULL_FACE)
-  // (glCullFace(GL_BACK), glFrontFace(GL_CCW)); GL's defaults are off.
-  bool depth_test = false;
-  bool cull_back_faces = false;
-  PolygonMode polygon_mode = PolygonMode::kFill;  // glPolygonMode(GL_FRONT_AND_BACK, ...)
+  // The fixed-function state it is drawn with (enable, depth_func, cull_face, blend, ...; GL's
+  // defaults: depth test, culling, scissor and blending off).
+  RasterState raster = default_draw_state();
   std::vector<UniformBufferSetting> uniform_buffers;
 };
 

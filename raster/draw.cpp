@@ -226,10 +226,17 @@ RasterStats draw_batch(const Batch& batch, const RasterState& state, const Fragm
     auto scan_tile = [&](std::size_t a) {
       const std::size_t tile = active[a];
       const int tx = int(tile % grid.tiles_x), ty = int(tile / grid.tiles_x);
-      const raster::PixelRect rect{tx * kTileSize, ty * kTileSize,
-                                   std::min(fb.width, (tx + 1) * kTileSize) - 1,
-                                   std::min(fb.height, (ty + 1) * kTileSize) - 1};
-      raster::FragmentSink sink(fs, fb, num_varyings, state.depth_test, &batch.flat_varyings);
+      raster::PixelRect rect{tx * kTileSize, ty * kTileSize,
+                             std::min(fb.width, (tx + 1) * kTileSize) - 1,
+                             std::min(fb.height, (ty + 1) * kTileSize) - 1};
+      if (state.scissor.enabled) {  // GL 4.6 14.9.2: only pixels inside the scissor box are written
+        rect.x0 = std::max(rect.x0, state.scissor.x);
+        rect.y0 = std::max(rect.y0, state.scissor.y);
+        rect.x1 = std::min(rect.x1, state.scissor.x + state.scissor.width - 1);
+        rect.y1 = std::min(rect.y1, state.scissor.y + state.scissor.height - 1);
+        if (rect.x0 > rect.x1 || rect.y0 > rect.y1) return;
+      }
+      raster::FragmentSink sink(fs, fb, num_varyings, state, &batch.flat_varyings);
       for (std::size_t c = 0; c < num_chunks; ++c) {
         const Chunk<Setup>& chunk = chunks[c];
         for (std::uint32_t k = chunk.tile_begin[tile]; k < chunk.tile_begin[tile + 1]; ++k) {
@@ -262,14 +269,14 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
         batch, state, fs, fb, parallel,
         [&](const raster::ProjectedVertex* projected, const raster::Viewport& vp, std::size_t i,
             std::vector<SetupTriangle>& tris, std::vector<float>& varyings, int& pieces) {
-          return raster::setup_triangle(batch, i, projected, vp, state.cull_back_faces, tris,
+          return raster::setup_triangle(batch, i, projected, vp, raster::FaceRule::of(state), tris,
                                         varyings, pieces);
         });
   return draw_batch<SetupQuad>(
       batch, state, fs, fb, parallel,
       [&](const raster::ProjectedVertex* projected, const raster::Viewport& vp, std::size_t i,
           std::vector<SetupQuad>& quads, std::vector<float>& varyings, int& pieces) {
-        return raster::setup_triangle_outline(batch, i, projected, vp, state.cull_back_faces,
+        return raster::setup_triangle_outline(batch, i, projected, vp, raster::FaceRule::of(state),
                                               state.polygon_mode, quads, varyings, pieces);
       });
 }

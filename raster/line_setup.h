@@ -65,7 +65,7 @@ SetupOutcome setup_point(const PointBatch& batch, std::size_t index,
 // v1 -> v2 set up as lines (edges made by clipping are not drawn), or its corners as points.
 SetupOutcome setup_triangle_outline(const TriangleBatch& batch, std::size_t index,
                                     const ProjectedVertex* projected, const Viewport& vp,
-                                    bool cull_back_faces, PolygonMode mode,
+                                    FaceRule faces, PolygonMode mode,
                                     std::vector<SetupQuad>& quads, std::vector<float>& varyings,
                                     int& pieces_out);
 

@@ -72,7 +72,7 @@ SetupOutcome setup_point(const PointBatch& batch, std::size_t index,
 
 SetupOutcome setup_triangle_outline(const TriangleBatch& batch, std::size_t index,
                                     const ProjectedVertex* projected, const Viewport& vp,
-                                    bool cull_back_faces, PolygonMode mode,
+                                    FaceRule faces, PolygonMode mode,
                                     std::vector<SetupQuad>& quads, std::vector<float>& varyings,
                                     int& pieces_out) {
   pieces_out = 0;
@@ -84,10 +84,10 @@ SetupOutcome setup_triangle_outline(const TriangleBatch& batch, std::size_t inde
   const ClipTest test =
       classify_outcodes(projected[idx[0]].code, projected[idx[1]].code, projected[idx[2]].code);
   if (test == ClipTest::kInvalid || test == ClipTest::kRejected) return SetupOutcome::kClippedAway;
-  if (cull_back_faces) {
-    // The draw module's cull stage: det = (v0 - v2) x (v1 - v2) of the window positions; counter-
-    // clockwise (GL_CCW front faces) is det > 0 with y up. Without every w > 0 the sign means
-    // nothing: such triangles go on to the clipper.
+  if (faces.cull_front || faces.cull_back) {
+    // The draw module's cull stage: det = (v0 - v2) x (v1 - v2) of the window positions;
+    // counter-clockwise is det > 0 with y up; zero area is culled. Without every w > 0 the sign
+    // means nothing: such triangles go on to the clipper.
     bool positive_w = true;
     ProjectedVertex w[3];
     for (int k = 0; k < 3; ++k) {
@@ -99,7 +99,7 @@ SetupOutcome setup_triangle_outline(const TriangleBatch& batch, std::size_t inde
       const float ex = w[0].xf - w[2].xf, ey = w[0].yf - w[2].yf;
       const float fx = w[1].xf - w[2].xf, fy = w[1].yf - w[2].yf;
       const float det = ex * fy - ey * fx;
-      if (!(det > 0.0f)) return SetupOutcome::kCulled;
+      if (!(det != 0.0f) || faces.culled(det > 0.0f)) return SetupOutcome::kCulled;
     }
   }
   // The polygon to outline: the triangle itself, or what clipping leaves of it.

@@ -3,6 +3,7 @@
 #include <cstdint>
 
 #include "common/parallel.h"
+#include "raster/fragment_ops.h"
 #include "raster/framebuffer.h"
 #include "raster/vertex.h"
 
@@ -54,11 +55,21 @@ struct FragmentProgram {
 enum class PolygonMode { kFill, kLine, kPoint };
 
 struct RasterState {
-  bool cull_back_faces = false;  // CCW front faces, as glFrontFace(GL_CCW)
+  // glEnable(GL_CULL_FACE) with glCullFace(GL_BACK) (and GL_FRONT: both set is GL_FRONT_AND_BACK);
+  // front faces counter-clockwise in window space (glFrontFace(GL_CCW)) unless front_face_cw.
+  bool cull_back_faces = false;
+  bool cull_front_faces = false;
+  bool front_face_cw = false;
   // glPolygonMode(GL_FRONT_AND_BACK, ...): triangles filled, or drawn as their edges or corners
   // (raster::setup_triangle_outline).
   PolygonMode polygon_mode = PolygonMode::kFill;
-  bool depth_test = true;        // LESS, with depth writes; false: neither (glDisable(GL_DEPTH_TEST))
+  // glEnable(GL_DEPTH_TEST) with glDepthFunc and glDepthMask; disabled: no test, no depth writes.
+  bool depth_test = true;
+  DepthFunc depth_func = DepthFunc::kLess;
+  bool depth_write = true;
+  ScissorState scissor;
+  BlendState blend;
+  ColorMask color_mask;
   float depth_range_near = 0.0f;
   float depth_range_far = 1.0f;
 };
@@ -73,7 +84,7 @@ struct RasterStats {
   RasterStats& operator+=(const RasterStats& o);
 };
 
-// Draws one batch into fb with depth test LESS. Several calls in a row behave as one draw of the
+// Draws one batch into fb with state's culling, depth test, scissor, blending and colour mask. Several calls in a row behave as one draw of the
 // concatenated batches. The framebuffer bytes do not depend on parallel.threads().
 RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
                            const FragmentProgram& fs, Framebuffer& fb, const Parallel& parallel);

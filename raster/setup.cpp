@@ -78,18 +78,20 @@ WindowVertex from_projected(const ProjectedVertex& p, const float* varyings) {
 // alone: what every piece goes through before anything is stored.
 struct PieceBox {
   std::int64_t area2;
-  bool front;
+  bool ccw;    // counter-clockwise with y up
+  bool front;  // front-facing by the face rule
   int min_x, min_y, max_x, max_y;  // pixels whose centers may be covered, inclusive
   bool empty() const { return min_x > max_x || min_y > max_y; }
 };
 
 template <class V>
-bool piece_box(const V& a, const V& b, const V& c, const Viewport& vp, bool cull_back_faces,
+bool piece_box(const V& a, const V& b, const V& c, const Viewport& vp, FaceRule faces,
                PieceBox& box) {
   box.area2 = std::int64_t(b.x - a.x) * (c.y - a.y) - std::int64_t(c.x - a.x) * (b.y - a.y);
   if (box.area2 == 0) return false;
-  box.front = box.area2 > 0;  // counter-clockwise with y up
-  if (!box.front && cull_back_faces) return false;
+  box.ccw = box.area2 > 0;
+  box.front = faces.front(box.ccw);
+  if (faces.culled(box.ccw)) return false;
   // Pixel x is a candidate when its center x * 256 + 128 lies in [min x, max x].
   pixel_range(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x}), vp.width, box.min_x, box.max_x);
   pixel_range(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}), vp.height, box.min_y, box.max_y);
@@ -108,10 +110,10 @@ void store_piece(const WindowVertex& a, const WindowVertex& b, const WindowVerte
                  const PieceBox& box, const Viewport& vp, int num_varyings, FlatVaryings flat,
                  std::vector<SetupTriangle>& tris, std::vector<float>& varyings) {
   const std::int64_t area2 = box.area2;
-  const bool front = box.front;
+  const bool ccw = box.ccw;
   const int min_x = box.min_x, min_y = box.min_y, max_x = box.max_x, max_y = box.max_y;
   // Wind every triangle counter-clockwise so that the edge functions are positive inside.
-  const WindowVertex* v[3] = {&a, front ? &b : &c, front ? &c : &b};
+  const WindowVertex* v[3] = {&a, ccw ? &b : &c, ccw ? &c : &b};
 
   SetupTriangle t;
   for (int i = 0; i < 3; ++i) {
@@ -172,8 +174,8 @@ void store_piece(const WindowVertex& a, const WindowVertex& b, const WindowVerte
     t.z_lo = std::min(vp.depth_near, vp.depth_far);
     t.z_hi = std::max(vp.depth_near, vp.depth_far);
   }
-  t.area2 = front ? area2 : -area2;
-  t.front_facing = front;
+  t.area2 = ccw ? area2 : -area2;
+  t.front_facing = box.front;
   t.min_x = min_x;
   t.min_y = min_y;
   t.max_x = max_x;
@@ -201,11 +203,11 @@ void store_piece(const WindowVertex& a, const WindowVertex& b, const WindowVerte
 }
 
 PieceResult setup_piece(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
-                        const Viewport& vp, bool cull_back_faces, int num_varyings,
+                        const Viewport& vp, FaceRule faces, int num_varyings,
                         FlatVaryings flat, std::vector<SetupTriangle>& tris,
                         std::vector<float>& varyings) {
   PieceBox box;
-  if (!piece_box(a, b, c, vp, cull_back_faces, box)) return PieceResult::kCulled;
+  if (!piece_box(a, b, c, vp, faces, box)) return PieceResult::kCulled;
   // No pixel center in the bounding box: set up (it counts) but nothing to scan. Most triangles
   // of a finely tessellated surface end here.
   if (!box.empty()) store_piece(a, b, c, box, vp, num_varyings, flat, tris, varyings);
@@ -265,7 +267,7 @@ ProjectedVertex project_position(const glm::vec4& position, const Viewport& vp, 
 
 SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index,
                             const ProjectedVertex* projected, const Viewport& vp,
-                            bool cull_back_faces, std::vector<SetupTriangle>& tris,
+                            FaceRule faces, std::vector<SetupTriangle>& tris,
                             std::vector<float>& varyings, int& pieces_out) {
   pieces_out = 0;
   const std::size_t i0 = batch.vertex_index(index, 0), i1 = batch.vertex_index(index, 1),
@@ -281,7 +283,7 @@ SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index,
     case ClipTest::kInside: {
       // Fast exits first, from the snapped positions alone, as setup_piece decides them.
       PieceBox box;
-      if (!piece_box(projected[i0], projected[i1], projected[i2], vp, cull_back_faces, box))
+      if (!piece_box(projected[i0], projected[i1], projected[i2], vp, faces, box))
         return SetupOutcome::kCulled;
       pieces_out = 1;
       if (!box.empty())
@@ -301,7 +303,7 @@ SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index,
     w[k] = to_window(poly.v[k].position, poly.v[k].varyings.data(), vp, poly.generated[k]);
   // A planar convex polygon: fan from its first vertex.
   for (int k = 1; k + 1 < poly.count; ++k) {
-    if (setup_piece(w[0], w[k], w[k + 1], vp, cull_back_faces, nv, flat, tris, varyings) ==
+    if (setup_piece(w[0], w[k], w[k + 1], vp, faces, nv, flat, tris, varyings) ==
         PieceResult::kRasterized)
       ++pieces_out;
   }
@@ -309,7 +311,7 @@ SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index,
 }
 
 SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index, const Viewport& vp,
-                            bool cull_back_faces, std::vector<SetupTriangle>& tris,
+                            FaceRule faces, std::vector<SetupTriangle>& tris,
                             std::vector<float>& varyings, int& pieces_out) {
   // A three-vertex batch of this triangle's corners, projected here.
   TriangleBatch one;
@@ -322,7 +324,7 @@ SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index, const
   }
   ProjectedVertex projected[3];
   project_vertices(one.vertices.data(), 3, one.records(), vp, projected);
-  return setup_triangle(one, 0, projected, vp, cull_back_faces, tris, varyings, pieces_out);
+  return setup_triangle(one, 0, projected, vp, faces, tris, varyings, pieces_out);
 }
 
 }  // namespace tessref::raster

@@ -40,6 +40,14 @@ struct Viewport {
   float guard_y() const;
 };
 
+// Which faces are culled, and which winding is the front (RasterState's culling).
+struct FaceRule {
+  bool cull_front = false, cull_back = false, front_cw = false;
+  bool front(bool ccw) const { return ccw != front_cw; }
+  bool culled(bool ccw) const { return front(ccw) ? cull_front : cull_back; }
+  static FaceRule of(const RasterState& s) { return {s.cull_front_faces, s.cull_back_faces, s.front_face_cw}; }
+};
+
 // What became of one input triangle.
 enum class SetupOutcome { kClippedAway, kCulled, kRasterized };
 
@@ -63,11 +71,11 @@ ProjectedVertex project_position(const glm::vec4& position, const Viewport& vp, 
 // it cannot produce a fragment.
 SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index,
                             const ProjectedVertex* projected, const Viewport& vp,
-                            bool cull_back_faces, std::vector<SetupTriangle>& tris,
+                            FaceRule faces, std::vector<SetupTriangle>& tris,
                             std::vector<float>& varyings, int& pieces_out);
 // The same, projecting the triangle's three corners on the fly (for tools and tests).
 SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index, const Viewport& vp,
-                            bool cull_back_faces, std::vector<SetupTriangle>& tris,
+                            FaceRule faces, std::vector<SetupTriangle>& tris,
                             std::vector<float>& varyings, int& pieces_out);
 
 }  // namespace tessref::raster

@@ -182,13 +182,17 @@ FragmentSink::Lanes& FragmentSink::thread_lanes(int num_varyings) {
 }
 
 FragmentSink::FragmentSink(const FragmentProgram& fs, Framebuffer& fb, int num_varyings,
-                           bool depth_test, const VaryingMask* flat)
+                           const RasterState& state, const VaryingMask* flat)
     : flat_(flat && flat->any() ? flat : nullptr),
       fs_(fs),
       fb_(fb),
       write_aux_(!fb.aux.empty()),
-      depth_test_(depth_test),
-      late_depth_(depth_test && fs.may_discard()),
+      depth_test_(state.depth_test),
+      depth_write_(state.depth_test && state.depth_write),
+      depth_func_(state.depth_func),
+      late_depth_(state.depth_test && fs.may_discard()),
+      blend_(state.blend),
+      color_mask_(state.color_mask),
       lanes_(thread_lanes(num_varyings)),
       batch_(lanes_.batch),
       pixel_(lanes_.pixel),
@@ -204,11 +208,13 @@ void FragmentSink::flush() {
     const std::size_t idx = pixel_[l];
     if (late_depth_) {  // lanes in arrival order: the test against fragments shaded before
       const float z = batch_.frag_coord[2][l];
-      if (!(z < fb_.depth[idx])) continue;
-      fb_.depth[idx] = z;
+      if (!depth_passes(z, fb_.depth[idx])) continue;
+      if (depth_write_) fb_.depth[idx] = z;
     }
-    fb_.color[idx] = glm::vec4(batch_.color[0][l], batch_.color[1][l], batch_.color[2][l],
-                               batch_.color[3][l]);
+    // Blending and the colour mask (GL 4.6 17.3.6, 17.4.2) on attachment 0, in arrival order.
+    glm::vec4 c(batch_.color[0][l], batch_.color[1][l], batch_.color[2][l], batch_.color[3][l]);
+    if (blend_.enabled) c = blend(blend_, c, fb_.color[idx]);
+    fb_.color[idx] = color_mask_.all() ? c : color_mask_.apply(c, fb_.color[idx]);
     if (write_aux_)
       fb_.aux[idx] = glm::vec4(batch_.aux[0][l], batch_.aux[1][l], batch_.aux[2][l],
                                batch_.aux[3][l]);
@@ -264,8 +270,8 @@ struct Scanner {
           float* depth = fb.depth.data() + fb.index(xs, y);
           for (int i = 0; i < n; ++i) {
             if (sink.depth_test_) {
-              if (!(z[i] < depth[i])) continue;
-              if (!sink.late_depth_) depth[i] = z[i];  // no discard: the depth write is final
+              if (!sink.depth_passes(z[i], depth[i])) continue;
+              if (sink.early_depth_write()) depth[i] = z[i];  // no discard: the write is final
             }
             const int x = xs + i;
             const int lane = base + 2 * (x - seg_x) - (x & 1) + 2 * r;  // 4 * quad + (x & 1) + 2r
@@ -340,8 +346,8 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
       const float z = ip.depth(b1, b2);
       const std::size_t idx = fb.index(x, y);
       if (sink.depth_test_) {
-        if (!(z < fb.depth[idx])) continue;
-        if (!sink.late_depth_) fb.depth[idx] = z;
+        if (!sink.depth_passes(z, fb.depth[idx])) continue;
+        if (sink.early_depth_write()) fb.depth[idx] = z;
       }
       if ((x & ~1) != quad_x || (y & ~1) != quad_y) {
         if (batch.quads == kFragmentQuads) sink.flush();

@@ -18,11 +18,12 @@ struct PixelRect {
 // arrival order when a batch is shaded, so the last fragment to pass wins, as in submission order.
 class FragmentSink {
  public:
-  // depth_test false: every covered fragment is shaded and depth is neither tested nor written
-  // (glDisable(GL_DEPTH_TEST)).
+  // state: the depth test (off: every covered fragment is shaded and depth is neither tested nor
+  // written, as glDisable(GL_DEPTH_TEST)), its function and write mask, blending and the colour
+  // mask. The scissor is applied by the caller (the rectangles it scans).
   // flat: varyings passed to the fragments as the provoking vertex's bits, not interpolated (an
   // integer's bit pattern could be a NaN or -0.0 as a float); null: none.
-  FragmentSink(const FragmentProgram& fs, Framebuffer& fb, int num_varyings, bool depth_test = true,
+  FragmentSink(const FragmentProgram& fs, Framebuffer& fb, int num_varyings, const RasterState& state,
                const VaryingMask* flat = nullptr);
   // Callers flush() when done: a fragment program may throw (a runaway shader), which a
   // destructor must not.
@@ -40,7 +41,16 @@ class FragmentSink {
   Framebuffer& fb_;
   bool write_aux_;
   bool depth_test_;
+  bool depth_write_;
+  DepthFunc depth_func_;
   bool late_depth_;  // depth written after shading (the program may discard)
+  BlendState blend_;
+  ColorMask color_mask_;
+  // GL_LESS, the common case, without the switch.
+  bool depth_passes(float z, float stored) const {
+    return depth_func_ == DepthFunc::kLess ? z < stored : tessref::depth_passes(depth_func_, z, stored);
+  }
+  bool early_depth_write() const { return depth_write_ && !late_depth_; }
   std::uint64_t shaded_ = 0;
   // The lanes live in per-thread storage, set up once per thread rather than once per tile (a
   // thread scans one tile at a time, so one sink per thread is alive at a time).

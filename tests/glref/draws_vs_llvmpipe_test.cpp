@@ -120,5 +120,21 @@ TEST(DrawsVsLlvmpipe, TerrainFromAHeightMapSampledInTheTes) {
   EXPECT_LE(o.within1.pixels - o.within1.within_tolerance, o.within1.coverage_mismatch) << o.within1.summary();
 }
 
+// Fixed-function state: culling with clockwise front faces, blending (separate alpha factors, a
+// constant colour, reverse subtract, GL_MAX), depth functions with depth writes off, a scissor
+// box and a colour mask, over three draws.
+TEST(DrawsVsLlvmpipe, FixedFunctionStateOverThreeDraws) {
+  TESSREF_REQUIRE_GL(ctx);
+  const DrawsOutcome o = compare_draws(*ctx, "fixed_function.json");
+  EXPECT_GT(o.stats.raster.fragments_shaded, 30000u);
+  EXPECT_EQ(o.stats.raster.triangles_culled, 0u);  // the patches face the camera clockwise: all front
+  EXPECT_LE(o.within1.coverage_mismatch, 4u) << o.within1.summary();
+  EXPECT_LE(o.within1.pixels - o.within1.within_tolerance, 4u) << o.within1.summary();
+  // glCullFace(GL_FRONT) then removes every patch triangle, on both sides.
+  const DrawsOutcome front = compare_draws(*ctx, "fixed_function.json", {"draws.0.cull_face=\"GL_FRONT\""});
+  EXPECT_EQ(front.stats.raster.triangles_culled, 576u);
+  EXPECT_EQ(front.within1.within_tolerance, front.within1.pixels) << front.within1.summary();
+}
+
 }  // namespace
 }  // namespace tessref::glref

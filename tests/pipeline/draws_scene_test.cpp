@@ -197,7 +197,7 @@ TEST(DrawsScene, BadDrawsNameTheKeyAndTheRule) {
                 .find("no active input named \"in_positon\""),
             std::string::npos);
   EXPECT_NE(error_of(f, {"draws.0.basevertex=1"}).find("glDrawArrays* takes no basevertex"), std::string::npos);
-  EXPECT_NE(error_of(f, {"draws.0.polygon_mode=\"GL_WIRE\""}).find("draws.0.polygon_mode: expected GL_FILL, GL_LINE or GL_POINT"),
+  EXPECT_NE(error_of(f, {"draws.0.polygon_mode=\"GL_WIRE\""}).find("draws.0.polygon_mode: expected one of GL_FILL, GL_LINE, GL_POINT, got a string"),
             std::string::npos);
   EXPECT_NE(error_of(f, {"draws.0.mode=\"GL_LINES_ADJACENCY\""}).find("needs a geometry shader"), std::string::npos);
 }

@@ -36,7 +36,7 @@ inline std::vector<raster::SetupTriangle> setup_all(const TriangleBatch& batch, 
   std::vector<float> varyings;
   for (std::size_t i = 0; i < batch.triangle_count(); ++i) {
     int pieces = 0;
-    raster::setup_triangle(batch, i, vp, cull_back_faces, tris, varyings, pieces);
+    raster::setup_triangle(batch, i, vp, raster::FaceRule{false, cull_back_faces, false}, tris, varyings, pieces);
   }
   return tris;
 }
