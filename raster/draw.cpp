@@ -1,6 +1,7 @@
-// draw_triangles: setup in fixed chunks, binning to tiles, tiles scanned in parallel.
+// draw_triangles, draw_lines, draw_points: setup in fixed chunks, binning to tiles, tiles scanned
+// in parallel, one generic draw (draw_batch) for every primitive kind.
 //
-// Determinism: the batch is cut into chunks of kChunkTriangles (independent of the thread count);
+// Determinism: the batch is cut into chunks of kChunkTriangles primitives (independent of the thread count);
 // each chunk clips and sets up its triangles in order and bins them per tile. A tile is then owned
 // by one task, which walks the chunks in order, so every pixel sees its triangles in submission
 // order whatever the thread count. Statistics are integer sums of per-chunk and per-tile counts.

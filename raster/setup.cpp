@@ -240,29 +240,17 @@ void project_vertices(const ClipVertex* vertices, std::size_t count, int records
   for (std::size_t i = 0; i < count; ++i) {
     ProjectedVertex& p = out[i];
     const ClipVertex& v = vertices[i * std::size_t(records)];
-    p.code = clip_outcode(v.position, vp.guard_x(), vp.guard_y());
-    if (!outcode_projectable(p.code)) continue;  // only clipped (or dropped) triangles use it
-    const WindowVertex w = to_window(v.position, nullptr, vp);
-    p.x = w.x;
-    p.y = w.y;
-    p.xf = w.xf;
-    p.yf = w.yf;
-    p.z = w.z;
-    p.inv_w = w.inv_w;
+    const std::uint32_t code = clip_outcode(v.position, vp.guard_x(), vp.guard_y());
+    p.code = code;
+    if (!outcode_projectable(code)) continue;  // only clipped (or dropped) triangles use it
+    p = project_position(v.position, vp, false);
+    p.code = code;
   }
 }
 
 ProjectedVertex project_position(const glm::vec4& position, const Viewport& vp, bool generated) {
   const WindowVertex w = to_window(position, nullptr, vp, generated);
-  ProjectedVertex p;
-  p.x = w.x;
-  p.y = w.y;
-  p.xf = w.xf;
-  p.yf = w.yf;
-  p.z = w.z;
-  p.inv_w = w.inv_w;
-  p.code = 0;
-  return p;
+  return ProjectedVertex{w.x, w.y, w.xf, w.yf, w.z, w.inv_w, 0u};
 }
 
 SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index,

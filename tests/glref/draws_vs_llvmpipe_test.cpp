@@ -43,14 +43,19 @@ DrawsOutcome compare_draws(GlContext& ctx, const std::string& file, const std::v
   return out;
 }
 
+// At most `coverage` pixels covered in one image only, and every other pixel within 1/255.
+void expect_matches(const DrawsOutcome& o, std::size_t coverage = 4) {
+  EXPECT_LE(o.within1.coverage_mismatch, coverage) << o.within1.summary();
+  EXPECT_LE(o.within1.pixels - o.within1.within_tolerance, o.within1.coverage_mismatch) << o.within1.summary();
+}
+
 // Two 16-control-point bicubic patches from glDrawArrays(GL_PATCHES, 0, 32) with no index buffer.
 TEST(DrawsVsLlvmpipe, BicubicPatchesFromDrawArrays) {
   TESSREF_REQUIRE_GL(ctx);
   const DrawsOutcome o = compare_draws(*ctx, "bicubic_arrays.json");
   EXPECT_GT(o.stats.raster.fragments_shaded, 10000u);
   EXPECT_EQ(o.stats.tess.patches_in, 2u);
-  EXPECT_LE(o.within1.coverage_mismatch, 4u) << o.within1.summary();
-  EXPECT_LE(o.within1.pixels - o.within1.within_tolerance, o.within1.coverage_mismatch) << o.within1.summary();
+  expect_matches(o);
 }
 
 // A frame of two draws with a program each: an untessellated triangle strip, then bicubic patches
@@ -75,8 +80,7 @@ TEST(DrawsVsLlvmpipe, GrassIsolinesLineLoopAndPoints) {
   EXPECT_EQ(o.stats.tess.patches_in, 2u);
   EXPECT_EQ(o.stats.tess.lines_out, 2u * 40u * 6u);
   EXPECT_GT(o.stats.raster.fragments_shaded, 2000u);
-  EXPECT_LE(o.within1.coverage_mismatch, 4u) << o.within1.summary();
-  EXPECT_LE(o.within1.pixels - o.within1.within_tolerance, o.within1.coverage_mismatch) << o.within1.summary();
+  expect_matches(o);
 }
 
 // Point mode over a wireframe (glPolygonMode(GL_LINE)) and a GL_LINE_STRIP.
@@ -86,8 +90,7 @@ TEST(DrawsVsLlvmpipe, PointModeOverAWireframe) {
   EXPECT_EQ(o.stats.tess.patches_in, 2u);
   EXPECT_EQ(o.stats.tess.points_out, o.stats.tess.domain_points);
   EXPECT_GT(o.stats.raster.fragments_shaded, 1000u);
-  EXPECT_LE(o.within1.coverage_mismatch, 4u) << o.within1.summary();
-  EXPECT_LE(o.within1.pixels - o.within1.within_tolerance, o.within1.coverage_mismatch) << o.within1.summary();
+  expect_matches(o);
 }
 
 // Instanced and indexed, with interleaved normalized attributes, a uniform struct array and a
@@ -97,8 +100,7 @@ TEST(DrawsVsLlvmpipe, InstancedIndexedWithAStructArrayAndAStd140Block) {
   const DrawsOutcome o = compare_draws(*ctx, "instanced_blocks.json");
   EXPECT_EQ(o.stats.tess.patches_in, 6u);  // 2 patches x 3 instances
   EXPECT_GT(o.stats.raster.fragments_shaded, 5000u);
-  EXPECT_LE(o.within1.coverage_mismatch, 4u) << o.within1.summary();
-  EXPECT_LE(o.within1.pixels - o.within1.within_tolerance, o.within1.coverage_mismatch) << o.within1.summary();
+  expect_matches(o);
 }
 
 // The same uniforms through glUniform* on the driver (struct members and elements by GL name,
@@ -116,8 +118,7 @@ TEST(DrawsVsLlvmpipe, TerrainFromAHeightMapSampledInTheTes) {
   const DrawsOutcome o = compare_draws(*ctx, "terrain.json");
   EXPECT_EQ(o.stats.tess.patches_in, 4u);
   EXPECT_GT(o.stats.raster.fragments_shaded, 20000u);
-  EXPECT_LE(o.within1.coverage_mismatch, 4u) << o.within1.summary();
-  EXPECT_LE(o.within1.pixels - o.within1.within_tolerance, o.within1.coverage_mismatch) << o.within1.summary();
+  expect_matches(o);
 }
 
 // Fixed-function state: culling with clockwise front faces, blending (separate alpha factors, a
