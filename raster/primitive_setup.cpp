@@ -1,5 +1,6 @@
 // Lines, points and polygon-mode outlines of a batch: clip, then line_setup.h's setup.
 #include <algorithm>
+#include <optional>
 
 #include "raster/clip.h"
 #include "raster/line_setup.h"
@@ -84,23 +85,24 @@ SetupOutcome setup_triangle_outline(const TriangleBatch& batch, std::size_t inde
   const ClipTest test =
       classify_outcodes(projected[idx[0]].code, projected[idx[1]].code, projected[idx[2]].code);
   if (test == ClipTest::kInvalid || test == ClipTest::kRejected) return SetupOutcome::kClippedAway;
-  if (faces.cull_front || faces.cull_back) {
-    // The draw module's cull stage: det = (v0 - v2) x (v1 - v2) of the window positions;
-    // counter-clockwise is det > 0 with y up; zero area is culled. Without every w > 0 the sign
-    // means nothing: such triangles go on to the clipper.
-    bool positive_w = true;
-    ProjectedVertex w[3];
-    for (int k = 0; k < 3; ++k) {
-      const float* p = d[k];
-      positive_w = positive_w && p[3] > 0.0f;
-      if (positive_w) w[k] = project_position(glm::vec4(p[0], p[1], p[2], p[3]), vp, false);
-    }
-    if (positive_w) {
-      const float ex = w[0].xf - w[2].xf, ey = w[0].yf - w[2].yf;
-      const float fx = w[1].xf - w[2].xf, fy = w[1].yf - w[2].yf;
-      const float det = ex * fy - ey * fx;
-      if (!(det != 0.0f) || faces.culled(det > 0.0f)) return SetupOutcome::kCulled;
-    }
+  // The draw module's cull stage: det = (v0 - v2) x (v1 - v2) of the window positions;
+  // counter-clockwise is det > 0 with y up; zero area is culled when culling. The sign is also
+  // gl_FrontFacing of the lines and points. Without every w > 0 it means nothing: such triangles
+  // go on to the clipper, and their pieces' facing comes from the clipped polygon.
+  bool positive_w = true;
+  ProjectedVertex w[3];
+  for (int k = 0; k < 3; ++k) {
+    const float* p = d[k];
+    positive_w = positive_w && p[3] > 0.0f;
+    if (positive_w) w[k] = project_position(glm::vec4(p[0], p[1], p[2], p[3]), vp, false);
+  }
+  std::optional<float> det;
+  if (positive_w) {
+    const float ex = w[0].xf - w[2].xf, ey = w[0].yf - w[2].yf;
+    const float fx = w[1].xf - w[2].xf, fy = w[1].yf - w[2].yf;
+    det = ex * fy - ey * fx;
+    if ((faces.cull_front || faces.cull_back) && (!(*det != 0.0f) || faces.culled(*det > 0.0f)))
+      return SetupOutcome::kCulled;
   }
   // The polygon to outline: the triangle itself, or what clipping leaves of it.
   ClipPolygon poly;
@@ -122,6 +124,18 @@ SetupOutcome setup_triangle_outline(const TriangleBatch& batch, std::size_t inde
     for (int k = 0; k < poly.count; ++k)
       for (int j = 0; j < nv; ++j)
         if (batch.flat_varyings[std::size_t(j)]) poly.v[std::size_t(k)].varyings[std::size_t(j)] = d[2][4 + j];
+  if (!det) {  // the clipped polygon's own winding (its first three corners, all with w > 0)
+    const ProjectedVertex a = project_position(poly.v[0].position, vp, poly.generated[0]);
+    const ProjectedVertex b = project_position(poly.v[1].position, vp, poly.generated[1]);
+    const ProjectedVertex c = project_position(poly.v[2].position, vp, poly.generated[2]);
+    det = (a.xf - c.xf) * (b.yf - c.yf) - (a.yf - c.yf) * (b.xf - c.xf);
+  }
+  const bool front = faces.front(*det > 0.0f);
+  const std::size_t first_quad = quads.size();
+  // The lines and points of a polygon face as it does (Mesa passes the facing on to them).
+  auto set_facing = [&] {
+    for (std::size_t q = first_quad; q < quads.size(); ++q) quads[q].t.front_facing = front;
+  };
   if (mode == PolygonMode::kPoint) {
     // A vertex is drawn with the edge flag of the edge it starts: a cut vertex where the polygon
     // leaves a clip plane is not (measured against llvmpipe).
@@ -131,6 +145,7 @@ SetupOutcome setup_triangle_outline(const TriangleBatch& batch, std::size_t inde
       if (setup_point(line_vertex(p, poly.v[k].varyings.data()), vp, nv, quads, varyings))
         ++pieces_out;
     }
+    set_facing();
     return SetupOutcome::kRasterized;
   }
   // The last edge (back to the first vertex) first, then in order, as Mesa's unfilled stage does.
@@ -142,6 +157,7 @@ SetupOutcome setup_triangle_outline(const TriangleBatch& batch, std::size_t inde
                            nullptr, quads, varyings))
       ++pieces_out;
   }
+  set_facing();
   return SetupOutcome::kRasterized;
 }
 

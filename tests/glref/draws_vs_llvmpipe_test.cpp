@@ -137,5 +137,17 @@ TEST(DrawsVsLlvmpipe, FixedFunctionStateOverThreeDraws) {
   EXPECT_EQ(front.within1.within_tolerance, front.within1.pixels) << front.within1.summary();
 }
 
+// A wireframe's lines face as their triangles do (gl_FrontFacing), with either winding in front.
+TEST(DrawsVsLlvmpipe, PolygonModeLinesKeepTheirTrianglesFacing) {
+  TESSREF_REQUIRE_GL(ctx);
+  for (const char* winding : {"GL_CCW", "GL_CW"}) {
+    const DrawsOutcome o = compare_draws(*ctx, "two_draws_depth.json",
+                                         {"draws.1.polygon_mode=\"GL_LINE\"", "draws.1.shaders.fragment=\"facing.frag\"",
+                                          std::string("draws.1.front_face=\"") + winding + "\""});
+    EXPECT_GT(o.stats.raster.fragments_shaded, 10000u) << winding;
+    expect_matches(o);
+  }
+}
+
 }  // namespace
 }  // namespace tessref::glref
