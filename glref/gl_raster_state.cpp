@@ -62,10 +62,6 @@ void apply_raster_state(const RasterState& s) {
   glColorMask(s.color_mask.r, s.color_mask.g, s.color_mask.b, s.color_mask.a);
 }
 
-void reset_raster_state() {
-  RasterState initial;
-  initial.depth_test = false;
-  apply_raster_state(initial);
-}
+void reset_raster_state() { apply_raster_state(gl_initial_state()); }
 
 }  // namespace tessref::glref

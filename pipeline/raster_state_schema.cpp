@@ -76,9 +76,7 @@ BlendState read_blend(JsonObject& b) {
 }  // namespace
 
 RasterState read_raster_state(JsonObject& o) {
-  // GL's defaults: every capability off, GL_LESS, depth writes on, GL_BACK, GL_CCW, GL_FILL.
-  RasterState r;
-  r.depth_test = false;
+  RasterState r = gl_initial_state();
   bool cull = false, scissor = false, blend = false;
   o.describe("enable", "an array of GL capabilities glEnable turns on: GL_DEPTH_TEST, GL_CULL_FACE, GL_SCISSOR_TEST, GL_BLEND");
   if (o.has("enable")) {

@@ -124,14 +124,6 @@ struct VertexArraySetting {
   draw::VertexArray array;  // array.buffer: an index into Scene::buffers
 };
 
-// GL's initial state for a draw: no depth test (RasterState's own default has it on, as the
-// mesh path draws).
-inline RasterState default_draw_state() {
-  RasterState r;
-  r.depth_test = false;
-  return r;
-}
-
 // draws[].uniform_buffers[]: glBindBufferRange(GL_UNIFORM_BUFFER, binding, buffer, offset, size).
 struct UniformBufferSetting {
   std::string key;  // "draws.0.uniform_buffers.1", for messages
@@ -158,7 +150,7 @@ struct DrawSetting {
   std::vector<draw::DrawCall> calls;
   // The fixed-function state it is drawn with (enable, depth_func, cull_face, blend, ...; GL's
   // defaults: depth test, culling, scissor and blending off).
-  RasterState raster = default_draw_state();
+  RasterState raster = gl_initial_state();
   std::vector<UniformBufferSetting> uniform_buffers;
 };
 

@@ -57,10 +57,10 @@ constexpr std::size_t kProjectVertices = 8192;  // vertices per projection task
 
 template <class Setup>
 struct Chunk {
-  std::vector<Setup> tris;
+  std::vector<Setup> prims;  // set-up primitives (triangles or quads)
   std::vector<float> varyings;
   std::vector<std::uint32_t> tile_begin;  // per tile: start in tile_tris; num_tiles + 1 entries
-  std::vector<std::uint32_t> tile_tris;   // indices into tris, grouped by tile, in order
+  std::vector<std::uint32_t> tile_tris;   // indices into prims, grouped by tile, in order
   std::vector<std::uint32_t> single_tile; // per triangle: its only tile, or ~0 (scratch)
   std::vector<std::uint32_t> fill;        // per tile: next slot in tile_tris (scratch)
   RasterStats stats;
@@ -76,15 +76,15 @@ struct TileGrid {
 template <class Setup, class SetupOne>
 void setup_chunk(int num_varyings, std::size_t first, std::size_t last, const TileGrid& grid,
                  const SetupOne& setup_one, Chunk<Setup>& chunk) {
-  chunk.tris.clear();
+  chunk.prims.clear();
   chunk.varyings.clear();
-  chunk.tris.reserve(last - first);
+  chunk.prims.reserve(last - first);
   chunk.varyings.reserve((last - first) * 3 * std::size_t(num_varyings));
   chunk.stats = RasterStats{};
   for (std::size_t i = first; i < last; ++i) {
     int pieces = 0;
     ++chunk.stats.triangles_in;
-    switch (setup_one(i, chunk.tris, chunk.varyings, pieces)) {
+    switch (setup_one(i, chunk.prims, chunk.varyings, pieces)) {
       case raster::SetupOutcome::kClippedAway: ++chunk.stats.triangles_clipped_away; break;
       case raster::SetupOutcome::kCulled: ++chunk.stats.triangles_culled; break;
       case raster::SetupOutcome::kRasterized: chunk.stats.triangles_rasterized += pieces; break;
@@ -112,9 +112,9 @@ void setup_chunk(int num_varyings, std::size_t first, std::size_t last, const Ti
   };
   // Most triangles lie in one tile: remember it from the counting pass.
   constexpr std::uint32_t kSeveralTiles = ~0u;
-  chunk.single_tile.resize(chunk.tris.size());
-  for (std::size_t k = 0; k < chunk.tris.size(); ++k) {
-    const SetupTriangle& t = box_of(chunk.tris[k]);
+  chunk.single_tile.resize(chunk.prims.size());
+  for (std::size_t k = 0; k < chunk.prims.size(); ++k) {
+    const SetupTriangle& t = box_of(chunk.prims[k]);
     const int tx0 = t.min_x / kTileSize, ty0 = t.min_y / kTileSize;
     if (t.min_x <= t.max_x && t.min_y <= t.max_y && tx0 == t.max_x / kTileSize &&
         ty0 == t.max_y / kTileSize) {
@@ -123,19 +123,19 @@ void setup_chunk(int num_varyings, std::size_t first, std::size_t last, const Ti
       ++chunk.tile_begin[tile + 1];
     } else {
       chunk.single_tile[k] = kSeveralTiles;
-      for_tiles(chunk.tris[k], [&](std::size_t tile) { ++chunk.tile_begin[tile + 1]; });
+      for_tiles(chunk.prims[k], [&](std::size_t tile) { ++chunk.tile_begin[tile + 1]; });
     }
   }
   for (std::size_t k = 1; k < chunk.tile_begin.size(); ++k)
     chunk.tile_begin[k] += chunk.tile_begin[k - 1];
   chunk.tile_tris.resize(chunk.tile_begin.back());
   chunk.fill.assign(chunk.tile_begin.begin(), chunk.tile_begin.end() - 1);
-  for (std::uint32_t k = 0; k < chunk.tris.size(); ++k) {
+  for (std::uint32_t k = 0; k < chunk.prims.size(); ++k) {
     if (chunk.single_tile[k] != kSeveralTiles) {
       chunk.tile_tris[chunk.fill[chunk.single_tile[k]]++] = k;
       continue;
     }
-    for_tiles(chunk.tris[k], [&](std::size_t tile) { chunk.tile_tris[chunk.fill[tile]++] = k; });
+    for_tiles(chunk.prims[k], [&](std::size_t tile) { chunk.tile_tris[chunk.fill[tile]++] = k; });
   }
 }
 
@@ -241,7 +241,7 @@ RasterStats draw_batch(const Batch& batch, const RasterState& state, const Fragm
       for (std::size_t c = 0; c < num_chunks; ++c) {
         const Chunk<Setup>& chunk = chunks[c];
         for (std::uint32_t k = chunk.tile_begin[tile]; k < chunk.tile_begin[tile + 1]; ++k) {
-          const Setup& prim = chunk.tris[chunk.tile_tris[k]];
+          const Setup& prim = chunk.prims[chunk.tile_tris[k]];
           scan(prim, chunk.varyings.data() + box_of(prim).varying_offset, num_varyings, rect, sink);
         }
       }

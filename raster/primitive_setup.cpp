@@ -89,24 +89,30 @@ SetupOutcome setup_triangle_outline(const TriangleBatch& batch, std::size_t inde
   // counter-clockwise is det > 0 with y up; zero area is culled when culling. The sign is also
   // gl_FrontFacing of the lines and points. Without every w > 0 it means nothing: such triangles
   // go on to the clipper, and their pieces' facing comes from the clipped polygon.
-  bool positive_w = true;
+  // An inside triangle's corners are the batch's projected vertices; a clipped one's are
+  // projected here when every w > 0.
+  const bool inside = test == ClipTest::kInside;
+  bool positive_w = inside;
   ProjectedVertex w[3];
-  for (int k = 0; k < 3; ++k) {
-    const float* p = d[k];
-    positive_w = positive_w && p[3] > 0.0f;
-    if (positive_w) w[k] = project_position(glm::vec4(p[0], p[1], p[2], p[3]), vp, false);
+  if (inside) {
+    for (int k = 0; k < 3; ++k) w[k] = projected[idx[k]];
+  } else {
+    positive_w = d[0][3] > 0.0f && d[1][3] > 0.0f && d[2][3] > 0.0f;
+    if (positive_w)
+      for (int k = 0; k < 3; ++k) w[k] = project_position(glm::vec4(d[k][0], d[k][1], d[k][2], d[k][3]), vp, false);
   }
+  auto winding = [](const ProjectedVertex& a, const ProjectedVertex& b, const ProjectedVertex& c) {
+    return (a.xf - c.xf) * (b.yf - c.yf) - (a.yf - c.yf) * (b.xf - c.xf);
+  };
   std::optional<float> det;
   if (positive_w) {
-    const float ex = w[0].xf - w[2].xf, ey = w[0].yf - w[2].yf;
-    const float fx = w[1].xf - w[2].xf, fy = w[1].yf - w[2].yf;
-    det = ex * fy - ey * fx;
+    det = winding(w[0], w[1], w[2]);
     if ((faces.cull_front || faces.cull_back) && (!(*det != 0.0f) || faces.culled(*det > 0.0f)))
       return SetupOutcome::kCulled;
   }
   // The polygon to outline: the triangle itself, or what clipping leaves of it.
   ClipPolygon poly;
-  if (test == ClipTest::kInside) {
+  if (inside) {
     poly.count = 3;
     for (int k = 0; k < 3; ++k) {
       poly.v[k].position = glm::vec4(d[k][0], d[k][1], d[k][2], d[k][3]);
@@ -124,12 +130,11 @@ SetupOutcome setup_triangle_outline(const TriangleBatch& batch, std::size_t inde
     for (int k = 0; k < poly.count; ++k)
       for (int j = 0; j < nv; ++j)
         if (batch.flat_varyings[std::size_t(j)]) poly.v[std::size_t(k)].varyings[std::size_t(j)] = d[2][4 + j];
-  if (!det) {  // the clipped polygon's own winding (its first three corners, all with w > 0)
-    const ProjectedVertex a = project_position(poly.v[0].position, vp, poly.generated[0]);
-    const ProjectedVertex b = project_position(poly.v[1].position, vp, poly.generated[1]);
-    const ProjectedVertex c = project_position(poly.v[2].position, vp, poly.generated[2]);
-    det = (a.xf - c.xf) * (b.yf - c.yf) - (a.yf - c.yf) * (b.xf - c.xf);
-  }
+  // Each corner's window position, once.
+  ProjectedVertex pv[kMaxClipVertices];
+  for (int k = 0; k < poly.count; ++k)
+    pv[k] = inside ? w[k] : project_position(poly.v[std::size_t(k)].position, vp, poly.generated[std::size_t(k)]);
+  if (!det) det = winding(pv[0], pv[1], pv[2]);  // the clipped polygon's own (all its w > 0)
   const bool front = faces.front(*det > 0.0f);
   const std::size_t first_quad = quads.size();
   // The lines and points of a polygon face as it does (Mesa passes the facing on to them).
@@ -141,8 +146,7 @@ SetupOutcome setup_triangle_outline(const TriangleBatch& batch, std::size_t inde
     // leaves a clip plane is not (measured against llvmpipe).
     for (int k = 0; k < poly.count; ++k) {
       if (!poly.boundary[std::size_t(k)]) continue;
-      const ProjectedVertex p = project_position(poly.v[k].position, vp, poly.generated[k]);
-      if (setup_point(line_vertex(p, poly.v[k].varyings.data()), vp, nv, quads, varyings))
+      if (setup_point(line_vertex(pv[k], poly.v[k].varyings.data()), vp, nv, quads, varyings))
         ++pieces_out;
     }
     set_facing();
@@ -152,9 +156,9 @@ SetupOutcome setup_triangle_outline(const TriangleBatch& batch, std::size_t inde
   for (int e = 0; e < poly.count; ++e) {
     const int from = (e + poly.count - 1) % poly.count, to = (from + 1) % poly.count;
     if (!poly.boundary[std::size_t(from)]) continue;
-    if (setup_clipped_line(poly.v[std::size_t(from)], poly.generated[std::size_t(from)],
-                           poly.v[std::size_t(to)], poly.generated[std::size_t(to)], vp, nv,
-                           nullptr, quads, varyings))
+    if (setup_line(line_vertex(pv[from], poly.v[std::size_t(from)].varyings.data()),
+                   line_vertex(pv[to], poly.v[std::size_t(to)].varyings.data()), vp, nv, nullptr, quads,
+                   varyings))
       ++pieces_out;
   }
   set_facing();

@@ -74,6 +74,15 @@ struct RasterState {
   float depth_range_far = 1.0f;
 };
 
+// GL's initial state (every capability off, GL_LESS, depth writes on, GL_BACK, GL_CCW, GL_FILL):
+// a scene's draw before its keys, and what the GL runner resets to. RasterState's own default
+// has the depth test on, as the mesh path draws.
+inline RasterState gl_initial_state() {
+  RasterState r;
+  r.depth_test = false;
+  return r;
+}
+
 // Counts of primitives: triangles, or lines and points for draw_lines and draw_points.
 struct RasterStats {
   std::uint64_t triangles_in = 0;
