@@ -67,6 +67,22 @@ void set_current(std::uint32_t location, const draw::VertexArray& a) {
   }
 }
 
+// glVertexAttrib*Pointer for a, its first element `offset` bytes into the bound GL_ARRAY_BUFFER.
+void set_pointer(GLuint location, const draw::VertexArray& a, std::size_t offset) {
+  const GLint size = a.format.bgra ? GL_BGRA : a.format.size;
+  const auto* pointer = reinterpret_cast<const void*>(std::uintptr_t(offset));
+  switch (a.format.pointer) {
+    case draw::AttribPointer::Float:
+      glVertexAttribPointer(location, size, gl_type(a.format.type), a.format.normalized ? GL_TRUE : GL_FALSE,
+                            GLsizei(a.stride), pointer);
+      break;
+    case draw::AttribPointer::Integer:
+      glVertexAttribIPointer(location, size, gl_type(a.format.type), GLsizei(a.stride), pointer);
+      break;
+    case draw::AttribPointer::Double: glVertexAttribLPointer(location, size, GL_DOUBLE, GLsizei(a.stride), pointer); break;
+  }
+}
+
 }  // namespace
 
 GlDraws::GlDraws(const Scene& scene, const std::vector<draw::Buffer>& buffers, std::vector<unsigned> programs,
@@ -82,6 +98,7 @@ GlDraws::GlDraws(const Scene& scene, const std::vector<draw::Buffer>& buffers, s
   vaos_.resize(scene.draws.size());
   glGenVertexArrays(GLsizei(vaos_.size()), vaos_.data());
   current_.resize(scene.draws.size());
+  instanced_.resize(scene.draws.size());
   for (std::size_t d = 0; d < scene.draws.size(); ++d) {
     const DrawSetting& draw = scene.draws[d];
     glBindVertexArray(vaos_[d]);
@@ -99,21 +116,9 @@ GlDraws::GlDraws(const Scene& scene, const std::vector<draw::Buffer>& buffers, s
         continue;
       }
       glBindBuffer(GL_ARRAY_BUFFER, buffers_[a.buffer]);
-      const GLint size = a.format.bgra ? GL_BGRA : a.format.size;
-      const auto* pointer = reinterpret_cast<const void*>(std::uintptr_t(a.offset));
-      switch (a.format.pointer) {
-        case draw::AttribPointer::Float:
-          glVertexAttribPointer(GLuint(location), size, gl_type(a.format.type), a.format.normalized ? GL_TRUE : GL_FALSE,
-                                GLsizei(a.stride), pointer);
-          break;
-        case draw::AttribPointer::Integer:
-          glVertexAttribIPointer(GLuint(location), size, gl_type(a.format.type), GLsizei(a.stride), pointer);
-          break;
-        case draw::AttribPointer::Double:
-          glVertexAttribLPointer(GLuint(location), size, GL_DOUBLE, GLsizei(a.stride), pointer);
-          break;
-      }
+      set_pointer(GLuint(location), a, a.offset);
       glVertexAttribDivisor(GLuint(location), a.divisor);
+      if (a.divisor) instanced_[d].push_back({std::uint32_t(location), a});
       glEnableVertexAttribArray(GLuint(location));
     }
     if (draw.elements) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers_[draw.elements->buffer]);
@@ -127,47 +132,78 @@ GlDraws::~GlDraws() {
   if (!buffers_.empty()) glDeleteBuffers(GLsizei(buffers_.size()), buffers_.data());
 }
 
-void GlDraws::draw() const {
-  for (std::size_t d = 0; d < scene_.draws.size(); ++d) {
-    const DrawSetting& draw = scene_.draws[d];
-    glUseProgram(programs_[d]);
-    if (textures_[d]) textures_[d]->bind();
-    glBindVertexArray(vaos_[d]);
-    for (const auto& [location, a] : current_[d]) set_current(location, a);
-    apply_raster_state(draw.raster);
-    for (const UniformBufferSetting& u : draw.uniform_buffers) {
-      const std::size_t size = u.size.value_or(buffer_sizes_[u.buffer] - u.offset);
-      glBindBufferRange(GL_UNIFORM_BUFFER, u.binding, buffers_[u.buffer], GLintptr(u.offset), GLsizeiptr(size));
-    }
-    glDisable(GL_PRIMITIVE_RESTART);
-    glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
-    if (draw.restart.enabled && draw.restart.fixed_index) glEnable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
-    if (draw.restart.enabled && !draw.restart.fixed_index) {
-      glEnable(GL_PRIMITIVE_RESTART);
-      glPrimitiveRestartIndex(draw.restart.index);
-    }
-    if (draw.mode == DrawMode::Patches) {
-      glPatchParameteri(GL_PATCH_VERTICES, draw.patch_vertices);
-      glPatchParameterfv(GL_PATCH_DEFAULT_OUTER_LEVEL, &draw.default_outer.x);
-      glPatchParameterfv(GL_PATCH_DEFAULT_INNER_LEVEL, &draw.default_inner.x);
-    }
-    for (const draw::DrawCall& c : draw.calls) {
-      if (draw.elements)
-        glDrawElementsInstancedBaseVertexBaseInstance(
-            gl_mode(draw.mode), GLsizei(c.count), gl_index_type(draw.elements->type),
-            reinterpret_cast<const void*>(std::uintptr_t(draw.elements->offset)), GLsizei(c.instance_count),
-            GLint(c.base_vertex), c.base_instance);
-      else
-        glDrawArraysInstancedBaseInstance(gl_mode(draw.mode), GLint(c.first), GLsizei(c.count),
-                                          GLsizei(c.instance_count), c.base_instance);
-    }
-    check_gl((draw.key + ": drawing").c_str());
+void GlDraws::bind(std::size_t d, unsigned program) const {
+  const DrawSetting& draw = scene_.draws[d];
+  glUseProgram(program);
+  if (textures_[d]) textures_[d]->bind();
+  glBindVertexArray(vaos_[d]);
+  for (const auto& [location, a] : current_[d]) set_current(location, a);
+  apply_raster_state(draw.raster);
+  for (const UniformBufferSetting& u : draw.uniform_buffers) {
+    const std::size_t size = u.size.value_or(buffer_sizes_[u.buffer] - u.offset);
+    glBindBufferRange(GL_UNIFORM_BUFFER, u.binding, buffers_[u.buffer], GLintptr(u.offset), GLsizeiptr(size));
   }
+  glDisable(GL_PRIMITIVE_RESTART);
+  glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
+  if (draw.restart.enabled && draw.restart.fixed_index) glEnable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
+  if (draw.restart.enabled && !draw.restart.fixed_index) {
+    glEnable(GL_PRIMITIVE_RESTART);
+    glPrimitiveRestartIndex(draw.restart.index);
+  }
+  if (draw.mode == DrawMode::Patches) {
+    glPatchParameteri(GL_PATCH_VERTICES, draw.patch_vertices);
+    glPatchParameterfv(GL_PATCH_DEFAULT_OUTER_LEVEL, &draw.default_outer.x);
+    glPatchParameterfv(GL_PATCH_DEFAULT_INNER_LEVEL, &draw.default_inner.x);
+  }
+}
+
+void GlDraws::unbind() const {
   glBindVertexArray(0);
   glUseProgram(0);
   reset_raster_state();
   glDisable(GL_PRIMITIVE_RESTART);
   glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
+}
+
+namespace {
+
+void issue(const DrawSetting& draw, const draw::DrawCall& c, std::uint32_t instance_count) {
+  if (draw.elements)
+    glDrawElementsInstancedBaseVertexBaseInstance(
+        gl_mode(draw.mode), GLsizei(c.count), gl_index_type(draw.elements->type),
+        reinterpret_cast<const void*>(std::uintptr_t(draw.elements->offset)), GLsizei(instance_count),
+        GLint(c.base_vertex), c.base_instance);
+  else
+    glDrawArraysInstancedBaseInstance(gl_mode(draw.mode), GLint(c.first), GLsizei(c.count),
+                                      GLsizei(instance_count), c.base_instance);
+}
+
+}  // namespace
+
+void GlDraws::draw() const {
+  for (std::size_t d = 0; d < scene_.draws.size(); ++d) {
+    bind(d, programs_[d]);
+    for (const draw::DrawCall& c : scene_.draws[d].calls) issue(scene_.draws[d], c, c.instance_count);
+    check_gl((scene_.draws[d].key + ": drawing").c_str());
+  }
+  unbind();
+}
+
+void GlDraws::draw_instance(std::size_t d, std::size_t call, std::uint32_t instance) const {
+  const DrawSetting& draw = scene_.draws[d];
+  // Instance k reads element floor(k / divisor) + baseinstance (GL 4.5, 10.5); drawn alone as
+  // instance 0 it reads element baseinstance, so the pointer moves by the difference.
+  for (const auto& [location, a] : instanced_[d]) {
+    glBindBuffer(GL_ARRAY_BUFFER, buffers_[a.buffer]);
+    const std::size_t stride = a.stride ? a.stride : draw::element_bytes(a.format);
+    set_pointer(location, a, a.offset + std::size_t(instance / a.divisor) * stride);
+  }
+  issue(draw, draw.calls[call], 1);
+  for (const auto& [location, a] : instanced_[d]) {
+    glBindBuffer(GL_ARRAY_BUFFER, buffers_[a.buffer]);
+    set_pointer(location, a, a.offset);
+  }
+  check_gl((draw.key + ".calls[" + std::to_string(call) + "]: drawing instance " + std::to_string(instance)).c_str());
 }
 
 }  // namespace tessref::glref

@@ -66,7 +66,9 @@ CaptureSummary capture_reference(GlContext& context, const Scene& scene, const M
   {
     TessDumpWriter writer(tess.string());
     std::vector<TessDumpRecord> records;
-    if (scene.tessellation.enabled)
+    if (!scene.draws.empty())
+      records = as_clip_records(renderer.capture_draws_tess());
+    else if (scene.tessellation.enabled)
       for (const TessOutputVertex& v : renderer.capture_tess())
         records.push_back(TessDumpRecord{v.patch, v.tess_coord, v.position, v.normal});
     summary.tess_records = records.size();
@@ -112,6 +114,8 @@ CaptureSummary capture_reference(GlContext& context, const Scene& scene, const M
                  "patches whose id is a multiple of tess_patch_stride)"},
         {"tess_patches", "tess_patches.bin (per patch: emitted vertices and a hash of its distinct gl_TessCoord; "
                          "pipeline/tess_digest.h)"}}},
+      {"tess_values", scene.draws.empty() ? "position and normal: the evaluation shader's outputs at locations 0 and 1"
+                                          : "gl_Position: x, y, z as the position, w as the normal's x"},
       {"tess_records", summary.tess_records},
       {"tess_records_stored", summary.tess_records_stored},
       {"tess_patch_stride", summary.patch_stride}};

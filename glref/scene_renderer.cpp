@@ -9,6 +9,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "glref/capture_wrap.h"
 #include "glref/gl_context.h"
 #include "glref/gl_error.h"
 #include "glref/glsl_rewrite.h"
@@ -82,6 +83,38 @@ std::vector<ShaderStage> custom_stages(const Scene& scene, const ShaderSettings&
     stages.push_back({gl_stage(src.stage), text, src.file});
   }
   return stages;
+}
+
+// A draw's own stages for capture_draws_tess: the vertex and evaluation shaders wrapped
+// (glref/capture_wrap.h), the fragment shader left out.
+std::vector<ShaderStage> draw_capture_stages(const Scene& scene, const ShaderSettings& shaders) {
+  std::vector<ShaderStage> stages;
+  for (const shader::ShaderSource& src : scene_sources(scene, shaders)) {
+    if (src.stage == shader::Stage::Fragment) continue;
+    std::string text = src.text;
+    if (src.stage == shader::Stage::Vertex) text = capture_vertex_shader(text);
+    if (src.stage == shader::Stage::TessEval) text = capture_evaluation_shader(text);
+    stages.push_back({gl_stage(src.stage), text, src.file});
+  }
+  return stages;
+}
+
+// The locations the driver gave a linked program's vertex inputs, to link another program with
+// the same ones (the draw's vertex array object was set up for them).
+AttributeLocations active_attribute_locations(unsigned program) {
+  AttributeLocations out;
+  GLint count = 0, longest = 0;
+  glGetProgramiv(program, GL_ACTIVE_ATTRIBUTES, &count);
+  glGetProgramiv(program, GL_ACTIVE_ATTRIBUTE_MAX_LENGTH, &longest);
+  std::vector<char> name(std::size_t(std::max(longest, 1)));
+  for (GLint i = 0; i < count; ++i) {
+    GLint size = 0;
+    GLenum type = 0;
+    glGetActiveAttrib(program, GLuint(i), GLsizei(name.size()), nullptr, &size, &type, name.data());
+    const GLint location = glGetAttribLocation(program, name.data());
+    if (location >= 0) out.push_back({name.data(), unsigned(location)});
+  }
+  return out;
 }
 
 // The evaluation shader's outputs at locations 0 and 1, which tessref's --dump-tess and the
@@ -448,6 +481,100 @@ std::vector<TessOutputVertex> SceneRenderer::capture_tess() {
       throw GlError("SceneRenderer::capture_tess: vertex " + std::to_string(i) + " tagged with patch " +
                     std::to_string(out[i].patch) + " out of order");
   }
+  return out;
+}
+
+std::vector<TessDumpRecord> SceneRenderer::capture_draws_tess() {
+  if (!draws_) throw GlError("SceneRenderer::capture_draws_tess: the scene has no draws");
+  context_.make_current();
+  const std::vector<std::vector<CallPatches>> numbering = patch_numbering(scene_, load_buffers(scene_));
+  std::vector<TessDumpRecord> out;
+  constexpr int kWords = 8;  // gl_Position 4, gl_TessCoord 3, gl_PrimitiveID 1
+  GLuint feedback = 0, queries[2] = {0, 0};
+  glGenBuffers(1, &feedback);
+  glGenQueries(2, queries);
+  std::size_t capacity = 0;
+  glEnable(GL_RASTERIZER_DISCARD);
+  try {
+    for (std::size_t d = 0; d < scene_.draws.size(); ++d) {
+      const DrawSetting& draw = scene_.draws[d];
+      if (draw.mode != DrawMode::Patches) continue;
+      const ShaderSettings& shaders = draw.shaders ? *draw.shaders : scene_.shaders;
+      const unsigned own = draw.shaders ? draw_programs_[d].id() : program_.id();
+      Program program = link_program(draw_capture_stages(scene_, shaders),
+                                     FeedbackVaryings{{"gl_Position", kCaptureTessCoord, kCapturePrimitive}, true},
+                                     active_attribute_locations(own));
+      set_uniforms(program, shaders);
+      const GlTextures* textures = draw.shaders ? draw_textures_[d].get() : textures_.get();
+      if (textures) textures->set_samplers(program.id());
+      GLint mode = 0, point_mode = 0;
+      glGetProgramiv(program.id(), GL_TESS_GEN_MODE, &mode);
+      glGetProgramiv(program.id(), GL_TESS_GEN_POINT_MODE, &point_mode);
+      const GLenum primitive = point_mode ? GL_POINTS : mode == GL_ISOLINES ? GL_LINES : GL_TRIANGLES;
+      const std::size_t per_primitive = primitive == GL_POINTS ? 1 : primitive == GL_LINES ? 2 : 3;
+      const GLint offset = glGetUniformLocation(program.id(), kCaptureInstanceOffset);
+      draws_->bind(d, program.id());
+      glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, feedback);
+      for (std::size_t c = 0; c < draw.calls.size(); ++c) {
+        const CallPatches& patches = numbering[d][c];
+        for (std::uint32_t i = 0; i < patches.instances; ++i) {
+          GLuint generated = 0, written = 0;
+          // The stream's size is known only afterwards: an overflow is drawn again, larger.
+          for (std::size_t words = std::max<std::size_t>(capacity, 1 << 16);; words = std::size_t(generated) * per_primitive * kWords) {
+            if (words > capacity) {
+              glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, GLsizeiptr(words * 4), nullptr, GL_STREAM_READ);
+              capacity = words;
+            }
+            if (offset >= 0) glUniform1i(offset, GLint(i));
+            glBeginQuery(GL_PRIMITIVES_GENERATED, queries[0]);
+            glBeginQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, queries[1]);
+            glBeginTransformFeedback(primitive);
+            draws_->draw_instance(d, c, i);
+            glEndTransformFeedback();
+            glEndQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
+            glEndQuery(GL_PRIMITIVES_GENERATED);
+            glGetQueryObjectuiv(queries[0], GL_QUERY_RESULT, &generated);
+            glGetQueryObjectuiv(queries[1], GL_QUERY_RESULT, &written);
+            if (written == generated) break;
+          }
+          std::vector<std::uint32_t> words(std::size_t(written) * per_primitive * kWords);
+          if (!words.empty())
+            glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0, GLsizeiptr(words.size() * 4), words.data());
+          check_gl((draw.key + ": capturing the evaluation shader's outputs").c_str());
+          // Patches come out in order, each contiguous: gl_PrimitiveID only grows within an
+          // instance. Anything else cannot be numbered as tessref numbers patches.
+          std::int64_t last = -1;
+          for (std::size_t v = 0; v < words.size() / kWords; ++v) {
+            const std::uint32_t* w = &words[v * kWords];
+            TessDumpRecord r;
+            std::memcpy(&r.clip, w, 16);
+            std::memcpy(&r.tess_coord, w + 4, 12);
+            const auto id = std::int32_t(w[7]);
+            if (id < last || id < 0 || std::uint32_t(id) >= patches.per_instance)
+              throw GlError(draw.key + ".calls[" + std::to_string(c) + "]: the driver's vertex " + std::to_string(v) +
+                            " of instance " + std::to_string(i) + " has gl_PrimitiveID " + std::to_string(id) +
+                            (id < last ? " after " + std::to_string(last) : std::string()) + " (the call has " +
+                            std::to_string(patches.per_instance) +
+                            " patches an instance; Mesa's draw module restarts gl_PrimitiveID every 1,023 indices, "
+                            "so draw at most " + std::to_string(max_patches_per_draw(draw.patch_vertices)) +
+                            " patches a call to capture it)");
+            last = id;
+            r.patch_id = patches.first_patch + i * patches.per_instance + std::uint32_t(id);
+            out.push_back(r);
+          }
+        }
+      }
+      draws_->unbind();
+    }
+  } catch (...) {
+    glDisable(GL_RASTERIZER_DISCARD);
+    glDeleteQueries(2, queries);
+    glDeleteBuffers(1, &feedback);
+    throw;
+  }
+  glDisable(GL_RASTERIZER_DISCARD);
+  glDeleteQueries(2, queries);
+  glDeleteBuffers(1, &feedback);
   return out;
 }
 

@@ -91,6 +91,13 @@ class SceneRenderer {
   // split and checked). Throws GlError when the scene does not tessellate.
   std::vector<TessOutputVertex> capture_tess();
 
+  // A scene of draws: what every tessellated draw's evaluation shader emits, one record per
+  // emitted vertex in emission order (rasterizer discard, instances one at a time): gl_TessCoord,
+  // gl_Position in TessDumpRecord::clip, and the patch id tessref gives the patch
+  // (pipeline/draw_scene.h patch_numbering). The user's stages are wrapped, not read
+  // (glref/capture_wrap.h). GlError when the driver's stream cannot be told apart into patches.
+  std::vector<TessDumpRecord> capture_draws_tess();
+
   const SceneRenderStats& last_stats() const { return stats_; }
   const glm::mat4& view_projection() const { return view_projection_; }
 

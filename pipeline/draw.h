@@ -52,15 +52,26 @@ struct DrawOptions {
   // Tessellation: receives each chunk's triangles with their vertices' records (the batch is
   // indexed; vertex k of the batch is record k), before dump_tess, on the calling thread.
   std::function<void(const std::vector<TessDumpRecord>&, const TriangleBatch&)> tess_surface;
+  // A scene of draws: each batch of untessellated triangles (GL_TRIANGLES, strips, fans), with
+  // the vertex shader's gl_Position, before it is rasterized, on the calling thread.
+  std::function<void(const TriangleBatch&)> untessellated_triangles;
+  // A scene of draws: called with each draw's index (into Scene::draws) before it is drawn.
+  std::function<void(std::size_t)> begin_draw;
+  // A scene of draws, isolines and point mode: each chunk's records and the vertices its lines
+  // or points emit, as indices into them, before dump_tess, on the calling thread.
+  std::function<void(const std::vector<TessDumpRecord>&, const std::vector<std::uint32_t>&)> tess_lines_points;
   // `render --check`: every stage's outputs tested for NaN and infinity; the first offence throws
   // CheckOffence. Null: nothing is tested and nothing is added to the draw's work.
   Checker* check = nullptr;
 
   // Whether the executor must keep every TES invocation's record (dump_tess, tess_surface, check).
-  bool wants_tess_records() const { return dump_tess || tess_surface || check; }
+  bool wants_tess_records() const { return dump_tess || tess_surface || tess_lines_points || check; }
   // Hands one drawn chunk's records to tess_surface and dump_tess, then empties them for the next.
-  void hand_out_tess_chunk(std::vector<TessDumpRecord>& records, const TriangleBatch& batch) const {
-    if (tess_surface) tess_surface(records, batch);
+  void hand_out_tess_chunk(std::vector<TessDumpRecord>& records, const TriangleBatch& batch,
+                           std::vector<std::uint32_t>* emitted = nullptr) const {
+    if (emitted && !emitted->empty() && tess_lines_points) tess_lines_points(records, *emitted);
+    if (emitted) emitted->clear();
+    if (tess_surface && batch.triangle_count()) tess_surface(records, batch);
     if (dump_tess) dump_tess(records);
     records.clear();
   }

@@ -133,7 +133,42 @@ void bind_uniform_buffers(const Scene& scene, const DrawSetting& d, const std::v
   }
 }
 
+// The primitives of one call: its vertices fetched and assembled (InputError naming the scene).
+std::vector<std::uint32_t> call_primitives(const Scene& scene, const DrawSetting& d, const std::vector<draw::Buffer>& buffers,
+                                           const std::vector<draw::VertexArray>& arrays, const draw::DrawCall& c,
+                                           draw::VertexInput& input) {
+  try {
+    input = draw::fetch_vertices(buffers, arrays, d.elements, d.restart, c, d.rules);
+  } catch (const InputError& e) {
+    throw InputError(scene.source + ": " + e.what());
+  }
+  return assemble(d.mode, d.patch_vertices, input.runs);
+}
+
+std::uint32_t patches_per_instance(const DrawSetting& d, const std::vector<std::uint32_t>& primitives) {
+  return d.mode == DrawMode::Patches ? std::uint32_t(primitives.size() / std::size_t(d.patch_vertices)) : 0;
+}
+
 }  // namespace
+
+std::vector<std::vector<CallPatches>> patch_numbering(const Scene& scene, const std::vector<draw::Buffer>& buffers) {
+  std::vector<std::vector<CallPatches>> out(scene.draws.size());
+  std::uint32_t next = 0;
+  for (std::size_t i = 0; i < scene.draws.size(); ++i) {
+    const DrawSetting& d = scene.draws[i];
+    for (const draw::DrawCall& c : d.calls) {
+      draw::VertexInput input;
+      // Locations do not change which vertices are fetched: the arrays as the scene gives them.
+      std::vector<draw::VertexArray> arrays;
+      for (const VertexArraySetting& s : d.vertex_arrays) arrays.push_back(s.array);
+      const CallPatches p{next, patches_per_instance(d, call_primitives(scene, d, buffers, arrays, c, input)),
+                          c.instance_count};
+      out[i].push_back(p);
+      next += p.per_instance * p.instances;
+    }
+  }
+  return out;
+}
 
 DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& parallel, const DrawOptions& options) {
   const std::vector<draw::Buffer> buffers = load_buffers(scene);
@@ -147,20 +182,19 @@ DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& 
   }
   DrawStats stats;
   UniformBindings uniform_bindings;
+  std::uint32_t next_patch = 0;
   for (std::size_t i = 0; i < scene.draws.size(); ++i) {
     const DrawSetting& d = scene.draws[i];
+    if (options.begin_draw) options.begin_draw(i);
     glsl::GlslProgram& program = own[i].program ? *own[i].program : *shared.program;
     bind_uniform_buffers(scene, d, buffers, uniform_bindings, program);
     const std::vector<draw::VertexArray> arrays = resolve_arrays(scene, d, program);
     const RasterState& state = d.raster;
     for (const draw::DrawCall& c : d.calls) {
       draw::VertexInput input;
-      try {
-        input = draw::fetch_vertices(buffers, arrays, d.elements, d.restart, c, d.rules);
-      } catch (const InputError& e) {
-        throw InputError(scene.source + ": " + e.what());
-      }
-      const std::vector<std::uint32_t> indices = assemble(d.mode, d.patch_vertices, input.runs);
+      const std::vector<std::uint32_t> indices = call_primitives(scene, d, buffers, arrays, c, input);
+      const std::uint32_t first_patch = next_patch;
+      next_patch += patches_per_instance(d, indices) * c.instance_count;
       if (indices.empty() || c.instance_count == 0) continue;
       GlslDrawCall call;
       call.indices = indices;
@@ -172,6 +206,7 @@ DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& 
       call.patch_vertices = d.patch_vertices;
       call.default_outer = d.default_outer;
       call.default_inner = d.default_inner;
+      call.first_patch_id = first_patch;
       if (!input.instanced.empty())
         call.instance_attributes = [&](int instance, std::vector<glsl::VertexAttribute>& out) {
           draw::fetch_instanced(buffers, arrays, input, c, std::uint32_t(instance), d.rules, out);

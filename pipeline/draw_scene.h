@@ -23,6 +23,16 @@ int primitive_corners(DrawMode mode);
 std::vector<std::uint32_t> assemble(DrawMode mode, int patch_vertices,
                                     const std::vector<std::vector<std::uint32_t>>& runs);
 
+// The patch ids a scene of draws gives its patches (GlslDrawCall::first_patch_id): counted over
+// the draws, their calls and instances in order, gl_PrimitiveID within an instance. For each draw,
+// each call's first id and patches per instance (0 for an untessellated draw).
+struct CallPatches {
+  std::uint32_t first_patch = 0;
+  std::uint32_t per_instance = 0;
+  std::uint32_t instances = 0;
+};
+std::vector<std::vector<CallPatches>> patch_numbering(const Scene& scene, const std::vector<draw::Buffer>& buffers);
+
 // Draws every draw of the scene into fb (already cleared): a draw with its own `shaders` with its
 // program, the others with the scene's (all compiled before the first draw, so a broken one
 // draws nothing).

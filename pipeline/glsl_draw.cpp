@@ -38,7 +38,7 @@ RasterStats draw_batch(const PointBatch& b, const RasterState& s, const Fragment
 template <class Batch>
 void draw_primitive_list(const glsl::GlslProgram& program, const std::vector<StageVertex>& shaded,
                          const GlslDrawCall& call, const RasterState& state, const FragmentProgram& fs,
-                         Framebuffer& fb, const Parallel& parallel, DrawStats& stats, Checker* check) {
+                         Framebuffer& fb, const Parallel& parallel, DrawStats& stats, const DrawOptions& options) {
   constexpr std::size_t kCorners = Batch::kCorners;
   const std::size_t corners = call.indices.empty() ? call.count : call.indices.size();
   const std::size_t primitives = corners / kCorners;
@@ -60,9 +60,11 @@ void draw_primitive_list(const glsl::GlslProgram& program, const std::vector<Sta
     }
     const auto t = Clock::now();
     stats.triangles_generated += n;
+    if constexpr (kCorners == 3)
+      if (options.untessellated_triangles) options.untessellated_triangles(batch);
     stats.raster += draw_batch(batch, state, fs, fb, parallel);
     stats.raster_seconds += seconds_since(t);
-    if (check) check->after_raster();
+    if (options.check) options.check->after_raster();
   }
 }
 
@@ -116,7 +118,9 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
   std::vector<TessDumpRecord> records;
   TessOptions tess_options;
   tess_options.patches_per_task = 4;
+  std::vector<std::uint32_t> emitted;  // isolines and point mode, into records
   if (options.wants_tess_records()) tess_options.dump = &records;
+  if (options.tess_lines_points) tess_options.dump_emitted = &emitted;
   // Isolines and point mode: the tessellator hands their vertices over here, chunk by chunk.
   std::vector<ClipVertex> lines, points;
   tess_options.lines = &lines;
@@ -150,9 +154,9 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
     if (!call.patches) {
       stats.triangles_in += (indexed ? call.indices.size() : call.count) / std::size_t(call.corners);
       switch (call.corners) {
-        case 1: draw_primitive_list<PointBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options.check); break;
-        case 2: draw_primitive_list<LineBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options.check); break;
-        default: draw_primitive_list<TriangleBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options.check);
+        case 1: draw_primitive_list<PointBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options); break;
+        case 2: draw_primitive_list<LineBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options); break;
+        default: draw_primitive_list<TriangleBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options);
       }
       continue;
     }
@@ -176,7 +180,10 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
       draw_tess_primitives<PointBatch>(points, *tes, raster_state, *fs, fb, par, stats);
       stats.raster_seconds += seconds_since(r0);
       if (options.check) options.check->after_raster();
-      options.hand_out_tess_chunk(records, batch);
+      const std::uint32_t first_id = call.first_patch_id + std::uint32_t(instance) * std::uint32_t(patches);
+      if (first_id)
+        for (TessDumpRecord& r : records) r.patch_id += first_id;
+      options.hand_out_tess_chunk(records, batch, &emitted);
       done = std::min(patches, done + chunk);
       if (options.progress)
         options.progress((double(instance) + double(done) / double(std::max<std::size_t>(1, patches))) /

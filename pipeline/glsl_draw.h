@@ -29,6 +29,9 @@ struct GlslDrawCall {
   int patch_vertices = 3;            // GL_PATCH_VERTICES
   glm::vec4 default_outer{1.0f};     // GL_PATCH_DEFAULT_OUTER_LEVEL (no control shader)
   glm::vec2 default_inner{1.0f};     // GL_PATCH_DEFAULT_INNER_LEVEL
+  // The tessellation records' patch ids: first_patch_id + instance * patches per instance +
+  // gl_PrimitiveID, so that every patch of a scene's draw has its own.
+  std::uint32_t first_patch_id = 0;
 };
 
 // Draws into fb. A partial last primitive is ignored, as in GL. Throws glsl::StageError when a

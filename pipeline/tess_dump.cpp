@@ -91,4 +91,12 @@ std::vector<TessDumpRecord> read_tess_dump(const std::string& path) {
   return records;
 }
 
+std::vector<TessDumpRecord> as_clip_records(std::vector<TessDumpRecord> records) {
+  for (TessDumpRecord& r : records) {
+    r.position = glm::vec3(r.clip);
+    r.normal = glm::vec3(r.clip.w, 0.0f, 0.0f);
+  }
+  return records;
+}
+
 }  // namespace tessref

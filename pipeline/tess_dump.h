@@ -42,6 +42,10 @@ class TessDumpWriter {
   std::uint64_t bytes_ = 0;
 };
 
+// A scene of draws keeps gl_Position in a dump's records, as the user's outputs mean nothing to
+// tessref: position = clip.xyz, normal = (clip.w, 0, 0).
+std::vector<TessDumpRecord> as_clip_records(std::vector<TessDumpRecord> records);
+
 // Reads a binary dump back (InputError naming the file when it is not one, or is cut short).
 std::vector<TessDumpRecord> read_tess_dump(const std::string& path);
 

@@ -82,6 +82,7 @@ struct TaskScratch {
   std::vector<ClipVertex> lines;
   std::vector<ClipVertex> points;
   std::vector<TessDumpRecord> dump;
+  std::vector<std::uint32_t> dump_emitted;  // into dump
   TessStats stats;
   std::vector<Patch> patches;  // gl_in[] of up to kControlBatch patches for one run_patches
   // The last lookup: neighbouring patches usually share their levels.
@@ -202,10 +203,12 @@ void evaluate_patch(const TessEvalProgram& tes, const PatchOutput& patch, int pr
 void append_dump(std::uint32_t patch_id, const TessPattern& pattern, const ClipVertex* v,
                  int records, std::array<int, 2> at, std::vector<TessDumpRecord>& dump) {
   for (std::size_t i = 0; i < pattern.points.coords.size(); ++i) {
-    const float* vy = reinterpret_cast<const float*>(v + i * std::size_t(records)) + 4;
+    const float* pos = reinterpret_cast<const float*>(v + i * std::size_t(records));
+    const float* vy = pos + 4;
     dump.push_back(TessDumpRecord{patch_id, pattern.points.coords[i],
                                   glm::vec3(vy[at[0]], vy[at[0] + 1], vy[at[0] + 2]),
-                                  glm::vec3(vy[at[1]], vy[at[1] + 1], vy[at[1] + 2])});
+                                  glm::vec3(vy[at[1]], vy[at[1] + 1], vy[at[1] + 2]),
+                                  glm::vec4(pos[0], pos[1], pos[2], pos[3])});
   }
 }
 
@@ -238,6 +241,7 @@ void evaluate_task(std::size_t range_first, std::size_t first, std::size_t last,
     evaluate_patch(tes, patch, int(p), pattern, nv, evaluated);
     task.stats.tes_seconds += seconds_since(t0);
     task.stats.domain_points += n;
+    const auto dump_base = std::uint32_t(task.dump.size());
     if (options.dump)
       append_dump(std::uint32_t(p), pattern, evaluated, int(records), dump_at, task.dump);
 
@@ -251,6 +255,8 @@ void evaluate_task(std::size_t range_first, std::size_t first, std::size_t last,
       for (std::size_t i = 0; i < used; ++i) dst[i] = base + domain.indices[i];
       continue;
     }
+    if (options.dump && options.dump_emitted)
+      for (std::size_t i = 0; i < used; ++i) task.dump_emitted.push_back(dump_base + domain.indices[i]);
     std::vector<ClipVertex>* sink = nullptr;
     if (domain.vertices_per_primitive == 2) {
       task.stats.lines_out += prims;
@@ -301,6 +307,7 @@ void clear(TaskScratch& t) {
   t.lines.clear();
   t.points.clear();
   t.dump.clear();
+  t.dump_emitted.clear();
   t.stats = TessStats{};
 }
 
@@ -378,6 +385,10 @@ TessStats tessellate_range(const TessDrawInput& input, std::size_t first_patch,
     const TaskScratch& r = ex.tasks[t];
     if (options.lines) append(*options.lines, r.lines);
     if (options.points) append(*options.points, r.points);
+    if (options.dump && options.dump_emitted) {
+      const auto base = std::uint32_t(options.dump->size());
+      for (std::uint32_t i : r.dump_emitted) options.dump_emitted->push_back(base + i);
+    }
     if (options.dump) append(*options.dump, r.dump);
     stats += r.stats;
   }

@@ -136,6 +136,7 @@ struct TessDumpRecord {
   glm::vec3 tess_coord{0.0f};
   glm::vec3 position{0.0f};    // varyings[0..2]
   glm::vec3 normal{0.0f};      // varyings[3..5]
+  glm::vec4 clip{0.0f};        // gl_Position (not in the dump files)
 };
 
 struct TessStats {
@@ -160,6 +161,9 @@ struct TessOptions {
   std::size_t patches_per_task = 32;
   // Optional: every TES invocation's record, in patch order then generation order.
   std::vector<TessDumpRecord>* dump = nullptr;
+  // Optional, with dump: the vertices isolines and point mode emit, in emission order, as indices
+  // into *dump (triangles: the batch's indices).
+  std::vector<std::uint32_t>* dump_emitted = nullptr;
   // Optional: isoline segments (2 vertices each) and points (1 each) in emission order, for TES
   // layouts that do not produce triangles, each vertex as vertex_records(tes.num_varyings())
   // records (a LineBatch's or PointBatch's vertices). Without them such primitives are only

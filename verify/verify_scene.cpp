@@ -5,14 +5,17 @@
 #include <cstdio>
 #include <filesystem>
 #include <iterator>
+#include <memory>
 
 #include "common/error.h"
 #include "pipeline/camera.h"
+#include "pipeline/draw_scene.h"
 #include "pipeline/mesh_source.h"
 #include "pipeline/render.h"
 #include "pipeline/scene_loader.h"
 #include "verify/compare.h"
 #include "verify/cracks.h"
+#include "verify/drawn_surfaces.h"
 #include "verify/silhouette.h"
 #include "verify/surface_distance.h"
 
@@ -105,28 +108,55 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
   const Mesh mesh = build_mesh(scene.mesh, warnings);
   scene.camera = fitted_camera(scene, mesh);
 
+  // A scene of draws is compared through gl_Position and gl_TessCoord alone (drawn_surfaces.h);
+  // the mesh path through the world-space position and normal its programs output.
+  const bool of_draws = !scene.draws.empty();
   TessSurface mine;
+  DrawnSurfaces drawn;
   DrawOptions options;
-  if (scene.tessellation.enabled)
+  bool tessellates = scene.tessellation.enabled;
+  if (of_draws) {
+    const std::vector<std::vector<CallPatches>> numbering = patch_numbering(scene, load_buffers(scene));
+    observe_draws(scene, numbering, options, drawn);
+    tessellates = !drawn.triangle_patch.empty();
+  } else if (scene.tessellation.enabled) {
     options.tess_surface = [&](const std::vector<TessDumpRecord>& r, const TriangleBatch& b) { mine.append(r, b); };
+  }
   const RenderResult result = render_scene(scene, mesh, parallel, options);
-  if (!scene.tessellation.enabled) mine = mesh_surface(scene, mesh);
-  const double diagonal = mine.diagonal();
+  if (of_draws) {
+    finish_observing(scene, drawn);
+    mine = std::move(drawn.tessellated);
+  }
+  else if (!scene.tessellation.enabled) mine = mesh_surface(scene, mesh);
+  const std::vector<TessDumpRecord>& my_records = of_draws ? drawn.tess : mine.points;
+  const std::vector<std::uint32_t>& my_emitted = of_draws ? drawn.emitted : mine.indices;
+  // Positions are compared in the records' own space (world, or clip for draws), surfaces in theirs.
+  double diagonal = of_draws ? (drawn.triangles.indices.empty() ? 1.0 : drawn.triangles.diagonal()) : mine.diagonal();
+  double record_diagonal = diagonal;
+  if (of_draws && !drawn.tess.empty()) {
+    glm::dvec3 lo(INFINITY), hi(-INFINITY);
+    for (const TessDumpRecord& r : drawn.tess) lo = glm::min(lo, glm::dvec3(r.position)), hi = glm::max(hi, glm::dvec3(r.position));
+    record_diagonal = glm::length(hi - lo) > 0.0 ? glm::length(hi - lo) : 1.0;
+  }
   j["diagonal"] = diagonal;
+  if (of_draws) {
+    j["space"] = "normalized device coordinates (gl_Position / w); tessellation records in clip space";
+    j["triangles_behind_eye"] = drawn.behind_eye;
+  }
   double severity = 0.0;  // the largest measured / limit; above 1 fails
   const auto rate = [&](double measured, double limit) { severity = std::max(severity, measured / limit); };
 
   // gl_TessCoord streams and the values at them: in full for the patches tess.bin holds, by
   // digest for every patch.
-  const bool tessellated = scene.tessellation.enabled && (!ref.tess.empty() || !ref.digests.empty());
+  const bool tessellated = tessellates && (!ref.tess.empty() || !ref.digests.empty());
   if (tessellated) {
     std::vector<TessDumpRecord> compared_points;
     if (ref.patch_stride > 1)
-      std::copy_if(mine.points.begin(), mine.points.end(), std::back_inserter(compared_points),
+      std::copy_if(my_records.begin(), my_records.end(), std::back_inserter(compared_points),
                    [&](const TessDumpRecord& r) { return ref.sampled(r.patch_id); });
-    TessComparison t = compare_tess(ref.tess, ref.patch_stride > 1 ? compared_points : mine.points);
+    TessComparison t = compare_tess(ref.tess, ref.patch_stride > 1 ? compared_points : my_records);
     if (!ref.digests.empty()) {
-      const std::vector<TessPatchDigest> digests = digest_patches(mine.points, mine.indices);
+      const std::vector<TessPatchDigest> digests = digest_patches(my_records, my_emitted);
       // Either finding counts: the digests cover every patch, the records the sampled ones (and
       // a tess.bin edited without its digests).
       std::vector<std::uint32_t> differ, by_digest = compare_digests(ref.digests, digests);
@@ -139,7 +169,7 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
       t.reference_vertices = 0;
       for (const TessPatchDigest& d : ref.digests) t.reference_vertices += d.emitted;
     }
-    const double position = t.max_position_distance / diagonal;
+    const double position = t.max_position_distance / record_diagonal;
     j["tessellation"] = {{"patches", t.patches}, {"patches_mismatched", t.patches_mismatched},
                          {"first_mismatched_patch", t.first_mismatched_patch},
                          {"emitted_vertices", t.reference_vertices}, {"unmatched_vertices", t.unmatched_vertices},
@@ -148,7 +178,7 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
                          {"max_normal_ulp", t.max_normal_ulp}, {"max_position_difference_of_diagonal", position},
                          {"patch_stride", ref.patch_stride}, {"records_compared", ref.tess.size()}};
     // Order is the implementation's choice: reported, not failed.
-    const std::vector<std::uint32_t> order = emission_order_differs(ref.tess, mine.points, mine.indices);
+    const std::vector<std::uint32_t> order = emission_order_differs(ref.tess, my_records, my_emitted);
     std::size_t compared = 0;
     for (std::size_t i = 0; i < ref.tess.size(); ++i) compared += i == 0 || ref.tess[i].patch_id != ref.tess[i - 1].patch_id;
     j["tessellation"]["order_compared_patches"] = compared;
@@ -165,8 +195,8 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
 
   const SurfaceOracle mine_oracle(mine);
   // Two-sided distance between the surfaces.
-  if (tessellated) {
-    const TessSurface theirs = TessSurface::from_emitted(ref.tess);
+  if (tessellated && !mine.indices.empty()) {
+    const TessSurface theirs = of_draws ? captured_triangles(ref.tess, drawn.triangle_patch) : TessSurface::from_emitted(ref.tess);
     const SurfaceOracle their_oracle(theirs);
     const SurfaceDistance d = surface_distance(
         theirs, their_oracle, mine, mine_oracle, parallel,
@@ -196,24 +226,37 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
     throw InputError(reference + ": the capture is " + std::to_string(ref.depth.width) + "x" +
                      std::to_string(ref.depth.height) + ", the scene renders " + std::to_string(scene.width) + "x" +
                      std::to_string(scene.height));
-  const glm::mat4 view_projection = projection_matrix(scene.camera, scene.width, scene.height) * view_matrix(scene.camera);
-  const SilhouetteComparison s = compare_silhouette(ref.depth, mine, mine_oracle, view_projection, scene.cull_back_faces, parallel);
-  std::uint64_t beyond = 0;
-  for (std::size_t i = 0; i < s.distance.size(); ++i) beyond += s.distance[i] > limits.silhouette_px;
-  nlohmann::json buckets = nlohmann::json::object();
-  for (std::size_t b = 0; b < s.by_distance.size(); ++b)
-    if (s.by_distance[b]) buckets[kSilhouetteBuckets[b]] = s.by_distance[b];
-  j["silhouette"] = {{"covered_reference", s.covered_reference}, {"covered_rays", s.covered_rays},
-                     {"mismatched", s.mismatched}, {"beyond_limit", beyond}, {"max_distance_px", s.max_distance},
-                     {"by_distance_px", buckets}, {"silhouette_edges", s.silhouette_edges},
-                     {"worst_pixels", s.worst_pixels}};
-  if (beyond) {
-    failures.push_back(std::to_string(beyond) + " coverage mismatches farther than " +
-                       std::to_string(limits.silhouette_px).substr(0, 3) + " px from the silhouette (worst at pixel " +
-                       std::to_string(s.worst_pixels[0][0]) + "," + std::to_string(s.worst_pixels[0][1]) + ", " +
-                       std::to_string(s.max_distance) + " px)");
+  SilhouetteComparison s;
+  if (of_draws && !drawn.silhouette_unavailable.empty()) {
+    j["silhouette"] = {{"examined", false}, {"why", drawn.silhouette_unavailable}};
+  } else {
+    // Draws: the surfaces' space seen along -z (NDC's z flipped), every pixel's ray parallel.
+    const glm::mat4 view_projection =
+        of_draws ? glm::mat4(glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, -1, 0), glm::vec4(0, 0, 0, 1))
+                 : projection_matrix(scene.camera, scene.width, scene.height) * view_matrix(scene.camera);
+    const TessSurface& surface = of_draws ? drawn.triangles : mine;
+    std::unique_ptr<SurfaceOracle> drawn_oracle;
+    if (of_draws) drawn_oracle = std::make_unique<SurfaceOracle>(surface);
+    const SurfaceOracle& oracle = of_draws ? *drawn_oracle : mine_oracle;
+    s = compare_silhouette(ref.depth, surface, oracle, view_projection, of_draws ? drawn.cull_back : scene.cull_back_faces,
+                           parallel);
+    std::uint64_t beyond = 0;
+    for (std::size_t i = 0; i < s.distance.size(); ++i) beyond += s.distance[i] > limits.silhouette_px;
+    nlohmann::json buckets = nlohmann::json::object();
+    for (std::size_t b = 0; b < s.by_distance.size(); ++b)
+      if (s.by_distance[b]) buckets[kSilhouetteBuckets[b]] = s.by_distance[b];
+    j["silhouette"] = {{"examined", true}, {"covered_reference", s.covered_reference}, {"covered_rays", s.covered_rays},
+                       {"mismatched", s.mismatched}, {"beyond_limit", beyond}, {"max_distance_px", s.max_distance},
+                       {"by_distance_px", buckets}, {"silhouette_edges", s.silhouette_edges},
+                       {"worst_pixels", s.worst_pixels}};
+    if (beyond) {
+      failures.push_back(std::to_string(beyond) + " coverage mismatches farther than " +
+                         std::to_string(limits.silhouette_px).substr(0, 3) + " px from the silhouette (worst at pixel " +
+                         std::to_string(s.worst_pixels[0][0]) + "," + std::to_string(s.worst_pixels[0][1]) + ", " +
+                         std::to_string(s.max_distance) + " px)");
+    }
+    rate(s.max_distance, limits.silhouette_px);
   }
-  rate(s.max_distance, limits.silhouette_px);
 
   // The rasterizer's coverage against the driver's, pixel for pixel.
   const CoverageComparison coverage = compare_coverage(ref.depth, result.framebuffer);
@@ -222,7 +265,7 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
                    {"mismatched_by_distance", coverage.by_distance}};
 
   // Cracks between tessref's patches.
-  if (scene.tessellation.enabled) {
+  if (tessellates && !mine.indices.empty()) {
     const CrackReport c = find_cracks(mine, mine_oracle, parallel);
     nlohmann::json worst = nlohmann::json::array();
     for (std::size_t k = 0; k < std::min<std::size_t>(10, c.cracked.size()); ++k)
@@ -267,6 +310,7 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
   j["severity"] = severity;
   out.report = std::move(j);
   out.difference = difference_image(ref.color, out.tessref);
+  if (s.distance.empty()) s.distance.assign(ref.depth.pixels.size(), -1.0f);  // not examined
   out.heat = heat_image(s, ref.depth, limits.silhouette_px);
   return out;
 }
@@ -308,13 +352,17 @@ std::string verify_summary(const nlohmann::json& j) {
     out += buf;
   }
   const auto& s = j["silhouette"];
-  std::snprintf(buf, sizeof buf,
-                "  silhouette (Embree rays): %llu pixels covered by the driver, %llu by the rays; %llu differ, the "
-                "farthest %.3f px from the silhouette, %llu beyond the limit\n",
-                s["covered_reference"].get<unsigned long long>(), s["covered_rays"].get<unsigned long long>(),
-                s["mismatched"].get<unsigned long long>(), s["max_distance_px"].get<double>(),
-                s["beyond_limit"].get<unsigned long long>());
-  out += buf;
+  if (!s["examined"].get<bool>()) {
+    out += "  silhouette (Embree rays): not examined: " + s["why"].get<std::string>() + "\n";
+  } else {
+    std::snprintf(buf, sizeof buf,
+                  "  silhouette (Embree rays): %llu pixels covered by the driver, %llu by the rays; %llu differ, the "
+                  "farthest %.3f px from the silhouette, %llu beyond the limit\n",
+                  s["covered_reference"].get<unsigned long long>(), s["covered_rays"].get<unsigned long long>(),
+                  s["mismatched"].get<unsigned long long>(), s["max_distance_px"].get<double>(),
+                  s["beyond_limit"].get<unsigned long long>());
+    out += buf;
+  }
   const auto& c = j["coverage"];
   std::snprintf(buf, sizeof buf, "  raster coverage: %llu pixels differ from the driver's, %llu more than one pixel from the silhouette\n",
                 c["mismatched"].get<unsigned long long>(), c["off_silhouette"].get<unsigned long long>());
