@@ -4,6 +4,7 @@
 #include <charconv>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <memory>
 #include <optional>
@@ -33,7 +34,7 @@ struct InspectArgs {
   std::string trace_stages = "all";
   int threads = 0;
   std::vector<std::string> sets;
-  long long patch = -1, vertex = -1;
+  long long patch = -1, vertex = -1, draw = -1;
 };
 
 // %.9g: a float printed so that it reads back as the same bits.
@@ -48,6 +49,44 @@ std::string vec(const glm::vec<N, float>& v) {
   for (int i = 0; i < N; ++i) s += (i ? ", " : "") + g9(v[i]);
   return s + ")";
 }
+// A draws scene's vertex input as its scalar type reads: floats, ints, uints or doubles.
+std::vector<std::string> input_values(const InspectInput& in) {
+  std::vector<std::string> out;
+  const std::size_t step = in.scalar == shader::Scalar::F64 ? 2 : 1;
+  for (std::size_t i = 0; i + step <= in.words.size(); i += step) {
+    const std::uint32_t w = in.words[i];
+    char buf[40];
+    switch (in.scalar) {
+      case shader::Scalar::I32: std::snprintf(buf, sizeof buf, "%d", int(std::int32_t(w))); break;
+      case shader::Scalar::U32:
+      case shader::Scalar::Bool: std::snprintf(buf, sizeof buf, "%u", w); break;
+      case shader::Scalar::F64: {
+        const std::uint64_t b = std::uint64_t(w) | std::uint64_t(in.words[i + 1]) << 32;
+        double d;
+        std::memcpy(&d, &b, sizeof d);
+        std::snprintf(buf, sizeof buf, "%.17g", d);
+        break;
+      }
+      default: {
+        float f;
+        std::memcpy(&f, &w, sizeof f);
+        std::snprintf(buf, sizeof buf, "%.9g", double(f));
+      }
+    }
+    out.push_back(buf);
+  }
+  return out;
+}
+const char* scalar_name(shader::Scalar s) {
+  switch (s) {
+    case shader::Scalar::I32: return "int";
+    case shader::Scalar::U32: return "uint";
+    case shader::Scalar::F64: return "double";
+    case shader::Scalar::Bool: return "bool";
+    default: return "float";
+  }
+}
+
 // JSON numbers carry the %.9g decimal, so that any reader gets the float back by rounding.
 nlohmann::json num(float f) { return std::strtod(g9(f).c_str(), nullptr); }
 template <int N>
@@ -136,15 +175,32 @@ int rings(const InspectResult& r) {
 }
 
 void print_text(const Scene& scene, const InspectResult& r, const std::optional<PatchFragments>& frags, double seconds) {
-  std::printf("tessref inspect: %s, patch %zu of %zu (0..%zu); programs: %s\n\n", scene.source.c_str(), r.patch,
-              r.patch_count, r.patch_count - 1, r.program.c_str());
+  if (r.draw) {
+    const InspectDrawPatch& d = *r.draw;
+    std::printf("tessref inspect: %s, draws.%zu, patch %zu of %zu (0..%zu): call %zu, gl_InstanceID %d, gl_PrimitiveID "
+                "%zu; patch id %u in --dump-tess and capture files; programs: %s\n\n",
+                scene.source.c_str(), d.draw, r.patch, r.patch_count, r.patch_count - 1, d.call, d.instance,
+                d.primitive_id, d.patch_id, r.program.c_str());
+  } else {
+    std::printf("tessref inspect: %s, patch %zu of %zu (0..%zu); programs: %s\n\n", scene.source.c_str(), r.patch,
+                r.patch_count, r.patch_count - 1, r.program.c_str());
+  }
   const bool builtin = r.program.rfind("builtin", 0) == 0;
   std::printf("1. Vertex shader: the patch's %d corners (gl_in[] of the control shader)\n", r.patch_vertices);
   const int vs_slots = used_slots(r.corners);
   for (std::size_t k = 0; k < r.corners.size(); ++k) {
     const InspectCorner& c = r.corners[k];
-    std::printf("  gl_in[%zu] = mesh vertex %u: in position %s, in normal %s\n", k, c.mesh_vertex,
-                vec(c.in_position).c_str(), vec(c.in_normal).c_str());
+    if (r.draw) {
+      std::printf("  gl_in[%zu] = gl_VertexID %u\n", k, c.vertex);
+      for (const InspectInput& in : c.inputs) {
+        std::string v;
+        for (const std::string& x : input_values(in)) v += (v.empty() ? "" : ", ") + x;
+        std::printf("      in location %u (%s) (%s)\n", in.location, scalar_name(in.scalar), v.c_str());
+      }
+    } else {
+      std::printf("  gl_in[%zu] = mesh vertex %u: in position %s, in normal %s\n", k, c.vertex,
+                  vec(c.in_position).c_str(), vec(c.in_normal).c_str());
+    }
     if (c.gl_position) std::printf("      gl_Position %s\n", vec(*c.gl_position).c_str());
     for (int s = 0; s < vs_slots; ++s)
       std::printf("      %s %s\n", vs_slot_name(r, s).c_str(), vec(c.vs_out.attr[s]).c_str());
@@ -225,6 +281,9 @@ void print_text(const Scene& scene, const InspectResult& r, const std::optional<
                   f.triangle, vec(f.tess_coord).c_str(), f.visible ? "visible" : "hidden", f.x, f.y);
     }
   }
+  if (r.draw)
+    std::printf("\n%d. Fragments: not followed for a scene of draws yet (render --dump-fragments writes every fragment)\n",
+                r.traces.empty() ? 5 : 6);
   std::printf("\n(%.1f ms)\n", seconds * 1e3);
 }
 
@@ -264,7 +323,19 @@ nlohmann::json to_json(const Scene& scene, const InspectResult& r, const std::op
   json corners = json::array();
   const int vs_slots = used_slots(r.corners);
   for (const InspectCorner& c : r.corners) {
-    json j{{"mesh_vertex", c.mesh_vertex}, {"in_position", jvec(c.in_position)}, {"in_normal", jvec(c.in_normal)}};
+    json j;
+    if (r.draw) {
+      j["gl_VertexID"] = c.vertex;
+      json inputs = json::array();
+      for (const InspectInput& in : c.inputs) {
+        json v = json::array();
+        for (const std::string& x : input_values(in)) v.push_back(std::strtod(x.c_str(), nullptr));
+        inputs.push_back(json{{"location", in.location}, {"type", scalar_name(in.scalar)}, {"value", v}});
+      }
+      j["inputs"] = inputs;
+    } else {
+      j = json{{"mesh_vertex", c.vertex}, {"in_position", jvec(c.in_position)}, {"in_normal", jvec(c.in_normal)}};
+    }
     if (c.gl_position) j["gl_Position"] = jvec(*c.gl_position);
     json out = json::array();
     for (int s = 0; s < vs_slots; ++s) out.push_back(jvec(c.vs_out.attr[s]));
@@ -318,6 +389,9 @@ nlohmann::json to_json(const Scene& scene, const InspectResult& r, const std::op
               {"program", r.program},
               {"patch", r.patch},
               {"patch_count", r.patch_count},
+              {"draw", r.draw ? json{{"draw", r.draw->draw}, {"call", r.draw->call}, {"gl_InstanceID", r.draw->instance},
+                                     {"gl_PrimitiveID", r.draw->primitive_id}, {"patch_id", r.draw->patch_id}}
+                              : json()},
               {"vertex_stage", {{"corners", corners}}},
               {"control_stage",
                {{"output_vertices", r.tcs_vertices},
@@ -450,6 +524,10 @@ void run_inspect_pixel(const InspectArgs& a) {
   if (a.patch >= 0 || a.vertex >= 0 || !a.coord.empty())
     throw InputError("--pixel: give it alone (--patch, --coord and --vertex ask about a patch)");
   Scene scene = load_scene(a.scene, a.sets);
+  if (!scene.draws.empty())
+    throw InputError("--pixel: takes a scene with a mesh; for a scene of draws, ask about a patch (--draw K --patch N) "
+                     "or write every fragment with render --dump-fragments");
+  if (a.draw >= 0) throw InputError("--draw: the scene has no draws (it draws its mesh)");
   const auto [x, y] = parse_pixel(a.pixel, scene);
   std::vector<std::string> warnings;
   const Mesh mesh = build_mesh(scene.mesh, warnings);
@@ -470,12 +548,14 @@ void run_inspect(const InspectArgs& a) {
   if (!a.coord.empty() && a.vertex >= 0)
     throw InputError("--coord and --vertex: give one of them (a coordinate, or a generated point's index)");
   Scene scene = load_scene(a.scene, a.sets);
-  std::vector<std::string> warnings;
-  const Mesh mesh = build_mesh(scene.mesh, warnings);
-  for (const std::string& w : warnings) std::fprintf(stderr, "tessref: warning: %s\n", w.c_str());
-  scene.camera = fitted_camera(scene, mesh);  // as render does
-
   InspectRequest request;
+  if (a.draw >= 0) {
+    if (scene.draws.empty()) throw InputError("--draw: the scene has no draws (it draws its mesh)");
+    request.draw = std::size_t(a.draw);
+  } else if (scene.draws.size() > 1) {
+    throw InputError("--draw: required: the scene has " + std::to_string(scene.draws.size()) +
+                     " draws; say which one's patch to inspect (0.." + std::to_string(scene.draws.size() - 1) + ")");
+  }
   request.patch = std::size_t(a.patch);
   if (a.vertex >= 0) request.vertex = std::size_t(a.vertex);
   if (!a.coord.empty()) {
@@ -484,6 +564,17 @@ void run_inspect(const InspectArgs& a) {
     request.coord_has_w = c.size() == 3;
   }
   if (a.trace) request.trace = parse_trace_stages(a.trace_stages);
+  if (!scene.draws.empty()) {
+    // The fragments a draw's patch became are not tagged yet: the stages only.
+    const InspectResult r = inspect_draw_patch(scene, request);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (!a.json.empty()) return write_json(a.json, to_json(scene, r, std::nullopt));
+    return print_text(scene, r, std::nullopt, seconds);
+  }
+  std::vector<std::string> warnings;
+  const Mesh mesh = build_mesh(scene.mesh, warnings);
+  for (const std::string& w : warnings) std::fprintf(stderr, "tessref: warning: %s\n", w.c_str());
+  scene.camera = fitted_camera(scene, mesh);  // as render does
   const InspectResult r = inspect_patch(scene, mesh, request);
   std::optional<PatchFragments> frags;
   if (!a.no_fragments) {
@@ -505,7 +596,11 @@ void add_inspect_command(CLI::App& app) {
                  "generator, evaluation shader), or the fragments at one pixel, with the values the draw computes "
                  "(docs/inspect.md)");
   add_scene_options(cmd, args->scene, args->sets);
-  cmd->add_option("--patch", args->patch, "the patch (draw order, from 0) to inspect")->check(kInteger);
+  cmd->add_option("--patch", args->patch,
+                  "the patch (draw order, from 0) to inspect; a scene of draws: counted over --draw's calls and instances")
+      ->check(kInteger);
+  cmd->add_option("--draw", args->draw, "a scene of draws: the draw (from 0) whose patch to inspect (required when there are several)")
+      ->check(kInteger);
   cmd->add_option("--pixel", args->pixel,
                   "instead of a patch: the fragments the draw made at pixel X,Y (X from the left, Y down from the top "
                   "row, as the image file), with their patches and the depth test's verdicts");

@@ -170,32 +170,35 @@ std::vector<std::vector<CallPatches>> patch_numbering(const Scene& scene, const 
   return out;
 }
 
-DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& parallel, const DrawOptions& options) {
-  const std::vector<draw::Buffer> buffers = load_buffers(scene);
+SceneDraws::SceneDraws(const Scene& scene) : scene_(scene), buffers_(load_buffers(scene)), own_(scene.draws.size()) {
   // The scene's program is built once, and only if a draw has no shaders of its own (the scene
-  // format then requires it to be custom).
-  SceneProgram shared;
-  std::vector<SceneProgram> own(scene.draws.size());
+  // format then requires it to be custom). All are compiled before the first draw, so that a
+  // broken one draws nothing.
   for (std::size_t i = 0; i < scene.draws.size(); ++i) {
-    if (scene.draws[i].shaders) own[i] = build_scene_program(scene, *scene.draws[i].shaders);
-    else if (!shared.program) shared = build_scene_program(scene);
+    if (scene.draws[i].shaders) own_[i] = build_scene_program(scene, *scene.draws[i].shaders);
+    else if (!shared_.program) shared_ = build_scene_program(scene);
   }
-  DrawStats stats;
+}
+
+SceneDraws::~SceneDraws() = default;
+
+std::vector<shader::ShaderSource> SceneDraws::sources(std::size_t draw) const {
+  const DrawSetting& d = scene_.draws.at(draw);
+  return d.shaders ? scene_sources(scene_, *d.shaders) : scene_sources(scene_);
+}
+
+void SceneDraws::for_each_call(std::size_t end, const std::function<void(const PreparedCall&)>& fn) {
   UniformBindings uniform_bindings;
   std::uint32_t next_patch = 0;
-  for (std::size_t i = 0; i < scene.draws.size(); ++i) {
-    const DrawSetting& d = scene.draws[i];
-    if (options.begin_draw) options.begin_draw(i);
-    glsl::GlslProgram& program = own[i].program ? *own[i].program : *shared.program;
-    bind_uniform_buffers(scene, d, buffers, uniform_bindings, program);
-    const std::vector<draw::VertexArray> arrays = resolve_arrays(scene, d, program);
-    const RasterState& state = d.raster;
-    for (const draw::DrawCall& c : d.calls) {
+  for (std::size_t i = 0; i < std::min(end, scene_.draws.size()); ++i) {
+    const DrawSetting& d = scene_.draws[i];
+    glsl::GlslProgram& program = own_[i].program ? *own_[i].program : *shared_.program;
+    bind_uniform_buffers(scene_, d, buffers_, uniform_bindings, program);
+    const std::vector<draw::VertexArray> arrays = resolve_arrays(scene_, d, program);
+    for (std::size_t k = 0; k < d.calls.size(); ++k) {
+      const draw::DrawCall& c = d.calls[k];
       draw::VertexInput input;
-      const std::vector<std::uint32_t> indices = call_primitives(scene, d, buffers, arrays, c, input);
-      const std::uint32_t first_patch = next_patch;
-      next_patch += patches_per_instance(d, indices) * c.instance_count;
-      if (indices.empty() || c.instance_count == 0) continue;
+      const std::vector<std::uint32_t> indices = call_primitives(scene_, d, buffers_, arrays, c, input);
       GlslDrawCall call;
       call.indices = indices;
       call.vertex_ids = input.vertex_ids;
@@ -206,22 +209,35 @@ DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& 
       call.patch_vertices = d.patch_vertices;
       call.default_outer = d.default_outer;
       call.default_inner = d.default_inner;
-      call.first_patch_id = first_patch;
+      call.first_patch_id = next_patch;
+      next_patch += patches_per_instance(d, indices) * c.instance_count;
       if (!input.instanced.empty())
         call.instance_attributes = [&](int instance, std::vector<glsl::VertexAttribute>& out) {
-          draw::fetch_instanced(buffers, arrays, input, c, std::uint32_t(instance), d.rules, out);
+          draw::fetch_instanced(buffers_, arrays, input, c, std::uint32_t(instance), d.rules, out);
         };
       try {
-        stats += draw_glsl(program, input.per_vertex, call, state, fb, parallel, options);
+        fn(PreparedCall{i, k, d, program, input.per_vertex, call});
       } catch (const InputError& e) {  // an instanced array's fetch
-        throw InputError(scene.source + ": " + e.what());
+        throw InputError(scene_.source + ": " + e.what());
       } catch (const glsl::StageError& e) {
-        throw InputError(scene.source + ": " + d.key + ": " + e.what());
+        throw InputError(scene_.source + ": " + d.key + ": " + e.what());
       } catch (const std::invalid_argument& e) {
-        throw InputError(scene.source + ": " + d.key + ": " + e.what());
+        throw InputError(scene_.source + ": " + d.key + ": " + e.what());
       }
     }
   }
+}
+
+DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& parallel, const DrawOptions& options) {
+  SceneDraws draws(scene);
+  DrawStats stats;
+  std::size_t begun = scene.draws.size();
+  draws.for_each_call(scene.draws.size(), [&](const PreparedCall& p) {
+    if (p.draw != begun && options.begin_draw) options.begin_draw(p.draw);
+    begun = p.draw;
+    if (p.call.indices.empty() || p.call.instances == 0) return;
+    stats += draw_glsl(p.program, p.attributes, p.call, p.setting.raster, fb, parallel, options);
+  });
   return stats;
 }
 

@@ -2,10 +2,12 @@
 // A scene's GL draws (Scene::draws): the buffers loaded, each call's vertices pulled through its
 // vertex arrays (draw/vertex_fetch.h), its primitives assembled and drawn with its GLSL program,
 // in order, into one framebuffer.
+#include <functional>
 #include <vector>
 
 #include "draw/vertex_fetch.h"
 #include "pipeline/glsl_draw.h"
+#include "pipeline/glsl_scene.h"
 #include "pipeline/scene.h"
 
 namespace tessref {
@@ -33,9 +35,38 @@ struct CallPatches {
 };
 std::vector<std::vector<CallPatches>> patch_numbering(const Scene& scene, const std::vector<draw::Buffer>& buffers);
 
-// Draws every draw of the scene into fb (already cleared): a draw with its own `shaders` with its
-// program, the others with the scene's (all compiled before the first draw, so a broken one
-// draws nothing).
+// One call of one draw, ready to run: its program with GL's state as it is at this call (the
+// uniform buffers this draw and the earlier ones bound), the vertices' attributes and the call.
+struct PreparedCall {
+  std::size_t draw = 0, call_index = 0;  // Scene::draws[draw].calls[call_index]
+  const DrawSetting& setting;
+  glsl::GlslProgram& program;
+  const std::vector<glsl::VertexAttribute>& attributes;  // per fetched vertex (call.vertex_ids)
+  const GlslDrawCall& call;
+};
+
+// A scene's draws with their buffers loaded and their programs compiled (all of them before the
+// first draw, so that a broken one draws nothing): what render draws and inspect reruns.
+class SceneDraws {
+ public:
+  explicit SceneDraws(const Scene& scene);  // InputError as load_buffers and build_scene_program
+  ~SceneDraws();
+  const std::vector<draw::Buffer>& buffers() const { return buffers_; }
+  // The GLSL sources of draw `draw`'s program (its own, or the scene's).
+  std::vector<shader::ShaderSource> sources(std::size_t draw) const;
+  // Calls fn for each call of draws [0, end), in order. The references fn receives live until
+  // it returns. InputError naming the scene (and the draw's key for the stages' errors).
+  void for_each_call(std::size_t end, const std::function<void(const PreparedCall&)>& fn);
+
+ private:
+  const Scene& scene_;
+  std::vector<draw::Buffer> buffers_;
+  SceneProgram shared_;
+  std::vector<SceneProgram> own_;
+};
+
+// Draws every draw of the scene into fb (already cleared), each with its own program or the
+// scene's.
 DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& parallel, const DrawOptions& options);
 
 }  // namespace tessref

@@ -1,0 +1,103 @@
+// tessref inspect on scenes of draws: a draw's patch, found by --draw and --patch over the draw's
+// calls and instances, shows the values the draw itself computes (every point's gl_TessCoord and
+// dump fields bit for bit with render --dump-tess under the patch id inspect reports), with GL's
+// numbering (gl_VertexID, gl_InstanceID, gl_PrimitiveID); bad requests exit 2 naming the option.
+#include <string>
+#include <vector>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tess_dump_text.h"
+#include "test_util.h"
+
+namespace tessref {
+namespace {
+
+using ::testing::HasSubstr;
+using test::CliRun;
+using test::run_cli;
+using test::TempDir;
+
+const std::string kDraws = std::string(TESSREF_SOURCE_DIR) + "/tests/data/draws/";
+
+struct Case {
+  std::string scene;
+  int draw;
+  std::vector<int> patches;  // counted within the draw
+};
+
+class InspectDraws : public ::testing::TestWithParam<Case> {};
+
+TEST_P(InspectDraws, PointsAreTheDrawsBitForBit) {
+  const Case& c = GetParam();
+  TempDir dir;
+  const std::string scene = kDraws + c.scene;
+  const auto dump = test::render_dump(dir, " " + scene);
+  for (int patch : c.patches) {
+    const std::string args = scene + " --draw " + std::to_string(c.draw) + " --patch " + std::to_string(patch);
+    const nlohmann::json all = test::inspect_json(dir, args);
+    const int id = all["draw"]["patch_id"];
+    ASSERT_TRUE(dump.count(id)) << args << ": patch id " << id << " not in the dump";
+    const std::vector<test::DumpLine>& lines = dump.at(id);
+    const nlohmann::json& points = all["evaluation_stage"]["points"];
+    ASSERT_EQ(points.size(), lines.size()) << args;
+    for (std::size_t k = 0; k < lines.size(); ++k)
+      test::expect_same_bits(points[k], lines[k], args + " point " + std::to_string(k));
+    const std::size_t last = lines.size() - 1;
+    const nlohmann::json one = test::inspect_json(dir, args + " --vertex " + std::to_string(last));
+    test::expect_same_bits(one["evaluation_stage"]["points"][0], lines[last], args + " --vertex");
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, InspectDraws,
+                         ::testing::Values(Case{"bicubic_arrays.json", 0, {0, 1}}, Case{"terrain.json", 0, {0, 3}},
+                                           Case{"grass_isolines.json", 0, {1}}, Case{"dome_points.json", 2, {0, 1}},
+                                           Case{"instanced_blocks.json", 0, {0, 5}},
+                                           Case{"two_draws_depth.json", 1, {1}}),
+                         [](const auto& info) { return info.param.scene.substr(0, info.param.scene.find('.')); });
+
+TEST(InspectDrawsNumbering, CornersAndPatchCarryGlsNumbers) {
+  TempDir dir;
+  // glDrawArrays(GL_PATCHES, 0, 16) with 4-vertex patches: patch 1's corners are vertices 4..7.
+  const nlohmann::json t = test::inspect_json(dir, kDraws + "terrain.json --patch 1");
+  const nlohmann::json& corners = t["vertex_stage"]["corners"];
+  ASSERT_EQ(corners.size(), 4u);
+  for (int k = 0; k < 4; ++k) EXPECT_EQ(corners[k]["gl_VertexID"], 4 + k);
+  EXPECT_EQ(corners[2]["inputs"][0]["value"], nlohmann::json({4.0, 0.0, 2.0, 1.0}));  // in_position, w filled in
+  // Three instances of two patches: the draw's patch 5 is instance 2's gl_PrimitiveID 1.
+  const nlohmann::json i = test::inspect_json(dir, kDraws + "instanced_blocks.json --patch 5");
+  EXPECT_EQ(i["draw"]["gl_InstanceID"], 2);
+  EXPECT_EQ(i["draw"]["gl_PrimitiveID"], 1);
+  EXPECT_EQ(i["draw"]["patch_id"], 5);
+  EXPECT_EQ(i["patch_count"], 6);
+  // The second draw's patches follow the first draw's (which has none: untessellated triangles).
+  const nlohmann::json d = test::inspect_json(dir, kDraws + "two_draws_depth.json --draw 1 --patch 1");
+  EXPECT_EQ(d["draw"]["draw"], 1);
+  EXPECT_EQ(d["draw"]["patch_id"], 1);
+}
+
+TEST(InspectDrawsNumbering, BadRequestsExitTwoNamingTheOption) {
+  const struct {
+    std::string args, message;
+  } cases[] = {
+      {"two_draws_depth.json --patch 0", "--draw: required: the scene has 2 draws"},
+      {"two_draws_depth.json --draw 2 --patch 0", "--draw: 2 is past the scene's 2 draws (0..1)"},
+      {"two_draws_depth.json --draw 0 --patch 0", "--draw: draws.0 draws untessellated primitives, not GL_PATCHES"},
+      {"instanced_blocks.json --patch 6", "--patch: 6 is past draws.0, which has 6 patches (0..5"},
+      {"terrain.json --pixel 3,3", "--pixel: takes a scene with a mesh"},
+      {"terrain.json --patch 0 --vertex 289", "--vertex: 289 is past the patch's 289 generated domain points"},
+  };
+  for (const auto& c : cases) {
+    const CliRun r = run_cli("inspect " + kDraws + c.args);
+    EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.output;
+    EXPECT_THAT(r.output, HasSubstr(c.message)) << c.args;
+  }
+  const CliRun mesh = run_cli("inspect --draw 0 --patch 0");
+  EXPECT_EQ(mesh.exit_code, 2);
+  EXPECT_THAT(mesh.output, HasSubstr("--draw: the scene has no draws"));
+}
+
+}  // namespace
+}  // namespace tessref
