@@ -138,7 +138,7 @@ void GlDraws::bind(std::size_t d, unsigned program) const {
   if (textures_[d]) textures_[d]->bind();
   glBindVertexArray(vaos_[d]);
   for (const auto& [location, a] : current_[d]) set_current(location, a);
-  apply_raster_state(draw.raster);
+  apply_raster_state(draw.raster, scene_.width, scene_.height);
   for (const UniformBufferSetting& u : draw.uniform_buffers) {
     const std::size_t size = u.size.value_or(buffer_sizes_[u.buffer] - u.offset);
     glBindBufferRange(GL_UNIFORM_BUFFER, u.binding, buffers_[u.buffer], GLintptr(u.offset), GLsizeiptr(size));
@@ -160,7 +160,7 @@ void GlDraws::bind(std::size_t d, unsigned program) const {
 void GlDraws::unbind() const {
   glBindVertexArray(0);
   glUseProgram(0);
-  reset_raster_state();
+  reset_raster_state(scene_.width, scene_.height);
   glDisable(GL_PRIMITIVE_RESTART);
   glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
 }

@@ -42,7 +42,10 @@ GLenum gl_factor(BlendFactor f) {
 
 }  // namespace
 
-void apply_raster_state(const RasterState& s) {
+void apply_raster_state(const RasterState& s, int width, int height) {
+  if (s.viewport) glViewport(s.viewport->x, s.viewport->y, s.viewport->width, s.viewport->height);
+  else glViewport(0, 0, width, height);
+  glDepthRange(s.depth_range_near, s.depth_range_far);
   enable(GL_DEPTH_TEST, s.depth_test);
   glDepthFunc(gl_depth_func(s.depth_func));
   glDepthMask(s.depth_write ? GL_TRUE : GL_FALSE);
@@ -62,6 +65,6 @@ void apply_raster_state(const RasterState& s) {
   glColorMask(s.color_mask.r, s.color_mask.g, s.color_mask.b, s.color_mask.a);
 }
 
-void reset_raster_state() { apply_raster_state(gl_initial_state()); }
+void reset_raster_state(int width, int height) { apply_raster_state(gl_initial_state(), width, height); }
 
 }  // namespace tessref::glref

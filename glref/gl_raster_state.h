@@ -4,10 +4,11 @@
 
 namespace tessref::glref {
 
-// glEnable/glDisable and the state calls for depth, culling, polygon mode, scissor, blending and
-// the colour mask. The context must be current.
-void apply_raster_state(const RasterState& state);
+// glEnable/glDisable and the state calls for the viewport (none: width x height, the
+// framebuffer), depth range, depth, culling, polygon mode, scissor, blending and the colour mask.
+// The context must be current.
+void apply_raster_state(const RasterState& state, int width, int height);
 // Back to GL's initial state for all of them.
-void reset_raster_state();
+void reset_raster_state(int width, int height);
 
 }  // namespace tessref::glref

@@ -1,8 +1,11 @@
 #include "pipeline/raster_state_schema.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <string>
 #include <utility>
+
+#include "common/fixed_point.h"
 
 namespace tessref {
 namespace {
@@ -115,6 +118,32 @@ RasterState read_raster_state(JsonObject& o) {
       o.fail("scissor", "glScissor refuses a negative width or height (GL_INVALID_VALUE)");
   } else if (scissor) {
     o.fail("enable", "GL_SCISSOR_TEST without a scissor box: give scissor [x, y, width, height]", {"scissor"});
+  }
+  o.describe("viewport", "glViewport: [x, y, width, height] in pixels, y up from the bottom row (default: the whole image)");
+  if (o.has("viewport")) {
+    const json& v = o.value("viewport");
+    if (!v.is_array() || v.size() != 4 || !std::all_of(v.begin(), v.end(), [](const json& x) { return x.is_number_integer(); }))
+      o.fail("viewport", "expected [x, y, width, height] as 4 integers, got " + describe_json(v));
+    const ViewportRect rect{v[0].get<int>(), v[1].get<int>(), v[2].get<int>(), v[3].get<int>()};
+    if (rect.width < 0 || rect.height < 0)
+      o.fail("viewport", "glViewport refuses a negative width or height (GL_INVALID_VALUE)");
+    // GL clamps a larger viewport to GL_MAX_VIEWPORT_DIMS and its origin to GL_VIEWPORT_BOUNDS_RANGE;
+    // tessref's fixed-point bounds (fixed_point.h) take origins within one maximal viewport of the image.
+    if (rect.width > fixed::kMaxViewportPixels || rect.height > fixed::kMaxViewportPixels)
+      o.fail("viewport", "width and height must be at most " + std::to_string(fixed::kMaxViewportPixels) + " (GL_MAX_VIEWPORT_DIMS)");
+    if (std::abs(rect.x) > fixed::kMaxViewportPixels || std::abs(rect.y) > fixed::kMaxViewportPixels)
+      o.fail("viewport", "x and y must lie within -" + std::to_string(fixed::kMaxViewportPixels) + ".." + std::to_string(fixed::kMaxViewportPixels));
+    if (rect.width == 0 || rect.height == 0)
+      o.fail("viewport", "a viewport without area draws nothing; leave the draw out");
+    r.viewport = rect;
+  }
+  o.describe("depth_range", "glDepthRange: [near, far] (default [0, 1]; GL clamps each to [0, 1])");
+  if (o.has("depth_range")) {
+    const json& d = o.value("depth_range");
+    if (!d.is_array() || d.size() != 2 || !std::all_of(d.begin(), d.end(), [](const json& x) { return x.is_number(); }))
+      o.fail("depth_range", "expected [near, far] as 2 numbers, got " + describe_json(d));
+    r.depth_range_near = std::clamp(d[0].get<double>(), 0.0, 1.0);
+    r.depth_range_far = std::clamp(d[1].get<double>(), 0.0, 1.0);
   }
   o.describe("color_mask", "glColorMask: [r, g, b, a] booleans (default all true)");
   if (o.has("color_mask")) {

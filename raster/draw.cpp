@@ -171,7 +171,7 @@ RasterStats draw_batch(const Batch& batch, const RasterState& state, const Fragm
                                   " past the vertex array (" +
                                   std::to_string(batch.vertex_count()) + " vertices)");
   }
-  const raster::Viewport vp{fb.width, fb.height, state.depth_range_near, state.depth_range_far};
+  const raster::Viewport vp = raster::Viewport::of(fb.width, fb.height, state);
   const TileGrid grid{(fb.width + kTileSize - 1) / kTileSize,
                       (fb.height + kTileSize - 1) / kTileSize};
   const int num_varyings = std::clamp(batch.num_varyings, 0, kMaxVaryings);

@@ -43,7 +43,7 @@ enum : std::uint32_t {
 
 struct ProjectParams {
   float guard_x, guard_y;
-  float scale_x, scale_y, scale_z, translate_z;  // viewport: x_w = fma(x_ndc, W/2, W/2), ...
+  float scale_x, translate_x, scale_y, translate_y, scale_z, translate_z;  // x_w = fma(x_ndc, scale_x, translate_x), ...
   float depth_lo, depth_hi;
 };
 

@@ -41,8 +41,8 @@ void project_vertices_avx2(const float* clip, std::size_t stride, std::size_t co
     if (code & (kNonFinite | kNonPositiveW | kClipPlanes)) continue;
     const float inv_w = 1.0f / w;
     const float x_ndc = x * inv_w, y_ndc = y * inv_w, z_ndc = z * inv_w;
-    o.xf = __builtin_fmaf(x_ndc, p.scale_x, p.scale_x);
-    o.yf = __builtin_fmaf(y_ndc, p.scale_y, p.scale_y);
+    o.xf = __builtin_fmaf(x_ndc, p.scale_x, p.translate_x);
+    o.yf = __builtin_fmaf(y_ndc, p.scale_y, p.translate_y);
     o.x = static_cast<std::int32_t>(__builtin_nearbyintf(o.xf * 256.0f));
     o.y = static_cast<std::int32_t>(__builtin_nearbyintf(o.yf * 256.0f));
     const float zw = __builtin_fmaf(z_ndc, p.scale_z, p.translate_z);

@@ -1,6 +1,7 @@
 #pragma once
 // Clipping, perspective divide, viewport, triangle setup and rasterization by GL's rules.
 #include <cstdint>
+#include <optional>
 
 #include "common/parallel.h"
 #include "raster/fragment_ops.h"
@@ -54,6 +55,11 @@ struct FragmentProgram {
 // glPolygonMode(GL_FRONT_AND_BACK, GL_FILL / GL_LINE / GL_POINT).
 enum class PolygonMode { kFill, kLine, kPoint };
 
+// glViewport's rectangle, in window pixels (y up from the bottom row).
+struct ViewportRect {
+  int x = 0, y = 0, width = 0, height = 0;
+};
+
 struct RasterState {
   // glEnable(GL_CULL_FACE) with glCullFace(GL_BACK) (and GL_FRONT: both set is GL_FRONT_AND_BACK);
   // front faces counter-clockwise in window space (glFrontFace(GL_CCW)) unless front_face_cw.
@@ -70,8 +76,11 @@ struct RasterState {
   ScissorState scissor;
   BlendState blend;
   ColorMask color_mask;
-  float depth_range_near = 0.0f;
-  float depth_range_far = 1.0f;
+  // glViewport(x, y, width, height); none: the whole framebuffer. glDepthRange(near, far), kept
+  // as GL keeps it (a double).
+  std::optional<ViewportRect> viewport;
+  double depth_range_near = 0.0;
+  double depth_range_far = 1.0;
 };
 
 // GL's initial state (every capability off, GL_LESS, depth writes on, GL_BACK, GL_CCW, GL_FILL):

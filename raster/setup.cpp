@@ -23,7 +23,7 @@ struct WindowVertex {
 // GL 4.6 section 13.8.1: x_w = (x_ndc + 1) W/2, y_w = (y_ndc + 1) H/2,
 // z_w = n + (f - n)(z_ndc + 1)/2; then x_w, y_w snap to 24.8. Evaluated as llvmpipe does (its
 // draw module's viewport code): x_ndc * scale + translate with one fused multiply-add, scale =
-// translate = W/2. Measured (raster_vs_llvmpipe_test, 200 x 152 viewport, random float clip
+// W/2, translate = x + W/2 (Viewport). Measured (raster_vs_llvmpipe_test, 200 x 152 viewport, random float clip
 // coordinates): with the fma 0 of 3,040,000 pixels differ, with (x_ndc + 1) * W/2 rounded twice 2
 // do. This is llvmpipe on a CPU with FMA (LLVM fuses its fmuladd); without FMA it would round
 // twice. llvmpipe snaps x_w - 0.5 instead of x_w: the same 24.8 value, since that subtraction is
@@ -37,21 +37,16 @@ WindowVertex to_window(const glm::vec4& position, const float* varyings, const V
   const float y_ndc = position.y * inv_w;
   const float z_ndc = position.z * inv_w;
   WindowVertex r;
-  const float sx = 0.5f * float(vp.width), sy = 0.5f * float(vp.height);
-  const float sz = 0.5f * (vp.depth_far - vp.depth_near);
-  const float tz = 0.5f * (vp.depth_far + vp.depth_near);
   auto transform = [generated](float ndc, float scale, float translate) {
     return generated ? ndc * scale + translate : std::fma(ndc, scale, translate);
   };
-  r.xf = transform(x_ndc, sx, sx);
-  r.yf = transform(y_ndc, sy, sy);
+  r.xf = transform(x_ndc, vp.scale_x(), vp.translate_x());
+  r.yf = transform(y_ndc, vp.scale_y(), vp.translate_y());
   r.x = fixed::snap_subpixel(r.xf);
   r.y = fixed::snap_subpixel(r.yf);
-  const float z = transform(z_ndc, sz, tz);
+  const float z = transform(z_ndc, vp.scale_z(), vp.translate_z());
   // Clipping leaves z_ndc in [-1, 1] up to rounding; keep the rounding inside the depth range.
-  const float lo = std::min(vp.depth_near, vp.depth_far);
-  const float hi = std::max(vp.depth_near, vp.depth_far);
-  r.z = std::clamp(z, lo, hi);
+  r.z = std::clamp(z, vp.depth_lo(), vp.depth_hi());
   r.inv_w = inv_w;
   r.varyings = varyings;
   return r;
@@ -171,8 +166,8 @@ void store_piece(const WindowVertex& a, const WindowVertex& b, const WindowVerte
     t.b1_dy = -ex2 / area;
     t.b2_dx = -ey1 / area;
     t.b2_dy = ex1 / area;
-    t.z_lo = std::min(vp.depth_near, vp.depth_far);
-    t.z_hi = std::max(vp.depth_near, vp.depth_far);
+    t.z_lo = vp.depth_lo();
+    t.z_hi = vp.depth_hi();
   }
   t.area2 = ccw ? area2 : -area2;
   t.front_facing = box.front;
@@ -227,12 +222,9 @@ void project_vertices(const ClipVertex* vertices, std::size_t count, int records
   static const bool kernel = project_kernel_available();
   if (kernel && simd_path() == SimdPath::Avx2) {
     static_assert(sizeof(ClipVertex) % sizeof(float) == 0 && offsetof(ClipVertex, position) == 0);
-    const float sx = 0.5f * float(vp.width), sy = 0.5f * float(vp.height);
-    const ProjectParams params{vp.guard_x(), vp.guard_y(), sx, sy,
-                               0.5f * (vp.depth_far - vp.depth_near),
-                               0.5f * (vp.depth_far + vp.depth_near),
-                               std::min(vp.depth_near, vp.depth_far),
-                               std::max(vp.depth_near, vp.depth_far)};
+    const ProjectParams params{vp.guard_x(),     vp.guard_y(),     vp.scale_x(),     vp.translate_x(),
+                               vp.scale_y(),     vp.translate_y(), vp.scale_z(),     vp.translate_z(),
+                               vp.depth_lo(),    vp.depth_hi()};
     project_vertices_avx2(reinterpret_cast<const float*>(vertices),
                           std::size_t(records) * sizeof(ClipVertex) / sizeof(float), count, params, out);
     return;

@@ -1,5 +1,6 @@
 #pragma once
 // Perspective divide, viewport transform, sub-pixel snapping and triangle setup.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -33,11 +34,33 @@ struct SetupTriangle {
   std::uint32_t varying_offset;
 };
 
+// The viewport transform and the framebuffer it draws into.
 struct Viewport {
-  int width = 0, height = 0;
-  float depth_near = 0.0f, depth_far = 1.0f;
+  int width = 0, height = 0;  // the framebuffer: coverage is cut to it (and to the scissor box)
+  double depth_near = 0.0, depth_far = 1.0;
+  // glViewport(x, y, w, h); w = 0: the whole framebuffer.
+  int x = 0, y = 0, w = 0, h = 0;
   float guard_x() const;  // clip-space guard plane factors, see clip_triangle
   float guard_y() const;
+  // GL 4.5, 13.6.1: x_w = (w/2) x_ndc + (x + w/2), z_w = ((f - n)/2) z_ndc + (n + f)/2, with the
+  // factors as Mesa forms them (_mesa_get_viewport_xform): w/2 and x + w/2 in float, the depth
+  // ones in double rounded to float.
+  float scale_x() const { return 0.5f * float(w ? w : width); }
+  float scale_y() const { return 0.5f * float(w ? h : height); }
+  float translate_x() const { return scale_x() + float(w ? x : 0); }
+  float translate_y() const { return scale_y() + float(w ? y : 0); }
+  float scale_z() const { return float(0.5 * (depth_far - depth_near)); }
+  float translate_z() const { return float(0.5 * (depth_near + depth_far)); }
+  float depth_lo() const { return float(std::min(depth_near, depth_far)); }
+  float depth_hi() const { return float(std::max(depth_near, depth_far)); }
+  static Viewport of(int fb_width, int fb_height, const RasterState& state) {
+    Viewport v{fb_width, fb_height, state.depth_range_near, state.depth_range_far};
+    if (state.viewport) {
+      v.x = state.viewport->x, v.y = state.viewport->y;
+      v.w = state.viewport->width, v.h = state.viewport->height;
+    }
+    return v;
+  }
 };
 
 // Which faces are culled, and which winding is the front (RasterState's culling).

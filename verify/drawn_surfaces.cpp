@@ -35,6 +35,7 @@ std::string silhouette_rule(const Scene& scene, const DrawnSurfaces& drawn, bool
       return why("draws lines or points into the depth image");
     if (r.polygon_mode != PolygonMode::kFill) return why("draws with a polygon mode other than GL_FILL");
     if (r.scissor.enabled) return why("is scissored");
+    if (r.viewport) return why("has a viewport other than the image (the ray caster frames the image)");
     if (r.depth_func == DepthFunc::kNever || r.depth_func == DepthFunc::kEqual ||
         r.depth_func == DepthFunc::kGreater || r.depth_func == DepthFunc::kGreaterEqual)
       return why("has a depth function that fails over the clear depth");

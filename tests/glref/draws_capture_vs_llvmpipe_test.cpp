@@ -35,6 +35,7 @@ const DrawScene kScenes[] = {
     {"instanced_blocks", 6, 2304, true}, // instanced, indexed, std140 block at an offset
     {"two_draws_depth", 2, 1728, true},  // tessellated, depth-tested against an untessellated strip
     {"fixed_function", 2, 1728, false},  // culling under GL_CW, blending, scissor
+    {"viewports", 4, 3456, false},       // a viewport and depth range per draw
 };
 
 class DrawsCaptureVsLlvmpipe : public ::testing::TestWithParam<DrawScene> {

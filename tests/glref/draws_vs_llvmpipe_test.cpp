@@ -137,6 +137,19 @@ TEST(DrawsVsLlvmpipe, FixedFunctionStateOverThreeDraws) {
   EXPECT_EQ(front.within1.within_tolerance, front.within1.pixels) << front.within1.summary();
 }
 
+// glViewport and glDepthRange per draw: a view in the left half, a small one, and one that runs
+// past the image's edges (clipped at the viewport's sides, cut at the image's).
+TEST(DrawsVsLlvmpipe, ViewportAndDepthRangePerDraw) {
+  TESSREF_REQUIRE_GL(ctx);
+  const DrawsOutcome o = compare_draws(*ctx, "viewports.json");
+  EXPECT_EQ(o.stats.tess.patches_in, 4u);
+  EXPECT_GT(o.stats.raster.fragments_shaded, 12000u);
+  expect_matches(o);
+  // The small view's depth range reversed (glDepthRange(1, 0.5)): its patches then hide the water plane.
+  const DrawsOutcome swapped = compare_draws(*ctx, "viewports.json", {"draws.1.depth_range=[1.0, 0.5]"});
+  expect_matches(swapped);
+}
+
 // A wireframe's lines face as their triangles do (gl_FrontFacing), with either winding in front.
 TEST(DrawsVsLlvmpipe, PolygonModeLinesKeepTheirTrianglesFacing) {
   TESSREF_REQUIRE_GL(ctx);

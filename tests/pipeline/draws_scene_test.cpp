@@ -54,7 +54,7 @@ TEST(DrawsScene, SameBytesAtOneAndEightThreads) {
     EXPECT_EQ(one.framebuffer.depth, eight.framebuffer.depth) << f;
     ++scenes;
   }
-  EXPECT_EQ(scenes, 8);
+  EXPECT_EQ(scenes, 9);
 }
 
 // Each draw with its own program: a flat-coloured strip, then the patches depth-tested against it.
@@ -202,6 +202,24 @@ TEST(DrawsScene, BadDrawsNameTheKeyAndTheRule) {
   EXPECT_NE(error_of(f, {"draws.0.polygon_mode=\"GL_WIRE\""}).find("draws.0.polygon_mode: expected one of GL_FILL, GL_LINE, GL_POINT, got a string"),
             std::string::npos);
   EXPECT_NE(error_of(f, {"draws.0.mode=\"GL_LINES_ADJACENCY\""}).find("needs a geometry shader"), std::string::npos);
+  EXPECT_NE(error_of(f, {"draws.0.viewport=[0, 0, -1, 8]"}).find("draws.0.viewport: glViewport refuses a negative width"),
+            std::string::npos);
+  EXPECT_NE(error_of(f, {"draws.0.viewport=[0, 0, 8]"}).find("draws.0.viewport: expected [x, y, width, height] as 4 integers"),
+            std::string::npos);
+  EXPECT_NE(error_of(f, {"draws.0.viewport=[0, 0, 20000, 8]"}).find("at most 16384 (GL_MAX_VIEWPORT_DIMS)"), std::string::npos);
+  EXPECT_NE(error_of(f, {"draws.0.depth_range=[0, \"far\"]"}).find("draws.0.depth_range: expected [near, far] as 2 numbers"),
+            std::string::npos);
+}
+
+// glDepthRange clamps its arguments to [0, 1] (GL 4.5, 13.6.1); the draw keeps GL's doubles.
+TEST(DrawsScene, DepthRangeIsClampedAsGlDoes) {
+  const Scene s = load_scene(kDraws + "viewports.json", {"draws.1.depth_range=[-0.5, 1.5]"});
+  EXPECT_EQ(s.draws[1].raster.depth_range_near, 0.0);
+  EXPECT_EQ(s.draws[1].raster.depth_range_far, 1.0);
+  EXPECT_EQ(s.draws[0].raster.depth_range_far, 0.5);
+  ASSERT_TRUE(s.draws[2].raster.viewport);
+  EXPECT_EQ(s.draws[2].raster.viewport->x, 170);
+  EXPECT_FALSE(load_scene(kDraws + "terrain.json", {}).draws[0].raster.viewport);
 }
 
 }  // namespace
