@@ -31,11 +31,11 @@
 
 #include "bench_common.h"
 #include "common/parallel.h"
-#include "pipeline/image_compare.h"
-#include "pipeline/image_output.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/render.h"
-#include "pipeline/scene_loader.h"
+#include "io/image_compare.h"
+#include "io/image_output.h"
+#include "mesh/mesh_source.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
 #ifdef TESSREF_HAVE_GLREF
 #include "glref/gl_context.h"
 #include "glref/scene_renderer.h"

@@ -27,7 +27,7 @@
 #include <string>
 
 #include "common/parallel.h"
-#include "pipeline/procedural.h"
+#include "mesh/procedural.h"
 #include "shader/glsl_compile.h"
 #include "stages/glsl/glsl_program.h"
 #include "stages/glsl/twins.h"
@@ -180,7 +180,7 @@ struct Executor {
     program = std::make_unique<glsl::GlslProgram>(twins_compiled(), limits);
     program->override_tes_layout(kLayout);
     // The uniforms the twins declare, with the values Tessref gives PnTcs/PnTes (set_scene_uniforms
-    // in pipeline/glsl_scene.cpp names them all); the adaptive-level ones are unused (u_adaptive false).
+    // in render/glsl_scene.cpp names them all); the adaptive-level ones are unused (u_adaptive false).
     const std::vector<std::string> names = program->uniform_names();
     auto set = [&](const std::string& name, const glsl::UniformValue& v) {
       if (std::binary_search(names.begin(), names.end(), name)) program->set_uniform(name, v);

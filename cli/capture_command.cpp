@@ -12,9 +12,9 @@
 #include "cli/commands.h"
 #include "cli/shard.h"
 #include "common/error.h"
-#include "pipeline/camera.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/scene_loader.h"
+#include "mesh/camera.h"
+#include "mesh/mesh_source.h"
+#include "scene/scene_loader.h"
 #ifdef TESSREF_HAVE_GLREF
 #include "glref/gl_context.h"
 #include "glref/gl_error.h"

@@ -14,10 +14,10 @@
 #include "cli/commands.h"
 #include "cli/tessellator_comparison.h"
 #include "common/error.h"
-#include "pipeline/camera.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/output_files.h"
-#include "pipeline/scene_loader.h"
+#include "mesh/camera.h"
+#include "mesh/mesh_source.h"
+#include "io/output_files.h"
+#include "scene/scene_loader.h"
 
 namespace tessref::cli {
 namespace {

@@ -10,8 +10,8 @@
 
 #include "cli/commands.h"
 #include "common/error.h"
-#include "pipeline/image_output.h"
-#include "pipeline/output_files.h"
+#include "io/image_output.h"
+#include "io/output_files.h"
 
 namespace tessref::cli {
 namespace {

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string>
 
-#include "pipeline/tess_dump.h"
+#include "io/tess_dump.h"
 
 namespace tessref::cli {
 

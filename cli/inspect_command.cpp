@@ -1,4 +1,4 @@
-// `tessref inspect`: one patch of the scene's draw, stage by stage (pipeline/inspect.h), as text
+// `tessref inspect`: one patch of the scene's draw, stage by stage (inspect/inspect.h), as text
 // for a terminal or as JSON (--json FILE; structure in docs/inspect.md).
 #include <algorithm>
 #include <charconv>
@@ -16,12 +16,12 @@
 
 #include "cli/commands.h"
 #include "common/error.h"
-#include "pipeline/camera.h"
-#include "pipeline/inspect.h"
-#include "pipeline/inspect_fragments.h"
-#include "pipeline/inspect_pixel.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/scene_loader.h"
+#include "mesh/camera.h"
+#include "inspect/inspect.h"
+#include "inspect/inspect_fragments.h"
+#include "inspect/inspect_pixel.h"
+#include "mesh/mesh_source.h"
+#include "scene/scene_loader.h"
 #include "stages/schemes/pn_triangles.h"
 #include "stages/schemes/quadratic_patch.h"
 

@@ -16,16 +16,16 @@
 #include "cli/dump_budget.h"
 #include "common/error.h"
 #include "common/parallel.h"
-#include "pipeline/camera.h"
-#include "pipeline/image_output.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/output_files.h"
-#include "pipeline/render.h"
-#include "pipeline/scene_loader.h"
-#include "pipeline/tess_dump.h"
-#include "pipeline/fragment_dump.h"
-#include "pipeline/check.h"
-#include "pipeline/glsl_scene.h"
+#include "mesh/camera.h"
+#include "io/image_output.h"
+#include "mesh/mesh_source.h"
+#include "io/output_files.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
+#include "io/tess_dump.h"
+#include "inspect/fragment_dump.h"
+#include "check/check.h"
+#include "render/glsl_scene.h"
 
 namespace tessref::cli {
 namespace {
@@ -34,14 +34,14 @@ struct RenderOptions {
   std::string scene;  // empty: the built-in default scene
   std::string output = "tessref.png";
   std::string depth, normals, dump_tess;
-  std::string dump_fragments;  // --dump-fragments FILE.exr (pipeline/fragment_dump.h)
+  std::string dump_fragments;  // --dump-fragments FILE.exr (inspect/fragment_dump.h)
   int threads = 0;
   std::uint64_t max_dump_bytes = 0;  // 0: the free space of the dump's file system
   int repeat = 1;              // frames rendered; the image is the last one's
   bool report_repeat = false;  // --repeat given: print per-stage medians over the frames
   std::vector<std::string> sets;
-  bool check = false;  // --check: NaN and infinity in every stage's outputs (pipeline/check.h)
-  std::vector<std::string> check_ranges;  // --check-range NAME=LO,HI (pipeline/check_range.h)
+  bool check = false;  // --check: NaN and infinity in every stage's outputs (check/check.h)
+  std::vector<std::string> check_ranges;  // --check-range NAME=LO,HI (check/check_range.h)
 };
 
 using Clock = std::chrono::steady_clock;
@@ -334,7 +334,7 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--normals", opts->normals, "also write world normals (.exr)");
   cmd->add_option("--dump-tess", opts->dump_tess,
                   "also write every tessellated vertex (patch id, gl_TessCoord, position, normal): "
-                  "binary, or text for *.txt (format: pipeline/tess_dump.h)");
+                  "binary, or text for *.txt (format: io/tess_dump.h)");
   // Generated when help is asked for: the formats from OpenImageIO, the keys from the loader.
   cmd->footer([] {
     return "\nImage formats this build writes (-o): " + writable_image_extensions(ImageKind::Color) +

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "cli/commands.h"
-#include "pipeline/scene_loader.h"
+#include "scene/scene_loader.h"
 
 namespace tessref::cli {
 namespace {

@@ -6,7 +6,7 @@
 
 #include "cli/commands.h"
 #include "common/error.h"
-#include "pipeline/shader_test_runner.h"
+#include "piglit/shader_test_runner.h"
 
 namespace tessref::cli {
 namespace {

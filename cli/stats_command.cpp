@@ -11,9 +11,9 @@
 #include "cli/commands.h"
 #include "cli/stats_images.h"
 #include "common/error.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/output_files.h"
-#include "pipeline/scene_loader.h"
+#include "mesh/mesh_source.h"
+#include "io/output_files.h"
+#include "scene/scene_loader.h"
 #include "stats/seed004_tables.h"
 
 namespace tessref::cli {

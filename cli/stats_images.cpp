@@ -3,10 +3,10 @@
 #include <cstdio>
 
 #include "common/error.h"
-#include "pipeline/camera.h"
-#include "pipeline/image_output.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/scene_loader.h"
+#include "mesh/camera.h"
+#include "io/image_output.h"
+#include "mesh/mesh_source.h"
+#include "scene/scene_loader.h"
 #include "stats/normal_mode_difference.h"
 #include "stats/surface_images.h"
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 
-#include "pipeline/render.h"
+#include "render/render.h"
 #include "stages/tpg_cache.h"
 #include "stages/tpg_refinement.h"
 #include "verify/compare.h"

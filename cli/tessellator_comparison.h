@@ -7,9 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include "common/parallel.h"
-#include "pipeline/image_output.h"
-#include "pipeline/mesh.h"
-#include "pipeline/scene.h"
+#include "io/image_output.h"
+#include "mesh/mesh.h"
+#include "scene/scene.h"
 
 namespace tessref::cli {
 

@@ -8,7 +8,7 @@
 
 #include "cli/verify_html.h"
 #include "common/error.h"
-#include "pipeline/output_files.h"
+#include "io/output_files.h"
 
 namespace tessref::cli {
 namespace {

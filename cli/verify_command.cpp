@@ -13,7 +13,7 @@
 #include "cli/verify_campaign.h"
 #include "cli/verify_html.h"
 #include "common/error.h"
-#include "pipeline/output_files.h"
+#include "io/output_files.h"
 #include "verify/verify_scene.h"
 
 namespace tessref::cli {

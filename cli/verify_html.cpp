@@ -8,7 +8,7 @@
 #include <iterator>
 
 #include "common/error.h"
-#include "pipeline/output_files.h"
+#include "io/output_files.h"
 
 namespace tessref::cli {
 namespace {

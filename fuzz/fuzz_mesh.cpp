@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "common/error.h"
-#include "pipeline/mesh_loader.h"
+#include "mesh/mesh_loader.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// Fuzzes the whole pipeline (pipeline/render.h) on tiny meshes: a few triangles whose positions
+// Fuzzes the whole pipeline (render/render.h) on tiny meshes: a few triangles whose positions
 // and normals come from the input (on a small grid, or any float bits: NaN, infinities, huge),
 // drawn into a small image with random tessellation (on or off, flat or PN, every normal mode,
 // spacing and winding, any level bits, adaptive levels), shading, culling and, now and then, the
@@ -20,8 +20,8 @@
 
 #include "common/error.h"
 #include "common/parallel.h"
-#include "pipeline/render.h"
-#include "pipeline/scene_loader.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
 
 namespace {
 

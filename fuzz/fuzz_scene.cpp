@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "common/error.h"
-#include "pipeline/scene_loader.h"
+#include "scene/scene_loader.h"
 
 namespace {
 

@@ -1,13 +1,13 @@
 #pragma once
 // A scene's GL draws (Scene::draws) issued to the driver as an application would: one buffer
 // object per scene buffer, a vertex array object per draw, the state and the glDraw* calls, in
-// order. What tessref draws from the same scene (pipeline/draw_scene.h) is compared against it.
+// order. What tessref draws from the same scene (render/draw_scene.h) is compared against it.
 #include <cstdint>
 #include <vector>
 
 #include "draw/vertex_fetch.h"
 #include "glref/gl_textures.h"
-#include "pipeline/scene.h"
+#include "scene/scene.h"
 
 namespace tessref::glref {
 

@@ -3,7 +3,7 @@
 #include <epoxy/gl.h>
 
 #include "glref/gl_error.h"
-#include "pipeline/glsl_scene.h"
+#include "render/glsl_scene.h"
 
 namespace tessref::glref {
 namespace {

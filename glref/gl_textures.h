@@ -1,10 +1,10 @@
 #pragma once
 // A program's shaders.textures as GL textures, on the units tessref binds them to: texture k of
-// the list on unit k, its sampler uniform set to k; the same texels (pipeline/glsl_scene.h,
+// the list on unit k, its sampler uniform set to k; the same texels (render/glsl_scene.h,
 // load_texture) uploaded as GL_RGBA32F, level 0 only, with the scene's filter and wrap.
 #include <vector>
 
-#include "pipeline/scene.h"
+#include "scene/scene.h"
 
 namespace tessref::glref {
 

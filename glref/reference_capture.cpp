@@ -11,10 +11,10 @@
 #include "common/hash.h"
 #include "glref/gl_context.h"
 #include "glref/scene_renderer.h"
-#include "pipeline/image_output.h"
-#include "pipeline/output_files.h"
-#include "pipeline/tess_digest.h"
-#include "pipeline/tess_dump.h"
+#include "io/image_output.h"
+#include "io/output_files.h"
+#include "io/tess_digest.h"
+#include "io/tess_dump.h"
 
 namespace tessref::glref {
 namespace {
@@ -113,7 +113,7 @@ CaptureSummary capture_reference(GlContext& context, const Scene& scene, const M
         {"tess", "tess.bin (--dump-tess binary format; one record per emitted vertex, 3 per triangle, of the "
                  "patches whose id is a multiple of tess_patch_stride)"},
         {"tess_patches", "tess_patches.bin (per patch: emitted vertices and a hash of its distinct gl_TessCoord; "
-                         "pipeline/tess_digest.h)"}}},
+                         "io/tess_digest.h)"}}},
       {"tess_values", scene.draws.empty() ? "position and normal: the evaluation shader's outputs at locations 0 and 1"
                                           : "gl_Position: x, y, z as the position, w as the normal's x"},
       {"tess_records", summary.tess_records},

@@ -9,8 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "pipeline/mesh.h"
-#include "pipeline/scene.h"
+#include "mesh/mesh.h"
+#include "scene/scene.h"
 
 namespace tessref::glref {
 
@@ -23,10 +23,10 @@ struct CaptureSummary {
   nlohmann::json manifest;
 };
 
-// scene_json: the merged scene (pipeline/scene_loader.h: load_scene_json), stored in the manifest.
+// scene_json: the merged scene (scene/scene_loader.h: load_scene_json), stored in the manifest.
 // max_tess_records: 0 stores every emitted vertex in tess.bin; otherwise only every k-th patch's,
 // k the smallest stride that keeps tess.bin within that many records. tess_patches.bin always
-// holds every patch's digest (pipeline/tess_digest.h), so coordinates are compared for all.
+// holds every patch's digest (io/tess_digest.h), so coordinates are compared for all.
 CaptureSummary capture_reference(GlContext& context, const Scene& scene, const Mesh& mesh,
                                  const nlohmann::json& scene_json, const std::string& command_line,
                                  const std::filesystem::path& dir, std::size_t max_tess_records = 0);

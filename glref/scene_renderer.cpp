@@ -16,10 +16,10 @@
 #include "glref/patch_mesh.h"
 #include "glref/shader_source.h"
 #include "glref/tess_capture.h"
-#include "pipeline/camera.h"
-#include "pipeline/draw_scene.h"
-#include "pipeline/glsl_scene.h"
-#include "pipeline/vertex_tags.h"
+#include "mesh/camera.h"
+#include "render/draw_scene.h"
+#include "render/glsl_scene.h"
+#include "mesh/vertex_tags.h"
 #include "stages/programs/transform.h"
 #include "stages/tess_levels_adaptive.h"
 
@@ -33,7 +33,7 @@ double seconds_since(Clock::time_point t0) {
 
 constexpr int kCaptureWords = 10;  // position 3, normal 3, tess coord 3, patch id 1
 
-// The level settings draw_mesh gives the C++ control programs (pipeline/draw.cpp).
+// The level settings draw_mesh gives the C++ control programs (render/draw.cpp).
 TessLevelSettings level_settings(const Scene& scene, const glm::mat4& view_projection) {
   TessLevelSettings levels;
   levels.constant = scene.tessellation.levels;

@@ -2,7 +2,7 @@
 // A tessref scene drawn by the GL driver with its GLSL: tessref's twins (stages/programs/*.vert/.frag,
 // stages/schemes/*.tesc/.tese), or the user's files for shaders.program custom (their uniforms
 // set by name, their inputs bound as shaders.attributes says; textures not yet), set up exactly as tessref::render_scene sets up the C++ programs:
-// the same matrices (pipeline/camera.h, so both sides upload the same floats), uniforms,
+// the same matrices (mesh/camera.h, so both sides upload the same floats), uniforms,
 // tessellation (scheme, normal mode, spacing, winding, constant or adaptive levels), culling (back
 // faces, CCW front), depth test (LESS), clear color and viewport. The result is read back into a
 // tessref Framebuffer (row 0 at the bottom), ready to compare with tessref's own.
@@ -17,9 +17,9 @@
 #include "glref/gl_textures.h"
 #include "glref/gl_program.h"
 #include "glref/render_target.h"
-#include "pipeline/image_output.h"
-#include "pipeline/mesh.h"
-#include "pipeline/scene.h"
+#include "io/image_output.h"
+#include "mesh/mesh.h"
+#include "scene/scene.h"
 #include "raster/framebuffer.h"
 
 namespace tessref::glref {
@@ -29,7 +29,7 @@ class PatchMesh;
 
 struct SceneRendererOptions {
   // Rgba32F keeps the shader's floats, so both images are quantized by the same code
-  // (pipeline/image_output.h to_rgb8); Rgba8 lets the driver round.
+  // (io/image_output.h to_rgb8); Rgba8 lets the driver round.
   ColorFormat color = ColorFormat::Rgba32F;
   bool normals_attachment = true;  // fragment output 1 (world normal) -> Framebuffer::aux
   std::size_t max_points_per_draw = kSafePointsPerDraw;  // tessellated draws split under this
@@ -94,7 +94,7 @@ class SceneRenderer {
   // A scene of draws: what every tessellated draw's evaluation shader emits, one record per
   // emitted vertex in emission order (rasterizer discard, instances one at a time): gl_TessCoord,
   // gl_Position in TessDumpRecord::clip, and the patch id tessref gives the patch
-  // (pipeline/draw_scene.h patch_numbering). The user's stages are wrapped, not read
+  // (render/draw_scene.h patch_numbering). The user's stages are wrapped, not read
   // (glref/capture_wrap.h). GlError when the driver's stream cannot be told apart into patches.
   std::vector<TessDumpRecord> capture_draws_tess();
 
@@ -124,7 +124,7 @@ class SceneRenderer {
 };
 
 // An RGBA8 read-back (row 0 at the bottom) as the 8-bit RGB image a PNG holds (top row first), to
-// compare with tessref's to_rgb8 (pipeline/image_compare.h compare_images).
+// compare with tessref's to_rgb8 (io/image_compare.h compare_images).
 Rgb8Image rgb8_top_first(const std::vector<glm::u8vec4>& bottom_first, int width, int height);
 
 }  // namespace tessref::glref

@@ -13,12 +13,12 @@
 #include "glref/malloc_tuning.h"
 #include "glref/gl_error.h"
 #include "glref/scene_renderer.h"
-#include "pipeline/camera.h"
-#include "pipeline/image_compare.h"
-#include "pipeline/camera.h"
-#include "pipeline/image_output.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/scene_loader.h"
+#include "mesh/camera.h"
+#include "io/image_compare.h"
+#include "mesh/camera.h"
+#include "io/image_output.h"
+#include "mesh/mesh_source.h"
+#include "scene/scene_loader.h"
 
 namespace {
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Reads a `tessref render --dump-tess FILE` binary dump (format: pipeline/tess_dump.h).
+"""Reads a `tessref render --dump-tess FILE` binary dump (format: io/tess_dump.h).
 
 Plain Python (struct), no numpy. As a module: records(path) yields one tuple per tessellated
 vertex, (patch_id, (u, v, w), (px, py, pz), (nx, ny, nz)), in the draw's order. As a script:

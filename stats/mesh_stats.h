@@ -3,7 +3,7 @@
 // normals, and its edges by shape.
 #include <cstddef>
 
-#include "pipeline/mesh.h"
+#include "mesh/mesh.h"
 #include "stats/summary.h"
 
 namespace tessref::stats {

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "common/error.h"
-#include "pipeline/fragment_dump.h"
-#include "pipeline/render.h"
+#include "inspect/fragment_dump.h"
+#include "render/render.h"
 
 namespace tessref::stats {
 namespace {

@@ -2,8 +2,8 @@
 
 #include <cstdio>
 
-#include "pipeline/procedural.h"
-#include "pipeline/reference_meshes.h"
+#include "mesh/procedural.h"
+#include "mesh/reference_meshes.h"
 
 namespace tessref::stats {
 namespace {

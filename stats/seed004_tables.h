@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/parallel.h"
-#include "pipeline/mesh.h"
+#include "mesh/mesh.h"
 #include "stats/mesh_stats.h"
 #include "stats/summary.h"
 #include "stats/surface_stats.h"

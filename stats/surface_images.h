@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <string>
 
-#include "pipeline/image_output.h"
+#include "io/image_output.h"
 #include "stats/surface_samples.h"
 
 namespace tessref::stats {

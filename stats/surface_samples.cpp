@@ -7,8 +7,8 @@
 #include <string>
 
 #include "common/error.h"
-#include "pipeline/builtin_programs.h"
-#include "pipeline/fragment_dump.h"
+#include "render/builtin_programs.h"
+#include "inspect/fragment_dump.h"
 #include "stages/tess_stage.h"
 #include "stats/surface_stats.h"
 

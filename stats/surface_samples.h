@@ -1,6 +1,6 @@
 #pragma once
 // The exact surface behind every pixel of a drawn scene: the draw's winning fragment names its
-// patch and gl_TessCoord (render --dump-fragments, pipeline/fragment_dump.h), and the scheme's
+// patch and gl_TessCoord (render --dump-fragments, inspect/fragment_dump.h), and the scheme's
 // Bézier net (stages/schemes/bezier_nets.h) is evaluated there, in double, for the position, the
 // analytic normal and the Gaussian curvature. Surface images (surface_images.h) colour these.
 // Each pixel is computed on its own into its own slot: nothing depends on the thread count.
@@ -11,8 +11,8 @@
 #include <glm/glm.hpp>
 
 #include "common/parallel.h"
-#include "pipeline/mesh.h"
-#include "pipeline/scene.h"
+#include "mesh/mesh.h"
+#include "scene/scene.h"
 #include "stages/schemes/bezier_nets.h"
 
 namespace tessref::stats {

@@ -8,7 +8,7 @@
 #include <string>
 #include <utility>
 
-#include "pipeline/reference_meshes.h"
+#include "mesh/reference_meshes.h"
 
 namespace tessref::stats {
 

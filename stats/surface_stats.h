@@ -9,7 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "common/parallel.h"
-#include "pipeline/mesh.h"
+#include "mesh/mesh.h"
 #include "stages/schemes/bezier_nets.h"
 
 namespace tessref::stats {
@@ -32,7 +32,7 @@ std::vector<schemes::CubicNet<float>> build_patches(const Mesh& mesh, Interpolan
 
 enum class AnalyticSurface {
   UnitSphere,    // |p| - 1
-  Seed004Torus,  // pipeline/reference_meshes.h: R = 1, r = 0.5 around the y axis
+  Seed004Torus,  // mesh/reference_meshes.h: R = 1, r = 0.5 around the y axis
 };
 
 // Table 3: the signed distance (positive outside) of every grid point of every patch,

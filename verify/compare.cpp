@@ -10,7 +10,7 @@
 #include <unordered_map>
 
 #include "common/error.h"
-#include "pipeline/tess_dump.h"
+#include "io/tess_dump.h"
 
 namespace tessref {
 namespace {

@@ -10,16 +10,16 @@
 
 #include <nlohmann/json.hpp>
 
-#include "pipeline/image_output.h"
-#include "pipeline/tess_digest.h"
+#include "io/image_output.h"
+#include "io/tess_digest.h"
 #include "raster/framebuffer.h"
 #include "stages/tess_stage.h"
 
 namespace tessref {
 
 // A capture folder: manifest.json, color.png, depth.exr, tess.bin (one record per vertex the
-// driver emitted, 3 per triangle, in the --dump-tess binary format; pipeline/tess_dump.h) and
-// tess_patches.bin (every patch's digest; pipeline/tess_digest.h). A heavy scene's tess.bin holds
+// driver emitted, 3 per triangle, in the --dump-tess binary format; io/tess_dump.h) and
+// tess_patches.bin (every patch's digest; io/tess_digest.h). A heavy scene's tess.bin holds
 // only the patches whose id is a multiple of the manifest's tess_patch_stride.
 struct Reference {
   nlohmann::json manifest;

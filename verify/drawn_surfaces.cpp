@@ -1,6 +1,6 @@
 #include "verify/drawn_surfaces.h"
 
-#include "pipeline/tess_dump.h"
+#include "io/tess_dump.h"
 
 namespace tessref {
 namespace {

@@ -9,16 +9,16 @@
 
 #include <glm/glm.hpp>
 
-#include "pipeline/draw.h"
-#include "pipeline/draw_scene.h"
-#include "pipeline/scene.h"
+#include "render/draw.h"
+#include "render/draw_scene.h"
+#include "scene/scene.h"
 #include "verify/surface.h"
 
 namespace tessref {
 
 struct DrawnSurfaces {
   // Every evaluation shader record in patch order, gl_Position kept as a capture keeps it
-  // (pipeline/tess_dump.h as_clip_records), and the vertices emitted as indices into them.
+  // (io/tess_dump.h as_clip_records), and the vertices emitted as indices into them.
   std::vector<TessDumpRecord> tess;
   std::vector<std::uint32_t> emitted;
   // The patch ids of the tessellated triangles (triangles and quads domains).

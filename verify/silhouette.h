@@ -11,7 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "common/parallel.h"
-#include "pipeline/image_output.h"
+#include "io/image_output.h"
 #include "verify/surface.h"
 
 namespace tessref {

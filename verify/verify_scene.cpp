@@ -8,11 +8,11 @@
 #include <memory>
 
 #include "common/error.h"
-#include "pipeline/camera.h"
-#include "pipeline/draw_scene.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/render.h"
-#include "pipeline/scene_loader.h"
+#include "mesh/camera.h"
+#include "render/draw_scene.h"
+#include "mesh/mesh_source.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
 #include "verify/compare.h"
 #include "verify/cracks.h"
 #include "verify/drawn_surfaces.h"

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/parallel.h"
-#include "pipeline/image_output.h"
+#include "io/image_output.h"
 
 namespace tessref {
 

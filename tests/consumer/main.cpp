@@ -3,10 +3,10 @@
 #include <cstdio>
 #include <string>
 
-#include "pipeline/image_output.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/render.h"
-#include "pipeline/scene_loader.h"
+#include "io/image_output.h"
+#include "mesh/mesh_source.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
 #include "stages/tpg.h"
 
 int main(int argc, char** argv) {

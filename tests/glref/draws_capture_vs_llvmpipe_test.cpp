@@ -13,7 +13,7 @@
 
 #include "../pipeline/test_util.h"
 #include "gl_fixture.h"
-#include "pipeline/tess_dump.h"
+#include "io/tess_dump.h"
 
 namespace tessref {
 namespace {

@@ -9,9 +9,9 @@
 
 #include "glref/gl_context.h"
 #include "glref/scene_renderer.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/render.h"
-#include "pipeline/scene_loader.h"
+#include "mesh/mesh_source.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
 
 namespace tessref::glref::testing {
 

@@ -16,11 +16,11 @@
 
 #include "gl_fixture.h"
 #include "glref/scene_renderer.h"
-#include "pipeline/image_compare.h"
-#include "pipeline/image_output.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/render.h"
-#include "pipeline/scene_loader.h"
+#include "io/image_compare.h"
+#include "io/image_output.h"
+#include "mesh/mesh_source.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
 
 namespace tessref::glref {
 namespace {

@@ -14,8 +14,8 @@
 #include "../pipeline/test_util.h"
 #include "../verify/split_cylinder.h"
 #include "gl_fixture.h"
-#include "pipeline/tess_digest.h"
-#include "pipeline/tess_dump.h"
+#include "io/tess_digest.h"
+#include "io/tess_dump.h"
 #include "stages/glsl/twins.h"
 
 namespace tessref {

@@ -1,7 +1,7 @@
-// `tessref render --check` (pipeline/check.h): a planted NaN in a user's vertex, control,
+// `tessref render --check` (check/check.h): a planted NaN in a user's vertex, control,
 // evaluation or fragment shader is found with its stage, vertex/patch/pixel, invocation and source
 // line; clean scenes render the same bytes with --check; a NaN tessellation level is a warning, not
-// an offence; `--check-range` (pipeline/check_range.h) reports values outside a range the same way.
+// an offence; `--check-range` (check/check_range.h) reports values outside a range the same way.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>

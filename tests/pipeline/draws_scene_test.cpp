@@ -8,10 +8,10 @@
 
 #include "common/error.h"
 #include "common/hash.h"
-#include "pipeline/draw_scene.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/render.h"
-#include "pipeline/scene_loader.h"
+#include "render/draw_scene.h"
+#include "mesh/mesh_source.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
 
 namespace tessref {
 namespace {

@@ -11,10 +11,10 @@
 #include <gtest/gtest.h>
 
 #include "../raster/embree_oracle.h"
-#include "pipeline/camera.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/render.h"
-#include "pipeline/scene_loader.h"
+#include "mesh/camera.h"
+#include "mesh/mesh_source.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
 #include "stages/programs/transform.h"
 #include "stages/schemes/pn_triangles.h"
 #include "stages/tess_stage.h"
@@ -42,7 +42,7 @@ TriangleBatch screen_triangles(const Scene& scene, const Mesh& mesh) {
     }
     return out;
   }
-  // The PN path of pipeline/draw.cpp with constant levels.
+  // The PN path of render/draw.cpp with constant levels.
   const TessellationSettings& settings = scene.tessellation;
   EXPECT_EQ(settings.scheme, SurfaceScheme::PN);
   EXPECT_FALSE(settings.adaptive.enabled);

@@ -1,7 +1,7 @@
 // Bad shaders and bad values never crash or hang: each ends with its message (compile and link
 // errors at the user's file and line, unsupported constructs by name, runaway shaders with the
 // stage, patch and invocation) or with GL's defined result (clamped indices, discarded patches,
-// clamped levels). Through the shader-test runner (pipeline/shader_test_runner.h) on piglit-format
+// clamped levels). Through the shader-test runner (piglit/shader_test_runner.h) on piglit-format
 // text, through compile_program, and through the `tessref shader-test` command line.
 #include <sys/wait.h>
 
@@ -16,8 +16,8 @@
 #include <gtest/gtest.h>
 
 #include "common/parallel.h"
-#include "pipeline/shader_test_file.h"
-#include "pipeline/shader_test_runner.h"
+#include "piglit/shader_test_file.h"
+#include "piglit/shader_test_runner.h"
 #include "shader/glsl_compile.h"
 #include "test_util.h"
 

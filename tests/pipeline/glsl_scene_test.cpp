@@ -3,10 +3,10 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "pipeline/image_output.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/render.h"
-#include "pipeline/scene_loader.h"
+#include "io/image_output.h"
+#include "mesh/mesh_source.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
 #include "test_util.h"
 
 namespace tessref {

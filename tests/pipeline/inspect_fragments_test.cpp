@@ -1,12 +1,12 @@
-// inspect --patch's fragments (pipeline/inspect_fragments.h): the patch's fragments are the draw's
+// inspect --patch's fragments (inspect/inspect_fragments.h): the patch's fragments are the draw's
 // (the pixel query at the nearest one names the same patch, triangle and gl_TessCoord), whatever
 // the thread count; hidden fragments are told from visible ones.
 #include <numeric>
 
 #include <gtest/gtest.h>
 
-#include "pipeline/inspect_fragments.h"
-#include "pipeline/inspect_pixel.h"
+#include "inspect/inspect_fragments.h"
+#include "inspect/inspect_pixel.h"
 #include "test_util.h"
 
 namespace tessref {

@@ -16,7 +16,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "pipeline/image_output.h"
+#include "io/image_output.h"
 #include "test_util.h"
 
 namespace tessref {

@@ -15,7 +15,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "pipeline/tess_dump.h"
+#include "io/tess_dump.h"
 #include "stages/tpg.h"
 #include "tess_dump_text.h"
 #include "test_util.h"

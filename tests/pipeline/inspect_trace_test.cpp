@@ -11,8 +11,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "pipeline/inspect.h"
-#include "pipeline/inspect_pixel.h"
+#include "inspect/inspect.h"
+#include "inspect/inspect_pixel.h"
 #include "test_util.h"
 
 namespace tessref {

@@ -11,9 +11,9 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "pipeline/mesh.h"
-#include "pipeline/mesh_loader.h"
-#include "pipeline/procedural.h"
+#include "mesh/mesh.h"
+#include "mesh/mesh_loader.h"
+#include "mesh/procedural.h"
 #include "test_util.h"
 
 namespace tessref {

@@ -14,9 +14,9 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/render.h"
-#include "pipeline/scene_loader.h"
+#include "mesh/mesh_source.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
 #include "test_util.h"
 #include "twins_test_util.h"
 

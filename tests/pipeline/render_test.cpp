@@ -7,13 +7,13 @@
 
 #include <gtest/gtest.h>
 
-#include "pipeline/camera.h"
-#include "pipeline/image_compare.h"
-#include "pipeline/image_output.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/procedural.h"
-#include "pipeline/render.h"
-#include "pipeline/scene_loader.h"
+#include "mesh/camera.h"
+#include "io/image_compare.h"
+#include "io/image_output.h"
+#include "mesh/mesh_source.h"
+#include "mesh/procedural.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
 #include "stages/tess_stage.h"
 #include "test_util.h"
 

@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "common/error.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/render.h"
-#include "pipeline/scene_loader.h"
-#include "pipeline/vertex_tags.h"
+#include "mesh/mesh_source.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
+#include "mesh/vertex_tags.h"
 #include "test_util.h"
 #include "twins_test_util.h"
 

@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "pipeline/scene_loader.h"
-#include "pipeline/scene_overrides.h"
+#include "scene/scene_loader.h"
+#include "scene/scene_overrides.h"
 #include "test_util.h"
 
 namespace tessref {

@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "pipeline/builtin_programs.h"
-#include "pipeline/scene_loader.h"
+#include "render/builtin_programs.h"
+#include "scene/scene_loader.h"
 
 namespace tessref {
 namespace {

@@ -11,7 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "pipeline/shader_test_file.h"
+#include "piglit/shader_test_file.h"
 #include "test_util.h"
 
 namespace tessref {

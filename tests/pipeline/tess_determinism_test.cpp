@@ -8,10 +8,10 @@
 #include <iterator>
 
 #include "common/error.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/render.h"
-#include "pipeline/scene_loader.h"
-#include "pipeline/tess_dump.h"
+#include "mesh/mesh_source.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
+#include "io/tess_dump.h"
 
 namespace tessref {
 namespace {

@@ -1,4 +1,4 @@
-// Patch digests (pipeline/tess_digest.h): what a small capture keeps of every patch. Equal
+// Patch digests (io/tess_digest.h): what a small capture keeps of every patch. Equal
 // tessellations give equal digests however often a vertex was emitted; any coordinate or count
 // that differs shows; the file round-trips and a foreign file is refused.
 #include <cmath>
@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "pipeline/tess_digest.h"
+#include "io/tess_digest.h"
 #include "test_util.h"
 
 namespace tessref {

@@ -11,9 +11,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "pipeline/camera.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/scene_loader.h"
+#include "mesh/camera.h"
+#include "mesh/mesh_source.h"
+#include "scene/scene_loader.h"
 
 namespace tessref::test {
 

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/mesh_source.h"
-#include "pipeline/render.h"
-#include "pipeline/scene_loader.h"
+#include "mesh/mesh_source.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
 
 namespace tessref::test {
 

@@ -7,10 +7,10 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/procedural.h"
-#include "pipeline/reference_meshes.h"
-#include "pipeline/scene_loader.h"
+#include "mesh/mesh_source.h"
+#include "mesh/procedural.h"
+#include "mesh/reference_meshes.h"
+#include "scene/scene_loader.h"
 #include "stats/summary.h"
 
 namespace tessref {

@@ -12,9 +12,9 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "pipeline/camera.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/scene_loader.h"
+#include "mesh/camera.h"
+#include "mesh/mesh_source.h"
+#include "scene/scene_loader.h"
 #include "stats/normal_mode_difference.h"
 #include "stats/surface_images.h"
 

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "common/error.h"
-#include "pipeline/scene_loader.h"
+#include "scene/scene_loader.h"
 #include "stages/schemes/displacement.h"
 #include "tess_test_util.h"
 

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "pipeline/image_output.h"
+#include "io/image_output.h"
 
 namespace tessref::test {
 

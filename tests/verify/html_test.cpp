@@ -11,7 +11,7 @@
 
 #include "../pipeline/test_util.h"
 #include "campaign_test_util.h"
-#include "pipeline/image_output.h"
+#include "io/image_output.h"
 
 namespace tessref {
 namespace {

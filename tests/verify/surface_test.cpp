@@ -8,10 +8,10 @@
 
 #include <gtest/gtest.h>
 
-#include "pipeline/camera.h"
-#include "pipeline/mesh_source.h"
-#include "pipeline/render.h"
-#include "pipeline/scene_loader.h"
+#include "mesh/camera.h"
+#include "mesh/mesh_source.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
 #include "../pipeline/test_util.h"
 #include "split_cylinder.h"
 #include "verify/cracks.h"

@@ -1,0 +1,58 @@
+#pragma once
+// tessref inspect --pixel: every fragment the scene's draw made at one pixel, in the order the
+// rasterizer made them, with its patch, triangle and gl_TessCoord, its fragment inputs, the
+// fragment program's output and the depth test's verdict. The fragments come from the draw's own
+// rasterizer and fragment program (inspect/tagged_draw.h): nothing is interpolated here.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "common/parallel.h"
+#include "inspect/inspect_trace.h"
+#include "mesh/mesh.h"
+#include "scene/scene.h"
+
+namespace tessref {
+
+struct PixelFragment {
+  std::size_t patch = 0;     // gl_PrimitiveID
+  std::size_t triangle = 0;  // within the patch, emission order (as inspect --patch numbers them)
+  glm::vec3 tess_coord{0.0f};  // gl_TessCoord, interpolated from the triangle's corners' coordinates
+  glm::vec4 frag_coord{0.0f};  // gl_FragCoord: window x, y (GL rows, from the bottom), depth, 1/w
+  bool front_facing = true;
+  glm::vec3 position{0.0f}, normal{0.0f};  // world position and normal (the fragment's inputs)
+  std::vector<float> inputs;  // every interpolated varying the fragment program read
+  glm::vec4 color{0.0f};  // the fragment program's output
+  std::optional<InspectTrace> trace;  // the fragment shader's source trace (asked for)
+  // Depth test LESS as the draw applies it, in arrival order: the stored depth it met and which
+  // fragment stored it (none: the cleared depth, 1).
+  bool passed = false;
+  float depth_before = 1.0f;
+  std::optional<std::size_t> depth_from;
+  std::optional<std::size_t> hidden_by;  // passed, then a later fragment passed over it
+};
+
+struct PixelInspectResult {
+  int x = 0, y = 0;         // as asked: x right, y down from the image's top row
+  int width = 0, height = 0;
+  int window_y = 0;         // the GL window row (from the bottom): height - 1 - y
+  std::string program;
+  bool traced_twins = false;             // the built-in programs, traced through their GLSL twins
+  std::vector<PixelFragment> fragments;  // arrival order
+  std::optional<std::size_t> winner;     // the last to pass: its colour is the pixel's
+  glm::vec4 pixel_color{0.0f};           // what the draw left in the framebuffer there
+  float pixel_depth = 1.0f;
+};
+
+// Runs the scene's draw (the camera already fitted, as render does). InputError naming --pixel
+// and the image size for a pixel off the image, or for a scene that does not tessellate.
+// trace: each fragment's fragment shader traced at source level (its 2x2 quad shaded again alone
+// on the executor); the built-in programs are traced by drawing the scene with their GLSL twins,
+// which must leave the same pixel (logic_error otherwise).
+PixelInspectResult inspect_pixel(const Scene& scene, const Mesh& mesh, int x, int y,
+                                 const Parallel& parallel, bool trace = false);
+
+}  // namespace tessref

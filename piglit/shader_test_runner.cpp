@@ -1,0 +1,450 @@
+#include "piglit/shader_test_runner.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <set>
+
+#include "render/glsl_draw.h"
+#include "shader/glsl_compile.h"
+#include "stages/glsl/glsl_program.h"
+
+namespace tessref {
+namespace {
+
+// What tessref reports for the GL limits piglit files ask about (glGetIntegerv's names).
+const std::map<std::string, long long>& limits() {
+  static const std::map<std::string, long long> table = {
+      {"GL_MAX_PATCH_VERTICES", kMaxPatchVertices},
+      {"GL_MAX_TESS_GEN_LEVEL", 64},
+      {"GL_MAX_TESS_CONTROL_INPUT_COMPONENTS", 4 * (kMaxStageAttributes - 1)},
+      {"GL_MAX_TESS_CONTROL_OUTPUT_COMPONENTS", 4 * (kMaxStageAttributes - 1)},
+      {"GL_MAX_TESS_EVALUATION_INPUT_COMPONENTS", 4 * (kMaxStageAttributes - 1)},
+      {"GL_MAX_TESS_EVALUATION_OUTPUT_COMPONENTS", 4 * (kMaxStageAttributes - 1)},
+      {"GL_MAX_TESS_PATCH_COMPONENTS", 4 * kMaxPatchAttributes},
+      {"GL_MAX_VERTEX_OUTPUT_COMPONENTS", 4 * (kMaxStageAttributes - 1)},
+      {"GL_MAX_FRAGMENT_INPUT_COMPONENTS", kMaxVaryings},
+      {"GL_MAX_VARYING_COMPONENTS", kMaxVaryings},
+      {"GL_MAX_VARYING_FLOATS", kMaxVaryings},
+      {"GL_MAX_VERTEX_ATTRIBS", 16},
+      // Atomic counters: any stage, any binding (counter buffers are plain arrays here).
+      {"GL_MAX_VERTEX_ATOMIC_COUNTER_BUFFERS", 8},
+      {"GL_MAX_TESS_CONTROL_ATOMIC_COUNTER_BUFFERS", 8},
+      {"GL_MAX_TESS_EVALUATION_ATOMIC_COUNTER_BUFFERS", 8},
+      {"GL_MAX_FRAGMENT_ATOMIC_COUNTER_BUFFERS", 8},
+      {"GL_MAX_VERTEX_ATOMIC_COUNTERS", 1024},
+      {"GL_MAX_TESS_CONTROL_ATOMIC_COUNTERS", 1024},
+      {"GL_MAX_TESS_EVALUATION_ATOMIC_COUNTERS", 1024},
+      {"GL_MAX_FRAGMENT_ATOMIC_COUNTERS", 1024},
+  };
+  return table;
+}
+
+const std::set<std::string>& extensions() {
+  static const std::set<std::string> names = {
+      "GL_ARB_tessellation_shader", "GL_ARB_gpu_shader_fp64", "GL_ARB_arrays_of_arrays",
+      "GL_ARB_separate_shader_objects", "GL_ARB_explicit_attrib_location",
+      "GL_ARB_explicit_uniform_location", "GL_ARB_gpu_shader5", "GL_ARB_shading_language_420pack",
+      "GL_ARB_enhanced_layouts", "GL_ARB_texture_rectangle", "GL_ARB_uniform_buffer_object",
+      "GL_ARB_shader_bit_encoding", "GL_ARB_draw_instanced", "GL_ARB_instanced_arrays",
+      "GL_ARB_fragment_coord_conventions", "GL_ARB_vertex_array_object",
+      "GL_ARB_shader_atomic_counters", "GL_EXT_shader_integer_mix"};
+  return names;
+}
+
+bool compare(long long a, Comparison c, long long b) {
+  switch (c) {
+    case Comparison::Equal: return a == b;
+    case Comparison::NotEqual: return a != b;
+    case Comparison::Less: return a < b;
+    case Comparison::LessEqual: return a <= b;
+    case Comparison::Greater: return a > b;
+    case Comparison::GreaterEqual: return a >= b;
+  }
+  return false;
+}
+
+// Empty when tessref meets the file's [require] section; else the reason to skip.
+std::string unmet_requirement(const ShaderTestFile& f) {
+  const Requirements& r = f.requirements;
+  if (r.glsl) {
+    if (r.glsl->profile == Profile::Es) return "GLSL ES";
+    if (!compare(460, r.glsl->comparison, r.glsl->major * 100 + r.glsl->minor))
+      return "GLSL version requirement not met by 4.60";
+  }
+  if (r.gl) {
+    if (r.gl->profile == Profile::Es) return "OpenGL ES";
+    if (r.gl->profile == Profile::Compat) return "a compatibility-profile context (fixed-function state)";
+    if (!compare(45, r.gl->comparison, r.gl->major * 10 + r.gl->minor)) return "GL version requirement not met by 4.5";
+  }
+  for (const ExtensionRequirement& e : r.extensions) {
+    const bool have = extensions().count(e.name) > 0;
+    if (have == e.negated) return (e.negated ? "absence of " : "") + e.name;
+  }
+  for (const LimitRequirement& l : r.limits) {
+    auto it = limits().find(l.name);
+    if (it == limits().end()) return l.name + " (not a limit tessref reports)";
+    if (!compare(it->second, l.comparison, l.value))
+      return l.name + " >= " + std::to_string(l.value) + " (tessref: " + std::to_string(it->second) + ")";
+  }
+  for (const RawLine& line : r.other) return "requirement '" + line.text + "'";
+  for (const ShaderSection& s : f.shaders) {
+    if (s.stage == ShaderStage::Geometry) return "a geometry shader (tessref has no geometry stage)";
+    if (s.stage == ShaderStage::Compute) return "a compute shader";
+    if (s.language == ShaderLanguage::Spirv) return "SPIR-V assembly shaders";
+    if (s.language == ShaderLanguage::ArbAssembly) return "ARB assembly programs";
+  }
+  for (const TestCommand& c : f.commands)
+    if (c.kind == CommandKind::NewList || c.kind == CommandKind::CallList)
+      return "display lists (compatibility profile)";
+  return {};
+}
+
+shader::Stage to_stage(ShaderStage s) {
+  switch (s) {
+    case ShaderStage::Vertex: return shader::Stage::Vertex;
+    case ShaderStage::TessControl: return shader::Stage::TessControl;
+    case ShaderStage::TessEvaluation: return shader::Stage::TessEval;
+    case ShaderStage::Geometry: return shader::Stage::Geometry;
+    default: return shader::Stage::Fragment;
+  }
+}
+
+// piglit's [vertex shader passthrough]: piglit_vertex (location 0) to gl_Position.
+constexpr const char* kPassthrough =
+    "#version 150\nin vec4 piglit_vertex;\nvoid main() { gl_Position = piglit_vertex; }\n";
+
+std::uint32_t float_bits(float f) { return std::bit_cast<std::uint32_t>(f); }
+
+shader::Scalar scalar_of(ScalarType t) {
+  switch (t) {
+    case ScalarType::Float: return shader::Scalar::F32;
+    case ScalarType::Double: return shader::Scalar::F64;
+    case ScalarType::Int: return shader::Scalar::I32;
+    case ScalarType::Uint: return shader::Scalar::U32;
+    case ScalarType::Bool: return shader::Scalar::Bool;
+  }
+  return shader::Scalar::F32;
+}
+
+void append_value(std::vector<std::uint32_t>& words, ScalarType t, double v) {
+  switch (t) {
+    case ScalarType::Float: words.push_back(float_bits(float(v))); break;
+    case ScalarType::Double: {
+      const std::uint64_t b = std::bit_cast<std::uint64_t>(v);
+      words.push_back(std::uint32_t(b));
+      words.push_back(std::uint32_t(b >> 32));
+      break;
+    }
+    case ScalarType::Int: words.push_back(std::uint32_t(std::int32_t(std::llround(v)))); break;
+    case ScalarType::Uint: words.push_back(std::uint32_t(std::llround(v))); break;
+    case ScalarType::Bool: words.push_back(v != 0.0 ? 1u : 0u); break;
+  }
+}
+
+struct Failure {
+  std::string what;
+};
+
+class Runner {
+ public:
+  Runner(const ShaderTestFile& f, const Parallel& parallel, const ShaderTestOptions& options)
+      : f_(f), parallel_(parallel), options_(options) {
+    const int w = f.requirements.size ? (*f.requirements.size)[0] : 250;
+    const int h = f.requirements.size ? (*f.requirements.size)[1] : 250;
+    fb_ = Framebuffer(w, h, glm::vec4(0.0f));
+    state_.depth_test = false;  // GL's default
+  }
+
+  ShaderTestResult run() {
+    if (std::string why = unmet_requirement(f_); !why.empty()) return {Verdict::Skip, why};
+    const bool expect_link_error = std::any_of(f_.commands.begin(), f_.commands.end(), [](const TestCommand& c) {
+      return c.kind == CommandKind::LinkError;
+    });
+    std::vector<shader::ShaderSource> sources;
+    for (const ShaderSection& s : f_.shaders) {
+      if (s.language == ShaderLanguage::Passthrough)
+        sources.push_back({shader::Stage::Vertex, f_.file_name, 1, kPassthrough});
+      else
+        sources.push_back({to_stage(s.stage), f_.file_name, s.first_line, s.source});
+    }
+    try {
+      const shader::CompiledProgram compiled = shader::compile_program(sources);
+      if (expect_link_error) return {Verdict::Fail, "the program linked, but the file expects a link error"};
+      program_ = std::make_unique<glsl::GlslProgram>(compiled, options_.limits);
+    } catch (const shader::CompileError& e) {
+      if (expect_link_error) return {Verdict::Pass, {}};
+      return {Verdict::Fail, e.what()};
+    } catch (const shader::SpirvError& e) {
+      return {Verdict::Fail, e.what()};
+    }
+    try {
+      load_vertex_data();
+      for (const TestCommand& c : f_.commands) execute(c);
+    } catch (const Failure& e) {
+      return {Verdict::Fail, e.what};
+    } catch (const std::exception& e) {
+      return {Verdict::Fail, e.what()};
+    }
+    return {Verdict::Pass, {}};
+  }
+
+ private:
+  [[noreturn]] void fail(const TestCommand& c, const std::string& what) {
+    throw Failure{std::to_string(c.line) + ": " + what + " [" + c.text + "]"};
+  }
+
+  void load_vertex_data() {
+    if (!f_.vertex_data) return;
+    for (const VertexColumn& col : f_.vertex_data->columns) {
+      const auto location = program_->attribute_location(col.name);
+      if (!location) continue;  // not an active input
+      if (col.glsl_type.columns != 1)
+        throw Failure{"[vertex data] matrix attribute '" + col.name + "' is not supported"};
+      glsl::VertexAttribute a;
+      a.location = *location + std::uint32_t(col.array_index);
+      a.scalar = scalar_of(col.glsl_type.scalar);
+      a.components = col.glsl_type.rows * shader::scalar_words(a.scalar);
+      for (double v : col.values) append_value(a.words, col.glsl_type.scalar, v);
+      attributes_.push_back(std::move(a));
+    }
+  }
+
+  void draw_patches(const TestCommand& c, const std::vector<glsl::VertexAttribute>& attributes,
+                    std::size_t first, std::size_t count, int instances, int patch_vertices) {
+    GlslDrawCall call;
+    call.first = first;
+    call.count = count;
+    call.instances = instances;
+    call.patch_vertices = patch_vertices;
+    call.default_outer = default_outer_;
+    call.default_inner = default_inner_;
+    try {
+      draw_glsl(*program_, attributes, call, state_, fb_, parallel_);
+    } catch (const glsl::StageError& e) {
+      fail(c, e.what());
+    }
+  }
+
+  void draw_rect(const TestCommand& c) {
+    if (!c.patch) fail(c, "draw rect without 'patch' with a tessellation program is a GL error");
+    double x = c.numbers[0], y = c.numbers[1], w = c.numbers[2], h = c.numbers[3];
+    if (c.ortho) {  // window pixels to normalized device coordinates
+      x = 2.0 * x / fb_.width - 1.0;
+      y = 2.0 * y / fb_.height - 1.0;
+      w = 2.0 * w / fb_.width;
+      h = 2.0 * h / fb_.height;
+    }
+    const double px[4] = {x, x + w, x, x + w}, py[4] = {y, y, y + h, y + h};
+    std::vector<glsl::VertexAttribute> attributes;
+    if (auto loc = program_->attribute_location("piglit_vertex")) {
+      glsl::VertexAttribute a;
+      a.location = *loc;
+      a.components = 4;
+      for (int i = 0; i < 4; ++i)
+        for (float v : {float(px[i]), float(py[i]), 0.0f, 1.0f}) a.words.push_back(float_bits(v));
+      attributes.push_back(std::move(a));
+    }
+    if (auto loc = program_->attribute_location("piglit_texcoord")) {
+      glsl::VertexAttribute a;
+      a.location = *loc;
+      a.components = 2;
+      for (int i = 0; i < 4; ++i)
+        for (float v : {float(i & 1), float(i >> 1)}) a.words.push_back(float_bits(v));
+      attributes.push_back(std::move(a));
+    }
+    const int instances = c.numbers.size() > 4 ? int(c.numbers[4]) : 1;
+    draw_patches(c, attributes, 0, 4, instances, 4);
+  }
+
+  // What glReadPixels(GL_UNSIGNED_BYTE) returns from the RGBA8 window.
+  std::array<int, 4> observed(int x, int y) const {
+    const glm::vec4 c = fb_.color[fb_.index(x, y)];
+    std::array<int, 4> q;
+    for (int i = 0; i < 4; ++i)
+      q[i] = int(std::lround(std::clamp(std::isnan(c[i]) ? 0.0f : c[i], 0.0f, 1.0f) * 255.0f));
+    return q;
+  }
+
+  // piglit's probes compare in bytes: expected * 255 truncated, tolerance * 255 rounded up, and a
+  // channel fails when it differs by more than the tolerance.
+  void probe(const TestCommand& c, int x0, int y0, int w, int h, const double* expected, int comps) {
+    int want[4], tol[4];
+    for (int i = 0; i < comps; ++i) {
+      want[i] = int(std::uint8_t(float(expected[i]) * 255.0f));
+      tol[i] = int(std::ceil(float(tolerance_[i]) * 255.0f));
+    }
+    for (int y = y0; y < y0 + h; ++y)
+      for (int x = x0; x < x0 + w; ++x) {
+        if (x < 0 || y < 0 || x >= fb_.width || y >= fb_.height) fail(c, "probe outside the window");
+        const std::array<int, 4> o = observed(x, y);
+        for (int i = 0; i < comps; ++i)
+          if (std::abs(o[i] - want[i]) > tol[i]) {
+            std::string e, g;
+            for (int k = 0; k < comps; ++k) {
+              e += (k ? ", " : "") + std::to_string(want[k]);
+              g += (k ? ", " : "") + std::to_string(o[k]);
+            }
+            fail(c, "probe at (" + std::to_string(x) + ", " + std::to_string(y) + "): expected (" + e +
+                        "), observed (" + g + ") in 8-bit units, tolerance " + std::to_string(tol[i]));
+          }
+      }
+  }
+
+  void execute(const TestCommand& c) {
+    const auto& n = c.numbers;
+    switch (c.kind) {
+      case CommandKind::ClearColor: clear_color_ = glm::vec4(n[0], n[1], n[2], n[3]); break;
+      case CommandKind::Clear: fb_.clear(clear_color_); break;
+      case CommandKind::PatchVertices: patch_vertices_ = int(n[0]); break;
+      case CommandKind::PatchDefaultOuterLevel: default_outer_ = glm::vec4(n[0], n[1], n[2], n[3]); break;
+      case CommandKind::PatchDefaultInnerLevel: default_inner_ = glm::vec2(n[0], n[1]); break;
+      case CommandKind::DrawArrays: {
+        if (c.words.empty() || c.words[0] != "GL_PATCHES")
+          fail(c, "only GL_PATCHES draws are supported with a tessellation program");
+        // Vertices past the [vertex data] read GL's default attribute values (0, 0, 0, 1).
+        const std::size_t first = std::size_t(n[0]), count = std::size_t(n[1]);
+        draw_patches(c, attributes_, first, count, n.size() > 2 ? int(n[2]) : 1, patch_vertices_);
+        break;
+      }
+      case CommandKind::DrawRect: draw_rect(c); break;
+      case CommandKind::Uniform: {
+        glsl::UniformValue v;
+        v.scalar = scalar_of(c.type.scalar);
+        v.columns = c.type.columns;
+        v.rows = c.type.rows;
+        for (double x : n) append_value(v.words, c.type.scalar, x);
+        try {
+          program_->set_uniform(c.words.at(1), v);
+        } catch (const std::invalid_argument& e) {
+          fail(c, e.what());
+        }
+        break;
+      }
+      case CommandKind::ProbeAll: probe(c, 0, 0, fb_.width, fb_.height, n.data(), int(n.size())); break;
+      case CommandKind::Probe: {
+        int x = int(n[0]), y = int(n[1]);
+        if (c.relative) {  // in float, as piglit computes it, and clamped into the window
+          x = std::min(int(float(n[0]) * float(fb_.width)), fb_.width - 1);
+          y = std::min(int(float(n[1]) * float(fb_.height)), fb_.height - 1);
+        }
+        probe(c, x, y, 1, 1, n.data() + 2, int(n.size()) - 2);
+        break;
+      }
+      case CommandKind::ProbeRect: {
+        int x = int(n[0]), y = int(n[1]), w = int(n[2]), h = int(n[3]);
+        if (c.relative) {
+          x = int(float(n[0]) * float(fb_.width));
+          y = int(float(n[1]) * float(fb_.height));
+          w = int(float(n[2]) * float(fb_.width));
+          h = int(float(n[3]) * float(fb_.height));
+        }
+        probe(c, x, y, w, h, n.data() + 4, int(n.size()) - 4);
+        break;
+      }
+      case CommandKind::Tolerance:
+        for (int i = 0; i < 4; ++i) tolerance_[i] = n.size() == 1 ? n[0] : n.at(std::size_t(i));
+        break;
+      case CommandKind::TextureCheckerboard: {
+        auto t = std::make_unique<shader::Texture>();
+        t->width = int(n[2]);
+        t->height = int(n[3]);
+        t->texels.resize(std::size_t(t->width) * t->height * 4);
+        // piglit_checkerboard_texture: 2 x 2 squares, GL_RGBA (8 bits a channel), GL_NEAREST,
+        // GL_CLAMP_TO_BORDER with a red border.
+        for (int j = 0; j < t->height; ++j)
+          for (int i = 0; i < t->width; ++i) {
+            const bool odd = ((i / std::max(1, t->width / 2)) + (j / std::max(1, t->height / 2))) & 1;
+            for (int k = 0; k < 4; ++k)
+              t->texels[(std::size_t(j) * t->width + i) * 4 + k] =
+                  std::round(std::clamp(float(n[odd ? 8 + k : 4 + k]), 0.0f, 1.0f) * 255.0f) / 255.0f;
+          }
+        t->wrap_s = t->wrap_t = shader::Texture::Wrap::ClampToBorder;
+        t->border[0] = t->border[3] = 1.0f;
+        const std::uint32_t unit = std::uint32_t(n[0]);
+        program_->bind_texture(unit, t.get());
+        textures_[unit] = std::move(t);
+        last_texture_ = textures_[unit].get();
+        break;
+      }
+      case CommandKind::TexParameter: {
+        if (!last_texture_ || c.words.size() < 3) break;
+        const std::string& name = c.words[1];
+        const std::string& value = c.words[2];
+        using Wrap = shader::Texture::Wrap;
+        if (name == "min" || name == "mag") {
+          last_texture_->linear = value == "linear";
+        } else if (name == "wrap_s" || name == "wrap_t") {
+          const Wrap w = value == "repeat" ? Wrap::Repeat : value == "mirrored_repeat" ? Wrap::MirroredRepeat
+                         : value == "clamp_to_edge" ? Wrap::ClampToEdge : Wrap::ClampToBorder;
+          (name == "wrap_s" ? last_texture_->wrap_s : last_texture_->wrap_t) = w;
+        }
+        break;
+      }
+      case CommandKind::Enable: case CommandKind::Disable:
+        if (!c.words.empty() && c.words[0] == "GL_DEPTH_TEST") state_.depth_test = c.kind == CommandKind::Enable;
+        else fail(c, "unsupported GL capability");
+        break;
+      case CommandKind::AtomicCounters:
+        program_->counter_buffer(0).assign(std::size_t(n[0]), 0u);
+        break;
+      case CommandKind::AtomicCounterBuffer:
+        program_->counter_buffer(std::uint32_t(n[0])).assign(std::size_t(n[1]), 0u);
+        break;
+      case CommandKind::AtomicCounterSet: {
+        auto& buffer = program_->counter_buffer(std::uint32_t(n[0]));
+        if (std::size_t(n[1]) >= buffer.size()) fail(c, "counter past the buffer");
+        buffer[std::size_t(n[1])] = std::uint32_t(std::llround(n[2]));
+        break;
+      }
+      case CommandKind::ProbeAtomicCounter: case CommandKind::ProbeAtomicCounterBuffer: {
+        const bool in_buffer = c.kind == CommandKind::ProbeAtomicCounterBuffer;
+        const auto& buffer = program_->counter_buffer(in_buffer ? std::uint32_t(n[0]) : 0u);
+        const std::size_t index = in_buffer ? std::size_t(n[1]) / 4 : std::size_t(n[0]);
+        const long long want = std::llround(n[in_buffer ? 2 : 1]);
+        if (index >= buffer.size()) fail(c, "counter past the buffer");
+        if (!compare(buffer[index], c.comparison, want))
+          fail(c, "atomic counter " + std::to_string(index) + " is " + std::to_string(buffer[index]));
+        break;
+      }
+      case CommandKind::LinkSuccess: break;
+      default: fail(c, "command not supported by tessref's shader-test runner");
+    }
+  }
+
+  const ShaderTestFile& f_;
+  const Parallel& parallel_;
+  const ShaderTestOptions& options_;
+  std::unique_ptr<glsl::GlslProgram> program_;
+  Framebuffer fb_;
+  RasterState state_;
+  glm::vec4 clear_color_{0.0f};
+  glm::vec4 default_outer_{1.0f};
+  glm::vec2 default_inner_{1.0f};
+  int patch_vertices_ = 3;
+  double tolerance_[4] = {0.01, 0.01, 0.01, 0.01};
+  std::vector<glsl::VertexAttribute> attributes_;
+  std::map<std::uint32_t, std::unique_ptr<shader::Texture>> textures_;
+  shader::Texture* last_texture_ = nullptr;
+};
+
+}  // namespace
+
+const char* to_string(Verdict v) {
+  switch (v) {
+    case Verdict::Pass: return "pass";
+    case Verdict::Fail: return "fail";
+    case Verdict::Skip: return "skip";
+  }
+  return "?";
+}
+
+ShaderTestResult run_shader_test(const ShaderTestFile& file, const Parallel& parallel,
+                                 const ShaderTestOptions& options) {
+  return Runner(file, parallel, options).run();
+}
+
+}  // namespace tessref

@@ -1,0 +1,81 @@
+#pragma once
+// The built-in programs a scene is drawn with (shaders.program builtin), built in one place so that
+// the draw (render/draw.cpp, render/render.cpp) and tools that rerun part of it
+// (tessref inspect) construct the very same program objects with the same uniforms.
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scene/scene.h"
+#include "scene/tessellation_settings.h"
+#include "stages/programs/transform.h"
+#include "stages/schemes/displacement.h"
+#include "stages/schemes/flat.h"
+#include "stages/schemes/nagata.h"
+#include "stages/schemes/nlsa.h"
+#include "stages/schemes/phong.h"
+#include "stages/schemes/pn_triangles.h"
+#include "stages/schemes/quadratic_patch.h"
+#include "stages/schemes/scalar_tagged_pn.h"
+#include "stages/tess_stage.h"
+
+namespace tessref {
+
+// The scene's vertex shader: model matrix from scene.transform, view-projection from its camera
+// (already fitted, if camera.fit) and image size.
+programs::TransformVertexShader scene_vertex_shader(const Scene& scene);
+
+// The control and evaluation programs of the scheme the settings name. Holds every pair;
+// tcs()/tes() pick the one the draw runs. viewport: the framebuffer's size in pixels
+// (adaptive levels).
+struct BuiltinTessPrograms {
+  PassThroughTcs flat_tcs;
+  FlatTes flat_tes;
+  PnTcs pn_tcs;
+  PnTes pn_tes;
+  PhongTcs phong_tcs;
+  NlsaTcs nlsa_tcs;
+  NagataTcs nagata_tcs;
+  ScalarTaggedPnTcs tagged_pn_tcs;  // evaluated by pn_tes
+  QuadraticTes quadratic_tes;  // the evaluation program of phong, nlsa and nagata
+  SurfaceScheme scheme = SurfaceScheme::PN;
+  const TessControlProgram& tcs() const {
+    switch (scheme) {
+      case SurfaceScheme::Flat: return flat_tcs;
+      case SurfaceScheme::PN: return pn_tcs;
+      case SurfaceScheme::Phong: return phong_tcs;
+      case SurfaceScheme::NLSA: return nlsa_tcs;
+      case SurfaceScheme::Nagata: return nagata_tcs;
+      case SurfaceScheme::ScalarTaggedPN: return tagged_pn_tcs;
+    }
+    return pn_tcs;
+  }
+  const TessEvalProgram& scheme_tes() const {
+    switch (scheme) {
+      case SurfaceScheme::Flat: return flat_tes;
+      case SurfaceScheme::PN: return pn_tes;
+      case SurfaceScheme::Phong:
+      case SurfaceScheme::NLSA:
+      case SurfaceScheme::Nagata: return quadratic_tes;
+      case SurfaceScheme::ScalarTaggedPN: return pn_tes;
+    }
+    return pn_tes;
+  }
+  // tessellation.displacement on top of the scheme's TES. Its base is bound here, on each call,
+  // because this struct is returned and copied by value.
+  mutable DisplacedTes displaced;
+  const TessEvalProgram& tes() const {
+    if (!displaced.displacement.enabled) return scheme_tes();
+    displaced.base = &scheme_tes();
+    return displaced;
+  }
+};
+BuiltinTessPrograms builtin_tess_programs(const TessellationSettings& settings,
+                                          const programs::TransformVertexShader& vs,
+                                          const glm::vec2& viewport);
+
+// The TCS's gl_in[] data: one StageVertex per vertex shader output (kAttrPosition = (world, 1),
+// kAttrNormal = (normal, 0)).
+std::vector<StageVertex> tess_control_points(const std::vector<programs::VertexOut>& shaded);
+
+}  // namespace tessref

@@ -1,0 +1,244 @@
+#include "render/draw_scene.h"
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+#include <span>
+#include <fstream>
+#include <iterator>
+
+#include "common/error.h"
+#include "render/glsl_scene.h"
+
+namespace tessref {
+
+std::vector<draw::Buffer> load_buffers(const Scene& scene) {
+  std::vector<draw::Buffer> out;
+  for (const BufferSetting& b : scene.buffers) {
+    draw::Buffer buffer{b.name, b.data};
+    if (!b.file.empty()) {
+      std::ifstream in(b.file, std::ios::binary);
+      if (!in)
+        throw InputError(scene.source + ": buffers." + b.name + ".file: cannot read '" + b.file.string() + "'");
+      const std::vector<char> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+      if (in.bad())
+        throw InputError(scene.source + ": buffers." + b.name + ".file: error reading '" + b.file.string() + "'");
+      buffer.bytes.resize(bytes.size());
+      std::memcpy(buffer.bytes.data(), bytes.data(), bytes.size());
+    }
+    out.push_back(std::move(buffer));
+  }
+  return out;
+}
+
+int primitive_corners(DrawMode mode) {
+  switch (mode) {
+    case DrawMode::Lines:
+    case DrawMode::LineStrip:
+    case DrawMode::LineLoop: return 2;
+    case DrawMode::Points: return 1;
+    default: return 3;
+  }
+}
+
+std::vector<std::uint32_t> assemble(DrawMode mode, int patch_vertices,
+                                    const std::vector<std::vector<std::uint32_t>>& runs) {
+  std::vector<std::uint32_t> out;
+  for (const std::vector<std::uint32_t>& r : runs) {
+    switch (mode) {
+      case DrawMode::Patches:
+      case DrawMode::Triangles: {
+        const std::size_t n = mode == DrawMode::Patches ? std::size_t(patch_vertices) : 3;
+        out.insert(out.end(), r.begin(), r.begin() + std::ptrdiff_t(r.size() / n * n));
+        break;
+      }
+      case DrawMode::TriangleStrip:
+        // GL 4.5, 10.1.8: triangle i is (i, i+1, i+2), with i and i+1 swapped for odd i so that
+        // every triangle keeps the strip's winding.
+        for (std::size_t i = 0; i + 2 < r.size(); ++i) {
+          const bool odd = i % 2;
+          out.insert(out.end(), {r[odd ? i + 1 : i], r[odd ? i : i + 1], r[i + 2]});
+        }
+        break;
+      case DrawMode::TriangleFan:
+        for (std::size_t i = 0; i + 2 < r.size(); ++i) out.insert(out.end(), {r[0], r[i + 1], r[i + 2]});
+        break;
+      case DrawMode::Lines: out.insert(out.end(), r.begin(), r.begin() + std::ptrdiff_t(r.size() / 2 * 2)); break;
+      case DrawMode::LineStrip:
+      case DrawMode::LineLoop:
+        // GL 4.5, 10.1.3 and 10.1.4: segment i joins vertices i and i+1; a loop adds the last to the first.
+        for (std::size_t i = 0; i + 1 < r.size(); ++i) out.insert(out.end(), {r[i], r[i + 1]});
+        if (mode == DrawMode::LineLoop && r.size() >= 2) out.insert(out.end(), {r.back(), r[0]});
+        break;
+      case DrawMode::Points: out.insert(out.end(), r.begin(), r.end()); break;
+    }
+  }
+  return out;
+}
+
+namespace {
+
+// The draw's arrays with their inputs resolved to the program's locations.
+std::vector<draw::VertexArray> resolve_arrays(const Scene& scene, const DrawSetting& d, const glsl::GlslProgram& program) {
+  std::vector<draw::VertexArray> arrays;
+  for (const VertexArraySetting& s : d.vertex_arrays) {
+    draw::VertexArray a = s.array;
+    const bool by_location = s.input.find_first_not_of("0123456789") == std::string::npos;
+    if (by_location) {
+      a.location = std::uint32_t(std::stoul(s.input));
+    } else {
+      const auto location = program.attribute_location(s.input);
+      if (!location)
+        throw InputError(scene.source + ": " + a.key + ": the vertex shader has no active input named \"" +
+                         s.input + "\" (glGetAttribLocation would return -1; name an input or give a location)");
+      a.location = *location;
+    }
+    arrays.push_back(std::move(a));
+  }
+  return arrays;
+}
+
+// glBindBufferRange(GL_UNIFORM_BUFFER, ...) state: binding -> the range bound there. GL keeps it
+// from draw to draw, and so does a scene.
+using UniformBindings = std::map<std::uint32_t, std::pair<const UniformBufferSetting*, std::span<const std::byte>>>;
+
+// Binds d's uniform buffers (added to the bindings the earlier draws left) to the program's blocks.
+void bind_uniform_buffers(const Scene& scene, const DrawSetting& d, const std::vector<draw::Buffer>& buffers,
+                          UniformBindings& bindings, glsl::GlslProgram& program) {
+  for (const UniformBufferSetting& u : d.uniform_buffers) {
+    const draw::Buffer& b = buffers[u.buffer];
+    const std::size_t size = u.size.value_or(b.bytes.size() > u.offset ? b.bytes.size() - u.offset : 0);
+    if (u.offset + size > b.bytes.size() || size == 0)
+      throw InputError(scene.source + ": " + u.key + ": bytes [" + std::to_string(u.offset) + ", " +
+                       std::to_string(u.offset + size) + ") of buffer '" + b.name + "', which holds " +
+                       std::to_string(b.bytes.size()) + " bytes");
+    bindings[u.binding] = {&u, std::span<const std::byte>(b.bytes).subspan(u.offset, size)};
+    const std::vector<glsl::GlslProgram::UniformBlock> program_blocks = program.uniform_blocks();
+    if (std::none_of(program_blocks.begin(), program_blocks.end(),
+                     [&](const glsl::GlslProgram::UniformBlock& k) { return k.binding == u.binding; })) {
+      std::string blocks;
+      for (const auto& k : program_blocks)
+        blocks += (blocks.empty() ? "" : ", ") + k.name + " at " + std::to_string(k.binding);
+      throw InputError(scene.source + ": " + u.key + ".binding: the program has no uniform block at binding " +
+                       std::to_string(u.binding) + " (its blocks: " + (blocks.empty() ? "none" : blocks) +
+                       "; a block is placed with layout(binding = N))");
+    }
+  }
+  for (const auto& [binding, bound] : bindings) {
+    try {
+      program.bind_uniform_buffer(binding, bound.second);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(scene.source + ": " + bound.first->key + ": " + e.what());
+    }
+  }
+}
+
+// The primitives of one call: its vertices fetched and assembled (InputError naming the scene).
+std::vector<std::uint32_t> call_primitives(const Scene& scene, const DrawSetting& d, const std::vector<draw::Buffer>& buffers,
+                                           const std::vector<draw::VertexArray>& arrays, const draw::DrawCall& c,
+                                           draw::VertexInput& input) {
+  try {
+    input = draw::fetch_vertices(buffers, arrays, d.elements, d.restart, c, d.rules);
+  } catch (const InputError& e) {
+    throw InputError(scene.source + ": " + e.what());
+  }
+  return assemble(d.mode, d.patch_vertices, input.runs);
+}
+
+std::uint32_t patches_per_instance(const DrawSetting& d, const std::vector<std::uint32_t>& primitives) {
+  return d.mode == DrawMode::Patches ? std::uint32_t(primitives.size() / std::size_t(d.patch_vertices)) : 0;
+}
+
+}  // namespace
+
+std::vector<std::vector<CallPatches>> patch_numbering(const Scene& scene, const std::vector<draw::Buffer>& buffers) {
+  std::vector<std::vector<CallPatches>> out(scene.draws.size());
+  std::uint32_t next = 0;
+  for (std::size_t i = 0; i < scene.draws.size(); ++i) {
+    const DrawSetting& d = scene.draws[i];
+    for (const draw::DrawCall& c : d.calls) {
+      draw::VertexInput input;
+      // Locations do not change which vertices are fetched: the arrays as the scene gives them.
+      std::vector<draw::VertexArray> arrays;
+      for (const VertexArraySetting& s : d.vertex_arrays) arrays.push_back(s.array);
+      const CallPatches p{next, patches_per_instance(d, call_primitives(scene, d, buffers, arrays, c, input)),
+                          c.instance_count};
+      out[i].push_back(p);
+      next += p.per_instance * p.instances;
+    }
+  }
+  return out;
+}
+
+SceneDraws::SceneDraws(const Scene& scene) : scene_(scene), buffers_(load_buffers(scene)), own_(scene.draws.size()) {
+  // The scene's program is built once, and only if a draw has no shaders of its own (the scene
+  // format then requires it to be custom). All are compiled before the first draw, so that a
+  // broken one draws nothing.
+  for (std::size_t i = 0; i < scene.draws.size(); ++i) {
+    if (scene.draws[i].shaders) own_[i] = build_scene_program(scene, *scene.draws[i].shaders);
+    else if (!shared_.program) shared_ = build_scene_program(scene);
+  }
+}
+
+SceneDraws::~SceneDraws() = default;
+
+std::vector<shader::ShaderSource> SceneDraws::sources(std::size_t draw) const {
+  const DrawSetting& d = scene_.draws.at(draw);
+  return d.shaders ? scene_sources(scene_, *d.shaders) : scene_sources(scene_);
+}
+
+void SceneDraws::for_each_call(std::size_t end, const std::function<void(const PreparedCall&)>& fn) {
+  UniformBindings uniform_bindings;
+  std::uint32_t next_patch = 0;
+  for (std::size_t i = 0; i < std::min(end, scene_.draws.size()); ++i) {
+    const DrawSetting& d = scene_.draws[i];
+    glsl::GlslProgram& program = own_[i].program ? *own_[i].program : *shared_.program;
+    bind_uniform_buffers(scene_, d, buffers_, uniform_bindings, program);
+    const std::vector<draw::VertexArray> arrays = resolve_arrays(scene_, d, program);
+    for (std::size_t k = 0; k < d.calls.size(); ++k) {
+      const draw::DrawCall& c = d.calls[k];
+      draw::VertexInput input;
+      const std::vector<std::uint32_t> indices = call_primitives(scene_, d, buffers_, arrays, c, input);
+      GlslDrawCall call;
+      call.indices = indices;
+      call.vertex_ids = input.vertex_ids;
+      call.vertex_count = input.vertex_ids.size();
+      call.instances = int(c.instance_count);
+      call.patches = d.mode == DrawMode::Patches;
+      call.corners = primitive_corners(d.mode);
+      call.patch_vertices = d.patch_vertices;
+      call.default_outer = d.default_outer;
+      call.default_inner = d.default_inner;
+      call.first_patch_id = next_patch;
+      next_patch += patches_per_instance(d, indices) * c.instance_count;
+      if (!input.instanced.empty())
+        call.instance_attributes = [&](int instance, std::vector<glsl::VertexAttribute>& out) {
+          draw::fetch_instanced(buffers_, arrays, input, c, std::uint32_t(instance), d.rules, out);
+        };
+      try {
+        fn(PreparedCall{i, k, d, program, input.per_vertex, call});
+      } catch (const InputError& e) {  // an instanced array's fetch
+        throw InputError(scene_.source + ": " + e.what());
+      } catch (const glsl::StageError& e) {
+        throw InputError(scene_.source + ": " + d.key + ": " + e.what());
+      } catch (const std::invalid_argument& e) {
+        throw InputError(scene_.source + ": " + d.key + ": " + e.what());
+      }
+    }
+  }
+}
+
+DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& parallel, const DrawOptions& options) {
+  SceneDraws draws(scene);
+  DrawStats stats;
+  std::size_t begun = scene.draws.size();
+  draws.for_each_call(scene.draws.size(), [&](const PreparedCall& p) {
+    if (p.draw != begun && options.begin_draw) options.begin_draw(p.draw);
+    begun = p.draw;
+    if (p.call.indices.empty() || p.call.instances == 0) return;
+    stats += draw_glsl(p.program, p.attributes, p.call, p.setting.raster, fb, parallel, options);
+  });
+  return stats;
+}
+
+}  // namespace tessref

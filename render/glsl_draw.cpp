@@ -1,0 +1,197 @@
+#include "render/glsl_draw.h"
+
+#include <array>
+#include <chrono>
+#include <stdexcept>
+
+#include "check/check.h"
+
+namespace tessref {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// Patches per tessellated chunk when the caller sets none: a user's control shader may write any
+// level, so chunks are sized for the largest (64: about 6,000 triangles a patch).
+constexpr std::size_t kChunkPatches = 64;
+constexpr std::size_t kPrimitivesPerBatch = 65536;  // untessellated draws
+
+// The rasterizer's entry for each primitive kind.
+RasterStats draw_batch(const TriangleBatch& b, const RasterState& s, const FragmentProgram& fs,
+                       Framebuffer& fb, const Parallel& p) {
+  return draw_triangles(b, s, fs, fb, p);
+}
+RasterStats draw_batch(const LineBatch& b, const RasterState& s, const FragmentProgram& fs,
+                       Framebuffer& fb, const Parallel& p) {
+  return draw_lines(b, s, fs, fb, p);
+}
+RasterStats draw_batch(const PointBatch& b, const RasterState& s, const FragmentProgram& fs,
+                       Framebuffer& fb, const Parallel& p) {
+  return draw_points(b, s, fs, fb, p);
+}
+
+// Untessellated primitives: the vertex shader's gl_Position and outputs become the rasterizer's
+// vertices.
+template <class Batch>
+void draw_primitive_list(const glsl::GlslProgram& program, const std::vector<StageVertex>& shaded,
+                         const GlslDrawCall& call, const RasterState& state, const FragmentProgram& fs,
+                         Framebuffer& fb, const Parallel& parallel, DrawStats& stats, const DrawOptions& options) {
+  constexpr std::size_t kCorners = Batch::kCorners;
+  const std::size_t corners = call.indices.empty() ? call.count : call.indices.size();
+  const std::size_t primitives = corners / kCorners;
+  Batch batch;
+  batch.num_varyings = program.varyings();
+  batch.flat_varyings = program.flat_varyings();
+  const std::size_t records = std::size_t(batch.records());
+  for (std::size_t first = 0; first < primitives; first += kPrimitivesPerBatch) {
+    const std::size_t n = std::min(kPrimitivesPerBatch, primitives - first);
+    batch.vertices.assign(kCorners * n * records, ClipVertex{});
+    for (std::size_t k = 0; k < kCorners * n; ++k) {
+      const std::size_t at = kCorners * first + k;
+      const std::size_t v = call.indices.empty() ? at : call.indices[at];
+      if (v >= shaded.size()) throw std::invalid_argument("draw: index " + std::to_string(v) + " past the vertex arrays");
+      // I/O slot words (glsl_interface.h): gl_Position, then location L at 4 + 4L = varying 4L.
+      const auto* src = reinterpret_cast<const float*>(shaded[v].attr.data());
+      auto* dst = reinterpret_cast<float*>(batch.vertices.data() + k * records);
+      std::copy_n(src, 4 + std::min(batch.num_varyings, 4 * (kMaxStageAttributes - 1)), dst);
+    }
+    const auto t = Clock::now();
+    stats.triangles_generated += n;
+    if constexpr (kCorners == 3)
+      if (options.untessellated_triangles) options.untessellated_triangles(batch);
+    stats.raster += draw_batch(batch, state, fs, fb, parallel);
+    stats.raster_seconds += seconds_since(t);
+    if (options.check) options.check->after_raster();
+  }
+}
+
+// Isolines and point mode: the evaluated vertices the tessellator collected for this chunk.
+template <class Batch>
+void draw_tess_primitives(std::vector<ClipVertex>& vertices, const TessEvalProgram& tes,
+                          const RasterState& state, const FragmentProgram& fs, Framebuffer& fb,
+                          const Parallel& parallel, DrawStats& stats) {
+  if (vertices.empty()) return;
+  Batch batch;
+  batch.num_varyings = tes.num_varyings();
+  batch.flat_varyings = tes.flat_varyings();
+  batch.vertices.swap(vertices);
+  stats.triangles_generated += batch.primitive_count();
+  stats.raster += draw_batch(batch, state, fs, fb, parallel);
+  batch.vertices.swap(vertices);
+  vertices.clear();
+}
+
+}  // namespace
+
+DrawStats draw_glsl(const glsl::GlslProgram& program,
+                    const std::vector<glsl::VertexAttribute>& attributes, const GlslDrawCall& call,
+                    const RasterState& raster_state, Framebuffer& fb, const Parallel& parallel,
+                    const DrawOptions& options) {
+  if (call.patches != program.has_tes())
+    throw std::invalid_argument(call.patches
+                                    ? "draw: GL_PATCHES needs a tessellation evaluation shader"
+                                    : "draw: a program with tessellation shaders draws GL_PATCHES only");
+  if (call.patches && (call.patch_vertices < 1 || call.patch_vertices > kMaxPatchVertices))
+    throw std::invalid_argument("draw: GL_PATCH_VERTICES must be 1.." + std::to_string(kMaxPatchVertices));
+  // Atomic counters: one thread, so that the values each invocation sees are the same every run.
+  const Parallel serial(1);
+  const Parallel& par = program.uses_atomic_counters() ? serial : parallel;
+  const bool indexed = !call.indices.empty();
+  const bool by_id = !call.vertex_ids.empty();
+  const std::size_t shade_first = indexed || by_id ? 0 : call.first;
+  const std::size_t shade_count = by_id ? call.vertex_ids.size() : indexed ? call.vertex_count : call.count;
+  std::vector<glsl::VertexAttribute> instance_attributes;  // the draw's, then this instance's
+  if (call.instance_attributes) instance_attributes = attributes;
+  const std::vector<glsl::VertexAttribute>& vertex_attributes = call.instance_attributes ? instance_attributes : attributes;
+
+  DrawStats stats;
+  const auto tcs = call.patches ? program.control(call.patch_vertices, call.default_outer, call.default_inner) : nullptr;
+  const auto tes = call.patches ? program.evaluation() : nullptr;
+  const auto program_fs = program.fragment();
+  // --check: the fragment shader's outputs watched (check/check.h).
+  const auto watched = options.check ? options.check->watch(*program_fs) : nullptr;
+  const FragmentProgram* fs = watched ? watched.get() : program_fs.get();
+  std::vector<StageVertex> shaded(shade_count);
+  std::vector<TessDumpRecord> records;
+  TessOptions tess_options;
+  tess_options.patches_per_task = 4;
+  std::vector<std::uint32_t> emitted;  // isolines and point mode, into records
+  if (options.wants_tess_records()) tess_options.dump = &records;
+  if (options.tess_lines_points) tess_options.dump_emitted = &emitted;
+  // Isolines and point mode: the tessellator hands their vertices over here, chunk by chunk.
+  std::vector<ClipVertex> lines, points;
+  tess_options.lines = &lines;
+  tess_options.points = &points;
+  const TessDrawInput* check_input = nullptr;  // --check's control shader re-run: this instance's patches
+  if (options.check)
+    tess_options.control_check = [&](std::size_t p, const PatchOutput& o) {
+      options.check->control_output(p, o, [&](std::size_t q, int lane) { return trace_control(*check_input, *tcs, q, lane); });
+    };
+  const std::size_t chunk = options.tess_chunk_patches ? options.tess_chunk_patches : kChunkPatches;
+
+  for (int instance = 0; instance < call.instances; ++instance) {
+    auto t0 = Clock::now();
+    if (call.instance_attributes) {
+      instance_attributes.resize(attributes.size());
+      call.instance_attributes(instance, instance_attributes);
+    }
+    program.run_vertices(vertex_attributes, shade_first, shade_count, instance, shaded.data(), par,
+                         by_id ? call.vertex_ids.data() : nullptr);
+    stats.vertices_shaded += shade_count;
+    stats.vertex_seconds += seconds_since(t0);
+    if (options.check) {
+      const Checker::VertexTrace trace = [&](std::size_t v) { return trace_vertex(program, vertex_attributes, v, instance); };
+      std::array<std::string, kMaxStageAttributes> slot_names;  // named once, not per vertex
+      for (int s = 0; s < kMaxStageAttributes; ++s) slot_names[s] = s == 0 ? "gl_Position" : "location " + std::to_string(s - 1);
+      for (std::size_t v = 0; v < shaded.size(); ++v)
+        for (int s = 0; s < kMaxStageAttributes; ++s)
+          options.check->vertex_output(shade_first + v, slot_names[s],
+                                       &shaded[v].attr[s][0], 4, call.indices, call.patches ? call.patch_vertices : 3, trace);
+    }
+    if (!call.patches) {
+      stats.triangles_in += (indexed ? call.indices.size() : call.count) / std::size_t(call.corners);
+      switch (call.corners) {
+        case 1: draw_primitive_list<PointBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options); break;
+        case 2: draw_primitive_list<LineBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options); break;
+        default: draw_primitive_list<TriangleBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options);
+      }
+      continue;
+    }
+
+    t0 = Clock::now();
+    const double raster_before = stats.raster_seconds;
+    const TessDrawInput input{shaded, call.indices, call.patch_vertices};
+    check_input = &input;
+    const std::size_t patches = input.patch_count();
+    stats.triangles_in += patches;
+    std::size_t done = 0;
+    stats.tess += tessellate_chunks(input, chunk, *tcs, *tes, tess_options, par, [&](const TriangleBatch& batch) {
+      if (options.check)  // before the chunk is drawn: the TES offence comes first
+        options.check->evaluation_outputs(records, batch, [&](std::uint32_t p, const glm::vec3& c) {
+          return trace_evaluation(input, *tcs, *tes, tess_options, p, c);
+        });
+      const auto r0 = Clock::now();
+      stats.triangles_generated += batch.triangle_count();
+      stats.raster += draw_triangles(batch, raster_state, *fs, fb, par);
+      draw_tess_primitives<LineBatch>(lines, *tes, raster_state, *fs, fb, par, stats);
+      draw_tess_primitives<PointBatch>(points, *tes, raster_state, *fs, fb, par, stats);
+      stats.raster_seconds += seconds_since(r0);
+      if (options.check) options.check->after_raster();
+      const std::uint32_t first_id = call.first_patch_id + std::uint32_t(instance) * std::uint32_t(patches);
+      if (first_id)
+        for (TessDumpRecord& r : records) r.patch_id += first_id;
+      options.hand_out_tess_chunk(records, batch, &emitted);
+      done = std::min(patches, done + chunk);
+      if (options.progress)
+        options.progress((double(instance) + double(done) / double(std::max<std::size_t>(1, patches))) /
+                         double(call.instances));
+    });
+    stats.tessellation_seconds += seconds_since(t0) - (stats.raster_seconds - raster_before);
+  }
+  return stats;
+}
+
+}  // namespace tessref

@@ -1,0 +1,355 @@
+#include "render/glsl_scene.h"
+
+#include <bit>
+#include <fstream>
+#include <mutex>
+#include <optional>
+#include <sstream>
+
+#include "common/error.h"
+#include "mesh/camera.h"
+#include "render/glsl_draw.h"
+#include "io/image_output.h"
+#include "mesh/vertex_tags.h"
+#include "shader/glsl_compile.h"
+#include "stages/glsl/twins.h"
+#include "stages/programs/transform.h"
+#include "stages/tess_levels_adaptive.h"
+
+namespace tessref {
+namespace {
+
+using shader::Scalar;
+using shader::Stage;
+
+std::string read_file(const Scene& scene, const ShaderSettings& s, const char* key, const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  if (!in || !(text << in.rdbuf()))
+    throw InputError(scene.source + ": " + s.key + "." + key + ": cannot read '" + path.string() + "'");
+  return text.str();
+}
+
+glsl::UniformValue floats(std::initializer_list<float> v, int columns = 1, int rows = 0) {
+  glsl::UniformValue u;
+  u.scalar = Scalar::F32;
+  u.columns = columns;
+  u.rows = rows ? rows : int(v.size()) / columns;
+  for (float x : v) u.words.push_back(std::bit_cast<std::uint32_t>(x));
+  return u;
+}
+glsl::UniformValue vec(const float* p, int n) {
+  glsl::UniformValue u;
+  u.rows = n;
+  for (int i = 0; i < n; ++i) u.words.push_back(std::bit_cast<std::uint32_t>(p[i]));
+  return u;
+}
+glsl::UniformValue mat(const float* p, int columns, int rows) {
+  glsl::UniformValue u = vec(p, columns * rows);
+  u.columns = columns;
+  u.rows = rows;
+  return u;
+}
+glsl::UniformValue integer(int v, Scalar s = Scalar::I32) {
+  glsl::UniformValue u;
+  u.scalar = s;
+  u.words.push_back(std::uint32_t(v));
+  return u;
+}
+
+// The scene uniforms: every uniform the GLSL twins read, with the values render_scene gives the
+// C++ programs (as the real-GL runner sets them, glref/scene_renderer.cpp).
+void set_scene_uniforms(const Scene& scene, glsl::GlslProgram& program) {
+  const std::vector<std::string> names = program.uniform_names();
+  auto set = [&](const std::string& name, const glsl::UniformValue& v) {
+    const std::string base = name.substr(0, name.find('['));
+    if (std::binary_search(names.begin(), names.end(), base)) program.set_uniform(name, v);
+  };
+  const glm::mat4 view_proj =
+      projection_matrix(scene.camera, scene.width, scene.height) * view_matrix(scene.camera);
+  const auto vs = programs::TransformVertexShader::from(model_matrix(scene.transform), view_proj);
+  set("u_model", mat(&vs.u_model[0][0], 4, 4));
+  set("u_view_projection", mat(&vs.u_view_projection[0][0], 4, 4));
+  set("u_normal_matrix", mat(&vs.u_normal_matrix[0][0], 3, 3));
+  set("u_view_proj", mat(&vs.u_view_projection[0][0], 4, 4));
+  const TessellationSettings& t = scene.tessellation;
+  const AdaptiveLevelSettings screen;
+  set("u_normal_mode", integer(glsl_index(t.normal_mode)));
+  set("u_phong_alpha", floats({t.phong_alpha}));
+  set("u_nagata_eps", floats({t.nagata_eps}));
+  set("u_adaptive", integer(t.adaptive.enabled ? 1 : 0, Scalar::Bool));
+  set("u_outer", vec(t.levels.outer.data(), 4));
+  set("u_inner", vec(t.levels.inner.data(), 2));
+  set("u_viewport", floats({float(scene.width), float(scene.height)}));
+  set("u_pixels_per_segment", floats({t.adaptive.pixels_per_segment}));
+  set("u_min_level", floats({screen.min_level}));
+  set("u_max_level", floats({screen.max_level}));
+  set("u_inner_rule", integer(screen.inner_rule == InnerLevelRule::Max ? 0 : 1));
+  set("u_displacement", integer(t.displacement.enabled ? 1 : 0, Scalar::Bool));
+  set("u_displacement_amplitude", floats({t.displacement.amplitude}));
+  set("u_displacement_frequency", floats({t.displacement.frequency}));
+  set("u_eye", vec(&scene.camera.eye.x, 3));
+  set("u_num_lights", integer(int(scene.lights.size())));
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    set("u_light_position[" + std::to_string(i) + "]", vec(&scene.lights[i].position.x, 3));
+    set("u_light_intensity[" + std::to_string(i) + "]", vec(&scene.lights[i].intensity.x, 3));
+  }
+  set("u_ka", floats({scene.material.ka}));
+  set("u_kd", floats({scene.material.kd}));
+  set("u_ks", floats({scene.material.ks}));
+  set("u_shininess", floats({scene.material.shininess}));
+  set("u_color", vec(&scene.material.color.x, 3));
+}
+
+// shaders.uniforms: the scene's numbers in the uniform's own GLSL type.
+void set_user_uniforms(const Scene& scene, const ShaderSettings& shaders, glsl::GlslProgram& program) {
+  for (const UniformSetting& u : shaders.uniforms) {
+    const std::string key = scene.source + ": " + shaders.key + ".uniforms." + u.name;
+    const auto shape = program.uniform_shape(u.name);
+    if (!shape) {
+      std::string active;
+      for (const std::string& n : program.uniform_names()) active += (active.empty() ? "" : ", ") + n;
+      throw InputError(key + ": the program has no active uniform of that name (active: " +
+                       (active.empty() ? "none" : active) + ")");
+    }
+    if (shape->is_struct) {
+      std::string members;
+      for (const std::string& m : shape->members) members += (members.empty() ? "" : ", ") + m;
+      throw InputError(key + ": the uniform is a " + shape->glsl_name + ": give an object of its members (" + members +
+                       ")" + (shape->elements > 1 ? ", one per element" : ""));
+    }
+    glsl::UniformValue v;
+    v.scalar = shape->scalar;
+    v.columns = shape->columns;
+    v.rows = shape->rows;
+    const std::size_t want = std::size_t(shape->columns * shape->rows * shape->elements);
+    const std::size_t one = std::size_t(shape->columns * shape->rows);
+    if (u.values.size() != want && u.values.size() != one) {
+      const bool element = u.name.back() == ']';
+      throw InputError(key + ": the uniform is a " + shape->glsl_name + ", which takes " +
+                       (element && want != one ? std::to_string(one) + " values (this element) or " + std::to_string(want) +
+                                                     " (the elements from it to the end of the array)"
+                                               : std::to_string(want) + " values") +
+                       ", got " + std::to_string(u.values.size()));
+    }
+    if (u.boolean != (shape->scalar == Scalar::Bool))
+      throw InputError(key + ": the uniform is a " + shape->glsl_name + (u.boolean ? ", not a bool" : ", give true or false"));
+    for (double x : u.values) {
+      switch (shape->scalar) {
+        case Scalar::F32: v.words.push_back(std::bit_cast<std::uint32_t>(float(x))); break;
+        case Scalar::F64: {
+          const auto b = std::bit_cast<std::uint64_t>(x);
+          v.words.push_back(std::uint32_t(b));
+          v.words.push_back(std::uint32_t(b >> 32));
+          break;
+        }
+        case Scalar::Bool: v.words.push_back(x != 0.0 ? 1u : 0u); break;
+        default: {
+          const bool is_unsigned = shape->scalar == Scalar::U32;
+          if (x != std::floor(x) || x < (is_unsigned ? 0.0 : -2147483648.0) || x > (is_unsigned ? 4294967295.0 : 2147483647.0))
+            throw InputError(key + ": the uniform is a " + shape->glsl_name + "; " + std::to_string(x) +
+                             " is not a 32-bit " + (is_unsigned ? "unsigned " : "") + "integer");
+          v.words.push_back(is_unsigned ? std::uint32_t(x) : std::uint32_t(std::int32_t(x)));
+        }
+      }
+    }
+    program.set_uniform(u.name, v);
+  }
+}
+
+// shaders.textures: each image on its own texture unit (its index), the sampler uniform set to
+// that unit.
+void bind_textures(const Scene& scene, const ShaderSettings& shaders, glsl::GlslProgram& program, SceneProgram& out) {
+  std::uint32_t unit = 0;
+  for (const TextureSetting& t : shaders.textures) {
+    const std::string key = scene.source + ": " + shaders.key + ".textures." + t.sampler;
+    const auto shape = program.uniform_shape(t.sampler);
+    if (!shape || shape->glsl_name.find("sampler") == std::string::npos)
+      throw InputError(key + ": the program has no active sampler2D uniform of that name" +
+                       (shape ? " (it is a " + shape->glsl_name + ")" : std::string()));
+    if (shape->glsl_name != "sampler2D")
+      throw InputError(key + ": the uniform is a " + shape->glsl_name + ", but textures are 2D images (GL_TEXTURE_2D); "
+                       "GL draws nothing from a sampler whose unit holds a texture of another target");
+    auto tex = std::make_unique<shader::Texture>(load_texture(t, key));
+    program.bind_texture(unit, tex.get());
+    program.set_uniform(t.sampler, integer(int(unit)));
+    out.textures.push_back(std::move(tex));
+    ++unit;
+  }
+}
+
+// The last program compiled, by its sources: repeated frames (--repeat, benchmarks) of one scene
+// compile once.
+shader::CompiledProgram compile_cached(const std::vector<shader::ShaderSource>& sources) {
+  static std::mutex mutex;
+  static std::string last_key;
+  static shader::CompiledProgram last;
+  std::string key;
+  for (const shader::ShaderSource& s : sources)
+    key += std::to_string(int(s.stage)) + '\0' + s.file + '\0' + std::to_string(s.first_line) + '\0' + s.text + '\0';
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (key != last_key) {
+    last = shader::compile_program(sources);
+    last_key = std::move(key);
+  }
+  return last;
+}
+
+}  // namespace
+
+std::vector<shader::ShaderSource> scene_sources(const Scene& scene) { return scene_sources(scene, scene.shaders); }
+
+std::vector<shader::ShaderSource> scene_sources(const Scene& scene, const ShaderSettings& s) {
+  std::vector<shader::ShaderSource> out;
+  if (s.program == ShaderProgram::Twins) {
+    auto twin = [&](Stage stage, const std::string& name) {
+      out.push_back({stage, name, 1, glsl::twin_source(name)});
+    };
+    const SchemeTwins scheme = scheme_twins(scene.tessellation.scheme);
+    // Scalar Tagged PN's control shader reads the tags the vertex stage hands on.
+    const bool tagged = scene.tessellation.enabled && scene.tessellation.scheme == SurfaceScheme::ScalarTaggedPN;
+    twin(Stage::Vertex, tagged ? "tagged_transform.vert" : "transform.vert");
+    if (scene.tessellation.enabled) {
+      twin(Stage::TessControl, scheme.tess_control);
+      twin(Stage::TessEval, scheme.tess_evaluation);
+    }
+    twin(Stage::Fragment, scene.shading == Shading::Phong ? "phong.frag" : "normals.frag");
+    return out;
+  }
+  auto file = [&](Stage stage, const char* key, const std::filesystem::path& path) {
+    if (path.empty()) return;
+    const std::string name = path.string();
+    if (name.rfind("twin:", 0) == 0) {
+      try {
+        out.push_back({stage, name.substr(5), 1, glsl::twin_source(name.substr(5))});
+      } catch (const std::invalid_argument& e) {
+        throw InputError(scene.source + ": " + s.key + "." + key + ": " + e.what());
+      }
+      return;
+    }
+    out.push_back({stage, name, 1, read_file(scene, s, key, path)});
+  };
+  file(Stage::Vertex, "vertex", s.vertex);
+  file(Stage::TessControl, "tess_control", s.tess_control);
+  file(Stage::TessEval, "tess_evaluation", s.tess_evaluation);
+  file(Stage::Fragment, "fragment", s.fragment);
+  return out;
+}
+
+SceneProgram build_scene_program(const Scene& scene) { return build_scene_program(scene, scene.shaders); }
+
+SceneProgram build_scene_program(const Scene& scene, const ShaderSettings& shaders) {
+  const std::vector<shader::ShaderSource> sources = scene_sources(scene, shaders);
+  shader::ExecLimits limits;
+  limits.batch_lanes = shaders.batch_lanes;
+  limits.max_instructions = shaders.max_instructions;
+  std::unique_ptr<glsl::GlslProgram> program;
+  try {
+    program = std::make_unique<glsl::GlslProgram>(compile_cached(sources), limits);
+  } catch (const shader::SpirvError& e) {
+    throw InputError(scene.source + ": " + shaders.key + ": " + e.what());
+  }
+  // A scene's draws name their modes (GL_PATCHES needs a tessellation evaluation shader, checked
+  // per draw); the mesh path takes its mode from tessellation.enabled.
+  if (scene.draws.empty() && scene.tessellation.enabled != program->has_tes())
+    throw InputError(scene.source + (program->has_tes()
+                                         ? ": shaders: the program has tessellation shaders but tessellation.enabled is false"
+                                         : ": shaders: tessellation.enabled is true but the program has no tessellation evaluation shader"));
+  // The twins' TES layout line names one spacing and winding; the scene chooses them (the
+  // real-GL runner rewrites the line the same way).
+  if (shaders.program == ShaderProgram::Twins && program->has_tes())
+    program->override_tes_layout(TessLayout{TessDomain::Triangles, scene.tessellation.spacing,
+                                            scene.tessellation.winding, false});
+  set_scene_uniforms(scene, *program);
+  set_user_uniforms(scene, shaders, *program);
+  SceneProgram out;
+  bind_textures(scene, shaders, *program, out);
+  out.program = std::move(program);
+  return out;
+}
+
+std::vector<glsl::VertexAttribute> scene_attributes(const Scene& scene, const glsl::GlslProgram& program,
+                                                   const Mesh& mesh) {
+  std::vector<glsl::VertexAttribute> attributes;
+  for (const auto& [input, source] : scene.shaders.attributes) {
+    const bool by_location = !input.empty() && input.find_first_not_of("0123456789") == std::string::npos;
+    const auto location = by_location ? std::optional<std::uint32_t>(std::stoul(input)) : program.attribute_location(input);
+    if (!location) continue;  // an input this program does not have (or does not use)
+    const std::vector<glm::vec3>& data = source == "position" ? mesh.positions : mesh.normals;
+    glsl::VertexAttribute a;
+    a.location = *location;
+    a.components = 3;
+    for (const glm::vec3& v : data)
+      for (int c = 0; c < 3; ++c) a.words.push_back(std::bit_cast<std::uint32_t>(v[c]));
+    attributes.push_back(std::move(a));
+  }
+  // tagged_transform.vert's in_tags (location 2) and in_crease (location 3).
+  if (scene.shaders.program == ShaderProgram::Twins && scene.tessellation.enabled &&
+      scene.tessellation.scheme == SurfaceScheme::ScalarTaggedPN) {
+    const std::vector<VertexTags> tags = load_vertex_tags(scene.tessellation, mesh);
+    glsl::VertexAttribute t, c;
+    t.location = 2;
+    t.components = 4;
+    c.location = 3;
+    c.components = 3;
+    for (const VertexTags& v : tags) {
+      for (float x : {v.tension, v.sharpness, v.bias, 0.0f}) t.words.push_back(std::bit_cast<std::uint32_t>(x));
+      for (int k = 0; k < 3; ++k) c.words.push_back(std::bit_cast<std::uint32_t>(v.crease[k]));
+    }
+    attributes.push_back(std::move(t));
+    attributes.push_back(std::move(c));
+  }
+  return attributes;
+}
+
+GlslDrawCall scene_draw_call(const Scene& scene, const Mesh& mesh) {
+  GlslDrawCall call;
+  call.indices = mesh.indices;
+  call.vertex_count = mesh.vertex_count();
+  call.patches = scene.tessellation.enabled;
+  call.patch_vertices = scene.shaders.program == ShaderProgram::Twins ? 3 : scene.shaders.patch_vertices;
+  return call;
+}
+
+DrawStats draw_glsl_scene(const Scene& scene, const glsl::GlslProgram& program, const Mesh& mesh,
+                          Framebuffer& fb, const Parallel& parallel, const DrawOptions& options) {
+  const std::vector<glsl::VertexAttribute> attributes = scene_attributes(scene, program, mesh);
+  const GlslDrawCall call = scene_draw_call(scene, mesh);
+  RasterState state;
+  state.cull_back_faces = scene.cull_back_faces;
+  state.polygon_mode = scene.polygon_mode;
+  try {
+    return draw_glsl(program, attributes, call, state, fb, parallel, options);
+  } catch (const glsl::StageError& e) {
+    throw InputError(scene.source + ": " + e.what());
+  }
+}
+
+shader::Texture load_texture(const TextureSetting& t, const std::string& key) {
+  FloatImage image;
+  try {
+    image = read_float_image(t.path);
+  } catch (const InputError& e) {
+    throw InputError(key + ": " + e.what());
+  }
+  shader::Texture tex;
+  tex.width = image.width;
+  tex.height = image.height;
+  tex.linear = t.linear;
+  using Wrap = shader::Texture::Wrap;
+  tex.wrap_s = tex.wrap_t = t.wrap == "repeat"            ? Wrap::Repeat
+                            : t.wrap == "mirrored_repeat" ? Wrap::MirroredRepeat
+                                                          : Wrap::ClampToEdge;
+  tex.texels.resize(std::size_t(image.width) * image.height * 4);
+  const int ch = image.channels;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const float* src = image.pixels.data() + (std::size_t(image.height - 1 - y) * image.width + x) * ch;
+      float* dst = tex.texels.data() + (std::size_t(y) * image.width + x) * 4;
+      for (int c = 0; c < 3; ++c) dst[c] = src[ch >= 3 ? c : 0];
+      dst[3] = ch == 4 ? src[3] : ch == 2 ? src[1] : 1.0f;
+    }
+  return tex;
+}
+
+}  // namespace tessref
