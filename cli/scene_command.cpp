@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "mesh/mesh_source.h"
+#include "render/as_draws.h"
 #include "scene/scene_loader.h"
 
 namespace tessref::cli {
@@ -15,6 +17,7 @@ struct SceneArgs {
   std::string scene;
   std::vector<std::string> sets;
   bool keys = false;
+  std::string as_draws;
 };
 
 }  // namespace
@@ -39,9 +42,22 @@ void add_scene_command(CLI::App& app) {
       "scene", "Print a scene as render reads it (default scene, file and --set merged, then checked) as JSON");
   add_scene_options(cmd, args->scene, args->sets);
   cmd->add_flag("--keys", args->keys, "list every scene key, what it allows and its default, and exit");
+  cmd->add_option("--as-draws", args->as_draws,
+                  "write the mesh scene as the GL draw render makes of it into folder DIR: DIR/scene.json, the "
+                  "mesh's buffers and the program's GLSL (the built-in programs as their twins)");
   cmd->callback([args] {
     if (args->keys) {
       std::printf("Scene keys (read in this order; array elements as []):\n%s", scene_keys_text().c_str());
+      return;
+    }
+    if (!args->as_draws.empty()) {
+      const Scene scene = load_scene(args->scene, args->sets);
+      std::vector<std::string> warnings;
+      const Mesh mesh = build_mesh(scene.mesh, warnings);
+      for (const std::string& w : warnings) std::fprintf(stderr, "tessref: warning: %s\n", w.c_str());
+      write_scene_as_draws(load_scene_json(args->scene, args->sets), scene, mesh, args->as_draws);
+      std::printf("tessref scene: %s -> %s/scene.json (%zu vertices, %zu indices)\n", scene.source.c_str(),
+                  args->as_draws.c_str(), mesh.vertex_count(), mesh.indices.size());
       return;
     }
     std::printf("%s\n", load_scene_json(args->scene, args->sets).dump(2).c_str());
