@@ -139,10 +139,12 @@ void GlDraws::bind(std::size_t d, unsigned program) const {
   glBindVertexArray(vaos_[d]);
   for (const auto& [location, a] : current_[d]) set_current(location, a);
   apply_raster_state(draw.raster, scene_.width, scene_.height);
-  for (const UniformBufferSetting& u : draw.uniform_buffers) {
-    const std::size_t size = u.size.value_or(buffer_sizes_[u.buffer] - u.offset);
-    glBindBufferRange(GL_UNIFORM_BUFFER, u.binding, buffers_[u.buffer], GLintptr(u.offset), GLsizeiptr(size));
-  }
+  for (const auto& [target, settings] : {std::pair{GLenum(GL_UNIFORM_BUFFER), &draw.uniform_buffers},
+                                         std::pair{GLenum(GL_SHADER_STORAGE_BUFFER), &draw.storage_buffers}})
+    for (const UniformBufferSetting& u : *settings) {
+      const std::size_t size = u.size.value_or(buffer_sizes_[u.buffer] - u.offset);
+      glBindBufferRange(target, u.binding, buffers_[u.buffer], GLintptr(u.offset), GLsizeiptr(size));
+    }
   glDisable(GL_PRIMITIVE_RESTART);
   glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
   if (draw.restart.enabled && draw.restart.fixed_index) glEnable(GL_PRIMITIVE_RESTART_FIXED_INDEX);

@@ -98,14 +98,15 @@ std::vector<draw::VertexArray> resolve_arrays(const Scene& scene, const DrawSett
   return arrays;
 }
 
-// glBindBufferRange(GL_UNIFORM_BUFFER, ...) state: binding -> the range bound there. GL keeps it
+// glBindBufferRange state of one indexed target: binding -> the range bound there. GL keeps it
 // from draw to draw, and so does a scene.
-using UniformBindings = std::map<std::uint32_t, std::pair<const UniformBufferSetting*, std::span<const std::byte>>>;
+using BufferBindings = std::map<std::uint32_t, std::pair<const UniformBufferSetting*, std::span<const std::byte>>>;
 
-// Binds d's uniform buffers (added to the bindings the earlier draws left) to the program's blocks.
-void bind_uniform_buffers(const Scene& scene, const DrawSetting& d, const std::vector<draw::Buffer>& buffers,
-                          UniformBindings& bindings, glsl::GlslProgram& program) {
-  for (const UniformBufferSetting& u : d.uniform_buffers) {
+// Adds d's ranges of one target (its uniform_buffers or storage_buffers) to the bindings the
+// earlier draws left. InputError for a range past its buffer.
+void add_bindings(const Scene& scene, const std::vector<UniformBufferSetting>& settings,
+                  const std::vector<draw::Buffer>& buffers, BufferBindings& bindings) {
+  for (const UniformBufferSetting& u : settings) {
     const draw::Buffer& b = buffers[u.buffer];
     const std::size_t size = u.size.value_or(b.bytes.size() > u.offset ? b.bytes.size() - u.offset : 0);
     if (u.offset + size > b.bytes.size() || size == 0)
@@ -113,20 +114,27 @@ void bind_uniform_buffers(const Scene& scene, const DrawSetting& d, const std::v
                        std::to_string(u.offset + size) + ") of buffer '" + b.name + "', which holds " +
                        std::to_string(b.bytes.size()) + " bytes");
     bindings[u.binding] = {&u, std::span<const std::byte>(b.bytes).subspan(u.offset, size)};
-    const std::vector<glsl::GlslProgram::UniformBlock> program_blocks = program.uniform_blocks();
-    if (std::none_of(program_blocks.begin(), program_blocks.end(),
-                     [&](const glsl::GlslProgram::UniformBlock& k) { return k.binding == u.binding; })) {
-      std::string blocks;
-      for (const auto& k : program_blocks)
-        blocks += (blocks.empty() ? "" : ", ") + k.name + " at " + std::to_string(k.binding);
-      throw InputError(scene.source + ": " + u.key + ".binding: the program has no uniform block at binding " +
-                       std::to_string(u.binding) + " (its blocks: " + (blocks.empty() ? "none" : blocks) +
-                       "; a block is placed with layout(binding = N))");
-    }
+  }
+}
+
+// Binds the program's blocks of one target to the ranges bound; a range d binds where the program
+// has no block is refused (a scene's binding that reads nothing is a mistake worth naming).
+void bind_blocks(const Scene& scene, const DrawSetting& d, const BufferBindings& bindings, bool storage,
+                 glsl::GlslProgram& program) {
+  const std::vector<glsl::GlslProgram::UniformBlock> blocks = storage ? program.storage_blocks() : program.uniform_blocks();
+  for (const UniformBufferSetting& u : storage ? d.storage_buffers : d.uniform_buffers) {
+    if (std::any_of(blocks.begin(), blocks.end(), [&](const glsl::GlslProgram::UniformBlock& k) { return k.binding == u.binding; }))
+      continue;
+    std::string names;
+    for (const auto& k : blocks) names += (names.empty() ? "" : ", ") + k.name + " at " + std::to_string(k.binding);
+    throw InputError(scene.source + ": " + u.key + ".binding: the program has no " +
+                     (storage ? "shader storage" : "uniform") + " block at binding " + std::to_string(u.binding) +
+                     " (its blocks: " + (names.empty() ? "none" : names) + "; a block is placed with layout(binding = N))");
   }
   for (const auto& [binding, bound] : bindings) {
     try {
-      program.bind_uniform_buffer(binding, bound.second);
+      if (storage) program.bind_storage_buffer(binding, bound.second);
+      else program.bind_uniform_buffer(binding, bound.second);
     } catch (const std::invalid_argument& e) {
       throw InputError(scene.source + ": " + bound.first->key + ": " + e.what());
     }
@@ -172,11 +180,24 @@ std::vector<std::vector<CallPatches>> patch_numbering(const Scene& scene, const 
 
 SceneDraws::SceneDraws(const Scene& scene) : scene_(scene), buffers_(load_buffers(scene)), own_(scene.draws.size()) {
   // The scene's program is built once, and only if a draw has no shaders of its own (the scene
-  // format then requires it to be custom). All are compiled before the first draw, so that a
-  // broken one draws nothing.
+  // format then requires it to be custom), unless storage ranges are bound: their sizes are part
+  // of the program (runtime arrays), so such a draw gets its own. All are compiled before the
+  // first draw, so that a broken one draws nothing.
+  BufferBindings storage;
   for (std::size_t i = 0; i < scene.draws.size(); ++i) {
-    if (scene.draws[i].shaders) own_[i] = build_scene_program(scene, *scene.draws[i].shaders);
-    else if (!shared_.program) shared_ = build_scene_program(scene);
+    const DrawSetting& d = scene.draws[i];
+    add_bindings(scene, d.storage_buffers, buffers_, storage);
+    shader::StorageBufferSizes sizes;
+    for (const auto& [binding, bound] : storage) sizes[binding] = bound.second.size();
+    const std::string at = sizes.empty() ? "" : " (" + d.key + ": with the shader storage ranges bound then)";
+    try {
+      if (d.shaders) own_[i] = build_scene_program(scene, *d.shaders, sizes);
+      else if (!sizes.empty()) own_[i] = build_scene_program(scene, scene.shaders, sizes);
+      else if (!shared_.program) shared_ = build_scene_program(scene);
+    } catch (const InputError& e) {
+      if (at.empty()) throw;
+      throw InputError(e.what() + at);
+    }
   }
 }
 
@@ -188,12 +209,15 @@ std::vector<shader::ShaderSource> SceneDraws::sources(std::size_t draw) const {
 }
 
 void SceneDraws::for_each_call(std::size_t end, const std::function<void(const PreparedCall&)>& fn) {
-  UniformBindings uniform_bindings;
+  BufferBindings uniform_bindings, storage_bindings;
   std::uint32_t next_patch = 0;
   for (std::size_t i = 0; i < std::min(end, scene_.draws.size()); ++i) {
     const DrawSetting& d = scene_.draws[i];
     glsl::GlslProgram& program = own_[i].program ? *own_[i].program : *shared_.program;
-    bind_uniform_buffers(scene_, d, buffers_, uniform_bindings, program);
+    add_bindings(scene_, d.uniform_buffers, buffers_, uniform_bindings);
+    add_bindings(scene_, d.storage_buffers, buffers_, storage_bindings);
+    bind_blocks(scene_, d, uniform_bindings, false, program);
+    bind_blocks(scene_, d, storage_bindings, true, program);
     const std::vector<draw::VertexArray> arrays = resolve_arrays(scene_, d, program);
     for (std::size_t k = 0; k < d.calls.size(); ++k) {
       const draw::DrawCall& c = d.calls[k];

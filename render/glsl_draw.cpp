@@ -94,6 +94,10 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
     throw std::invalid_argument(call.patches
                                     ? "draw: GL_PATCHES needs a tessellation evaluation shader"
                                     : "draw: a program with tessellation shaders draws GL_PATCHES only");
+  if (const auto block = program.unbound_storage_block())
+    throw std::invalid_argument("draw: the shader storage block '" + block->name + "' (binding " +
+                                std::to_string(block->binding) +
+                                ") has no buffer range bound; GL leaves its reads undefined (bind one)");
   if (call.patches && (call.patch_vertices < 1 || call.patch_vertices > kMaxPatchVertices))
     throw std::invalid_argument("draw: GL_PATCH_VERTICES must be 1.." + std::to_string(kMaxPatchVertices));
   // Atomic counters: one thread, so that the values each invocation sees are the same every run.

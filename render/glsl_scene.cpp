@@ -238,14 +238,15 @@ std::vector<shader::ShaderSource> scene_sources(const Scene& scene, const Shader
 
 SceneProgram build_scene_program(const Scene& scene) { return build_scene_program(scene, scene.shaders); }
 
-SceneProgram build_scene_program(const Scene& scene, const ShaderSettings& shaders) {
+SceneProgram build_scene_program(const Scene& scene, const ShaderSettings& shaders,
+                                 const shader::StorageBufferSizes& storage) {
   const std::vector<shader::ShaderSource> sources = scene_sources(scene, shaders);
   shader::ExecLimits limits;
   limits.batch_lanes = shaders.batch_lanes;
   limits.max_instructions = shaders.max_instructions;
   std::unique_ptr<glsl::GlslProgram> program;
   try {
-    program = std::make_unique<glsl::GlslProgram>(compile_cached(sources), limits);
+    program = std::make_unique<glsl::GlslProgram>(compile_cached(sources), limits, storage);
   } catch (const shader::SpirvError& e) {
     throw InputError(scene.source + ": " + shaders.key + ": " + e.what());
   }

@@ -35,7 +35,9 @@ std::vector<shader::ShaderSource> scene_sources(const Scene& scene, const Shader
 // with file and line, a uniform value whose type does not fit, an unreadable texture) with its
 // uniforms set and its textures bound.
 SceneProgram build_scene_program(const Scene& scene);
-SceneProgram build_scene_program(const Scene& scene, const ShaderSettings& shaders);
+// storage: the bytes bound at each shader storage binding when it draws (they size runtime arrays).
+SceneProgram build_scene_program(const Scene& scene, const ShaderSettings& shaders,
+                                 const shader::StorageBufferSizes& storage = {});
 
 // The draw's vertex attribute arrays (shaders.attributes: the mesh's positions and normals by input
 // name or location) and the draw call (indices, GL_PATCH_VERTICES) draw_glsl_scene makes; also

@@ -225,22 +225,37 @@ std::optional<draw::ElementArray> read_elements(JsonObject& d, const std::vector
 
 // GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT is implementation-dependent, at most 256 (GL 4.5, table
 // 23.64): a multiple of 256 works on every driver (llvmpipe reports 16, NVIDIA 256).
-constexpr std::int64_t kUniformOffsetAlignment = 256;
-constexpr int kMaxUniformBufferBindings = 72;  // GL 4.5's minimum GL_MAX_UNIFORM_BUFFER_BINDINGS
+// An indexed buffer target's bindings (glBindBufferRange): GL_UNIFORM_BUFFER or
+// GL_SHADER_STORAGE_BUFFER, with GL 4.5's minimum binding count and the largest offset alignment
+// the spec lets an implementation ask for (256), so that a scene binds on every driver.
+struct BufferTarget {
+  const char* key;        // "uniform_buffers"
+  const char* gl_target;  // "GL_UNIFORM_BUFFER"
+  const char* blocks;     // "uniform blocks"
+  const char* alignment;  // "GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT"
+  int bindings;
+};
+constexpr std::int64_t kOffsetAlignment = 256;
+constexpr BufferTarget kUniformBuffers{"uniform_buffers", "GL_UNIFORM_BUFFER", "uniform blocks (std140/std430)",
+                                       "GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT", 72};
+constexpr BufferTarget kStorageBuffers{"shader_storage_buffers", "GL_SHADER_STORAGE_BUFFER",
+                                       "read-only shader storage blocks (std430; the range sizes a runtime array)",
+                                       "GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT", 8};
 
-std::vector<UniformBufferSetting> read_uniform_buffers(JsonObject& d, const std::vector<BufferSetting>& buffers) {
-  d.describe("uniform_buffers", "an array of {binding, buffer, offset, size}: glBindBufferRange(GL_UNIFORM_BUFFER, ...) "
-                                "for the program's uniform blocks, read through their std140/std430 layout");
+std::vector<UniformBufferSetting> read_buffer_bindings(JsonObject& d, const std::vector<BufferSetting>& buffers,
+                                                       const BufferTarget& target) {
+  d.describe(target.key, std::string("an array of {binding, buffer, offset, size}: glBindBufferRange(") + target.gl_target +
+                             ", ...) for the program's " + target.blocks + ", read through their layout");
   std::vector<UniformBufferSetting> out;
-  if (!d.has("uniform_buffers")) return out;
-  const json& list = d.value("uniform_buffers");
-  if (!list.is_array()) d.fail("uniform_buffers", "expected an array of {binding, buffer, offset, size}, got " + describe_json(list));
+  if (!d.has(target.key)) return out;
+  const json& list = d.value(target.key);
+  if (!list.is_array()) d.fail(target.key, "expected an array of {binding, buffer, offset, size}, got " + describe_json(list));
   for (std::size_t i = 0; i < list.size(); ++i) {
-    JsonObject o(list[i], d.path_of("uniform_buffers") + "." + std::to_string(i), d.source());
+    JsonObject o(list[i], d.path_of(target.key) + "." + std::to_string(i), d.source());
     UniformBufferSetting u;
     u.key = o.path();
-    o.describe("binding", "the uniform block binding point (layout(binding = N)), 0..71");
-    u.binding = std::uint32_t(o.integer("binding", 0, kMaxUniformBufferBindings - 1));
+    o.describe("binding", "the block binding point (layout(binding = N)), 0.." + std::to_string(target.bindings - 1));
+    u.binding = std::uint32_t(o.integer("binding", 0, target.bindings - 1));
     for (const UniformBufferSetting& other : out)
       if (other.binding == u.binding)
         o.fail("binding", "binding " + std::to_string(u.binding) + " is already bound by " + other.key);
@@ -248,9 +263,9 @@ std::vector<UniformBufferSetting> read_uniform_buffers(JsonObject& d, const std:
     if (o.has("offset")) {
       o.describe("offset", "a byte offset into the buffer, a multiple of 256 (default 0)");
       u.offset = std::size_t(o.integer64("offset", 0, kMaxOffset));
-      if (std::int64_t(u.offset) % kUniformOffsetAlignment)
-        o.fail("offset", std::to_string(u.offset) + " is not a multiple of 256: GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT may be "
-                         "as large as 256, and glBindBufferRange refuses an offset that is not a multiple of it");
+      if (std::int64_t(u.offset) % kOffsetAlignment)
+        o.fail("offset", std::to_string(u.offset) + " is not a multiple of 256: " + target.alignment +
+                             " may be as large as 256, and glBindBufferRange refuses an offset that is not a multiple of it");
     }
     if (o.has("size")) {
       o.describe("size", "bytes bound, > 0 (default: the rest of the buffer)");
@@ -362,7 +377,8 @@ DrawSetting read_draw(JsonObject o, const std::vector<BufferSetting>& buffers, c
       d.vertex_arrays.push_back(read_vertex_array(JsonObject(value, o.path_of("vertex_arrays") + "." + input, o.source()), input, buffers));
   }
   d.elements = read_elements(o, buffers);
-  d.uniform_buffers = read_uniform_buffers(o, buffers);
+  d.uniform_buffers = read_buffer_bindings(o, buffers, kUniformBuffers);
+  d.storage_buffers = read_buffer_bindings(o, buffers, kStorageBuffers);
   o.describe("primitive_restart", "false, \"fixed_index\" (GL_PRIMITIVE_RESTART_FIXED_INDEX) or an index "
                                   "(GL_PRIMITIVE_RESTART with glPrimitiveRestartIndex)");
   if (o.has("primitive_restart")) {

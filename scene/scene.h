@@ -125,6 +125,7 @@ struct VertexArraySetting {
 };
 
 // draws[].uniform_buffers[]: glBindBufferRange(GL_UNIFORM_BUFFER, binding, buffer, offset, size).
+// A glBindBufferRange of GL_UNIFORM_BUFFER or GL_SHADER_STORAGE_BUFFER.
 struct UniformBufferSetting {
   std::string key;  // "draws.0.uniform_buffers.1", for messages
   std::uint32_t binding = 0;
@@ -152,6 +153,7 @@ struct DrawSetting {
   // defaults: depth test, culling, scissor and blending off).
   RasterState raster = gl_initial_state();
   std::vector<UniformBufferSetting> uniform_buffers;
+  std::vector<UniformBufferSetting> storage_buffers;  // glBindBufferRange(GL_SHADER_STORAGE_BUFFER, ...)
 };
 
 struct Scene {

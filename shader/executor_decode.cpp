@@ -74,6 +74,16 @@ struct Decoder {
     for (const FlatComponent& c : t.flat) p.row_scalar[row + c.word] = c.scalar;
   }
 
+  // tessref runs shader storage blocks read-only: a store or atomic into one is refused here, when
+  // the program is built, rather than written to a copy no other invocation sees.
+  void refuse_storage_write(const Instruction& ins, std::uint32_t ptr) {
+    if (ptr >= chain_slot.size() || chain_slot[ptr] == kNone) return;
+    const Variable* v = m.variable(p.slots[chain_slot[ptr]].id);
+    if (v && v->decorations.buffer_block)
+      unsupported(m, ins, "a write to the shader storage block '" + v->name +
+                              "' (tessref runs storage blocks read-only: readonly buffer blocks)");
+  }
+
   std::uint32_t value(const Instruction& ins, std::uint32_t id) {
     if (id >= reg.size() || reg[id] == kNone) unsupported(m, ins, "operand %" + std::to_string(id) + " has no value");
     return reg[id];
@@ -568,6 +578,13 @@ struct Decoder {
         emit(x);
         return;
       }
+      case spv::OpArrayLength: {  // a storage block's runtime array: as many elements as the range bound
+        const Type& block = m.type(pointee(o.at(0)));
+        const std::uint32_t count = m.type(block.members.at(o.at(1))).count;
+        p.constant_init.push_back({reg[ins.result], {count}});
+        p.constant_scalars.push_back({reg[ins.result], Scalar::U32});
+        return;
+      }
       case spv::OpLoad: {
         XIns x = base(ins, XOp::Load);
         x.aux = chain_access(ins, o.at(0), m.type(ins.type));
@@ -577,12 +594,14 @@ struct Decoder {
       case spv::OpStore: {
         XIns x = base(ins, XOp::Store);
         const std::uint32_t ptr = o.at(0);
+        refuse_storage_write(ins, ptr);
         x.aux = chain_access(ins, ptr, m.type(value_type.at(o.at(1))));
         x.a = V(1);
         emit(x);
         return;
       }
       case spv::OpCopyMemory: {
+        refuse_storage_write(ins, o.at(0));
         XIns x = base(ins, XOp::CopyMemory);
         const Type& t = m.type(pointee(o.at(1)));
         x.aux = chain_access(ins, o.at(0), t);
@@ -656,6 +675,7 @@ struct Decoder {
                            : op == spv::OpAtomicIAdd ? XOp::AtomicAdd
                            : op == spv::OpAtomicISub ? XOp::AtomicSub : XOp::AtomicStore);
         const std::uint32_t ptr = o.at(0);
+        if (op != spv::OpAtomicLoad) refuse_storage_write(ins, ptr);
         x.aux = chain_access(ins, ptr, m.type(pointee(ptr)));
         if (op == spv::OpAtomicIAdd || op == spv::OpAtomicISub || op == spv::OpAtomicStore) x.a = V(3);
         emit(x);

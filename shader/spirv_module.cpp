@@ -125,7 +125,44 @@ std::string Module::name_of(std::uint32_t id) const {
   return it != names.end() && !it->second.empty() ? it->second : "%" + std::to_string(id);
 }
 
-Module read_module(std::span<const std::uint32_t> words) {
+// A shader storage block whose last member is runtime-sized: that member becomes an array of as
+// many elements as the bound range holds past its Offset (a type of its own, since blocks may
+// share the runtime array type), and the block is laid out again.
+void size_runtime_array(Module& m, const Variable& v, const StorageBufferSizes& storage) {
+  std::uint32_t block = v.type;
+  const bool arrayed = m.type(block).kind == TypeKind::Array;
+  if (arrayed) block = m.type(block).element;
+  Type& st = m.types.at(block);
+  if (st.kind != TypeKind::Struct || st.members.empty() || !m.type(st.members.back()).runtime) return;
+  const std::string name = m.names.count(block) ? m.names.at(block) : v.name;
+  if (arrayed)
+    throw SpirvError("an array of shader storage blocks with a runtime-sized member is not supported: '" + name + "'");
+  const std::uint32_t binding = v.decorations.binding.value_or(0);
+  const auto bound = storage.find(binding);
+  if (bound == storage.end())
+    throw SpirvError("shader storage block '" + name + "' (binding " + std::to_string(binding) +
+                     ") has a runtime-sized array; bind a buffer range there to size it");
+  const std::uint32_t last = std::uint32_t(st.members.size() - 1);
+  const auto md = m.member_decorations.find({block, last});
+  const std::uint32_t runtime = st.members.back();
+  const auto td = m.type_decorations.find(runtime);
+  if (md == m.member_decorations.end() || !md->second.offset || td == m.type_decorations.end() || !td->second.array_stride)
+    throw SpirvError("shader storage block '" + name + "': its runtime-sized array has no Offset or ArrayStride");
+  const std::size_t offset = *md->second.offset, stride = *td->second.array_stride;
+  Type sized = m.type(runtime);
+  sized.count = std::uint32_t(bound->second > offset ? (bound->second - offset) / stride : 0);
+  sized.flat.clear();
+  lay_out(m, sized);
+  const std::uint32_t id = m.bound++;
+  m.types[id] = sized;
+  m.type_decorations[id] = td->second;
+  st.members.back() = id;
+  st.member_word.clear();
+  st.flat.clear();
+  lay_out(m, st);
+}
+
+Module read_module(std::span<const std::uint32_t> words, const StorageBufferSizes& storage) {
   if (words.size() < 5 || words[0] != spv::MagicNumber)
     throw SpirvError("SPIR-V: not a SPIR-V module (bad magic number)");
   Module m;
@@ -277,8 +314,15 @@ Module read_module(std::span<const std::uint32_t> words) {
         m.types[w[0]] = t;
         break;
       }
-      case spv::OpTypeRuntimeArray:
-        throw SpirvError("SPIR-V: runtime-sized arrays (shader storage buffers) are not supported");
+      case spv::OpTypeRuntimeArray: {  // sized once the variables' bindings are known (below)
+        need(2);
+        Type t = make_type(TypeKind::Array);
+        t.element = w[1];
+        t.runtime = true;
+        lay_out(m, t);
+        m.types[w[0]] = t;
+        break;
+      }
       case spv::OpTypeStruct: {
         need(1);
         Type t = make_type(TypeKind::Struct);
@@ -434,6 +478,7 @@ Module read_module(std::span<const std::uint32_t> words) {
     std::uint32_t t = v.type;
     while (m.type(t).kind == TypeKind::Array) t = m.type(t).element;
     if (auto it = decorations.find(t); it != decorations.end() && it->second.block) v.decorations.block = true;
+    if (auto it = decorations.find(t); it != decorations.end() && it->second.buffer_block) v.decorations.buffer_block = true;
     const Type& st = m.type(t);
     if (st.kind == TypeKind::Struct) {
       v.member_decorations.resize(st.members.size());
@@ -455,11 +500,10 @@ Module read_module(std::span<const std::uint32_t> words) {
   }
   m.member_decorations = std::move(member_decorations);
   for (const Variable& v : m.variables) {
-    std::uint32_t t = v.type;
-    while (m.type(t).kind == TypeKind::Array) t = m.type(t).element;
-    const auto d = decorations.find(t);
-    if (v.storage == spv::StorageClassStorageBuffer || (d != decorations.end() && d->second.buffer_block))
-      throw SpirvError("shader storage buffers ('buffer' blocks) are not supported: '" + v.name + "'");
+    if (v.storage == spv::StorageClassStorageBuffer)
+      throw SpirvError("the StorageBuffer storage class is not supported (GLSL for OpenGL gives Uniform + BufferBlock): '" +
+                       v.name + "'");
+    if (v.decorations.buffer_block) size_runtime_array(m, v, storage);
   }
   return m;
 }

@@ -47,6 +47,7 @@ struct Type {
   std::uint32_t image_dim = 0;           // Image: Dim
   bool image_arrayed = false;
   std::uint32_t image_sampled_type = 0;
+  bool runtime = false;  // Array: an OpTypeRuntimeArray (count set from the bound buffer, else 0)
 };
 
 struct Decorations {
@@ -117,8 +118,13 @@ struct Module {
   std::string name_of(std::uint32_t id) const;  // OpName, or "%id"
 };
 
+// The bytes bound to each shader storage block binding (glBindBufferRange(GL_SHADER_STORAGE_BUFFER)):
+// a block's runtime-sized last member gets (bytes - its Offset) / ArrayStride elements.
+using StorageBufferSizes = std::map<std::uint32_t, std::size_t>;
+
 // Reads a binary module. Throws SpirvError for malformed words, more than one function (the front
-// end inlines everything) or constructs outside the executor's scope, naming the construct.
-Module read_module(std::span<const std::uint32_t> words);
+// end inlines everything) or constructs outside the executor's scope, naming the construct; and
+// for a shader storage block with a runtime-sized array whose binding `storage` does not size.
+Module read_module(std::span<const std::uint32_t> words, const StorageBufferSizes& storage = {});
 
 }  // namespace tessref::shader

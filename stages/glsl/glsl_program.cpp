@@ -51,11 +51,12 @@ void refuse_unsupported_outputs(const shader::Module& m, shader::Stage stage) {
     }
 }
 
-std::unique_ptr<StageProgram> make_stage(const shader::CompiledStage& cs, shader::ExecLimits limits) {
+std::unique_ptr<StageProgram> make_stage(const shader::CompiledStage& cs, shader::ExecLimits limits,
+                                         const shader::StorageBufferSizes& storage) {
   auto sp = std::make_unique<StageProgram>();
   sp->stage = cs.stage;
   try {
-    shader::Module module = shader::read_module(cs.spirv);
+    shader::Module module = shader::read_module(cs.spirv, storage);
     refuse_unsupported_outputs(module, cs.stage);
     sp->exe = std::make_unique<shader::Executable>(std::move(module), limits);
   } catch (const shader::SpirvError& e) {
@@ -283,13 +284,14 @@ void StageProgram::rethrow(const shader::ShaderRuntimeError& e, const std::strin
   throw StageError(msg + ": " + e.what());
 }
 
-GlslProgram::GlslProgram(const shader::CompiledProgram& compiled, shader::ExecLimits limits) {
+GlslProgram::GlslProgram(const shader::CompiledProgram& compiled, shader::ExecLimits limits,
+                         const shader::StorageBufferSizes& storage) {
   for (const shader::CompiledStage& cs : compiled.stages) {
     switch (cs.stage) {
-      case shader::Stage::Vertex: vs_ = make_stage(cs, limits); break;
-      case shader::Stage::TessControl: tcs_ = make_stage(cs, limits); break;
-      case shader::Stage::TessEval: tes_ = make_stage(cs, limits); break;
-      case shader::Stage::Fragment: fs_ = make_stage(cs, limits); break;
+      case shader::Stage::Vertex: vs_ = make_stage(cs, limits, storage); break;
+      case shader::Stage::TessControl: tcs_ = make_stage(cs, limits, storage); break;
+      case shader::Stage::TessEval: tes_ = make_stage(cs, limits, storage); break;
+      case shader::Stage::Fragment: fs_ = make_stage(cs, limits, storage); break;
       default: throw shader::SpirvError(std::string(shader::stage_name(cs.stage)) + "s are not supported");
     }
   }
@@ -444,10 +446,11 @@ namespace {
 
 // Calls fn(variable, element, block type, binding) for every uniform block (each element of a
 // block array: binding + element) of the module.
+// The uniform blocks (storage false) or the shader storage blocks of a module.
 template <class Fn>
-void for_each_block(const shader::Module& m, const Fn& fn) {
+void for_each_block(const shader::Module& m, const Fn& fn, bool storage = false) {
   for (const shader::Variable& v : m.variables) {
-    if (v.storage != spv::StorageClassUniform || !v.decorations.block) continue;
+    if (v.storage != spv::StorageClassUniform || !(storage ? v.decorations.buffer_block : v.decorations.block)) continue;
     std::uint32_t type = v.type, count = 1;
     if (m.type(type).kind == TypeKind::Array) {
       count = m.type(type).count;
@@ -460,24 +463,27 @@ void for_each_block(const shader::Module& m, const Fn& fn) {
 
 }  // namespace
 
-std::vector<GlslProgram::UniformBlock> GlslProgram::uniform_blocks() const {
-  std::vector<UniformBlock> out;
-  for (const StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), fs_.get()}) {
+namespace {
+
+std::vector<GlslProgram::UniformBlock> blocks_of(std::initializer_list<const StageProgram*> stages, bool storage) {
+  std::vector<GlslProgram::UniformBlock> out;
+  for (const StageProgram* sp : stages) {
     if (!sp) continue;
     const shader::Module& m = sp->exe->module();
     for_each_block(m, [&](const shader::Variable&, std::uint32_t, std::uint32_t type, std::uint32_t binding) {
       const auto n = m.names.find(type);
-      UniformBlock b{n != m.names.end() ? n->second : m.name_of(type), binding, shader::explicit_layout_extent(m, type)};
-      if (std::none_of(out.begin(), out.end(), [&](const UniformBlock& o) { return o.binding == b.binding && o.name == b.name; }))
+      GlslProgram::UniformBlock b{n != m.names.end() ? n->second : m.name_of(type), binding, shader::explicit_layout_extent(m, type)};
+      if (std::none_of(out.begin(), out.end(), [&](const GlslProgram::UniformBlock& o) { return o.binding == b.binding && o.name == b.name; }))
         out.push_back(b);
-    });
+    }, storage);
   }
   return out;
 }
 
-bool GlslProgram::bind_uniform_buffer(std::uint32_t binding, std::span<const std::byte> range) {
+bool bind_blocks(std::initializer_list<StageProgram*> stages, std::uint32_t binding, std::span<const std::byte> range,
+                 bool storage) {
   bool found = false;
-  for (StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), fs_.get()}) {
+  for (StageProgram* sp : stages) {
     if (!sp) continue;
     const shader::Module& m = sp->exe->module();
     for_each_block(m, [&](const shader::Variable& v, std::uint32_t element, std::uint32_t type, std::uint32_t b) {
@@ -485,16 +491,41 @@ bool GlslProgram::bind_uniform_buffer(std::uint32_t binding, std::span<const std
       const std::size_t extent = shader::explicit_layout_extent(m, type);
       if (range.size() < extent) {
         const auto n = m.names.find(type);
-        throw std::invalid_argument("uniform block '" + (n != m.names.end() ? n->second : m.name_of(type)) +
-                                    "' (binding " + std::to_string(binding) + ") reads " + std::to_string(extent) +
+        throw std::invalid_argument(std::string(storage ? "shader storage block '" : "uniform block '") +
+                                    (n != m.names.end() ? n->second : m.name_of(type)) + "' (binding " +
+                                    std::to_string(binding) + ") reads " + std::to_string(extent) +
                                     " bytes; the bound range holds " + std::to_string(range.size()));
       }
       std::uint32_t* out = sp->uniforms.data() + sp->exe->slot(v.id)->base + element * m.type(type).words;
       shader::read_explicit_layout(m, type, range, out);
       found = true;
-    });
+    }, storage);
   }
   return found;
+}
+
+}  // namespace
+
+std::vector<GlslProgram::UniformBlock> GlslProgram::uniform_blocks() const {
+  return blocks_of({vs_.get(), tcs_.get(), tes_.get(), fs_.get()}, false);
+}
+std::vector<GlslProgram::UniformBlock> GlslProgram::storage_blocks() const {
+  return blocks_of({vs_.get(), tcs_.get(), tes_.get(), fs_.get()}, true);
+}
+
+bool GlslProgram::bind_uniform_buffer(std::uint32_t binding, std::span<const std::byte> range) {
+  return bind_blocks({vs_.get(), tcs_.get(), tes_.get(), fs_.get()}, binding, range, false);
+}
+bool GlslProgram::bind_storage_buffer(std::uint32_t binding, std::span<const std::byte> range) {
+  const bool found = bind_blocks({vs_.get(), tcs_.get(), tes_.get(), fs_.get()}, binding, range, true);
+  if (found) bound_storage_.insert(binding);
+  return found;
+}
+
+std::optional<GlslProgram::UniformBlock> GlslProgram::unbound_storage_block() const {
+  for (const UniformBlock& b : storage_blocks())
+    if (!bound_storage_.count(b.binding)) return b;
+  return std::nullopt;
 }
 
 std::vector<std::string> GlslProgram::uniform_names() const {

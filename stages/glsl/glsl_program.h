@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <span>
 #include <string>
 #include <vector>
@@ -81,7 +82,10 @@ class GlslProgram {
   // Builds the stages of a compiled program. The program must have vertex, tessellation
   // evaluation and fragment stages; the control stage is optional (default levels are then used).
   // Throws shader::SpirvError for what the executor or tessref's limits cannot take.
-  explicit GlslProgram(const shader::CompiledProgram& compiled, shader::ExecLimits limits = {});
+  // storage: the bytes bound at each shader storage block binding, which size the blocks'
+  // runtime arrays (shader/spirv_module.h); a block with one at an unsized binding is refused.
+  explicit GlslProgram(const shader::CompiledProgram& compiled, shader::ExecLimits limits = {},
+                       const shader::StorageBufferSizes& storage = {});
   ~GlslProgram();
 
   // Sets a uniform by its GL name ("u", "u[i]", "lights[2].color", "Block.member") in every stage
@@ -100,10 +104,16 @@ class GlslProgram {
     std::size_t extent = 0;  // shader::explicit_layout_extent
   };
   std::vector<UniformBlock> uniform_blocks() const;  // every stage's, without duplicates
+  std::vector<UniformBlock> storage_blocks() const;  // the shader storage blocks, the same way
   // glBindBufferRange(GL_UNIFORM_BUFFER, binding, ...): the blocks at `binding` (in every stage)
   // take their values from range through their explicit layout. Returns false when no block uses
   // the binding; throws std::invalid_argument when range is shorter than a block's extent.
   bool bind_uniform_buffer(std::uint32_t binding, std::span<const std::byte> range);
+  // glBindBufferRange(GL_SHADER_STORAGE_BUFFER, binding, ...): the same for the read-only shader
+  // storage blocks (std430), whose runtime arrays the constructor sized for this range's bytes.
+  bool bind_storage_buffer(std::uint32_t binding, std::span<const std::byte> range);
+  // A storage block no range was bound to, if any: a draw refuses it (GL leaves its reads undefined).
+  std::optional<UniformBlock> unbound_storage_block() const;
   // Binds a texture to a sampler's binding (texture unit). The texture must outlive the draws.
   void bind_texture(std::uint32_t unit, const shader::Texture* texture);
   // Atomic counter buffers (binding -> 32-bit counters). A program that uses atomic counters is
@@ -146,6 +156,7 @@ class GlslProgram {
   std::unique_ptr<StageProgram> vs_, tcs_, tes_, fs_;
   std::vector<const shader::Texture*> textures_;
   std::map<std::uint32_t, std::vector<std::uint32_t>> counter_buffers_;
+  std::set<std::uint32_t> bound_storage_;  // bindings bind_storage_buffer filled
   int num_varyings_ = 0;
   VaryingMask flat_varyings_;  // TriangleBatch::flat_varyings
   int primitive_id_varying_ = -1;

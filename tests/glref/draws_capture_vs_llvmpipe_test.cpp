@@ -36,6 +36,7 @@ const DrawScene kScenes[] = {
     {"two_draws_depth", 2, 1728, true},  // tessellated, depth-tested against an untessellated strip
     {"fixed_function", 2, 1728, false},  // culling under GL_CW, blending, scissor
     {"viewports", 4, 3456, false},       // a viewport and depth range per draw
+    {"storage_blocks", 2, 1728, true},   // vertex pulling and a patch parameter from storage blocks
 };
 
 class DrawsCaptureVsLlvmpipe : public ::testing::TestWithParam<DrawScene> {

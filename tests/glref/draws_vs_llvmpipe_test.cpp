@@ -137,6 +137,20 @@ TEST(DrawsVsLlvmpipe, FixedFunctionStateOverThreeDraws) {
   EXPECT_EQ(front.within1.within_tolerance, front.within1.pixels) << front.within1.summary();
 }
 
+// Read-only shader storage blocks: control points pulled by gl_VertexID with no vertex arrays, and
+// a per-patch value from a block at offset 256 whose runtime array the bound range sizes.
+TEST(DrawsVsLlvmpipe, VertexPullingAndAPatchParameterFromStorageBlocks) {
+  TESSREF_REQUIRE_GL(ctx);
+  const DrawsOutcome o = compare_draws(*ctx, "storage_blocks.json");
+  EXPECT_EQ(o.stats.tess.patches_in, 2u);
+  EXPECT_GT(o.stats.raster.fragments_shaded, 10000u);
+  expect_matches(o);
+  // The range one float shorter: lift.length() is 2, the second patch takes lift[1 % 2] instead.
+  const DrawsOutcome shorter = compare_draws(*ctx, "storage_blocks.json", {"draws.0.shader_storage_buffers.1.size=24"});
+  expect_matches(shorter);
+  EXPECT_NE(shorter.stats.raster.fragments_shaded, o.stats.raster.fragments_shaded);
+}
+
 // glViewport and glDepthRange per draw: a view in the left half, a small one, and one that runs
 // past the image's edges (clipped at the viewport's sides, cut at the image's).
 TEST(DrawsVsLlvmpipe, ViewportAndDepthRangePerDraw) {

@@ -54,7 +54,7 @@ TEST(DrawsScene, SameBytesAtOneAndEightThreads) {
     EXPECT_EQ(one.framebuffer.depth, eight.framebuffer.depth) << f;
     ++scenes;
   }
-  EXPECT_EQ(scenes, 9);
+  EXPECT_EQ(scenes, 10);
 }
 
 // Each draw with its own program: a flat-coloured strip, then the patches depth-tested against it.
@@ -209,6 +209,31 @@ TEST(DrawsScene, BadDrawsNameTheKeyAndTheRule) {
   EXPECT_NE(error_of(f, {"draws.0.viewport=[0, 0, 20000, 8]"}).find("at most 16384 (GL_MAX_VIEWPORT_DIMS)"), std::string::npos);
   EXPECT_NE(error_of(f, {"draws.0.depth_range=[0, \"far\"]"}).find("draws.0.depth_range: expected [near, far] as 2 numbers"),
             std::string::npos);
+}
+
+// Read-only shader storage blocks: a runtime array takes its length from the bound range, and
+// what GL would refuse or tessref cannot run names the key and the rule.
+TEST(DrawsScene, StorageBlocksAreSizedByTheirRangeAndCheckedAsGlChecks) {
+  const RenderResult r = render_file("storage_blocks.json");
+  EXPECT_EQ(r.stats.tess.patches_in, 2u);
+  EXPECT_EQ(r.stats.vertices_shaded, 32u);
+  const std::string f = "storage_blocks.json";
+  const struct {
+    std::vector<std::string> sets;
+    std::string message;
+  } cases[] = {
+      {{"draws.0.shader_storage_buffers=[{\"binding\": 0, \"buffer\": \"control_points\"}]"},
+       "shader storage block 'Lift' (binding 1) has a runtime-sized array; bind a buffer range there to size it"},
+      {{"draws.0.shader_storage_buffers.2={\"binding\": 5, \"buffer\": \"lift\"}"},
+       "draws.0.shader_storage_buffers.2.binding: the program has no shader storage block at binding 5 (its blocks: "},
+      {{"draws.0.shader_storage_buffers.1.size=8"},
+       "draws.0.shader_storage_buffers.1: shader storage block 'Lift' (binding 1) reads 16 bytes; the bound range holds 8"},
+      {{"draws.0.shader_storage_buffers.1.offset=16"}, "GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT may be as large as 256"},
+      {{"draws.0.shader_storage_buffers.1.binding=8"}, "draws.0.shader_storage_buffers.1.binding"},
+      {{"shaders.tess_evaluation=\"storage_write.tese\""},
+       "a write to the shader storage block 'Lift' (tessref runs storage blocks read-only: readonly buffer blocks)"},
+  };
+  for (const auto& c : cases) EXPECT_NE(error_of(f, c.sets).find(c.message), std::string::npos) << error_of(f, c.sets);
 }
 
 // glDepthRange clamps its arguments to [0, 1] (GL 4.5, 13.6.1); the draw keeps GL's doubles.
