@@ -145,14 +145,14 @@ TEST(DrawsVsLlvmpipe, VertexPullingAndAPatchParameterFromStorageBlocks) {
   EXPECT_EQ(o.stats.tess.patches_in, 2u);
   EXPECT_GT(o.stats.raster.fragments_shaded, 10000u);
   expect_matches(o);
-  // The range one float shorter: lift.length() is 2, the second patch takes lift[1 % 2] instead.
+  // The range one float shorter: lift.length() is 2, so both patches sit scale.y = 0.05 lower.
   const DrawsOutcome shorter = compare_draws(*ctx, "storage_blocks.json", {"draws.0.shader_storage_buffers.1.size=24"});
   expect_matches(shorter);
   EXPECT_NE(shorter.stats.raster.fragments_shaded, o.stats.raster.fragments_shaded);
 }
 
-// glViewport and glDepthRange per draw: a view in the left half, a small one, and one that runs
-// past the image's edges (clipped at the viewport's sides, cut at the image's).
+// glViewport and glDepthRange per draw: views past the image's edges (clipped at the viewport's
+// sides, cut at the image's) and a small one inside it.
 TEST(DrawsVsLlvmpipe, ViewportAndDepthRangePerDraw) {
   TESSREF_REQUIRE_GL(ctx);
   const DrawsOutcome o = compare_draws(*ctx, "viewports.json");
