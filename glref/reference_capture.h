@@ -1,6 +1,6 @@
 #pragma once
 // `tessref capture`: a scene drawn by the GL driver with its GLSL (SceneRenderer), stored as a
-// reference for `tessref verify` (pipeline/verify.h): color.png, depth.exr, tess.bin (the TES
+// reference for `tessref verify` (verify/verify_scene.h): color.png, depth.exr, tess.bin (the TES
 // outputs by transform feedback, one record per emitted vertex, in the --dump-tess format) and
 // manifest.json (the driver's names and tessellation limits, the scene as read, its hash, the
 // command line, the date). The four files are written whole or not at all.

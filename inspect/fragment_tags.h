@@ -2,7 +2,7 @@
 // Fragments that know where they came from: a chunk's tessellated triangles redrawn with extra
 // varyings naming the triangle, its patch and gl_TessCoord, so that the rasterizer's own
 // interpolation (coverage, perspective-correct weights, clipping) tells each fragment its origin.
-// Used by `tessref inspect --pixel` and `render --dump-fragments` (pipeline/fragment_probe.h).
+// Used by `tessref inspect --pixel` and `render --dump-fragments` (inspect/inspect_pixel.h, inspect/fragment_dump.h).
 #include <cstddef>
 #include <vector>
 
