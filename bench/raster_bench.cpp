@@ -186,7 +186,7 @@ struct GlSoup {
 
   explicit GlSoup(glref::GlContext& c)
       : ctx(c),
-        target(c, {kSide, kSide, {glref::ColorFormat::Rgba32F}, true}),
+        target(c, {kSide, kSide, {ColorFormat::kRgba32F}, true}),
         program(glref::link_program({{GL_VERTEX_SHADER, kSoupVertexShader, "soup.vert"},
                                      {GL_FRAGMENT_SHADER, kSoupFragmentShader, "soup.frag"}})) {
     const std::vector<glm::vec4>& s = soup();

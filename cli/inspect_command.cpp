@@ -431,21 +431,47 @@ std::pair<int, int> parse_pixel(const std::string& text, const Scene& scene) {
   return xy;
 }
 
-std::string depth_verdict(const PixelInspectResult& r, std::size_t i) {
+// glDepthFunc's comparison as written between the fragment's depth and the stored one.
+const char* depth_operator(DepthFunc f) {
+  switch (f) {
+    case DepthFunc::kNever: return "never";
+    case DepthFunc::kLess: return "<";
+    case DepthFunc::kEqual: return "==";
+    case DepthFunc::kLessEqual: return "<=";
+    case DepthFunc::kGreater: return ">";
+    case DepthFunc::kNotEqual: return "!=";
+    case DepthFunc::kGreaterEqual: return ">=";
+    case DepthFunc::kAlways: return "always";
+  }
+  return "?";
+}
+
+std::string depth_verdict(const Scene& scene, const PixelInspectResult& r, std::size_t i) {
   const PixelFragment& f = r.fragments[i];
-  const std::string met = g9(f.depth_before) +
-                          (f.depth_from ? ", fragment " + std::to_string(*f.depth_from) + "'s" : ", the cleared depth");
-  if (!f.passed) return "failed: " + g9(f.frag_coord.z) + " is not less than " + met;
-  std::string s = "passed: " + g9(f.frag_coord.z) + " < " + met;
-  if (f.hidden_by) return s + "; then hidden by fragment " + std::to_string(*f.hidden_by);
-  return s + "; the winner: its colour is the pixel's";
+  const PixelFragment* next = f.hidden_by ? &r.fragments[*f.hidden_by] : nullptr;
+  const bool blended_over = next && next->draw && scene.draws[*next->draw].raster.blend.enabled;
+  const std::string ending = !next ? "; the winner: its colour is the pixel's"
+                             : std::string(blended_over ? "; then blended over by fragment " : "; then hidden by fragment ") +
+                                   std::to_string(*f.hidden_by);
+  // The mesh path tests GL_LESS against depth cleared to 1; a draw its own function against the
+  // initial, cleared or written depth.
+  const RasterState* s = f.draw ? &scene.draws[*f.draw].raster : nullptr;
+  if (s && !s->depth_test) return "none (GL_DEPTH_TEST off)" + ending;
+  const char* op = s ? depth_operator(s->depth_func) : "<";
+  const std::string met =
+      g9(f.depth_before) + (f.depth_from ? ", fragment " + std::to_string(*f.depth_from) + "'s"
+                                         : s ? ", the framebuffer's initial or cleared depth" : ", the cleared depth");
+  if (!f.passed) return "failed: " + g9(f.frag_coord.z) + " " + op + " " + met + " does not hold";
+  return "passed: " + g9(f.frag_coord.z) + " " + op + " " + met + ending;
 }
 
 void print_pixel_text(const Scene& scene, const PixelInspectResult& r, double seconds) {
   std::printf("tessref inspect: %s, pixel (%d, %d) of the %dx%d image (X from the left, Y down from the top row, as "
               "image files are written; GL window row %d); programs: %s\n\n",
               scene.source.c_str(), r.x, r.y, r.width, r.height, r.window_y, r.program.c_str());
-  if (r.fragments.empty()) {
+  if (r.fragments.empty() && !r.pixel_outputs.empty()) {
+    std::printf("no draw's fragment reached this pixel\n");
+  } else if (r.fragments.empty()) {
     std::printf("nothing was drawn at this pixel: the background %s remains\n", vec(r.pixel_color).c_str());
   } else {
     if (r.fragments.size() == 1) std::printf("1 fragment at this pixel:\n");
@@ -453,27 +479,43 @@ void print_pixel_text(const Scene& scene, const PixelInspectResult& r, double se
   }
   for (std::size_t i = 0; i < r.fragments.size(); ++i) {
     const PixelFragment& f = r.fragments[i];
-    std::printf("  fragment %zu: patch %zu, triangle %zu, %s\n", i, f.patch, f.triangle,
-                f.front_facing ? "front facing" : "back facing");
-    std::printf("      gl_TessCoord %s\n", vec(f.tess_coord).c_str());
+    const char* facing = f.front_facing ? "front facing" : "back facing";
+    if (!f.draw) std::printf("  fragment %zu: patch %zu, triangle %zu, %s\n", i, f.patch, f.triangle, facing);
+    else if (f.from_patch) std::printf("  fragment %zu: draw %zu, patch %zu, triangle %zu, %s\n", i, *f.draw, f.patch, f.triangle, facing);
+    else std::printf("  fragment %zu: draw %zu, triangle %zu (untessellated), %s\n", i, *f.draw, f.triangle, facing);
+    if (f.from_patch) std::printf("      gl_TessCoord %s\n", vec(f.tess_coord).c_str());
     std::printf("      gl_FragCoord %s\n", vec(f.frag_coord).c_str());
-    std::printf("      world position %s\n", vec(f.position).c_str());
-    std::printf("      world normal %s\n", vec(f.normal).c_str());
+    if (!f.draw) {  // the mesh path's convention: outputs 0 and 1 of the evaluation shader
+      std::printf("      world position %s\n", vec(f.position).c_str());
+      std::printf("      world normal %s\n", vec(f.normal).c_str());
+    }
     if (r.program.rfind("glsl", 0) == 0) {
       std::string v;
       for (float x : f.inputs) v += (v.empty() ? "" : ", ") + g9(x);
       std::printf("      varyings (%s)\n", v.c_str());
     }
-    std::printf("      colour %s\n", vec(f.color).c_str());
-    std::printf("      depth test: %s\n", depth_verdict(r, i).c_str());
+    if (f.outputs.size() > 1)
+      for (std::size_t k = 0; k < f.outputs.size(); ++k)
+        std::printf("      output %zu %s\n", k, vec(f.outputs[k]).c_str());
+    else
+      std::printf("      colour %s\n", vec(f.color).c_str());
+    std::printf("      depth test: %s\n", depth_verdict(scene, r, i).c_str());
     if (f.trace) {
       std::printf("      source trace%s:\n", r.traced_twins ? " (the built-in program's GLSL twin)" : "");
       std::fputs(format_traces({*f.trace}).c_str(), stdout);
     }
   }
-  if (r.winner)
+  if (!r.pixel_outputs.empty()) {  // a scene of draws: every draw buffer, whoever wrote it
+    const std::string by = r.winner ? "colour last written by fragment " + std::to_string(*r.winner) + ", draw " +
+                                          std::to_string(*r.fragments[*r.winner].draw)
+                                    : "no fragment wrote it: the framebuffer's initial or cleared values";
+    std::printf("\nthe pixel: colour %s, depth %s (%s)\n", vec(r.pixel_color).c_str(), g9(r.pixel_depth).c_str(),
+                by.c_str());
+  } else if (r.winner)
     std::printf("\nthe pixel: colour %s, depth %s (fragment %zu, patch %zu)\n", vec(r.pixel_color).c_str(),
                 g9(r.pixel_depth).c_str(), *r.winner, r.fragments[*r.winner].patch);
+  for (std::size_t k = 1; k < r.pixel_outputs.size(); ++k)
+    std::printf("           draw buffer %zu %s\n", k, vec(r.pixel_outputs[k]).c_str());
   std::printf("\n(%.1f ms)\n", seconds * 1e3);
 }
 
@@ -496,6 +538,13 @@ nlohmann::json pixel_json(const Scene& scene, const PixelInspectResult& r) {
                                {"stored_by", opt(f.depth_from)}}},
                              {"hidden_by", opt(f.hidden_by)}});
     json& j = fragments.back();
+    if (f.draw) {
+      j["draw"] = *f.draw;
+      j["from_patch"] = f.from_patch;
+      json outputs = json::array();
+      for (const glm::vec4& o : f.outputs) outputs.push_back(jvec(o));
+      j["outputs"] = outputs;
+    }
     json inputs = json::array();
     for (float x : f.inputs) inputs.push_back(num(x));
     j["varyings"] = inputs;
@@ -509,7 +558,12 @@ nlohmann::json pixel_json(const Scene& scene, const PixelInspectResult& r) {
               {"fragments", fragments},
               {"winner", opt(r.winner)},
               {"pixel_color", jvec(r.pixel_color)},
-              {"pixel_depth", num(r.pixel_depth)}};
+              {"pixel_depth", num(r.pixel_depth)},
+              {"pixel_draw_buffers", [&] {
+                 json buffers = json::array();
+                 for (const glm::vec4& o : r.pixel_outputs) buffers.push_back(jvec(o));
+                 return buffers;
+               }()}};
 }
 
 void write_json(const std::string& path, const nlohmann::json& j) {
@@ -524,16 +578,21 @@ void run_inspect_pixel(const InspectArgs& a) {
   if (a.patch >= 0 || a.vertex >= 0 || !a.coord.empty())
     throw InputError("--pixel: give it alone (--patch, --coord and --vertex ask about a patch)");
   Scene scene = load_scene(a.scene, a.sets);
-  if (!scene.draws.empty())
-    throw InputError("--pixel: takes a scene with a mesh; for a scene of draws, ask about a patch (--draw K --patch N) "
-                     "or write every fragment with render --dump-fragments");
+  const bool trace = a.trace && (parse_trace_stages(a.trace_stages) & kTraceFragment);
+  if (!scene.draws.empty()) {
+    if (a.draw >= 0) throw InputError("--draw: --pixel follows every draw of the scene at the pixel; give --pixel alone");
+    const auto [x, y] = parse_pixel(a.pixel, scene);
+    const PixelInspectResult r = inspect_draws_pixel(scene, x, y, Parallel(a.threads), trace);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (!a.json.empty()) return write_json(a.json, pixel_json(scene, r));
+    return print_pixel_text(scene, r, seconds);
+  }
   if (a.draw >= 0) throw InputError("--draw: the scene has no draws (it draws its mesh)");
   const auto [x, y] = parse_pixel(a.pixel, scene);
   std::vector<std::string> warnings;
   const Mesh mesh = build_mesh(scene.mesh, warnings);
   for (const std::string& w : warnings) std::fprintf(stderr, "tessref: warning: %s\n", w.c_str());
   scene.camera = fitted_camera(scene, mesh);  // as render does
-  const bool trace = a.trace && (parse_trace_stages(a.trace_stages) & kTraceFragment);
   const PixelInspectResult r = inspect_pixel(scene, mesh, x, y, Parallel(a.threads), trace);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!a.json.empty()) return write_json(a.json, pixel_json(scene, r));

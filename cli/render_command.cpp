@@ -42,7 +42,22 @@ struct RenderOptions {
   std::vector<std::string> sets;
   bool check = false;  // --check: NaN and infinity in every stage's outputs (check/check.h)
   std::vector<std::string> check_ranges;  // --check-range NAME=LO,HI (check/check_range.h)
+  std::vector<std::string> draw_buffers;  // --draw-buffer K=FILE: draw buffer K (1..7) as an image
 };
+
+// --draw-buffer K=FILE, checked against the scene: a scene of draws has framebuffer.color's
+// attachments, the mesh path draw buffers 0 and 1 (its normals).
+std::pair<int, std::string> parse_draw_buffer(const std::string& arg, const Scene& scene) {
+  const std::size_t eq = arg.find('=');
+  const std::string k = arg.substr(0, eq == std::string::npos ? 0 : eq);
+  const int available = scene.draws.empty() ? 2 : int(scene.framebuffer.color.size());
+  if (eq == std::string::npos || eq + 1 == arg.size() || k.size() != 1 || k[0] < '1' || k[0] > '7')
+    throw InputError("--draw-buffer: expected K=FILE with K in 1..7 (draw buffer 0 is -o), got '" + arg + "'");
+  if (k[0] - '0' >= available)
+    throw InputError("--draw-buffer " + arg + ": the scene's framebuffer has " + std::to_string(available) +
+                     " draw buffer" + (available == 1 ? "" : "s") + " (framebuffer.color)");
+  return {k[0] - '0', arg.substr(eq + 1)};
+}
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) {
@@ -119,6 +134,7 @@ std::string written_files(const RenderOptions& o, const TessDumpWriter* dump) {
   std::string files = o.output;
   if (!o.depth.empty()) files += ", " + o.depth + " (depth)";
   if (!o.normals.empty()) files += ", " + o.normals + " (normals)";
+  for (const std::string& b : o.draw_buffers) files += ", " + b.substr(b.find('=') + 1) + " (draw buffer " + b.substr(0, 1) + ")";
   if (dump)
     files += ", " + o.dump_tess + " (" + std::to_string(dump->records_written()) + " tessellated vertices)";
   return files;
@@ -187,6 +203,13 @@ void run_render(const RenderOptions& o) {
     check_image_path(o.normals, ImageKind::Normals);
   }
   if (!o.dump_tess.empty()) dump_tmp = outputs.add("--dump-tess", o.dump_tess);
+  std::vector<std::pair<int, std::string>> buffer_files;
+  std::vector<std::filesystem::path> buffer_tmps;
+  for (const std::string& arg : o.draw_buffers) {
+    buffer_files.push_back(parse_draw_buffer(arg, scene));
+    buffer_tmps.push_back(outputs.add("--draw-buffer", buffer_files.back().second));
+    check_image_path(buffer_files.back().second, ImageKind::Color);
+  }
 
   auto t = Clock::now();
   std::vector<std::string> warnings;
@@ -247,6 +270,9 @@ void run_render(const RenderOptions& o) {
   write_as(color_tmp, o.output, [&] { write_color_image(fb, color_tmp); });
   if (!o.depth.empty()) write_as(depth_tmp, o.depth, [&] { write_depth_image(fb, depth_tmp); });
   if (!o.normals.empty()) write_as(normals_tmp, o.normals, [&] { write_normals_image(fb, normals_tmp); });
+  for (std::size_t i = 0; i < buffer_files.size(); ++i)
+    write_as(buffer_tmps[i], buffer_files[i].second,
+             [&] { write_color_image(fb, buffer_tmps[i], buffer_files[i].first); });
   if (!o.dump_fragments.empty()) write_fragment_dump(scene, mesh, parallel, o.dump_fragments);  // draws again
   outputs.commit();
   const double write_seconds = seconds_since(t);
@@ -332,6 +358,12 @@ void add_render_command(CLI::App& app) {
                   "also write each pixel's winning fragment (world P, N, patch_id, triangle, tess_coord, depth) "
                   "as one multi-channel .exr");
   cmd->add_option("--normals", opts->normals, "also write world normals (.exr)");
+  cmd->add_option("--draw-buffer", opts->draw_buffers,
+                  "also write draw buffer K (fragment output location K, 1..7; 0 is -o) as a colour image; "
+                  "repeatable")
+      ->type_name("K=FILE")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--dump-tess", opts->dump_tess,
                   "also write every tessellated vertex (patch id, gl_TessCoord, position, normal): "
                   "binary, or text for *.txt (format: io/tess_dump.h)");

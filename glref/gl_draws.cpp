@@ -185,7 +185,13 @@ void issue(const DrawSetting& draw, const draw::DrawCall& c, std::uint32_t insta
 void GlDraws::draw() const {
   for (std::size_t d = 0; d < scene_.draws.size(); ++d) {
     bind(d, programs_[d]);
-    for (const draw::DrawCall& c : scene_.draws[d].calls) issue(scene_.draws[d], c, c.instance_count);
+    const DrawSetting& draw = scene_.draws[d];
+    if (draw.clear_color || draw.clear_depth) {  // within the scissor box and masks bind() set
+      if (draw.clear_color) glClearColor(draw.clear_color->r, draw.clear_color->g, draw.clear_color->b, draw.clear_color->a);
+      if (draw.clear_depth) glClearDepth(*draw.clear_depth);
+      glClear((draw.clear_color ? GL_COLOR_BUFFER_BIT : 0) | (draw.clear_depth ? GL_DEPTH_BUFFER_BIT : 0));
+    }
+    for (const draw::DrawCall& c : draw.calls) issue(draw, c, c.instance_count);
     check_gl((scene_.draws[d].key + ": drawing").c_str());
   }
   unbind();

@@ -63,6 +63,8 @@ void apply_raster_state(const RasterState& s, int width, int height) {
                       gl_factor(s.blend.dst_alpha));
   glBlendColor(s.blend.constant.r, s.blend.constant.g, s.blend.constant.b, s.blend.constant.a);
   glColorMask(s.color_mask.r, s.color_mask.g, s.color_mask.b, s.color_mask.a);
+  enable(GL_FRAMEBUFFER_SRGB, s.framebuffer_srgb);
+  enable(GL_DEPTH_CLAMP, s.depth_clamp);
 }
 
 void reset_raster_state(int width, int height) { apply_raster_state(gl_initial_state(), width, height); }

@@ -50,7 +50,7 @@ struct CoverageProber::Impl {
 
   Impl(GlContext& c, int w, int h)
       : context(c),
-        target(c, {w, h, {ColorFormat::Rgba32F, ColorFormat::Rgba32F, ColorFormat::Rgba32F}, true}),
+        target(c, {w, h, {ColorFormat::kRgba32F, ColorFormat::kRgba32F, ColorFormat::kRgba32F}, true}),
         program(link_program({{GL_VERTEX_SHADER, kVertexShader, "raster_probe.vert"},
                               {GL_FRAGMENT_SHADER, kFragmentShader, "raster_probe.frag"}})) {
     glGenVertexArrays(1, &vao);

@@ -5,9 +5,37 @@
 #include "glref/gl_context.h"
 #include "glref/gl_error.h"
 
+#include <algorithm>
 #include <cstdio>
 
+#include "common/fixed_point.h"
+
 namespace tessref::glref {
+
+namespace {
+
+GLenum gl_internal_format(ColorFormat f) {
+  switch (f) {
+    case ColorFormat::kRgba32F: return GL_RGBA32F;
+    case ColorFormat::kRgba16F: return GL_RGBA16F;
+    case ColorFormat::kRgba8: return GL_RGBA8;
+    case ColorFormat::kSrgb8Alpha8: return GL_SRGB8_ALPHA8;
+  }
+  return GL_RGBA32F;
+}
+
+// Reads color attachment `attachment` of the bound FBO as RGBA of `type`, rows bottom first.
+template <typename Pixel>
+std::vector<Pixel> read_color(int width, int height, int attachment, GLenum type, const char* what) {
+  std::vector<Pixel> out(static_cast<std::size_t>(width) * height);
+  glReadBuffer(GL_COLOR_ATTACHMENT0 + attachment);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, type, out.data());
+  check_gl(what);
+  return out;
+}
+
+}  // namespace
 
 RenderTarget::RenderTarget(GlContext& context, const RenderTargetDesc& desc)
     : context_(context), desc_(desc) {
@@ -29,8 +57,7 @@ RenderTarget::RenderTarget(GlContext& context, const RenderTargetDesc& desc)
   std::vector<GLenum> draw_buffers;
   for (std::size_t i = 0; i < desc.colors.size(); ++i) {
     glBindTexture(GL_TEXTURE_2D, color_textures_[i]);
-    glTexStorage2D(GL_TEXTURE_2D, 1, desc.colors[i] == ColorFormat::Rgba8 ? GL_RGBA8 : GL_RGBA32F,
-                   desc.width, desc.height);
+    glTexStorage2D(GL_TEXTURE_2D, 1, gl_internal_format(desc.colors[i]), desc.width, desc.height);
     const GLenum attachment = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
     glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, color_textures_[i], 0);
     draw_buffers.push_back(attachment);
@@ -84,25 +111,49 @@ void RenderTarget::clear(const glm::vec4& color, float depth) {
   check_gl("RenderTarget::clear");
 }
 
+void RenderTarget::upload_color(const std::vector<glm::vec4>& pixels, int attachment) {
+  check_attachment(attachment);
+  if (pixels.size() != std::size_t(desc_.width) * std::size_t(desc_.height))
+    throw GlError("RenderTarget::upload_color: the image is not the target's size");
+  glBindTexture(GL_TEXTURE_2D, color_textures_[std::size_t(attachment)]);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  if (is_fixed_point(desc_.colors[std::size_t(attachment)])) {
+    std::vector<glm::u8vec4> bytes(pixels.size());
+    for (std::size_t i = 0; i < pixels.size(); ++i)
+      for (int c = 0; c < 4; ++c) bytes[i][c] = fixed::unorm8_from_float(pixels[i][c]);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, desc_.width, desc_.height, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+  } else {
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, desc_.width, desc_.height, GL_RGBA, GL_FLOAT, pixels.data());
+  }
+  glBindTexture(GL_TEXTURE_2D, 0);
+  check_gl("RenderTarget::upload_color");
+}
+
+void RenderTarget::upload_depth(const std::vector<float>& depth) {
+  if (!desc_.depth) throw GlError("RenderTarget::upload_depth: the target has no depth buffer");
+  if (depth.size() != std::size_t(desc_.width) * std::size_t(desc_.height))
+    throw GlError("RenderTarget::upload_depth: the image is not the target's size");
+  glBindTexture(GL_TEXTURE_2D, depth_texture_);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  if (desc_.depth24) {  // GL_UNSIGNED_INT depth is k / (2^32 - 1): the 24-bit k in the high bits, repeated low
+    std::vector<std::uint32_t> words(depth.size());
+    for (std::size_t i = 0; i < depth.size(); ++i) {
+      const std::uint32_t k = fixed::depth24_from_float(depth[i]);
+      words[i] = (k << 8) | (k >> 16);
+    }
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, desc_.width, desc_.height, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, words.data());
+  } else {
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, desc_.width, desc_.height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  }
+  glBindTexture(GL_TEXTURE_2D, 0);
+  check_gl("RenderTarget::upload_depth");
+}
+
 void RenderTarget::check_attachment(int attachment) const {
   if (attachment < 0 || attachment >= static_cast<int>(color_textures_.size()))
     throw GlError("RenderTarget: no color attachment " + std::to_string(attachment));
 }
 
-namespace {
-
-// Reads color attachment `attachment` of the bound FBO as RGBA of `type`, rows bottom first.
-template <typename Pixel>
-std::vector<Pixel> read_color(int width, int height, int attachment, GLenum type, const char* what) {
-  std::vector<Pixel> out(static_cast<std::size_t>(width) * height);
-  glReadBuffer(GL_COLOR_ATTACHMENT0 + attachment);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width, height, GL_RGBA, type, out.data());
-  check_gl(what);
-  return out;
-}
-
-}  // namespace
 
 std::vector<glm::u8vec4> RenderTarget::read_rgba8(int attachment) {
   check_attachment(attachment);
@@ -129,15 +180,24 @@ std::vector<float> RenderTarget::read_depth() {
 }
 
 Framebuffer RenderTarget::to_framebuffer() {
-  Framebuffer fb;
-  fb.width = desc_.width;
-  fb.height = desc_.height;
-  fb.color = read_rgba_float(0);
+  Framebuffer fb(desc_.width, desc_.height);
   fb.depth = desc_.depth ? read_depth()
                          : std::vector<float>(static_cast<std::size_t>(desc_.width) * desc_.height, 1.0f);
-  fb.aux = color_textures_.size() > 1
-               ? read_rgba_float(1)
-               : std::vector<glm::vec4>(static_cast<std::size_t>(desc_.width) * desc_.height, glm::vec4(0.0f));
+  if (desc_.depth24)  // GL_FLOAT readback of a 24-bit k is k / (2^24 - 1) in float: tessref's form
+    for (float& z : fb.depth) z = fixed::quantize_depth24(z);
+  fb.depth_format = desc_.depth24 ? DepthFormat::k24 : DepthFormat::k32F;
+  fb.set_draw_buffers(std::max<int>(2, int(color_textures_.size())));
+  for (int k = 0; k < int(color_textures_.size()); ++k) {
+    fb.color_format[std::size_t(k)] = desc_.colors[std::size_t(k)];
+    std::vector<glm::vec4>& b = *fb.draw_buffer(k);
+    if (is_fixed_point(desc_.colors[std::size_t(k)])) {  // the bytes as stored (sRGB not decoded)
+      const std::vector<glm::u8vec4> bytes = read_rgba8(k);
+      for (std::size_t i = 0; i < bytes.size(); ++i)
+        for (int c = 0; c < 4; ++c) b[i][c] = fixed::unorm8_to_float(bytes[i][c]);
+    } else {
+      b = read_rgba_float(k);
+    }
+  }
   return fb;
 }
 

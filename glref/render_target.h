@@ -12,13 +12,12 @@ namespace tessref::glref {
 
 class GlContext;
 
-enum class ColorFormat { Rgba8, Rgba32F };
 
 struct RenderTargetDesc {
   int width = 0;
   int height = 0;
   // One entry per color attachment (fragment output location i -> attachment i).
-  std::vector<ColorFormat> colors = {ColorFormat::Rgba8};
+  std::vector<ColorFormat> colors = {ColorFormat::kRgba8};
   bool depth = true;
   // GL_DEPTH_COMPONENT24 instead of GL_DEPTH_COMPONENT32F: what an application that wants only an
   // 8-bit image asks for (the fair benchmark's target).
@@ -42,12 +41,19 @@ class RenderTarget {
   int height() const { return desc_.height; }
   const RenderTargetDesc& desc() const { return desc_; }
 
+  // Uploads width * height values, row 0 at the bottom, into colour attachment `attachment` or the
+  // depth buffer: values the attachment's format holds exactly (raster/color_format.h), sent as
+  // bytes to 8-bit formats (no sRGB encoding on the way) and as 24-bit integers to a 24-bit depth
+  // buffer, so that no conversion of the driver's can round them.
+  void upload_color(const std::vector<glm::vec4>& pixels, int attachment = 0);
+  void upload_depth(const std::vector<float>& depth);
+
   // Readback, width * height values, row 0 at the bottom.
   std::vector<glm::u8vec4> read_rgba8(int attachment = 0);
   std::vector<glm::vec4> read_rgba_float(int attachment = 0);  // Rgba8 comes back as c / 255
   std::vector<float> read_depth();
-  // Attachment 0 -> color, depth -> depth, attachment 1 (if any) -> aux: for comparing with
-  // tessref's own framebuffer.
+  // Attachment 0 -> color, depth -> depth, attachment 1 (if any) -> aux, 2.. -> more: for comparing
+  // with tessref's own framebuffer (with its formats).
   Framebuffer to_framebuffer();
 
  private:

@@ -17,6 +17,7 @@
 #include "glref/shader_source.h"
 #include "glref/tess_capture.h"
 #include "mesh/camera.h"
+#include "render/initial_images.h"
 #include "render/draw_scene.h"
 #include "render/glsl_scene.h"
 #include "mesh/vertex_tags.h"
@@ -263,7 +264,12 @@ SceneRenderer::SceneRenderer(GlContext& context, const Scene& scene, const Mesh&
   desc.height = scene_.height;
   desc.colors = {options_.color};
   desc.depth24 = options_.depth24;
-  if (options_.normals_attachment) desc.colors.push_back(ColorFormat::Rgba32F);
+  if (options_.normals_attachment) desc.colors.push_back(ColorFormat::kRgba32F);
+  if (!scene_.draws.empty()) {  // the scene's own attachments
+    desc.colors.clear();
+    for (const ColorAttachmentSetting& c : scene_.framebuffer.color) desc.colors.push_back(c.format);
+    desc.depth24 = scene_.framebuffer.depth_format == DepthFormat::k24;
+  }
   target_ = std::make_unique<RenderTarget>(context_, desc);
 }
 
@@ -398,6 +404,17 @@ void SceneRenderer::draw() {
   context_.make_current();
   const auto t0 = Clock::now();
   target_->clear(scene_.background, 1.0f);  // binds the target, viewport = image size
+  if (draws_) {  // the framebuffer a scene of draws starts from, as tessref reads it
+    const InitialPixels initial = load_initial_images(scene_);
+    for (std::size_t k = 0; k < initial.color.size(); ++k) {
+      const ColorFormat f = scene_.framebuffer.color[k].format;
+      if (initial.color[k]) target_->upload_color(*initial.color[k], int(k));
+      else if (f != ColorFormat::kRgba32F)  // the background as the format holds it, as tessref starts
+        target_->upload_color(std::vector<glm::vec4>(std::size_t(scene_.width) * std::size_t(scene_.height),
+                                                     stored_color(f, false, scene_.background)), int(k));
+    }
+    if (initial.depth) target_->upload_depth(*initial.depth);
+  }
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);

@@ -30,7 +30,7 @@ class PatchMesh;
 struct SceneRendererOptions {
   // Rgba32F keeps the shader's floats, so both images are quantized by the same code
   // (io/image_output.h to_rgb8); Rgba8 lets the driver round.
-  ColorFormat color = ColorFormat::Rgba32F;
+  ColorFormat color = ColorFormat::kRgba32F;
   bool normals_attachment = true;  // fragment output 1 (world normal) -> Framebuffer::aux
   std::size_t max_points_per_draw = kSafePointsPerDraw;  // tessellated draws split under this
   bool depth24 = false;  // GL_DEPTH_COMPONENT24 instead of 32F
@@ -44,7 +44,7 @@ struct SceneRendererOptions {
   // 24-bit depth, no normals target, the twins specialized (read back with read_back_rgba8).
   static SceneRendererOptions fair_rgba8() {
     SceneRendererOptions o;
-    o.color = ColorFormat::Rgba8;
+    o.color = ColorFormat::kRgba8;
     o.normals_attachment = false;
     o.depth24 = true;
     o.specialize = true;

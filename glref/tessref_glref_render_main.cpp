@@ -57,7 +57,7 @@ int run(const Options& o) {
   t = Clock::now();
   glref::GlContext context(context_options);
   glref::SceneRendererOptions options;
-  options.color = o.color == "rgba8" ? glref::ColorFormat::Rgba8 : glref::ColorFormat::Rgba32F;
+  options.color = o.color == "rgba8" ? ColorFormat::kRgba8 : ColorFormat::kRgba32F;
   glref::SceneRenderer renderer(context, scene, mesh, options);
   const double setup_ms = ms_since(t);
   const Framebuffer fb = renderer.render();

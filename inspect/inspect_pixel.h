@@ -25,7 +25,12 @@ struct PixelFragment {
   bool front_facing = true;
   glm::vec3 position{0.0f}, normal{0.0f};  // world position and normal (the fragment's inputs)
   std::vector<float> inputs;  // every interpolated varying the fragment program read
-  glm::vec4 color{0.0f};  // the fragment program's output
+  glm::vec4 color{0.0f};  // the fragment program's output (location 0)
+  // A scene of draws: the draw that made it, whether it came from a patch (else from an
+  // untessellated triangle, numbered within its call's batch), and every output location's value.
+  std::optional<std::size_t> draw;
+  bool from_patch = true;
+  std::vector<glm::vec4> outputs;
   std::optional<InspectTrace> trace;  // the fragment shader's source trace (asked for)
   // Depth test LESS as the draw applies it, in arrival order: the stored depth it met and which
   // fragment stored it (none: the cleared depth, 1).
@@ -45,7 +50,11 @@ struct PixelInspectResult {
   std::optional<std::size_t> winner;     // the last to pass: its colour is the pixel's
   glm::vec4 pixel_color{0.0f};           // what the draw left in the framebuffer there
   float pixel_depth = 1.0f;
+  std::vector<glm::vec4> pixel_outputs;  // a scene of draws: every draw buffer's value there
 };
+
+// InputError naming --pixel and the image size unless (x, y) (y down from the top row) is on it.
+void check_pixel_on_image(const Scene& scene, int x, int y);
 
 // Runs the scene's draw (the camera already fitted, as render does). InputError naming --pixel
 // and the image size for a pixel off the image, or for a scene that does not tessellate.
@@ -54,5 +63,13 @@ struct PixelInspectResult {
 // which must leave the same pixel (logic_error otherwise).
 PixelInspectResult inspect_pixel(const Scene& scene, const Mesh& mesh, int x, int y,
                                  const Parallel& parallel, bool trace = false);
+
+// The same for a scene of draws: every draw's filled triangles (tessellated or not) redrawn
+// tagged with depth test, blending and masks off, so that every fragment at the pixel arrives;
+// then GL's per-fragment operations replayed there in order (each draw's clear, depth test and
+// write in the depth buffer's format, blending and masks in each draw buffer's), which must leave
+// what the draw left (logic_error otherwise). InputError for a draw of lines or points (GL_LINES,
+// GL_POINTS, polygon mode line or point, isolines, point mode): their fragments are not followed.
+PixelInspectResult inspect_draws_pixel(const Scene& scene, int x, int y, const Parallel& parallel, bool trace = false);
 
 }  // namespace tessref

@@ -228,7 +228,15 @@ Rgb8Image to_rgb8(const Framebuffer& fb) {
   return img;
 }
 
-void write_color_image(const Framebuffer& fb, const std::filesystem::path& path) {
+void write_color_image(const Framebuffer& fb, const std::filesystem::path& path, int draw_buffer) {
+  if (draw_buffer != 0) {  // the same writer over that buffer's pixels
+    Framebuffer view;
+    view.width = fb.width;
+    view.height = fb.height;
+    view.color = *fb.draw_buffer(draw_buffer);
+    view.depth = fb.depth;
+    return write_color_image(view, path);
+  }
   const ImageFormat format = check_image_path(path, ImageKind::Color);
   if (!format.stores_float) return write_rgb8_image(to_rgb8(fb), path);
   const int channels = format.channels;

@@ -44,7 +44,8 @@ std::string writable_image_extensions(ImageKind kind);
 
 // The color attachment; the format follows the extension: float RGBA (or RGB) for formats that
 // keep floats (linear, unclamped), 8-bit RGB otherwise (to_rgb8). InputError naming the file.
-void write_color_image(const Framebuffer& fb, const std::filesystem::path& path);
+// draw_buffer: which of the framebuffer's draw buffers (0 is `color`; it must exist).
+void write_color_image(const Framebuffer& fb, const std::filesystem::path& path, int draw_buffer = 0);
 // Window-space depth (one float channel "Z", 1 where nothing was drawn); float formats only.
 // Depth and normals check the format as check_image_path does.
 void write_depth_image(const Framebuffer& fb, const std::filesystem::path& path);

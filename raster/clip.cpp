@@ -82,7 +82,7 @@ ClipTest classify_triangle(const glm::vec4& a, const glm::vec4& b, const glm::ve
 }
 
 ClipResult clip_triangle(const float* a, const float* b, const float* c, int num_varyings,
-                         float guard_x, float guard_y, ClipPolygon& out) {
+                         float guard_x, float guard_y, ClipPolygon& out, std::uint32_t outcode_mask) {
   num_varyings = std::clamp(num_varyings, 0, kMaxVaryings);
   const float* in[3] = {a, b, c};
   for (int k = 0; k < 3; ++k) {
@@ -93,9 +93,10 @@ ClipResult clip_triangle(const float* a, const float* b, const float* c, int num
   if (!finite(pa) || !finite(pb) || !finite(pc)) return ClipResult::kInvalid;
   const Planes planes{guard_x, guard_y};
   // The plane and viewport-side bits of clip_outcode (w <= 0 is handled after clipping).
-  const std::uint32_t ca = clip_outcode(pa, guard_x, guard_y) & ~kNonPositiveW;
-  const std::uint32_t cb = clip_outcode(pb, guard_x, guard_y) & ~kNonPositiveW;
-  const std::uint32_t cc = clip_outcode(pc, guard_x, guard_y) & ~kNonPositiveW;
+  const std::uint32_t mask = outcode_mask & ~kNonPositiveW;
+  const std::uint32_t ca = clip_outcode(pa, guard_x, guard_y) & mask;
+  const std::uint32_t cb = clip_outcode(pb, guard_x, guard_y) & mask;
+  const std::uint32_t cc = clip_outcode(pc, guard_x, guard_y) & mask;
   if (ca & cb & cc) return ClipResult::kRejected;
 
   const std::uint32_t to_clip = (ca | cb | cc) & kClipPlanes;
@@ -128,7 +129,7 @@ ClipResult clip_triangle(const float* a, const float* b, const float* c, int num
 }
 
 ClipResult clip_line(const float* a, const float* b, int num_varyings, float guard_x,
-                     float guard_y, ClipRecord out[2], bool generated[2]) {
+                     float guard_y, ClipRecord out[2], bool generated[2], std::uint32_t outcode_mask) {
   num_varyings = std::clamp(num_varyings, 0, kMaxVaryings);
   const float* in[2] = {a, b};
   for (int k = 0; k < 2; ++k) {
@@ -139,8 +140,8 @@ ClipResult clip_line(const float* a, const float* b, int num_varyings, float gua
   const ClipRecord v0 = out[0], v1 = out[1];
   if (!finite(v0.position) || !finite(v1.position)) return ClipResult::kInvalid;
   const Planes planes{guard_x, guard_y};
-  const std::uint32_t c0 = clip_outcode(v0.position, guard_x, guard_y) & ~kNonPositiveW;
-  const std::uint32_t c1 = clip_outcode(v1.position, guard_x, guard_y) & ~kNonPositiveW;
+  const std::uint32_t c0 = clip_outcode(v0.position, guard_x, guard_y) & outcode_mask & ~kNonPositiveW;
+  const std::uint32_t c1 = clip_outcode(v1.position, guard_x, guard_y) & outcode_mask & ~kNonPositiveW;
   if (c0 & c1) return ClipResult::kRejected;
   const std::uint32_t to_clip = (c0 | c1) & kClipPlanes;
   float t0 = 0.0f, t1 = 0.0f;

@@ -93,8 +93,10 @@ inline bool outcode_projectable(std::uint32_t code) {
 // (>= 1; Viewport gives 1: llvmpipe clips at the viewport sides).
 // a, b, c: each vertex's floats, gl_Position then num_varyings varyings
 // (TriangleBatch::vertex_data).
+// outcode_mask: the outcode bits that apply (Viewport::outcode_mask: without the near and far
+// planes under GL_DEPTH_CLAMP).
 ClipResult clip_triangle(const float* a, const float* b, const float* c, int num_varyings,
-                         float guard_x, float guard_y, ClipPolygon& out);
+                         float guard_x, float guard_y, ClipPolygon& out, std::uint32_t outcode_mask = ~0u);
 inline ClipResult clip_triangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
                                 int num_varyings, float guard_x, float guard_y, ClipPolygon& out) {
   return clip_triangle(&a.position.x, &b.position.x, &c.position.x,
@@ -106,6 +108,6 @@ inline ClipResult clip_triangle(const ClipVertex& a, const ClipVertex& b, const 
 // from the unclipped ends; a cut end is a + t0 (b - a) or b + t1 (a - b). out[0], out[1] are the
 // kept ends, generated[k] whether end k was cut.
 ClipResult clip_line(const float* a, const float* b, int num_varyings, float guard_x,
-                     float guard_y, ClipRecord out[2], bool generated[2]);
+                     float guard_y, ClipRecord out[2], bool generated[2], std::uint32_t outcode_mask = ~0u);
 
 }  // namespace tessref::raster

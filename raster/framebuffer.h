@@ -1,27 +1,47 @@
 #pragma once
-// Color, depth and one auxiliary attachment (normals for the EXR dump), GL window convention:
-// row 0 is the bottom row, pixel (x, y) has its center at (x + 0.5, y + 0.5).
+// The framebuffer: colour attachments (draw buffers 0 to 7), depth, GL window convention: row 0
+// is the bottom row, pixel (x, y) has its center at (x + 0.5, y + 0.5).
+#include <array>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "common/parallel.h"
+#include "raster/color_format.h"
 
 namespace tessref {
+
+// GL_MAX_DRAW_BUFFERS as llvmpipe reports it: fragment outputs at locations 0 to 7.
+inline constexpr int kMaxDrawBuffers = 8;
 
 struct Framebuffer {
   int width = 0;
   int height = 0;
-  std::vector<glm::vec4> color;  // linear RGBA as written by the fragment shader
+  std::vector<glm::vec4> color;  // draw buffer 0: what the fragment shader writes at location 0
   std::vector<float> depth;      // window-space depth in [0, 1]; cleared to 1
-  std::vector<glm::vec4> aux;    // second fragment output (e.g. world normal), cleared to 0
+  std::vector<glm::vec4> aux;    // draw buffer 1 (location 1; the mesh path's world normal), cleared to 0
+  // Draw buffers 2 to 7, each empty unless the scene's framebuffer has it (set_draw_buffers).
+  std::array<std::vector<glm::vec4>, kMaxDrawBuffers - 2> more;
+  // Each draw buffer's internal format and the depth buffer's (GL_RGBA32F and
+  // GL_DEPTH_COMPONENT32F unless the scene says otherwise): the values kept are those the format
+  // holds (raster/color_format.h).
+  std::array<ColorFormat, kMaxDrawBuffers> color_format{};
+  DepthFormat depth_format = DepthFormat::k32F;
 
   Framebuffer() = default;
   Framebuffer(int w, int h, glm::vec4 clear_color = glm::vec4(0.0f));
   void clear(glm::vec4 clear_color);
   // Makes the framebuffer w x h and clears it, reusing its memory when the size is unchanged (a
   // frame drawn again then pays no allocation and no page faults), on all of parallel's threads.
+  // Draw buffers 2 to 7 and the formats are kept.
   void reset(int w, int h, glm::vec4 clear_color, const Parallel& parallel);
+  // Gives the framebuffer draw buffers 0 .. n - 1 (n in 1..8; buffers from 2 on cleared to 0, the
+  // others dropped).
+  void set_draw_buffers(int n);
+  // Draw buffer k, or null when there is none (aux and more[] may be empty).
+  std::vector<glm::vec4>* draw_buffer(int k);
+  const std::vector<glm::vec4>* draw_buffer(int k) const;
+  int draw_buffers() const;  // 1 + the highest draw buffer present
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * width + x; }
 };
 

@@ -77,8 +77,8 @@ void common_fields(const LineVertex& a, const LineVertex& b, const Viewport& vp,
   t.b_x0 = a.x;
   t.b_y0 = a.y;
   t.b1_dx = t.b1_dy = t.b2_dx = t.b2_dy = 0.0;
-  t.z_lo = vp.depth_lo();
-  t.z_hi = vp.depth_hi();
+  t.z_lo = vp.vertex_z_lo();
+  t.z_hi = vp.vertex_z_hi();
 }
 
 }  // namespace

@@ -47,7 +47,7 @@ SetupOutcome setup_line(const LineBatch& batch, std::size_t index, const Project
   }
   ClipRecord ends[2];
   bool generated[2];
-  switch (clip_line(d0, d1, nv, vp.guard_x(), vp.guard_y(), ends, generated)) {
+  switch (clip_line(d0, d1, nv, vp.guard_x(), vp.guard_y(), ends, generated, vp.outcode_mask())) {
     case ClipResult::kInvalid:
     case ClipResult::kRejected: return SetupOutcome::kClippedAway;
     case ClipResult::kKept: break;
@@ -120,7 +120,7 @@ SetupOutcome setup_triangle_outline(const TriangleBatch& batch, std::size_t inde
     }
     poly.generated = {};
     poly.boundary.fill(true);
-  } else if (clip_triangle(d[0], d[1], d[2], nv, vp.guard_x(), vp.guard_y(), poly) !=
+  } else if (clip_triangle(d[0], d[1], d[2], nv, vp.guard_x(), vp.guard_y(), poly, vp.outcode_mask()) !=
              ClipResult::kKept) {
     return SetupOutcome::kClippedAway;
   }

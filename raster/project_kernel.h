@@ -15,7 +15,7 @@ namespace tessref::raster {
 struct ProjectedVertex {
   std::int32_t x, y;   // window coordinates, 24.8 fixed point
   float xf, yf;        // before snapping
-  float z;             // window depth, clamped to the depth range
+  float z;             // window depth, clamped to the depth range (not with GL_DEPTH_CLAMP)
   float inv_w;
   std::uint32_t code;  // clip_outcode(); window fields are valid only if outcode_projectable(code)
 };
@@ -44,7 +44,8 @@ enum : std::uint32_t {
 struct ProjectParams {
   float guard_x, guard_y;
   float scale_x, translate_x, scale_y, translate_y, scale_z, translate_z;  // x_w = fma(x_ndc, scale_x, translate_x), ...
-  float depth_lo, depth_hi;
+  float depth_lo, depth_hi;  // window z is clamped to these (infinite with GL_DEPTH_CLAMP)
+  std::uint32_t code_mask;   // the outcode bits that apply (without kNear and kFar with GL_DEPTH_CLAMP)
 };
 
 // clip: `count` vertices, `stride` floats apart, gl_Position first (a ClipVertex array).

@@ -37,6 +37,7 @@ void project_vertices_avx2(const float* clip, std::size_t stride, std::size_t co
     if (y < -w) code |= kBottom;
     if (y > w) code |= kTop;
     if (!(w > 0.0f)) code |= kNonPositiveW;
+    code &= p.code_mask;
     o.code = code;
     if (code & (kNonFinite | kNonPositiveW | kClipPlanes)) continue;
     const float inv_w = 1.0f / w;

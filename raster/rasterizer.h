@@ -32,11 +32,16 @@ struct FragmentBatch {
   int num_varyings = 0;
   alignas(32) float frag_coord[4][kFragmentLanes];  // gl_FragCoord x, y, z, 1/w
   alignas(32) float varyings[kMaxVaryings][kFragmentLanes];
-  alignas(32) float color[4][kFragmentLanes];       // outputs
-  alignas(32) float aux[4][kFragmentLanes];
+  alignas(32) float color[4][kFragmentLanes];       // outputs: location 0
+  alignas(32) float aux[4][kFragmentLanes];         // location 1
+  alignas(32) float more[kMaxDrawBuffers - 2][4][kFragmentLanes];  // locations 2 to 7
   std::uint8_t live[kFragmentLanes];
   std::uint8_t front_facing[kFragmentLanes];
   int lanes() const { return 4 * quads; }
+  // Channel c of the output at `location` (0 to kMaxDrawBuffers - 1).
+  float* output(int location, int c) {
+    return location == 0 ? color[c] : location == 1 ? aux[c] : more[location - 2][c];
+  }
 };
 
 // A fragment shader: a plain struct with shade(); it runs on many threads at once, so it must not
@@ -76,6 +81,12 @@ struct RasterState {
   ScissorState scissor;
   BlendState blend;
   ColorMask color_mask;
+  // glEnable(GL_FRAMEBUFFER_SRGB): fragments written to SRGB8_ALPHA8 attachments are encoded
+  // (and blending decodes what is there); without it those attachments act as RGBA8.
+  bool framebuffer_srgb = false;
+  // glEnable(GL_DEPTH_CLAMP) (GL 4.6 13.7.1): the near and far planes do not clip; the window z of
+  // each fragment is clamped to the depth range instead.
+  bool depth_clamp = false;
   // glViewport(x, y, width, height); none: the whole framebuffer. glDepthRange(near, far), kept
   // as GL keeps it (a double).
   std::optional<ViewportRect> viewport;
@@ -102,7 +113,8 @@ struct RasterStats {
   RasterStats& operator+=(const RasterStats& o);
 };
 
-// Draws one batch into fb with state's culling, depth test, scissor, blending and colour mask. Several calls in a row behave as one draw of the
+// Draws one batch into fb with state's culling, depth test, scissor, blending and colour mask
+// (blending and the mask apply to every draw buffer fb has; output location k goes to draw buffer k). Several calls in a row behave as one draw of the
 // concatenated batches. The framebuffer bytes do not depend on parallel.threads().
 RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
                            const FragmentProgram& fs, Framebuffer& fb, const Parallel& parallel);

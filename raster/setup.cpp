@@ -46,7 +46,7 @@ WindowVertex to_window(const glm::vec4& position, const float* varyings, const V
   r.y = fixed::snap_subpixel(r.yf);
   const float z = transform(z_ndc, vp.scale_z(), vp.translate_z());
   // Clipping leaves z_ndc in [-1, 1] up to rounding; keep the rounding inside the depth range.
-  r.z = std::clamp(z, vp.depth_lo(), vp.depth_hi());
+  r.z = std::clamp(z, vp.vertex_z_lo(), vp.vertex_z_hi());
   r.inv_w = inv_w;
   r.varyings = varyings;
   return r;
@@ -166,8 +166,8 @@ void store_piece(const WindowVertex& a, const WindowVertex& b, const WindowVerte
     t.b1_dy = -ex2 / area;
     t.b2_dx = -ey1 / area;
     t.b2_dy = ex1 / area;
-    t.z_lo = vp.depth_lo();
-    t.z_hi = vp.depth_hi();
+    t.z_lo = vp.vertex_z_lo();  // GL_DEPTH_CLAMP: gl_FragCoord.z unclamped, the depth test clamps
+    t.z_hi = vp.vertex_z_hi();
   }
   t.area2 = ccw ? area2 : -area2;
   t.front_facing = box.front;
@@ -224,7 +224,7 @@ void project_vertices(const ClipVertex* vertices, std::size_t count, int records
     static_assert(sizeof(ClipVertex) % sizeof(float) == 0 && offsetof(ClipVertex, position) == 0);
     const ProjectParams params{vp.guard_x(),     vp.guard_y(),     vp.scale_x(),     vp.translate_x(),
                                vp.scale_y(),     vp.translate_y(), vp.scale_z(),     vp.translate_z(),
-                               vp.depth_lo(),    vp.depth_hi()};
+                               vp.vertex_z_lo(), vp.vertex_z_hi(), vp.outcode_mask()};
     project_vertices_avx2(reinterpret_cast<const float*>(vertices),
                           std::size_t(records) * sizeof(ClipVertex) / sizeof(float), count, params, out);
     return;
@@ -232,7 +232,7 @@ void project_vertices(const ClipVertex* vertices, std::size_t count, int records
   for (std::size_t i = 0; i < count; ++i) {
     ProjectedVertex& p = out[i];
     const ClipVertex& v = vertices[i * std::size_t(records)];
-    const std::uint32_t code = clip_outcode(v.position, vp.guard_x(), vp.guard_y());
+    const std::uint32_t code = clip_outcode(v.position, vp.guard_x(), vp.guard_y()) & vp.outcode_mask();
     p.code = code;
     if (!outcode_projectable(code)) continue;  // only clipped (or dropped) triangles use it
     p = project_position(v.position, vp, false);
@@ -275,7 +275,7 @@ SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index,
   }
 
   ClipPolygon poly;
-  ClipResult clipped = clip_triangle(d0, d1, d2, nv, vp.guard_x(), vp.guard_y(), poly);
+  ClipResult clipped = clip_triangle(d0, d1, d2, nv, vp.guard_x(), vp.guard_y(), poly, vp.outcode_mask());
   if (clipped != ClipResult::kKept) return SetupOutcome::kClippedAway;
 
   WindowVertex w[kMaxClipVertices];

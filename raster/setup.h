@@ -1,6 +1,7 @@
 #pragma once
 // Perspective divide, viewport transform, sub-pixel snapping and triangle setup.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -53,8 +54,15 @@ struct Viewport {
   float translate_z() const { return float(0.5 * (depth_near + depth_far)); }
   float depth_lo() const { return float(std::min(depth_near, depth_far)); }
   float depth_hi() const { return float(std::max(depth_near, depth_far)); }
+  // GL_DEPTH_CLAMP: the near and far planes do not clip, so a vertex's window z may leave the
+  // depth range, and gl_FragCoord.z is not clamped: the depth test clamps (raster/tile_raster.h).
+  bool depth_clamp = false;
+  float vertex_z_lo() const { return depth_clamp ? -INFINITY : depth_lo(); }
+  float vertex_z_hi() const { return depth_clamp ? INFINITY : depth_hi(); }
+  std::uint32_t outcode_mask() const { return depth_clamp ? ~(outcode::kNear | outcode::kFar) : ~0u; }
   static Viewport of(int fb_width, int fb_height, const RasterState& state) {
     Viewport v{fb_width, fb_height, state.depth_range_near, state.depth_range_far};
+    v.depth_clamp = state.depth_clamp;
     if (state.viewport) {
       v.x = state.viewport->x, v.y = state.viewport->y;
       v.w = state.viewport->width, v.h = state.viewport->height;

@@ -168,6 +168,7 @@ struct FragmentSink::Lanes {
     std::fill_n(b2, kFragmentLanes, 0.0);
     for (auto* rows : {&batch.frag_coord[0], &batch.color[0], &batch.aux[0]})
       std::fill_n(rows[0], 4 * kFragmentLanes, 0.0f);
+    std::fill_n(batch.more[0][0], (kMaxDrawBuffers - 2) * 4 * kFragmentLanes, 0.0f);
     std::fill_n(batch.varyings[0], kMaxVaryings * kFragmentLanes, 0.0f);
     std::fill_n(batch.live, kFragmentLanes, 0);
     std::fill_n(batch.front_facing, kFragmentLanes, 0);
@@ -186,18 +187,30 @@ FragmentSink::FragmentSink(const FragmentProgram& fs, Framebuffer& fb, int num_v
     : flat_(flat && flat->any() ? flat : nullptr),
       fs_(fs),
       fb_(fb),
-      write_aux_(!fb.aux.empty()),
+      draw_buffers_(fb.draw_buffers()),
+      depth24_(fb.depth_format == DepthFormat::k24),
       depth_test_(state.depth_test),
       depth_write_(state.depth_test && state.depth_write),
       depth_func_(state.depth_func),
       late_depth_(state.depth_test && fs.may_discard()),
       blend_(state.blend),
       color_mask_(state.color_mask),
+      srgb_write_(state.framebuffer_srgb),
+      depth_clamp_(state.depth_clamp),
+      clamp_lo_(float(std::min(state.depth_range_near, state.depth_range_far))),
+      clamp_hi_(float(std::max(state.depth_range_near, state.depth_range_far))),
       lanes_(thread_lanes(num_varyings)),
       batch_(lanes_.batch),
       pixel_(lanes_.pixel),
       b1_(lanes_.b1),
-      b2_(lanes_.b2) {}
+      b2_(lanes_.b2) {
+  plain_ = !blend_.enabled && color_mask_.all();
+  for (int k = 0; k < draw_buffers_; ++k) {
+    std::vector<glm::vec4>* b = fb.draw_buffer(k);
+    targets_[k] = b ? b->data() : nullptr;
+    if (b && fb.color_format[std::size_t(k)] != ColorFormat::kRgba32F) plain_ = false;
+  }
+}
 
 void FragmentSink::flush() {
   if (batch_.quads == 0) return;
@@ -207,17 +220,26 @@ void FragmentSink::flush() {
     if (!batch_.live[l]) continue;
     const std::size_t idx = pixel_[l];
     if (late_depth_) {  // lanes in arrival order: the test against fragments shaded before
-      const float z = batch_.frag_coord[2][l];
+      const float z = stored_depth(batch_.frag_coord[2][l]);
       if (!depth_passes(z, fb_.depth[idx])) continue;
       if (depth_write_) fb_.depth[idx] = z;
     }
-    // Blending and the colour mask (GL 4.6 17.3.6, 17.4.2) on attachment 0, in arrival order.
-    glm::vec4 c(batch_.color[0][l], batch_.color[1][l], batch_.color[2][l], batch_.color[3][l]);
-    if (blend_.enabled) c = blend(blend_, c, fb_.color[idx]);
-    fb_.color[idx] = color_mask_.all() ? c : color_mask_.apply(c, fb_.color[idx]);
-    if (write_aux_)
-      fb_.aux[idx] = glm::vec4(batch_.aux[0][l], batch_.aux[1][l], batch_.aux[2][l],
-                               batch_.aux[3][l]);
+    // Blending and the colour mask (GL 4.6 17.3.6, 17.4.2) on every draw buffer, in arrival
+    // order, each in its format's arithmetic.
+    for (int k = 0; k < draw_buffers_; ++k) {
+      glm::vec4* target = targets_[k];
+      if (!target) continue;
+      glm::vec4& stored = target[idx];
+      glm::vec4 c(batch_.output(k, 0)[l], batch_.output(k, 1)[l], batch_.output(k, 2)[l], batch_.output(k, 3)[l]);
+      if (plain_) {  // RGBA32F, no blending, every channel written: the common case
+        stored = c;
+        continue;
+      }
+      const ColorFormat f = fb_.color_format[std::size_t(k)];
+      if (blend_.enabled) c = blended_color(f, srgb_write_, blend_, c, stored);
+      else if (f != ColorFormat::kRgba32F) c = stored_color(f, srgb_write_, c);
+      stored = color_mask_.all() ? c : color_mask_.apply(c, stored);
+    }
   }
   batch_.quads = 0;
 }
@@ -270,8 +292,9 @@ struct Scanner {
           float* depth = fb.depth.data() + fb.index(xs, y);
           for (int i = 0; i < n; ++i) {
             if (sink.depth_test_) {
-              if (!sink.depth_passes(z[i], depth[i])) continue;
-              if (sink.early_depth_write()) depth[i] = z[i];  // no discard: the write is final
+              const float stored = sink.stored_depth(z[i]);
+              if (!sink.depth_passes(stored, depth[i])) continue;
+              if (sink.early_depth_write()) depth[i] = stored;  // no discard: the write is final
             }
             const int x = xs + i;
             const int lane = base + 2 * (x - seg_x) - (x & 1) + 2 * r;  // 4 * quad + (x & 1) + 2r
@@ -346,8 +369,9 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
       const float z = ip.depth(b1, b2);
       const std::size_t idx = fb.index(x, y);
       if (sink.depth_test_) {
-        if (!sink.depth_passes(z, fb.depth[idx])) continue;
-        if (sink.early_depth_write()) fb.depth[idx] = z;
+        const float stored = sink.stored_depth(z);
+        if (!sink.depth_passes(stored, fb.depth[idx])) continue;
+        if (sink.early_depth_write()) fb.depth[idx] = stored;
       }
       if ((x & ~1) != quad_x || (y & ~1) != quad_y) {
         if (batch.quads == kFragmentQuads) sink.flush();

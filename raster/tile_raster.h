@@ -2,6 +2,8 @@
 // Scan conversion of one set-up triangle inside one screen rectangle (a tile).
 #include <cstdint>
 
+#include "common/fixed_point.h"
+
 #include "raster/line_setup.h"
 #include "raster/setup.h"
 
@@ -39,13 +41,26 @@ class FragmentSink {
   const VaryingMask* flat_;
   const FragmentProgram& fs_;
   Framebuffer& fb_;
-  bool write_aux_;
+  int draw_buffers_;  // fb's draw buffers 0 .. draw_buffers_ - 1 (some may be absent)
+  bool depth24_;      // a 24-bit depth buffer: fragment depths are rounded before the test
   bool depth_test_;
   bool depth_write_;
   DepthFunc depth_func_;
   bool late_depth_;  // depth written after shading (the program may discard)
   BlendState blend_;
   ColorMask color_mask_;
+  bool srgb_write_;
+  bool depth_clamp_;
+  float clamp_lo_, clamp_hi_;  // the depth range, low end first
+  glm::vec4* targets_[kMaxDrawBuffers] = {};  // each draw buffer's pixels (null: absent)
+  bool plain_ = true;  // every present buffer RGBA32F, no blending, full colour mask
+  // The depth buffer's value for a fragment's window z: with GL_DEPTH_CLAMP clamped to the depth
+  // range first (ARB_depth_clamp: before the test; gl_FragCoord.z keeps the unclamped z), then
+  // converted to the buffer's format (GL 4.6 13.8.1).
+  float stored_depth(float z) const {
+    if (depth_clamp_) z = z < clamp_lo_ ? clamp_lo_ : (clamp_hi_ < z ? clamp_hi_ : z);
+    return depth24_ ? fixed::quantize_depth24(z) : z;
+  }
   // GL_LESS, the common case, without the switch.
   bool depth_passes(float z, float stored) const {
     return depth_func_ == DepthFunc::kLess ? z < stored : tessref::depth_passes(depth_func_, z, stored);

@@ -57,6 +57,9 @@ struct DrawOptions {
   std::function<void(const TriangleBatch&)> untessellated_triangles;
   // A scene of draws: called with each draw's index (into Scene::draws) before it is drawn.
   std::function<void(std::size_t)> begin_draw;
+  // A scene of draws: the fragment program each call draws with, before its first primitive
+  // (inspect --pixel redraws with it), on the calling thread.
+  std::function<void(const FragmentProgram&)> fragment_program;
   // A scene of draws, isolines and point mode: each chunk's records and the vertices its lines
   // or points emit, as indices into them, before dump_tess, on the calling thread.
   std::function<void(const std::vector<TessDumpRecord>&, const std::vector<std::uint32_t>&)> tess_lines_points;

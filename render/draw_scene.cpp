@@ -8,6 +8,7 @@
 #include <iterator>
 
 #include "common/error.h"
+#include "raster/clear.h"
 #include "render/glsl_scene.h"
 
 namespace tessref {
@@ -255,13 +256,23 @@ void SceneDraws::for_each_call(std::size_t end, const std::function<void(const P
 DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& parallel, const DrawOptions& options) {
   SceneDraws draws(scene);
   DrawStats stats;
-  std::size_t begun = scene.draws.size();
+  std::size_t next = 0;  // the first draw not begun
+  // Draws [next, end) begin: each one's glClear, then the caller hears of it.
+  const auto begin_until = [&](std::size_t end) {
+    for (; next < end; ++next) {
+      const DrawSetting& d = scene.draws[next];
+      if (d.clear_color || d.clear_depth)
+        clear_buffers(fb, d.raster, d.clear_color,
+                      d.clear_depth ? std::optional<float>(float(*d.clear_depth)) : std::nullopt);
+      if (options.begin_draw) options.begin_draw(next);
+    }
+  };
   draws.for_each_call(scene.draws.size(), [&](const PreparedCall& p) {
-    if (p.draw != begun && options.begin_draw) options.begin_draw(p.draw);
-    begun = p.draw;
+    begin_until(p.draw + 1);
     if (p.call.indices.empty() || p.call.instances == 0) return;
     stats += draw_glsl(p.program, p.attributes, p.call, p.setting.raster, fb, parallel, options);
   });
+  begin_until(scene.draws.size());  // draws without calls still clear
   return stats;
 }
 

@@ -115,6 +115,7 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
   const auto tcs = call.patches ? program.control(call.patch_vertices, call.default_outer, call.default_inner) : nullptr;
   const auto tes = call.patches ? program.evaluation() : nullptr;
   const auto program_fs = program.fragment();
+  if (options.fragment_program) options.fragment_program(*program_fs);
   // --check: the fragment shader's outputs watched (check/check.h).
   const auto watched = options.check ? options.check->watch(*program_fs) : nullptr;
   const FragmentProgram* fs = watched ? watched.get() : program_fs.get();

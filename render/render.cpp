@@ -4,6 +4,7 @@
 #include "mesh/camera.h"
 #include "render/draw_scene.h"
 #include "render/glsl_scene.h"
+#include "render/initial_images.h"
 #include "stages/programs/normals.h"
 #include "stages/programs/phong.h"
 
@@ -52,6 +53,7 @@ DrawStats render_scene(const Scene& scene, const Mesh& mesh, const Parallel& par
                        Framebuffer& fb, const DrawOptions& options) {
   if (!scene.draws.empty()) {
     fb.reset(scene.width, scene.height, scene.background, parallel);
+    set_up_framebuffer(scene, load_initial_images(scene), fb);
     return draw_scene_draws(scene, fb, parallel, options);
   }
   if (scene.shaders.program != ShaderProgram::Builtin) {

@@ -395,6 +395,17 @@ DrawSetting read_draw(JsonObject o, const std::vector<BufferSetting>& buffers, c
       o.fail("primitive_restart", "applies to glDrawElements* only (GL restarts no glDrawArrays* command)", {"elements"});
   }
   d.raster = read_raster_state(o);
+  o.describe("clear", "an object {color, depth}: glClearColor/glClearDepth and glClear of those buffers before the "
+                      "draw, within its scissor box and write masks, as GL clears");
+  if (o.has("clear")) {
+    JsonObject c = o.object("clear");
+    c.describe("color", "glClearColor: [r, g, b, a]; the colour buffer is cleared to it");
+    if (c.has("color")) d.clear_color = c.rgba("color");
+    c.describe("depth", "glClearDepth: a number, clamped to [0, 1] as GL does; the depth buffer is cleared to it");
+    if (c.has("depth")) d.clear_depth = std::clamp(double(c.number("depth")), 0.0, 1.0);
+    if (!d.clear_color && !d.clear_depth) c.fail("color", "give color, depth or both: the buffers glClear clears");
+    c.finish();
+  }
   if (o.has("robust_buffer_access")) d.rules.robust_buffer_access = o.boolean("robust_buffer_access");
   o.describe("robust_buffer_access", "a boolean (default false): a fetch outside a buffer reads zero instead of being an error");
   o.describe("calls", "an array of {count, first | basevertex, instancecount, baseinstance}: glMultiDraw* and indirect draws");
@@ -421,9 +432,87 @@ DrawSetting read_draw(JsonObject o, const std::vector<BufferSetting>& buffers, c
 
 }  // namespace
 
+namespace {
+
+std::filesystem::path resolve(const std::filesystem::path& p, const std::filesystem::path& base_dir) {
+  return p.is_relative() ? base_dir / p : p;
+}
+
+// One colour attachment: a file name alone (GL_RGBA32F), or {internalformat, file}.
+ColorAttachmentSetting read_color_attachment(const json& j, const std::string& path, const JsonSource& source,
+                                             const std::filesystem::path& base_dir) {
+  ColorAttachmentSetting c;
+  if (j.is_string()) {
+    c.file = resolve(j.get<std::string>(), base_dir);
+    return c;
+  }
+  JsonObject o(j, path, source);
+  o.describe("internalformat", "GL_RGBA32F (default), GL_RGBA16F, GL_RGBA8 or GL_SRGB8_ALPHA8");
+  if (o.has("internalformat")) {
+    const std::string f = o.string("internalformat");
+    if (f == "GL_RGBA32F") c.format = ColorFormat::kRgba32F;
+    else if (f == "GL_RGBA16F") c.format = ColorFormat::kRgba16F;
+    else if (f == "GL_RGBA8") c.format = ColorFormat::kRgba8;
+    else if (f == "GL_SRGB8_ALPHA8") c.format = ColorFormat::kSrgb8Alpha8;
+    else o.fail("internalformat", "expected GL_RGBA32F, GL_RGBA16F, GL_RGBA8 or GL_SRGB8_ALPHA8, got \"" + f + "\"");
+  }
+  o.describe("file", "an image file the attachment holds before the first draw (EXR keeps floats; 8-bit files read "
+                     "as k/255 and are stored as they are, also in GL_SRGB8_ALPHA8), top row first, the image's size; "
+                     "fewer than 4 channels: alpha 1");
+  if (o.has("file")) c.file = resolve(o.string("file"), base_dir);
+  o.finish();
+  return c;
+}
+
+void read_framebuffer(JsonObject f, const std::filesystem::path& base_dir, FramebufferSetting& out) {
+  f.describe("color", "an array of 1 to 8 colour attachments, draw buffer k taking fragment output location k: each "
+                      "{internalformat, file} or a file name alone (GL_RGBA32F); one file name alone: one attachment");
+  if (f.has("color")) {
+    const json& c = f.value("color");
+    out.color.clear();
+    if (c.is_array()) {
+      if (c.empty() || c.size() > std::size_t(kMaxDrawBuffers))
+        f.fail("color", "expected 1 to " + std::to_string(kMaxDrawBuffers) + " attachments (GL_MAX_DRAW_BUFFERS), got " +
+                            std::to_string(c.size()));
+      for (std::size_t k = 0; k < c.size(); ++k)
+        out.color.push_back(read_color_attachment(c[k], f.path_of("color") + "." + std::to_string(k),
+                                                  f.source(), base_dir));
+    } else if (c.is_string() || c.is_object()) {
+      out.color.push_back(read_color_attachment(c, f.path_of("color"), f.source(), base_dir));
+    } else {
+      f.fail("color", "expected an array of attachments, an attachment {internalformat, file} or a file name, got " +
+                          describe_json(c));
+    }
+  }
+  f.describe("depth", "the depth attachment: {internalformat: GL_DEPTH_COMPONENT32F (default) or "
+                      "GL_DEPTH_COMPONENT24, file}, or a file name alone (32F); the file's first channel is the window "
+                      "depth in [0, 1] (EXR), top row first");
+  if (f.has("depth")) {
+    const json& d = f.value("depth");
+    if (d.is_string()) {
+      out.depth_file = resolve(d.get<std::string>(), base_dir);
+    } else {
+      JsonObject o = f.object("depth");
+      o.describe("internalformat", "GL_DEPTH_COMPONENT32F (default) or GL_DEPTH_COMPONENT24");
+      if (o.has("internalformat")) {
+        const std::string fmt = o.string("internalformat");
+        if (fmt == "GL_DEPTH_COMPONENT32F") out.depth_format = DepthFormat::k32F;
+        else if (fmt == "GL_DEPTH_COMPONENT24") out.depth_format = DepthFormat::k24;
+        else o.fail("internalformat", "expected GL_DEPTH_COMPONENT32F or GL_DEPTH_COMPONENT24, got \"" + fmt + "\"");
+      }
+      o.describe("file", "an image file whose first channel is the window depth in [0, 1] (EXR), top row first");
+      if (o.has("file")) out.depth_file = resolve(o.string("file"), base_dir);
+      o.finish();
+    }
+  }
+  f.finish();
+}
+
+}  // namespace
+
 void read_draw_keys(JsonObject& root, const JsonSource& source, const std::filesystem::path& base_dir,
                     const ShaderSettings& scene_shaders, std::vector<BufferSetting>& buffers,
-                    std::vector<DrawSetting>& draws) {
+                    std::vector<DrawSetting>& draws, FramebufferSetting& framebuffer) {
   root.describe("buffers", "an object of buffer name: {file} or {type, data}");
   if (root.has("buffers")) {
     const json& b = root.value("buffers");
@@ -431,6 +520,10 @@ void read_draw_keys(JsonObject& root, const JsonSource& source, const std::files
     for (const auto& [name, value] : b.items())
       buffers.push_back(read_buffer(JsonObject(value, "buffers." + name, source), name, base_dir));
   }
+  root.describe("framebuffer", "an object {color, depth}: the attachments a scene of draws draws into and the images "
+                                "they hold before the first draw (default: one GL_RGBA32F attachment holding the "
+                                "background, GL_DEPTH_COMPONENT32F holding 1)");
+  if (root.has("framebuffer")) read_framebuffer(root.object("framebuffer"), base_dir, framebuffer);
   root.describe("draws", "an array of GL draws, drawn in order (replaces mesh and the built-in programs)");
   if (root.has("draws")) {
     const json& d = root.value("draws");
@@ -443,6 +536,8 @@ void read_draw_keys(JsonObject& root, const JsonSource& source, const std::files
 const char* draw_keys_example() {
   return R"({
   "buffers": { "b": { "type": "GL_FLOAT", "data": [0] }, "f": { "file": "x.bin" } },
+  "framebuffer": { "color": [{ "internalformat": "GL_RGBA8", "file": "c.png" }],
+                   "depth": { "internalformat": "GL_DEPTH_COMPONENT24", "file": "d.exr" } },
   "draws": [{
     "shaders": { "vertex": "a.vert", "fragment": "a.frag" },
     "mode": "GL_PATCHES", "patch_vertices": 3,
@@ -459,6 +554,8 @@ const char* draw_keys_example() {
     "blend": { "equation": "GL_FUNC_ADD", "equation_alpha": "GL_FUNC_ADD", "src": "GL_ONE", "dst": "GL_ZERO",
                "src_alpha": "GL_ONE", "dst_alpha": "GL_ZERO", "color": [0, 0, 0, 0] },
     "uniform_buffers": [{ "binding": 0, "buffer": "b", "offset": 0, "size": 16 }],
+    "shader_storage_buffers": [{ "binding": 0, "buffer": "b", "offset": 0, "size": 16 }],
+    "clear": { "color": [0, 0, 0, 1], "depth": 1 },
     "calls": [{ "count": 0, "basevertex": 0, "instancecount": 1, "baseinstance": 0 }]
   }]
 })";

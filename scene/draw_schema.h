@@ -9,11 +9,11 @@
 
 namespace tessref {
 
-// Reads root.buffers and root.draws (both optional). Relative files resolve against base_dir. A
+// Reads root.buffers, root.framebuffer and root.draws (all optional). Relative files resolve against base_dir. A
 // draw's own `shaders` takes batch_lanes and max_instructions from the scene's.
 void read_draw_keys(JsonObject& root, const JsonSource& source, const std::filesystem::path& base_dir,
                     const ShaderSettings& scene_shaders, std::vector<BufferSetting>& buffers,
-                    std::vector<DrawSetting>& draws);
+                    std::vector<DrawSetting>& draws, FramebufferSetting& framebuffer);
 
 // A scene with every draw key once, read only to list the keys (`tessref scene --keys`).
 const char* draw_keys_example();

@@ -154,6 +154,27 @@ struct DrawSetting {
   RasterState raster = gl_initial_state();
   std::vector<UniformBufferSetting> uniform_buffers;
   std::vector<UniformBufferSetting> storage_buffers;  // glBindBufferRange(GL_SHADER_STORAGE_BUFFER, ...)
+  // draws[].clear: glClear before the draw, within its scissor box and write masks.
+  std::optional<glm::vec4> clear_color;
+  std::optional<double> clear_depth;
+};
+
+// framebuffer: the attachments a scene of draws draws into (draw buffer k takes fragment output
+// location k) and the images they hold before the first draw (none: every colour attachment holds
+// the background, depth holds 1).
+struct ColorAttachmentSetting {
+  ColorFormat format = ColorFormat::kRgba32F;
+  std::filesystem::path file;
+};
+struct FramebufferSetting {
+  std::vector<ColorAttachmentSetting> color = {ColorAttachmentSetting{}};  // 1 to 8
+  DepthFormat depth_format = DepthFormat::k32F;
+  std::filesystem::path depth_file;
+  bool has_images() const {
+    for (const ColorAttachmentSetting& c : color)
+      if (!c.file.empty()) return true;
+    return !depth_file.empty();
+  }
 };
 
 struct Scene {
@@ -174,6 +195,7 @@ struct Scene {
   // built-in programs, and the `shaders` program draws them in order into one framebuffer.
   std::vector<BufferSetting> buffers;
   std::vector<DrawSetting> draws;
+  FramebufferSetting framebuffer;
 };
 
 inline constexpr int kMaxLights = programs::kMaxLights;  // phong.frag's arrays

@@ -161,7 +161,8 @@ std::vector<SchemaKey> scene_keys() {
   JsonObject example(example_json, "", source);
   std::vector<BufferSetting> buffers;
   std::vector<DrawSetting> draws;
-  read_draw_keys(example, source, ".", ShaderSettings{}, buffers, draws);
+  FramebufferSetting framebuffer;
+  read_draw_keys(example, source, ".", ShaderSettings{}, buffers, draws, framebuffer);
   return keys;
 }
 

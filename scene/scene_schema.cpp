@@ -402,7 +402,11 @@ Scene scene_from_json(const json& root_json, const JsonSource& source,
   s.polygon_mode = enum_value<PolygonMode>(root, "polygon_mode", "GL_FILL, GL_LINE, GL_POINT");
   s.tessellation = read_tessellation(root.object("tessellation"));
   s.shaders = read_shaders(root.object("shaders"), source, mesh_base_dir);
-  read_draw_keys(root, source, mesh_base_dir, s.shaders, s.buffers, s.draws);
+  const bool has_framebuffer = root.has("framebuffer");
+  read_draw_keys(root, source, mesh_base_dir, s.shaders, s.buffers, s.draws, s.framebuffer);
+  if (has_framebuffer && s.draws.empty())
+    source.fail("framebuffer", "takes a scene of draws (the mesh path draws into RGBA32F colour and float depth)",
+                {"framebuffer", "draws"});
   for (const DrawSetting& d : s.draws)
     if (!d.shaders && s.shaders.program != ShaderProgram::Custom)
       source.fail(d.key, "has no shaders of its own, so the scene's GLSL program draws it: set shaders.program to \"custom\" or give the draw its own shaders",

@@ -30,9 +30,10 @@ void refuse_unsupported_outputs(const shader::Module& m, shader::Stage stage) {
       throw shader::SpirvError("gl_ClipDistance and gl_CullDistance (user clip planes) are not supported");
     if (b == std::uint32_t(spv::BuiltInFragDepth) || m.modes.depth_replacing)
       throw shader::SpirvError("gl_FragDepth is not supported (the depth written is the interpolated one)");
-    if (stage == shader::Stage::Fragment && v.decorations.location && *v.decorations.location > 1)
+    if (stage == shader::Stage::Fragment && v.decorations.location && *v.decorations.location >= kMaxDrawBuffers)
       throw shader::SpirvError("fragment output '" + v.name + "' at location " + std::to_string(*v.decorations.location) +
-                               ": tessref keeps locations 0 (color) and 1 (the --normals image)");
+                               ": past GL_MAX_DRAW_BUFFERS (" + std::to_string(kMaxDrawBuffers) +
+                               ", locations 0 to " + std::to_string(kMaxDrawBuffers - 1) + ")");
   }
   // gl_ClipDistance inside gl_PerVertex: an access chain into that member.
   for (const shader::Block& block : m.blocks)

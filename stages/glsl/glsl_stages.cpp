@@ -326,15 +326,16 @@ void GlslFragment::shade_lanes(FragmentBatch& batch, int first, int n) const {
                        std::to_string(int(batch.frag_coord[1][first + e.lane])) + ")");
   }
   sp_.finish(inv);
-  for (int c = 0; c < 4; ++c) {
-    std::fill_n(batch.color[c] + first, n, 0.0f);
-    std::fill_n(batch.aux[c] + first, n, 0.0f);
-  }
+  // Outputs at locations 0 .. kMaxDrawBuffers - 1, one per draw buffer; what a program does not
+  // write reads 0.
+  constexpr std::uint32_t kOutputWords = 4 + 4 * kMaxDrawBuffers;
+  for (int k = 0; k < std::max(2, output_locations_); ++k)
+    for (int c = 0; c < 4; ++c) std::fill_n(batch.output(k, c) + first, n, 0.0f);
   for (const IoVariable& v : sp_.io.outputs) {
     if (v.kind != IoKind::User) continue;
     for (const IoWord& w : v.words) {
-      if (w.scalar == Scalar::F64 || w.io_word >= 12) continue;
-      float* dst = (w.io_word < 8 ? batch.color[w.io_word - 4] : batch.aux[w.io_word - 8]) + first;
+      if (w.scalar == Scalar::F64 || w.io_word >= kOutputWords) continue;
+      float* dst = batch.output(int(w.io_word - 4) / 4, int(w.io_word - 4) % 4) + first;
       const std::uint32_t* row = inv.row(*v.slot, w.var_word);
       if (w.scalar == Scalar::F32) std::memcpy(dst, row, 4 * std::size_t(n));
       else for (int l = 0; l < n; ++l) dst[l] = w.scalar == Scalar::I32 ? float(std::int32_t(row[l])) : float(row[l]);
@@ -343,6 +344,15 @@ void GlslFragment::shade_lanes(FragmentBatch& batch, int first, int n) const {
   const std::uint8_t* killed = inv.discarded();
   for (int l = 0; l < n; ++l)
     if (killed[l]) batch.live[first + l] = 0;
+}
+
+GlslFragment::GlslFragment(const StageProgram& sp, int varyings, int primitive_id_varying)
+    : sp_(sp), varyings_(varyings), primitive_id_varying_(primitive_id_varying) {
+  for (const IoVariable& v : sp_.io.outputs)
+    if (v.kind == IoKind::User)
+      for (const IoWord& w : v.words)
+        if (w.io_word >= 4)
+          output_locations_ = std::min(kMaxDrawBuffers, std::max(output_locations_, int(w.io_word - 4) / 4 + 1));
 }
 
 FragmentOutput GlslFragment::shade(const FragmentInput& in) const {

@@ -62,12 +62,12 @@ class GlslEvaluation final : public TessEvalProgram {
   int varyings_;
   VaryingMask flat_;
   int primitive_id_varying_;
+  int output_locations_ = 0;  // 1 + the highest output location the program writes (at most 8)
 };
 
 class GlslFragment final : public FragmentProgram {
  public:
-  GlslFragment(const StageProgram& sp, int varyings, int primitive_id_varying)
-      : sp_(sp), varyings_(varyings), primitive_id_varying_(primitive_id_varying) {}
+  GlslFragment(const StageProgram& sp, int varyings, int primitive_id_varying);
   FragmentOutput shade(const FragmentInput& in) const override;
   void shade_batch(FragmentBatch& batch) const override;
   bool may_discard() const override { return sp_.exe->may_discard(); }
@@ -77,6 +77,7 @@ class GlslFragment final : public FragmentProgram {
   const StageProgram& sp_;
   int varyings_;
   int primitive_id_varying_;
+  int output_locations_ = 0;  // 1 + the highest output location the program writes (at most 8)
 };
 
 void run_vertex_stage(const StageProgram& sp, const std::vector<VertexAttribute>& attributes,

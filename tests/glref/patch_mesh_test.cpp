@@ -67,7 +67,7 @@ void main() { color = vec4(1.0, 0.0, 0.0, 1.0); }
 // Pixels not covered exactly once.
 std::size_t coverage_errors(GlContext& ctx, PatchMesh& mesh, const Program& program,
                             const std::vector<std::size_t>& bounds, std::size_t max_points, std::size_t* draws) {
-  RenderTarget rt(ctx, {97, 61, {ColorFormat::Rgba32F}, false});
+  RenderTarget rt(ctx, {97, 61, {ColorFormat::kRgba32F}, false});
   rt.clear(glm::vec4(0.0f));
   program.use();
   glUniform1f(program.uniform("u_level"), 64.0f);

@@ -13,7 +13,7 @@ namespace {
 
 TEST(RenderTarget, ClearsAndReadsBack) {
   TESSREF_REQUIRE_GL(ctx);
-  RenderTarget rt(*ctx, {13, 7, {ColorFormat::Rgba8, ColorFormat::Rgba32F}, true});
+  RenderTarget rt(*ctx, {13, 7, {ColorFormat::kRgba8, ColorFormat::kRgba32F}, true});
   rt.clear({1.0f, 0.5f, 0.0f, 0.25f}, 0.75f);
   const auto c8 = rt.read_rgba8(0);
   ASSERT_EQ(c8.size(), 13u * 7u);
@@ -76,7 +76,7 @@ void main() { color = vec4(1.0, 0.0, 0.0, 1.0); }
                                   {GL_TESS_EVALUATION_SHADER, tes, "quad.tese"},
                                   {GL_FRAGMENT_SHADER, fs, "quad.frag"}});
   const int w = 97, h = 61;
-  RenderTarget rt(*ctx, {w, h, {ColorFormat::Rgba32F}, true});
+  RenderTarget rt(*ctx, {w, h, {ColorFormat::kRgba32F}, true});
   rt.clear(glm::vec4(0.0f), 1.0f);
   GLuint vao = 0;
   glGenVertexArrays(1, &vao);

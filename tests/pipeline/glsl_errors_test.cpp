@@ -394,7 +394,7 @@ TEST(GlslErrors, SamplersAndLanguageFeaturesOutsideTessrefAreRefusedByName) {
 }
 
 // docs/executor.md lists, under "Not supported (each refused with its name)", gl_ClipDistance,
-// fragment outputs past location 1 and interpolateAt*.
+// fragment outputs past GL_MAX_DRAW_BUFFERS (location 8 on) and interpolateAt*.
 TEST(GlslErrors, ClipDistanceHighOutputsAndInterpolateAtAreRefusedByName) {
   struct Case {
     const char* name;
@@ -404,9 +404,9 @@ TEST(GlslErrors, ClipDistanceHighOutputsAndInterpolateAtAreRefusedByName) {
   const std::vector<Case> cases = {
       {"clip", "void main() {\n  gl_Position = corner_mix();\n  gl_ClipDistance[0] = 1.0;\n}\n\n" + std::string(kGreen),
        "gl_ClipDistance"},
-      {"location2", "void main() { gl_Position = corner_mix(); }\n\n[fragment shader]\nlayout(location = 2) out vec4 o;\n"
+      {"location8", "void main() { gl_Position = corner_mix(); }\n\n[fragment shader]\nlayout(location = 8) out vec4 o;\n"
                     "void main() { o = vec4(0.0, 1.0, 0.0, 1.0); }\n\n",
-       "location 2"},
+       "location 8: past GL_MAX_DRAW_BUFFERS (8"},
       {"interpolate", "out vec4 c;\nvoid main() { gl_Position = corner_mix(); c = gl_Position; }\n\n[fragment shader]\n"
                       "in vec4 c;\nvoid main() { gl_FragColor = interpolateAtCentroid(c); }\n\n",
        "interpolateAtCentroid"},

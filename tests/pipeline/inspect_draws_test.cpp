@@ -86,7 +86,7 @@ TEST(InspectDrawsNumbering, BadRequestsExitTwoNamingTheOption) {
       {"two_draws_depth.json --draw 2 --patch 0", "--draw: 2 is past the scene's 2 draws (0..1)"},
       {"two_draws_depth.json --draw 0 --patch 0", "--draw: draws.0 draws untessellated primitives, not GL_PATCHES"},
       {"instanced_blocks.json --patch 6", "--patch: 6 is past draws.0, which has 6 patches (0..5"},
-      {"terrain.json --pixel 3,3", "--pixel: takes a scene with a mesh"},
+      {"terrain.json --pixel 999,3", "--pixel: (999, 3) is off the"},
       {"terrain.json --patch 0 --vertex 289", "--vertex: 289 is past the patch's 289 generated domain points"},
   };
   for (const auto& c : cases) {
@@ -97,6 +97,72 @@ TEST(InspectDrawsNumbering, BadRequestsExitTwoNamingTheOption) {
   const CliRun mesh = run_cli("inspect --draw 0 --patch 0");
   EXPECT_EQ(mesh.exit_code, 2);
   EXPECT_THAT(mesh.output, HasSubstr("--draw: the scene has no draws"));
+}
+
+}  // namespace
+}  // namespace tessref
+
+namespace tessref {
+namespace {
+
+// A scene of draws: the plane (draw 0, untessellated) and the bicubic patches (draw 1) at a pixel
+// where the patches lie just behind the plane; every fragment is listed with its draw, the patch's
+// own verdict is GL_LESS against the plane's depth, and the replay agrees with the draw.
+TEST(InspectDrawsPixel, EachDrawsFragmentsWithTheirStateAndVerdicts) {
+  TempDir dir;
+  const nlohmann::json j = test::inspect_json(dir, kDraws + "two_draws_depth.json" + " --pixel 128,150");
+  const nlohmann::json& f = j["fragments"];
+  ASSERT_EQ(f.size(), 2u);
+  EXPECT_EQ(f[0]["draw"], 0);
+  EXPECT_EQ(f[0]["from_patch"], false);
+  EXPECT_EQ(f[0]["triangle"], 0);
+  EXPECT_TRUE(f[0]["depth_test"]["passed"].get<bool>());
+  EXPECT_EQ(f[1]["draw"], 1);
+  EXPECT_EQ(f[1]["patch"], 0);
+  EXPECT_EQ(f[1]["triangle"], 189);
+  EXPECT_FALSE(f[1]["depth_test"]["passed"].get<bool>());
+  EXPECT_EQ(f[1]["depth_test"]["stored_by"], 0);
+  EXPECT_EQ(j["winner"], 0);
+  EXPECT_EQ(j["pixel_color"], f[0]["color"]);
+}
+
+// GL_LEQUAL with depth writes off and blending: the blended plane wins over the patches but leaves
+// their depth; the third draw's GL_GREATER fails against it. Four draw buffers: each output is
+// listed and every buffer's value is given.
+TEST(InspectDrawsPixel, BlendingDepthFunctionsAndDrawBuffers) {
+  TempDir dir;
+  const nlohmann::json j = test::inspect_json(dir, kDraws + "fixed_function.json" + " --pixel 128,150");
+  const nlohmann::json& f = j["fragments"];
+  ASSERT_EQ(f.size(), 3u);
+  EXPECT_TRUE(f[1]["depth_test"]["passed"].get<bool>());
+  EXPECT_EQ(f[1]["depth_test"]["stored_by"], 0);
+  EXPECT_FALSE(f[2]["depth_test"]["passed"].get<bool>());
+  EXPECT_EQ(f[2]["depth_test"]["stored_by"], 0);  // draw 1 wrote no depth
+  EXPECT_EQ(j["winner"], 1);
+  EXPECT_NE(j["pixel_color"], f[1]["color"]);  // blended over the patch's colour
+  const CliRun text = run_cli("inspect " + kDraws + "fixed_function.json" + " --pixel 128,150");
+  EXPECT_EQ(text.exit_code, 0) << text.output;
+  EXPECT_THAT(text.output, HasSubstr("depth test: passed: 0.95400703 <= 0.95447892, fragment 0's"));
+  EXPECT_THAT(text.output, HasSubstr("depth test: failed: 0.95400703 > 0.95447892, fragment 0's does not hold"));
+
+  const nlohmann::json g = test::inspect_json(dir, kDraws + "attachments.json" + " --pixel 40,150");
+  ASSERT_EQ(g["pixel_draw_buffers"].size(), 4u);
+  ASSERT_FALSE(g["fragments"].empty());
+  EXPECT_EQ(g["fragments"].back()["outputs"].size(), 4u);
+}
+
+// Fragment shader traces per draw, and lines or points refused by name.
+TEST(InspectDrawsPixel, TracesAndRefusals) {
+  const CliRun traced = run_cli("inspect " + kDraws + "two_draws_depth.json" + " --pixel 128,150 --trace");
+  EXPECT_EQ(traced.exit_code, 0) << traced.output;
+  EXPECT_THAT(traced.output, HasSubstr("frag_color = vec4(0.5 * normalize(e_normal) + 0.5, 1.0);"));
+  EXPECT_THAT(traced.output, HasSubstr("frag_color = u_fill;"));
+  const CliRun lines = run_cli("inspect " + kDraws + "grass_isolines.json" + " --pixel 10,10");
+  EXPECT_EQ(lines.exit_code, 2) << lines.output;
+  EXPECT_THAT(lines.output, HasSubstr("whose fragments --pixel does not follow"));
+  const CliRun with_draw = run_cli("inspect " + kDraws + "two_draws_depth.json" + " --pixel 1,1 --draw 0");
+  EXPECT_EQ(with_draw.exit_code, 2);
+  EXPECT_THAT(with_draw.output, HasSubstr("give --pixel alone"));
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // Clipping against near and far, triangles behind the eye, invalid input, and the depth test.
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
@@ -96,6 +97,48 @@ TEST(RasterClip, TriangleCrossingTheNearPlaneIsClipped) {
       }
     }
   EXPECT_GT(checked, kW * kH / 3);  // the upper half looks above the horizon
+}
+
+// GL_DEPTH_CLAMP: a floor triangle reaching past the far plane (100) keeps its far part, at depth
+// 1 (clamped at the test; GL_LEQUAL lets it pass against the cleared 1), and the part in front of
+// the far plane is unchanged; a triangle wholly behind the eye still draws nothing (the viewport's
+// sides clip it, which keeps w > 0).
+TEST(RasterClip, DepthClampKeepsWhatTheFarPlaneWouldClip) {
+  const Camera cam;
+  TriangleBatch b;
+  b.num_varyings = 3;
+  test::add_triangle(b, cam.vertex({0, -1, -4}), cam.vertex({-300, -1, -300}), cam.vertex({300, -1, -300}));
+  test::VaryingProgram prog;
+  Framebuffer clipped(kW, kH), clamped(kW, kH);
+  RasterState state;
+  state.depth_func = DepthFunc::kLessEqual;
+  draw_triangles(b, state, prog, clipped, Parallel(2));
+  state.depth_clamp = true;
+  draw_triangles(b, state, prog, clamped, Parallel(2));
+  // Different cuts (the far plane's, or none) give other pieces with other corners, so a pixel
+  // centre on the triangle's edge may go either way: a handful, counted.
+  int kept = 0, same = 0, edge = 0;
+  for (std::size_t i = 0; i < clamped.depth.size(); ++i) {
+    const bool was_drawn = clipped.color[i] != glm::vec4(0.0f), is_drawn = clamped.color[i] != glm::vec4(0.0f);
+    if (was_drawn && is_drawn) {
+      // Interpolated over other pieces (other corners): a few ulps apart.
+      EXPECT_NEAR(clamped.depth[i], clipped.depth[i], 1e-6) << i % kW << "," << i / kW;
+      ++same;
+    } else if (is_drawn && clamped.depth[i] == 1.0f) {
+      ++kept;  // past the far plane
+    } else if (was_drawn || is_drawn) {
+      ++edge;
+    }
+  }
+  std::printf("[ figures  ] depth clamp: %d pixels as before, %d kept past the far plane, %d on an edge\n", same, kept, edge);
+  EXPECT_LE(edge, 8);
+  EXPECT_GT(same, 1000);
+  EXPECT_GT(kept, 50);
+
+  TriangleBatch behind;
+  test::add_triangle(behind, cam.vertex({0, 1, 3}), cam.vertex({-1, -1, 3}), cam.vertex({1, -1, 3}));
+  Framebuffer fb(kW, kH);
+  EXPECT_EQ(draw_triangles(behind, state, prog, fb, Parallel(1)).fragments_shaded, 0u);
 }
 
 TEST(RasterClip, TriangleBehindTheEyeRendersNothing) {

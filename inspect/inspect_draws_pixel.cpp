@@ -1,0 +1,194 @@
+// tessref inspect --pixel on a scene of draws (inspect/inspect_pixel.h): the fragments of every
+// draw at one pixel, and GL's per-fragment operations replayed there.
+#include <algorithm>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "common/error.h"
+#include "common/fixed_point.h"
+#include "inspect/fragment_tags.h"
+#include "inspect/inspect_pixel.h"
+#include "inspect/pixel_recorder.h"
+#include "render/draw_scene.h"
+#include "render/initial_images.h"
+#include "render/render.h"
+
+namespace tessref {
+namespace {
+
+// The recorder's program until the first draw names its own (never shaded: no batch comes first).
+struct NoProgram final : FragmentProgram {
+  FragmentOutput shade(const FragmentInput&) const override { return {}; }
+};
+
+// Lines and points have no tags (fragment_tags.h tags triangles): such draws are refused.
+void refuse_lines_and_points(const Scene& scene) {
+  for (const DrawSetting& d : scene.draws) {
+    const bool lines = d.mode == DrawMode::Lines || d.mode == DrawMode::LineStrip ||
+                       d.mode == DrawMode::LineLoop || d.mode == DrawMode::Points;
+    if (lines || d.raster.polygon_mode != PolygonMode::kFill)
+      throw InputError("--pixel: " + d.key + " draws " + (lines ? "lines or points" : "in polygon mode line or point") +
+                       ", whose fragments --pixel does not follow (filled triangles only); render --draw-buffer and "
+                       "inspect --draw K --patch N still work");
+  }
+}
+
+// The draw's state for the tagged redraw: the same coverage (viewport, scissor, culling, clipping,
+// depth range and clamp), but no depth test, writes or blending, so that every fragment arrives.
+RasterState redraw_state(const RasterState& s) {
+  RasterState r = s;
+  r.depth_test = false;
+  r.depth_write = false;
+  r.blend.enabled = false;
+  r.color_mask = ColorMask{};
+  return r;
+}
+
+bool inside_scissor(const ScissorState& s, int x, int y) {
+  return !s.enabled || (x >= s.x && x < s.x + s.width && y >= s.y && y < s.y + s.height);
+}
+
+// GL 4.6 chapter 17 at one pixel, draw by draw: the clear, then each fragment in arrival order
+// through the depth test and write (in the depth buffer's format), blending and the colour mask
+// (in each draw buffer's). Fills each fragment's verdict; returns the last fragment that wrote.
+std::optional<std::size_t> replay(const Scene& scene, const Framebuffer& initial, std::size_t idx, int x, int y,
+                                  std::vector<PixelFragment>& fragments, std::vector<glm::vec4>& colors, float& depth) {
+  const int buffers = int(colors.size());
+  for (int k = 0; k < buffers; ++k) colors[std::size_t(k)] = (*initial.draw_buffer(k))[idx];
+  depth = initial.depth[idx];
+  const bool depth24 = initial.depth_format == DepthFormat::k24;
+  const auto stored_depth = [&](float z) { return depth24 ? fixed::quantize_depth24(z) : z; };
+  std::optional<std::size_t> writer;      // the fragment whose depth is stored (none: cleared or initial)
+  std::optional<std::size_t> last_color;  // the last fragment that wrote colour
+  std::size_t next = 0;
+  for (std::size_t d = 0; d < scene.draws.size(); ++d) {
+    const DrawSetting& draw = scene.draws[d];
+    const RasterState& s = draw.raster;
+    if ((draw.clear_color || draw.clear_depth) && inside_scissor(s.scissor, x, y)) {
+      if (draw.clear_color)
+        for (int k = 0; k < buffers; ++k)
+          colors[std::size_t(k)] = s.color_mask.apply(
+              stored_color(initial.color_format[std::size_t(k)], s.framebuffer_srgb, *draw.clear_color), colors[std::size_t(k)]);
+      if (draw.clear_depth && s.depth_write) {
+        depth = stored_depth(float(*draw.clear_depth));
+        writer.reset();
+      }
+    }
+    for (; next < fragments.size() && fragments[next].draw == d; ++next) {
+      PixelFragment& f = fragments[next];
+      f.depth_before = depth;
+      f.depth_from = writer;
+      if (s.depth_test) {
+        float z = f.frag_coord.z;
+        if (s.depth_clamp)  // before the test (raster/tile_raster.h)
+          z = std::clamp(z, float(std::min(s.depth_range_near, s.depth_range_far)),
+                         float(std::max(s.depth_range_near, s.depth_range_far)));
+        z = stored_depth(z);
+        f.passed = depth_passes(s.depth_func, z, depth);
+        if (!f.passed) continue;
+        if (s.depth_write) {
+          depth = z;
+          writer = next;
+        }
+      } else {
+        f.passed = true;  // no test, and no depth written (GL 4.6 17.3.4)
+      }
+      for (int k = 0; k < buffers; ++k) {
+        glm::vec4& stored = colors[std::size_t(k)];
+        const ColorFormat format = initial.color_format[std::size_t(k)];
+        const glm::vec4 c = s.blend.enabled ? blended_color(format, s.framebuffer_srgb, s.blend, f.outputs[std::size_t(k)], stored)
+                                            : stored_color(format, s.framebuffer_srgb, f.outputs[std::size_t(k)]);
+        stored = s.color_mask.apply(c, stored);
+      }
+      if (last_color) fragments[*last_color].hidden_by = next;
+      last_color = next;
+    }
+  }
+  return last_color;
+}
+
+}  // namespace
+
+PixelInspectResult inspect_draws_pixel(const Scene& scene, int x, int y, const Parallel& parallel, bool trace) {
+  check_pixel_on_image(scene, x, y);
+  refuse_lines_and_points(scene);
+  PixelInspectResult r;
+  r.x = x;
+  r.y = y;
+  r.width = scene.width;
+  r.height = scene.height;
+  r.window_y = scene.height - 1 - y;
+  r.program = "glsl, each draw's program (executor)";
+  // The fragment shaders' sources, per draw, for --trace.
+  std::vector<std::vector<shader::ShaderSource>> sources(scene.draws.size());
+  if (trace) {
+    SceneDraws programs(scene);
+    for (std::size_t d = 0; d < scene.draws.size(); ++d) sources[d] = programs.sources(d);
+  }
+  const auto fragment_source = [&](std::size_t d) -> const shader::ShaderSource* {
+    for (const shader::ShaderSource& s : sources[d])
+      if (s.stage == shader::Stage::Fragment) return &s;
+    return nullptr;
+  };
+
+  const int buffers = int(scene.framebuffer.color.size());
+  const NoProgram none;
+  PixelRecorder recorder(none, x, r.window_y, nullptr, buffers);
+  Framebuffer scratch;  // the redraw's: nobody reads it
+  scratch.reset(scene.width, scene.height, scene.background, parallel);
+  std::size_t draw = 0;
+  std::uint32_t triangles_in_draw = 0;  // untessellated triangles so far, numbering them
+  std::optional<std::size_t> lines_from;
+  RasterState state;
+  DrawOptions options;
+  options.begin_draw = [&](std::size_t d) {
+    draw = d;
+    triangles_in_draw = 0;
+    state = redraw_state(scene.draws[d].raster);
+  };
+  options.fragment_program = [&](const FragmentProgram& fs) { recorder.set_draw(fs, fragment_source(draw), draw); };
+  options.tess_surface = [&](const std::vector<TessDumpRecord>& records, const TriangleBatch& batch) {
+    draw_triangles(tagged_triangles(records, batch), state, recorder, scratch, parallel);
+  };
+  options.untessellated_triangles = [&](const TriangleBatch& batch) {
+    // Each triangle tagged as a "patch" of its own: its number in the draw (calls and instances
+    // in order).
+    std::vector<TessDumpRecord> records(batch.vertices.size() / std::size_t(batch.records()));
+    for (std::size_t v = 0; v < records.size(); ++v) records[v].patch_id = triangles_in_draw + std::uint32_t(v / 3);
+    triangles_in_draw += std::uint32_t(records.size() / 3);
+    const std::size_t before = recorder.fragments.size();
+    draw_triangles(tagged_triangles(records, batch), state, recorder, scratch, parallel);
+    for (std::size_t i = before; i < recorder.fragments.size(); ++i) {
+      PixelFragment& f = recorder.fragments[i];
+      f.from_patch = false;
+      f.triangle = f.patch;
+      f.patch = 0;
+    }
+  };
+  options.tess_lines_points = [&](const std::vector<TessDumpRecord>&, const std::vector<std::uint32_t>&) {
+    if (!lines_from) lines_from = draw;
+  };
+  Framebuffer fb;
+  render_scene(scene, Mesh{}, parallel, fb, options);
+  if (lines_from)
+    throw InputError("--pixel: " + scene.draws[*lines_from].key + "'s evaluation shader emits isolines or points, "
+                     "whose fragments --pixel does not follow (filled triangles only)");
+
+  r.fragments = std::move(recorder.fragments);
+  Framebuffer initial(scene.width, scene.height, scene.background);
+  set_up_framebuffer(scene, load_initial_images(scene), initial);
+  const std::size_t idx = fb.index(x, r.window_y);
+  std::vector<glm::vec4> colors(static_cast<std::size_t>(buffers));
+  float depth = 1.0f;
+  r.winner = replay(scene, initial, idx, x, r.window_y, r.fragments, colors, depth);
+  for (int k = 0; k < buffers; ++k) r.pixel_outputs.push_back((*fb.draw_buffer(k))[idx]);
+  r.pixel_color = r.pixel_outputs.at(0);
+  r.pixel_depth = fb.depth[idx];
+  // The replay must leave what the draw left; if not, this tool is wrong, not the input.
+  if (colors != r.pixel_outputs || depth != r.pixel_depth)
+    throw std::logic_error("inspect --pixel: the per-fragment operations replayed at the pixel disagree with the draw");
+  return r;
+}
+
+}  // namespace tessref
