@@ -84,5 +84,53 @@ TEST_F(HostileInput, SceneFilesMustBeRegularAndAtMost64MiB) {
   EXPECT_THAT(r.output, HasSubstr(dir.path().string() + ": is a directory, not a scene file"));
 }
 
+// layout(vertices = 33) reached the pipeline's internal check (exit 3).
+TEST_F(HostileInput, OutputPatchPastGlMaxPatchVerticesIsACompileError) {
+  std::string tesc;
+  {
+    std::ifstream in(kSource + "/stages/schemes/flat.tesc");
+    tesc.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::size_t at = tesc.find("layout(vertices = 3) out;");
+  ASSERT_NE(at, std::string::npos);
+  tesc.replace(at, 25, "layout(vertices = 33) out;");
+  const auto file = dir.write("big.tesc", tesc);
+  const CliRun r = render(kDisplacement + " --set shaders.tess_control=" + file.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr(file.string() + ":4: error: layout(vertices = 33) is more than "
+                                                  "GL_MAX_PATCH_VERTICES (32)"));
+}
+
+// A fragment shader with a local array of `n` floats, indexed by the fragment so it stays.
+std::string fragment_with_array(const std::string& n) {
+  return "#version 450\nlayout(location = 0) in vec3 v_world_position;\nlayout(location = 1) in vec3 v_world_normal;\n"
+         "layout(location = 0) out vec4 out_color;\nlayout(location = 1) out vec4 out_normal;\n"
+         "void main() {\n  float a[" + n + "];\n  a[int(gl_FragCoord.x)] = v_world_normal.x;\n"
+         "  out_color = vec4(a[int(gl_FragCoord.y)]);\n  out_normal = vec4(v_world_normal, 1.0);\n}\n";
+}
+
+// float a[100000000] ended in std::bad_alloc (exit 3); float a[10000000] took 10.3 GB for a
+// 32 x 32 image. Both are refused when the program is built, naming the stage and the variable.
+TEST_F(HostileInput, LocalArraysPastTheExecutorsLimitsNameTheStageAndVariable) {
+  const auto huge = dir.write("huge.frag", fragment_with_array("100000000"));
+  CliRun r = render(kDisplacement + " --set shaders.fragment=" + huge.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("shaders: fragment shader: 'a' is 400000000 bytes: one variable holds at most 16 MiB"));
+  const auto large = dir.write("large.frag", fragment_with_array("10000000"));
+  r = render(kDisplacement + " --set shaders.fragment=" + large.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("fragment shader: 'a' is 40000000 bytes"));
+  // Under the per-variable limit, over the per-invocation one (1 MiB).
+  const auto mid = dir.write("mid.frag", fragment_with_array("1000000"));
+  r = render(kDisplacement + " --set shaders.fragment=" + mid.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("fragment shader: 'a' takes 4000000 bytes per invocation"));
+  EXPECT_THAT(r.output, HasSubstr("more than the executor's private memory limit of 1048576 bytes per invocation"));
+  // A modest array draws.
+  const auto small = dir.write("small.frag", fragment_with_array("64"));
+  r = render(kDisplacement + " --set shaders.fragment=" + small.string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+}
+
 }  // namespace
 }  // namespace tessref
