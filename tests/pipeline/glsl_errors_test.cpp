@@ -817,6 +817,29 @@ TEST(GlslErrors, OutputPatchPastGlMaxPatchVerticesFailsToCompile) {
                               "[test]\ndraw rect patch -1 -1 2 2\n")));
 }
 
+// A missing file is bad input (exit 2), found before any file runs; it was a "fail" (exit 1).
+TEST(GlslErrors, CommandLineRefusesAMissingFileWithTwo) {
+  if (!std::filesystem::exists(kBinary)) GTEST_SKIP() << kBinary << " not built";
+  TempDir dir;
+  const auto good = dir.write("good.shader_test", std::string(kRequire) + kVertex + kControl + kEvaluation + kGreen +
+                                                      kDrawGreen);
+  const std::string missing = (dir.path() / "missing.shader_test").string();
+  CliRun r = run_cli("shader-test " + good.string() + " " + missing);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(r.output, "tessref: error: " + missing + ": no such .shader_test file\n");
+  r = run_cli("shader-test " + dir.path().string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr(dir.path().string() + ": not a regular file, not a .shader_test file"));
+  // A huge draw is that file's failure (exit 1), with the message.
+  const auto huge = dir.write("huge.shader_test", std::string(kRequire) + kVertex + kControl + kEvaluation + kGreen +
+                                                      kFourPatches + "[test]\npatch parameter vertices 4\n"
+                                                      "draw arrays GL_PATCHES 0 600000000\n");
+  r = run_cli("shader-test " + huge.string());
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("fail: " + huge.string() + ": "));
+  EXPECT_THAT(r.output, HasSubstr("600000000 vertices to shade, more than tessref's limit of 4194304 per draw"));
+}
+
 TEST(GlslErrors, CommandLineRefusesAZeroBudget) {
   if (!std::filesystem::exists(kBinary)) GTEST_SKIP() << kBinary << " not built";
   const CliRun r = run_cli("shader-test --max-shader-instructions 0 nothing.shader_test");

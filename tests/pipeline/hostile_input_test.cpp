@@ -132,5 +132,22 @@ TEST_F(HostileInput, LocalArraysPastTheExecutorsLimitsNameTheStageAndVariable) {
   EXPECT_EQ(r.exit_code, 0) << r.output;
 }
 
+// --scale nan wrote a black image and --scale -5 printed DBL_MAX in 310 digits.
+TEST_F(HostileInput, DiffScaleMustBeFiniteAndPositive) {
+  const std::string image = kSource + "/tests/golden/default.png";
+  for (const std::string scale : {"nan", "-5", "0", "inf", "1e999", "2x"}) {
+    const CliRun r = run_cli("diff " + image + " " + image + " --diff " + (dir.path() / "d.png").string() +
+                             " --scale " + scale);
+    EXPECT_EQ(r.exit_code, 2) << scale << ": " << r.output;
+    EXPECT_THAT(r.output, HasSubstr("tessref: error: --scale: expected a finite number greater than 0, got '" +
+                                    scale + "'"));
+    EXPECT_LT(r.output.size(), 200u) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "d.png"));
+  }
+  const CliRun ok = run_cli("diff " + image + " " + image + " --diff " + (dir.path() / "d.png").string() +
+                            " --scale 0.5");
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+}
+
 }  // namespace
 }  // namespace tessref
