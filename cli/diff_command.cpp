@@ -2,6 +2,7 @@
 // tolerance, largest difference and where, mean, RMS, PSNR), by OpenImageIO's ImageBufAlgo, with
 // an optional difference image. Exit 0 when no pixel differs by more than the tolerance, 1 when
 // one does, 2 when an image cannot be read or the sizes differ.
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -17,8 +18,7 @@ namespace tessref::cli {
 namespace {
 
 struct DiffArgs {
-  std::string a, b, diff_image, tolerance = "0";
-  double scale = 16.0;
+  std::string a, b, diff_image, tolerance = "0", scale = "16";
   bool json = false;
 };
 
@@ -41,12 +41,26 @@ double parse_tolerance(const std::string& text) {
   }
 }
 
+// The difference image's gain: a finite number above 0 (NaN would write a black image, a
+// negative one clamps every pixel to black, and CLI11's range check printed DBL_MAX in full).
+double parse_scale(const std::string& text) {
+  try {
+    std::size_t used = 0;
+    const double value = std::stod(text, &used);
+    if (used != text.size() || !std::isfinite(value) || !(value > 0)) throw std::invalid_argument(text);
+    return value;
+  } catch (const std::logic_error&) {
+    throw InputError("--scale: expected a finite number greater than 0, got '" + text + "'");
+  }
+}
+
 double percent(std::uint64_t n, const ImageFileDiff& d) {
   return 100.0 * double(n) / double(std::uint64_t(d.width) * std::uint64_t(d.height));
 }
 
 void run(const DiffArgs& o) {
   const double tolerance = parse_tolerance(o.tolerance);
+  const double scale = parse_scale(o.scale);
   const double one_step = 1.0 / 255.0;
   OutputFiles outputs;
   std::filesystem::path diff_tmp;
@@ -57,7 +71,7 @@ void run(const DiffArgs& o) {
   // Both thresholds are open: a difference of exactly 1/255 is not above 1/255. The half step
   // keeps 8-bit values, which reach here as k/255 in float, on the right side of the comparison.
   const ImageFileDiff d = diff_image_files(o.a, o.b, one_step * 1.5, tolerance == 0 ? 0 : tolerance + one_step * 0.5,
-                                           diff_tmp, o.scale);
+                                           diff_tmp, scale);
   outputs.commit();
   const bool within = d.above_fail == 0;
   if (o.json) {
@@ -95,7 +109,7 @@ void add_diff_command(CLI::App& app) {
                   "largest channel difference allowed, a number or N/255 (8-bit files read as 0..1)")
       ->capture_default_str();
   cmd->add_option("--diff", args->diff_image, "write |a - b| * scale to this image");
-  cmd->add_option("--scale", args->scale, "the difference image's gain")->check(CLI::PositiveNumber)->capture_default_str();
+  cmd->add_option("--scale", args->scale, "the difference image's gain, a finite number > 0")->capture_default_str();
   cmd->add_flag("--json", args->json, "print the figures as JSON");
   cmd->callback([args] { run(*args); });
 }

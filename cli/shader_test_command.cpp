@@ -1,6 +1,8 @@
 // `tessref shader-test FILE...`: piglit's .shader_test files on the CPU pipeline, one verdict line
-// per file and a closing "N passed, M failed, K skipped" line; exit 1 when any failed.
+// per file and a closing "N passed, M failed, K skipped" line; exit 1 when any failed, 2 when a
+// file is missing (before any runs).
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -18,7 +20,20 @@ struct ShaderTestArgs {
   int batch_lanes = shader::ExecLimits{}.batch_lanes;
 };
 
+// A file that is not there is bad input (exit 2), not a failed test: every file is checked before
+// any runs, so a typo in the list does not hide among the verdicts. A file that is there but does
+// not parse still fails, as piglit fails it.
+void check_files_exist(const std::vector<std::string>& files) {
+  for (const std::string& path : files) {
+    std::error_code ec;
+    const std::filesystem::file_status status = std::filesystem::status(path, ec);
+    if (!std::filesystem::exists(status)) throw InputError(path + ": no such .shader_test file");
+    if (!std::filesystem::is_regular_file(status)) throw InputError(path + ": not a regular file, not a .shader_test file");
+  }
+}
+
 void run(const ShaderTestArgs& a) {
+  check_files_exist(a.files);
   const Parallel parallel(a.threads);
   ShaderTestOptions options;
   options.limits.max_instructions = a.max_instructions;

@@ -9,6 +9,7 @@
 #include "cli/verify_html.h"
 #include "common/error.h"
 #include "io/output_files.h"
+#include "scene/json_input.h"
 
 namespace tessref::cli {
 namespace {
@@ -57,10 +58,9 @@ std::vector<LoadedReport> read_reports(const std::vector<fs::path>& folders) {
     for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
       if (it->path().extension() != ".json" || !it->is_regular_file()) continue;
       LoadedReport r{it->path().stem().string(), it->path(), {}};
-      std::ifstream in(r.file, std::ios::binary);
       try {
-        r.report = json::parse(in);
-      } catch (const json::exception& e) {
+        r.report = read_json_file(r.file, "verify report");
+      } catch (const InputError& e) {
         throw InputError(r.file.string() + ": not a verify report: the JSON does not parse (" + e.what() + ")");
       }
       if (const std::string why = malformed(r.report); !why.empty())

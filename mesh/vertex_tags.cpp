@@ -1,14 +1,13 @@
 #include "mesh/vertex_tags.h"
 
-#include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
+#include "scene/json_input.h"
 #include "scene/json_reader.h"
 
 namespace tessref {
@@ -16,16 +15,7 @@ namespace {
 
 constexpr const char* kAppendix = " (seed 001, Appendix B)";
 
-nlohmann::json read_json(const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  if (!in || !(text << in.rdbuf())) throw InputError(file + ": cannot read the tessellation.tags file");
-  try {
-    return nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(file + ": not valid JSON: " + e.what());
-  }
-}
+nlohmann::json read_json(const std::string& file) { return read_json_file(file, "tessellation.tags file"); }
 
 // One entry of "vertices": every key optional (a smooth, untagged vertex is {}).
 VertexTags read_entry(JsonObject o, float default_tension, const glm::vec3& normal) {

@@ -4,6 +4,9 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
 #include <map>
 #include <memory>
 #include <set>
@@ -14,6 +17,13 @@
 
 namespace tessref {
 namespace {
+
+// An integer argument as the file wrote it (the parser keeps numbers as doubles).
+std::string format_integer(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.0f", v);
+  return text;
+}
 
 // What tessref reports for the GL limits piglit files ask about (glGetIntegerv's names).
 const std::map<std::string, long long>& limits() {
@@ -213,6 +223,17 @@ class Runner {
     }
   }
 
+  // glDrawArrays(Instanced) with a negative first, count or instance count is GL_INVALID_VALUE
+  // and draws nothing; piglit's shader_runner fails the test on the error. (The parser keeps the
+  // low 32 bits as piglit does, so 4294967295 arrives as -1.)
+  void refuse_negative_draw_arguments(const TestCommand& c) {
+    static const char* const names[] = {"first", "count", "instance count"};
+    for (std::size_t i = 0; i < c.numbers.size() && i < 3; ++i)
+      if (c.numbers[i] < 0)
+        fail(c, "glDrawArrays: a negative " + std::string(names[i]) + " (" + format_integer(c.numbers[i]) +
+                    ") is GL_INVALID_VALUE");
+  }
+
   void draw_patches(const TestCommand& c, const std::vector<glsl::VertexAttribute>& attributes,
                     std::size_t first, std::size_t count, int instances, int patch_vertices) {
     GlslDrawCall call;
@@ -225,6 +246,8 @@ class Runner {
     try {
       draw_glsl(*program_, attributes, call, state_, fb_, parallel_);
     } catch (const glsl::StageError& e) {
+      fail(c, e.what());
+    } catch (const std::invalid_argument& e) {  // a draw tessref refuses, at this line
       fail(c, e.what());
     }
   }
@@ -305,6 +328,7 @@ class Runner {
       case CommandKind::DrawArrays: {
         if (c.words.empty() || c.words[0] != "GL_PATCHES")
           fail(c, "only GL_PATCHES draws are supported with a tessellation program");
+        refuse_negative_draw_arguments(c);
         // Vertices past the [vertex data] read GL's default attribute values (0, 0, 0, 1).
         const std::size_t first = std::size_t(n[0]), count = std::size_t(n[1]);
         draw_patches(c, attributes_, first, count, n.size() > 2 ? int(n[2]) : 1, patch_vertices_);

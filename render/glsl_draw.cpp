@@ -107,6 +107,12 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
   const bool by_id = !call.vertex_ids.empty();
   const std::size_t shade_first = indexed || by_id ? 0 : call.first;
   const std::size_t shade_count = by_id ? call.vertex_ids.size() : indexed ? call.vertex_count : call.count;
+  // Every shaded vertex is held at once (a StageVertex each), so a huge count against a few
+  // vertices of data would end in std::bad_alloc, not in a message.
+  if (shade_count > kMaxDrawVertices)
+    throw std::invalid_argument("draw: " + std::to_string(shade_count) + " vertices to shade, more than tessref's limit of " +
+                                std::to_string(kMaxDrawVertices) + " per draw (" +
+                                std::to_string(kMaxDrawVertices * sizeof(StageVertex) >> 20) + " MiB of shaded vertices)");
   std::vector<glsl::VertexAttribute> instance_attributes;  // the draw's, then this instance's
   if (call.instance_attributes) instance_attributes = attributes;
   const std::vector<glsl::VertexAttribute>& vertex_attributes = call.instance_attributes ? instance_attributes : attributes;

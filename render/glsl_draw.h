@@ -34,9 +34,14 @@ struct GlslDrawCall {
   std::uint32_t first_patch_id = 0;
 };
 
+// The most vertices one draw shades (one instance): the vertex shader's outputs are all held at
+// once, 528 bytes each, so this bounds a draw's shaded vertices to about 2 GiB.
+inline constexpr std::size_t kMaxDrawVertices = std::size_t(1) << 22;
+
 // Draws into fb. A partial last primitive is ignored, as in GL. Throws glsl::StageError when a
 // shader fails at run time (instruction budget) and std::invalid_argument for a call GL would
-// refuse (GL_PATCHES without a tessellation evaluation shader, or the reverse). options: progress,
+// refuse (GL_PATCHES without a tessellation evaluation shader, or the reverse) or one that shades
+// more than kMaxDrawVertices vertices. options: progress,
 // tess_chunk_patches (0: 64 patches a chunk) and dump_tess as for draw_mesh. The bytes of fb do not
 // depend on parallel.threads() nor on the program's batch size.
 DrawStats draw_glsl(const glsl::GlslProgram& program,

@@ -1,13 +1,12 @@
 #include "scene/scene_loader.h"
 
-#include <fstream>
 #include <functional>
 #include <set>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
+#include "scene/json_input.h"
 #include "scene/json_reader.h"
 #include "scene/scene_overrides.h"
 #include "scene/draw_schema.h"
@@ -17,16 +16,6 @@ namespace tessref {
 namespace {
 
 using nlohmann::json;
-
-// "[json.exception.parse_error.101] parse error at line 2, column 3: syntax error ..." ->
-// "syntax error ...": the location is given separately.
-std::string json_reason(const std::string& what) {
-  std::size_t pos = what.find("]");
-  std::string s = pos == std::string::npos ? what : what.substr(pos + 2);
-  std::size_t colon = s.find(": ");
-  if (s.rfind("parse error", 0) == 0 && colon != std::string::npos) s = s.substr(colon + 2);
-  return s;
-}
 
 // Refuses a key given twice in one object: JSON parsers keep the last silently, so a typo'd copy
 // would override the intended value without a word. Names the key path ("[]" for array elements).
@@ -66,26 +55,12 @@ class DuplicateKeyCheck {
 };
 
 json parse_json(const std::string& text, const std::string& name) {
-  try {
-    DuplicateKeyCheck duplicates;
-    json j = json::parse(text, std::ref(duplicates), /*allow_exceptions=*/true, /*ignore_comments=*/true);
-    if (!duplicates.duplicate().empty())
-      throw InputError(name + ": " + duplicates.duplicate() +
-                       ": the key is given twice in one object (JSON keeps only the last; remove one)");
-    return j;
-  } catch (const json::parse_error& e) {
-    // e.byte is 1-based, the byte after the last one read.
-    std::size_t end = std::min<std::size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());
-    std::size_t line = 1, column = 1;
-    for (std::size_t i = 0; i < end; ++i) {
-      if (text[i] == '\n') line++, column = 1;
-      else column++;
-    }
-    throw InputError(name + ": line " + std::to_string(line) + ", column " +
-                     std::to_string(column) + ": JSON syntax error: " + json_reason(e.what()));
-  } catch (const json::exception& e) {
-    throw InputError(name + ": invalid JSON: " + json_reason(e.what()));
-  }
+  DuplicateKeyCheck duplicates;
+  json j = parse_json_input(text, name, std::ref(duplicates), /*ignore_comments=*/true);
+  if (!duplicates.duplicate().empty())
+    throw InputError(name + ": " + duplicates.duplicate() +
+                     ": the key is given twice in one object (JSON keeps only the last; remove one)");
+  return j;
 }
 
 }  // namespace
@@ -108,18 +83,7 @@ Scene parse_merged(const std::string& text, const std::string& name, const std::
   return scene_from_json(merged, source, mesh_base);
 }
 
-std::string read_scene_file(const std::filesystem::path& file) {
-  const std::string name = file.string();
-  std::error_code ec;
-  if (!std::filesystem::exists(file, ec)) throw InputError(name + ": no such scene file");
-  if (std::filesystem::is_directory(file, ec))
-    throw InputError(name + ": is a directory, not a scene file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in.is_open()) throw InputError(name + ": cannot open the scene file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+std::string read_scene_file(const std::filesystem::path& file) { return read_json_text(file, "scene file"); }
 
 }  // namespace
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "common/error.h"
+#include "scene/json_input.h"
 #include "scene/json_reader.h"
 
 namespace tessref {
@@ -47,8 +48,8 @@ bool is_index(const std::string& s) {
 
 }  // namespace
 
-json parse_override_value(const std::string& text) {
-  json j = json::parse(text, nullptr, /*allow_exceptions=*/false);
+json parse_override_value(const std::string& text, const std::string& name) {
+  json j = parse_json_or_discard(text, name);
   if (!j.is_discarded()) return j;
   std::vector<std::string> pieces = split(text, ',');
   if (pieces.empty()) return json(text);
@@ -66,7 +67,8 @@ SceneOverride parse_override(const std::string& text) {
   std::size_t eq = text.find('=');
   if (eq == std::string::npos)
     throw InputError("--set " + text + ": expected KEY=VALUE (e.g. camera.eye=2,5,-10)");
-  SceneOverride o{trim(text.substr(0, eq)), parse_override_value(text.substr(eq + 1))};
+  const std::string key = trim(text.substr(0, eq));
+  SceneOverride o{key, parse_override_value(text.substr(eq + 1), "--set " + key)};
   for (const std::string& seg : split(o.key, '.'))
     if (seg.empty()) throw InputError("--set " + text + ": empty key segment in '" + o.key + "'");
   if (o.key.empty()) throw InputError("--set " + text + ": empty key");

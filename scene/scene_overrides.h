@@ -14,8 +14,9 @@ struct SceneOverride {
 
 // The value is JSON if it parses as JSON, else a comma-separated list of numbers (one number:
 // a scalar; decimal only, so 0x40 is a string, while "nan", "inf" and 1e999 reach validation as
-// such), else a string.
-nlohmann::json parse_override_value(const std::string& text);
+// such), else a string. JSON nested deeper than kMaxJsonNesting (json_input.h) is an InputError
+// that starts with `name`.
+nlohmann::json parse_override_value(const std::string& text, const std::string& name = "--set");
 
 // Splits "key=value"; InputError for a missing '=' or an empty key segment.
 SceneOverride parse_override(const std::string& text);

@@ -999,11 +999,34 @@ void Invocations::run() {
 
 namespace {
 std::atomic<std::uint64_t> next_serial{1};
+
+// Refuses a program whose invocations need more private memory than limits.max_private_bytes
+// (arena rows are words per invocation), naming its largest per-invocation variable: the cause
+// when the total is this large (a local array), where registers and constants are not.
+void check_private_memory(const Module& m, const DecodedProgram& p, const ExecLimits& limits) {
+  const std::uint64_t bytes = std::uint64_t(p.arena_rows) * 4;
+  if (bytes <= limits.max_private_bytes) return;
+  const VariableSlot* largest = nullptr;
+  for (const VariableSlot& s : p.slots)
+    if (s.per_lane && (!largest || s.words > largest->words)) largest = &s;
+  std::string what = "an invocation needs " + std::to_string(bytes) + " bytes of private memory";
+  if (largest) {
+    const Variable* v = m.variable(largest->id);
+    const std::string name = v && !v->name.empty() ? v->name : m.name_of(largest->id);
+    what = "'" + name + "' takes " + std::to_string(std::uint64_t(largest->words) * 4) +
+           " bytes per invocation (" + std::to_string(bytes) + " bytes in all)";
+  }
+  throw SpirvError(what + ", more than the executor's private memory limit of " +
+                   std::to_string(limits.max_private_bytes) + " bytes per invocation (it keeps " +
+                   std::to_string(kMaxLanes) + " invocations per thread)");
 }
+}  // namespace
 
 Executable::Executable(Module module, ExecLimits limits)
     : module_(std::move(module)), limits_(limits), program_(decode_program(module_)),
-      serial_(next_serial++) {}
+      serial_(next_serial++) {
+  check_private_memory(module_, *program_, limits_);
+}
 
 Invocations& Executable::local() const {
   struct Entry {

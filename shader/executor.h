@@ -57,6 +57,12 @@ struct ExecLimits {
   // whole 2x2 quads, so at least 4; a TCS runs a patch's invocations together). Results never
   // depend on it: it exists to show that, and to measure what batching gains.
   int batch_lanes = kMaxLanes;
+  // Private memory of one invocation, in bytes: its registers, constants and per-invocation
+  // variables (locals, globals, its own inputs and outputs). Each thread keeps kMaxLanes
+  // invocations' worth (256 MiB at this default, whatever batch_lanes is), so this bounds what
+  // local arrays cost: `float a[10000000]` would take 10 GB. A program above it is refused when it
+  // is built, naming its largest per-invocation variable (docs/executor.md, "Limits").
+  std::uint64_t max_private_bytes = std::uint64_t(1) << 20;
 };
 
 // Where a variable lives (see above). Shared variables are either common to the batch (uniforms)
@@ -131,7 +137,8 @@ class Executable {
  public:
   // `shared_io`: whether the stage's Input/Output variables are shared by the batch (a TCS's and
   // a TES's patch data) rather than per lane; the per-invocation built-ins (gl_InvocationID,
-  // gl_TessCoord) stay per lane either way. Throws SpirvError for unsupported instructions.
+  // gl_TessCoord) stay per lane either way. Throws SpirvError for unsupported instructions and
+  // for private memory above limits.max_private_bytes.
   Executable(Module module, ExecLimits limits = {});
   ~Executable();
 

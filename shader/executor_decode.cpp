@@ -58,6 +58,12 @@ struct Decoder {
   }
 
   std::uint32_t alloc_rows(std::uint32_t words) {
+    // Far above ExecLimits::max_private_bytes (checked once the program is decoded): only keeps
+    // the row count from wrapping around before that check.
+    constexpr std::uint32_t kMaxRows = std::uint32_t(1) << 30;
+    if (words > kMaxRows - p.arena_rows)
+      throw SpirvError("an invocation needs more than " + std::to_string(std::uint64_t(kMaxRows) * 4 >> 30) +
+                       " GiB of private memory");
     const std::uint32_t r = p.arena_rows;
     p.arena_rows += words;
     return r;

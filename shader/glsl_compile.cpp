@@ -458,6 +458,26 @@ void lend_output_vertices(const std::vector<ShaderSource>& sources, std::vector<
   }
 }
 
+// GLSL 4.50 section 4.4.2.1: an output patch of more than GL_MAX_PATCH_VERTICES vertices is a
+// compile-time error. glslang does not check it, and the pipeline would meet it only at the draw,
+// as an internal limit. Placed at the declaration's line where the text shows it.
+void check_output_vertices(const ShaderSource& source, const glslang::TShader& shader,
+                           std::vector<std::string>& errors) {
+  const int vertices = shader.getIntermediate()->getVertices();
+  if (source.stage != Stage::TessControl || vertices <= kGlMaxPatchVertices) return;
+  // The declaration with this count (not a comment that mentions layout(vertices = N)).
+  const std::regex declaration(R"(layout\s*\([^)]*\bvertices\s*=\s*)" + std::to_string(vertices) +
+                               R"(\b[^)]*\)\s*out\s*;)");
+  std::smatch m;
+  int line = source.first_line;
+  if (std::regex_search(source.text, m, declaration))
+    line += int(std::count(source.text.begin(), source.text.begin() + m.position(0), '\n'));
+  errors.push_back(source.file + ":" + std::to_string(line) + ": error: layout(vertices = " +
+                   std::to_string(vertices) + ") is more than GL_MAX_PATCH_VERTICES (" +
+                   std::to_string(kGlMaxPatchVertices) + "): an output patch has 1 to " +
+                   std::to_string(kGlMaxPatchVertices) + " vertices");
+}
+
 }  // namespace
 
 CompiledProgram compile_program(const std::vector<ShaderSource>& sources) {
@@ -503,6 +523,8 @@ CompiledProgram compile_program(const std::vector<ShaderSource>& sources) {
       add_log_errors(shader->getInfoLog(), sources, sources[i].file, errors);
     shaders.push_back(std::move(shader));
   }
+  throw_if_any(errors);
+  for (std::size_t i = 0; i < sources.size(); ++i) check_output_vertices(sources[i], *shaders[i], errors);
   throw_if_any(errors);
 
   // One TProgram per stage links that stage's compilation units. The stages meet in

@@ -17,6 +17,10 @@ enum class Stage { Vertex, TessControl, TessEval, Geometry, Fragment };
 // "vertex shader", "tessellation control shader", ..., as a GL linker names them.
 const char* stage_name(Stage stage);
 
+// GL_MAX_PATCH_VERTICES: the largest output patch (layout(vertices = N)) and GL_PATCH_VERTICES
+// tessref takes; GL's minimum, and llvmpipe's value. stages/tess_stage.h's kMaxPatchVertices.
+inline constexpr int kGlMaxPatchVertices = 32;
+
 struct ShaderSource {
   Stage stage = Stage::Vertex;
   std::string file;    // for messages and OpLine

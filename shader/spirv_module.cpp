@@ -54,6 +54,34 @@ void apply_decoration(Decorations& d, std::uint32_t decoration, std::span<const 
   }
 }
 
+std::uint64_t size_in_words(const Type& t) { return t.oversized_words ? t.oversized_words : t.words; }
+
+std::uint64_t saturating_product(std::uint64_t a, std::uint64_t b) {
+  std::uint64_t p;
+  return __builtin_mul_overflow(a, b, &p) ? UINT64_MAX : p;
+}
+
+std::uint64_t saturating_sum(std::uint64_t a, std::uint64_t b) { return a > UINT64_MAX - b ? UINT64_MAX : a + b; }
+
+// Marks `t` oversized, without a layout, when `words` is above kMaxValueWords.
+bool oversized(Type& t, std::uint64_t words) {
+  if (words <= kMaxValueWords) return false;
+  t.oversized_words = words;
+  t.words = 0;
+  t.flat.clear();
+  return true;
+}
+
+// Refuses, by name, a variable whose type has no layout (above kMaxValueWords).
+void refuse_oversized(const Module& m, const Variable& v) {
+  const std::uint64_t words = m.type(v.type).oversized_words;
+  if (words == 0) return;
+  const std::string bytes = words >= UINT64_MAX / 4 ? "more than 2^64" : std::to_string(words * 4);
+  throw SpirvError("'" + (v.name.empty() ? m.name_of(v.id) : v.name) + "' is " + bytes +
+                   " bytes: one variable holds at most " + std::to_string(kMaxValueWords * 4 >> 20) +
+                   " MiB in tessref's executor (GL's minimum GL_MAX_SHADER_STORAGE_BLOCK_SIZE)");
+}
+
 // Fills words and flat for a type whose parts are known.
 void lay_out(Module& m, Type& t) {
   auto scalar_type = [&](Scalar s) {
@@ -68,13 +96,17 @@ void lay_out(Module& m, Type& t) {
     case TypeKind::Matrix:
     case TypeKind::Array: {
       const Type& e = m.type(t.element);
+      if (t.kind != TypeKind::Array) t.scalar = e.scalar;
+      if (oversized(t, saturating_product(size_in_words(e), t.count))) break;
       t.words = e.words * t.count;
       for (std::uint32_t i = 0; i < t.count; ++i)
         for (const FlatComponent& c : e.flat) t.flat.push_back({c.word + i * e.words, c.scalar});
-      if (t.kind != TypeKind::Array) t.scalar = e.scalar;
       break;
     }
-    case TypeKind::Struct:
+    case TypeKind::Struct: {
+      std::uint64_t words = 0;
+      for (std::uint32_t member : t.members) words = saturating_sum(words, size_in_words(m.type(member)));
+      if (oversized(t, words)) break;
       t.words = 0;
       for (std::uint32_t member : t.members) {
         const Type& e = m.type(member);
@@ -83,6 +115,7 @@ void lay_out(Module& m, Type& t) {
         t.words += e.words;
       }
       break;
+    }
     case TypeKind::Pointer: t.words = 1; break;  // a per-lane word offset
     case TypeKind::SampledImage:
     case TypeKind::Image:
@@ -505,6 +538,8 @@ Module read_module(std::span<const std::uint32_t> words, const StorageBufferSize
                        v.name + "'");
     if (v.decorations.buffer_block) size_runtime_array(m, v, storage);
   }
+  for (const Variable& v : m.variables) refuse_oversized(m, v);
+  for (const Variable& v : m.function_variables) refuse_oversized(m, v);
   return m;
 }
 

@@ -19,6 +19,12 @@ class SpirvError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The most 32-bit words one value (a variable, a block) may hold: 16 MiB, GL's minimum
+// GL_MAX_SHADER_STORAGE_BLOCK_SIZE. A larger type is kept without its layout and a variable of it
+// is refused by name: the flattened layout below has an entry per scalar, so `float a[100000000]`
+// would take gigabytes before the executor could say no.
+inline constexpr std::uint64_t kMaxValueWords = std::uint64_t(1) << 22;
+
 enum class Scalar : std::uint8_t { None, Bool, I32, U32, F32, F64 };
 inline int scalar_words(Scalar s) { return s == Scalar::F64 ? 2 : 1; }
 
@@ -48,6 +54,9 @@ struct Type {
   bool image_arrayed = false;
   std::uint32_t image_sampled_type = 0;
   bool runtime = false;  // Array: an OpTypeRuntimeArray (count set from the bound buffer, else 0)
+  // Words of a type above kMaxValueWords (saturated), whose `words` and `flat` are then empty;
+  // 0 for every type that fits.
+  std::uint64_t oversized_words = 0;
 };
 
 struct Decorations {
@@ -124,7 +133,8 @@ using StorageBufferSizes = std::map<std::uint32_t, std::size_t>;
 
 // Reads a binary module. Throws SpirvError for malformed words, more than one function (the front
 // end inlines everything) or constructs outside the executor's scope, naming the construct; and
-// for a shader storage block with a runtime-sized array whose binding `storage` does not size.
+// for a shader storage block with a runtime-sized array whose binding `storage` does not size;
+// and for a variable larger than kMaxValueWords, naming it.
 Module read_module(std::span<const std::uint32_t> words, const StorageBufferSizes& storage = {});
 
 }  // namespace tessref::shader

@@ -11,6 +11,7 @@
 
 #include "common/error.h"
 #include "io/tess_dump.h"
+#include "scene/json_input.h"
 
 namespace tessref {
 namespace {
@@ -53,13 +54,10 @@ Reference load_reference(const std::filesystem::path& dir) {
   if (!std::filesystem::is_directory(dir, ec)) throw InputError(dir.string() + ": no such capture folder");
   Reference r;
   const std::filesystem::path manifest = dir / "manifest.json";
-  std::ifstream in(manifest);
-  if (!in) throw InputError(manifest.string() + ": missing (is " + dir.string() + " a tessref capture?)");
-  try {
-    r.manifest = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(manifest.string() + ": not JSON: " + e.what());
-  }
+  std::error_code missing;
+  if (!std::filesystem::exists(manifest, missing))
+    throw InputError(manifest.string() + ": missing (is " + dir.string() + " a tessref capture?)");
+  r.manifest = read_json_file(manifest, "capture manifest");
   r.color = read_rgb8_image(dir / "color.png");
   r.depth = read_float_image(dir / "depth.exr");
   if (r.depth.channels != 1 || r.depth.width != r.color.width || r.depth.height != r.color.height)

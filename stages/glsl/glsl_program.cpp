@@ -21,8 +21,16 @@ constexpr int kVertexSlots = kMaxStageAttributes;                  // StageVerte
 constexpr int kVaryingSlots = 1 + kMaxVaryings / 4;                // ClipVertex varyings
 constexpr int kPatchSlots = 1 + kMaxPatchAttributes;               // PatchOutput::patch
 
+static_assert(shader::kGlMaxPatchVertices == kMaxPatchVertices, "GL_MAX_PATCH_VERTICES: one value");
+
 // What the executor runs but the pipeline does not carry, refused by name rather than ignored.
 void refuse_unsupported_outputs(const shader::Module& m, shader::Stage stage) {
+  // The compiler refuses a larger patch (glsl_compile.cpp); this guards SPIR-V from elsewhere.
+  if (stage == shader::Stage::TessControl &&
+      (m.modes.output_vertices < 1 || m.modes.output_vertices > kMaxPatchVertices))
+    throw shader::SpirvError("layout(vertices = " + std::to_string(m.modes.output_vertices) +
+                             "): an output patch has 1 to GL_MAX_PATCH_VERTICES (" +
+                             std::to_string(kMaxPatchVertices) + ") vertices");
   for (const shader::Variable& v : m.variables) {
     if (v.storage != spv::StorageClassOutput) continue;
     const auto b = v.decorations.builtin;

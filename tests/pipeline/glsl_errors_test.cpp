@@ -775,6 +775,71 @@ void main() {
   EXPECT_THAT(ok.output, HasSubstr("1 passed, 0 failed, 0 skipped\n"));
 }
 
+// draw arrays with a count far past the vertex data ended in std::bad_alloc; GL refuses a
+// negative first or count (GL_INVALID_VALUE). Each fails its file at the draw's line.
+TEST(GlslErrors, HugeAndNegativeDrawArgumentsFailAtTheirLine) {
+  const std::string head = std::string(kRequire) + kVertex + kControl + kEvaluation + kGreen + kFourPatches +
+                           "[test]\npatch parameter vertices 4\n";
+  const std::string huge = head + "draw arrays GL_PATCHES 0 600000000\n";
+  ShaderTestResult r = run_text(huge);
+  EXPECT_EQ(r.verdict, Verdict::Fail);
+  EXPECT_EQ(r.reason, str(line_of(huge, "draw arrays")) +
+                          ": draw: 600000000 vertices to shade, more than tessref's limit of 4194304 per draw "
+                          "(2112 MiB of shaded vertices) [draw arrays GL_PATCHES 0 600000000]");
+  const std::string negative = head + "draw arrays GL_PATCHES -1 4\n";
+  r = run_text(negative);
+  EXPECT_EQ(r.verdict, Verdict::Fail);
+  EXPECT_EQ(r.reason, str(line_of(negative, "draw arrays")) +
+                          ": glDrawArrays: a negative first (-1) is GL_INVALID_VALUE [draw arrays GL_PATCHES -1 4]");
+  r = run_text(head + "draw arrays GL_PATCHES 0 -4\n");
+  EXPECT_THAT(r.reason, HasSubstr("glDrawArrays: a negative count (-4) is GL_INVALID_VALUE"));
+  // Counts keep their low 32 bits, as piglit's int does: GL sees -1.
+  r = run_text(head + "draw arrays GL_PATCHES 0 4294967295\n");
+  EXPECT_THAT(r.reason, HasSubstr("glDrawArrays: a negative count (-1) is GL_INVALID_VALUE"));
+  // A count within the data draws.
+  EXPECT_TRUE(passed(run_text(head + "draw arrays GL_PATCHES 0 16\n")));
+}
+
+// GLSL 4.50 section 4.4.2.1: an output patch larger than GL_MAX_PATCH_VERTICES is a compile-time
+// error; it reached the pipeline's internal check (exit 3 from render).
+TEST(GlslErrors, OutputPatchPastGlMaxPatchVerticesFailsToCompile) {
+  std::string control = kControl;
+  control.replace(control.find("vertices = 4"), 12, "vertices = 33");
+  const std::string text = std::string(kRequire) + kVertex + control + kEvaluation + kGreen + kDrawGreen;
+  const ShaderTestResult r = run_text(text, "v33.shader_test");
+  EXPECT_EQ(r.verdict, Verdict::Fail);
+  EXPECT_EQ(r.reason, "v33.shader_test:" + str(line_of(text, "vertices = 33")) +
+                          ": error: layout(vertices = 33) is more than GL_MAX_PATCH_VERTICES (32): an output patch "
+                          "has 1 to 32 vertices");
+  control = kControl;
+  control.replace(control.find("vertices = 4"), 12, "vertices = 32");
+  EXPECT_TRUE(passed(run_text(std::string(kRequire) + kVertex + control + kEvaluation + kGreen +
+                              "[test]\ndraw rect patch -1 -1 2 2\n")));
+}
+
+// A missing file is bad input (exit 2), found before any file runs; it was a "fail" (exit 1).
+TEST(GlslErrors, CommandLineRefusesAMissingFileWithTwo) {
+  if (!std::filesystem::exists(kBinary)) GTEST_SKIP() << kBinary << " not built";
+  TempDir dir;
+  const auto good = dir.write("good.shader_test", std::string(kRequire) + kVertex + kControl + kEvaluation + kGreen +
+                                                      kDrawGreen);
+  const std::string missing = (dir.path() / "missing.shader_test").string();
+  CliRun r = run_cli("shader-test " + good.string() + " " + missing);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(r.output, "tessref: error: " + missing + ": no such .shader_test file\n");
+  r = run_cli("shader-test " + dir.path().string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr(dir.path().string() + ": not a regular file, not a .shader_test file"));
+  // A huge draw is that file's failure (exit 1), with the message.
+  const auto huge = dir.write("huge.shader_test", std::string(kRequire) + kVertex + kControl + kEvaluation + kGreen +
+                                                      kFourPatches + "[test]\npatch parameter vertices 4\n"
+                                                      "draw arrays GL_PATCHES 0 600000000\n");
+  r = run_cli("shader-test " + huge.string());
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("fail: " + huge.string() + ": "));
+  EXPECT_THAT(r.output, HasSubstr("600000000 vertices to shade, more than tessref's limit of 4194304 per draw"));
+}
+
 TEST(GlslErrors, CommandLineRefusesAZeroBudget) {
   if (!std::filesystem::exists(kBinary)) GTEST_SKIP() << kBinary << " not built";
   const CliRun r = run_cli("shader-test --max-shader-instructions 0 nothing.shader_test");

@@ -109,6 +109,22 @@ void expect_mentions(const std::string& message, const std::vector<std::string>&
   for (const std::string& p : parts) EXPECT_NE(message.find(p), std::string::npos) << "'" << p << "' in: " << message;
 }
 
+// The tags file goes through the same JSON limits as a scene file (scene/json_input.h): deep
+// nesting is refused at its line and column, and 1e999 (an uncaught out_of_range before) too.
+TEST(ScalarTaggedPnScene, SidecarJsonLimits) {
+  const Mesh mesh = icosphere();
+  test::TempDir dir;
+  const std::string path = (dir.path() / "tags.json").string();
+  EXPECT_EQ(error_of(std::string(100000, '[') + std::string(100000, ']'), mesh, dir),
+            path + ": line 1, column 257: arrays and objects nested deeper than 256 levels (tessref's limit for JSON "
+                   "input)");
+  EXPECT_EQ(error_of("{\"vertices\": [\n  {\"tension\": 1e999}]}", mesh, dir),
+            path + ": line 2, column 15: invalid JSON: number overflow parsing '1e999'");
+  EXPECT_EQ(error_of("{\"vertices\": [}", mesh, dir),
+            path + ": line 1, column 15: JSON syntax error: syntax error while parsing value - unexpected '}'; "
+                   "expected '[', '{', or a literal");
+}
+
 TEST(ScalarTaggedPnScene, SidecarErrorsNameTheFileTheVertexAndTheRule) {
   const Mesh mesh = icosphere();
   const std::size_t n = mesh.vertex_count();

@@ -98,8 +98,31 @@ TEST(Scene, EmptyFileIsASyntaxError) {
 }
 
 TEST(Scene, NumberOverflowInFile) {
-  EXPECT_THAT(scene_error(R"({"camera": {"fov_y_deg": 1e999}})"),
-              HasSubstr("scenes/x.json: invalid JSON: number overflow"));
+  EXPECT_EQ(scene_error(R"({"camera": {"fov_y_deg": 1e999}})"),
+            "scenes/x.json: line 1, column 26: invalid JSON: number overflow parsing '1e999'");
+  // The number, not the same text in a string or a longer number before it.
+  EXPECT_EQ(scene_error("{\"description\": \"1e999\",\n \"lights\": [{\"position\": [11e999, 0, 0]}],\n"
+                        " \"camera\": {\"fov_y_deg\": 1e999}}"),
+            "scenes/x.json: line 2, column 27: invalid JSON: number overflow parsing '11e999'");
+  EXPECT_EQ(scene_error("{\"description\": \"1e999\", // 1e999\n \"camera\": {\"fov_y_deg\": -1e999}}"),
+            "scenes/x.json: line 2, column 26: invalid JSON: number overflow parsing '-1e999'");
+}
+
+// nlohmann::json copies values recursively: a deep file overflowed the stack (SIGSEGV). 256
+// levels are read (here the type check names the key), the 257th is refused where it opens.
+TEST(Scene, NestingIsLimitedTo256Levels) {
+  auto nested = [](int levels) { return std::string(std::size_t(levels), '[') + std::string(std::size_t(levels), ']'); };
+  EXPECT_THAT(scene_error("{\"camera\": {\"eye\": " + nested(254) + "}}"),
+              HasSubstr("scenes/x.json: camera.eye: expected an array of 3 numbers"));
+  EXPECT_EQ(scene_error("{\"camera\": {\"eye\": " + nested(255) + "}}"),
+            "scenes/x.json: line 1, column 274: arrays and objects nested deeper than 256 levels (tessref's limit "
+            "for JSON input)");
+  // Brackets inside strings and comments do not count.
+  EXPECT_THAT(scene_error("{\"description\": \"" + nested(300) + "\", /* " + nested(300) + " */ \"colour\": 1}"),
+              HasSubstr("colour: unknown key"));
+  EXPECT_THAT(scene_error("{}", {"camera.eye=" + nested(257)}),
+              HasSubstr("--set camera.eye: line 1, column 257: arrays and objects nested deeper than 256 levels"));
+  EXPECT_THAT(scene_error("{}", {"camera.eye=" + nested(256)}), HasSubstr("camera.eye: expected an array of 3 numbers"));
 }
 
 TEST(Scene, UnknownKeys) {

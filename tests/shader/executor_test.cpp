@@ -1830,6 +1830,53 @@ TEST(Executor, TheBudgetIsPerInvocation) {
   }
 }
 
+// A vertex shader with a local array of `n` floats that it keeps (indexed by an input).
+std::string local_array(const std::string& n, const std::string& index = "[i]") {
+  return "#version 450\nlayout(location = 0) in int i;\nlayout(location = 0) out float r;\n"
+         "void main() {\n  float big[" + n + "];\n  big" + index + " = 1.0;\n  r = big" + index + ";\n}\n";
+}
+
+// The executor keeps kMaxLanes invocations of private memory per thread: a local array of 10^7
+// floats took 10 GB. Past ExecLimits::max_private_bytes the program is refused when it is built,
+// naming the largest per-invocation variable.
+TEST(Executor, PrivateMemoryIsLimitedPerInvocation) {
+  ExecLimits limits;
+  EXPECT_EQ(limits.max_private_bytes, 1u << 20);
+  EXPECT_NO_THROW(Kernel(local_array("100000"), limits));  // 400 KB
+  try {
+    Kernel k(local_array("300000"), limits);  // 1.2 MB
+    FAIL() << "no error";
+  } catch (const SpirvError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("'big' takes 1200000 bytes per invocation ("));
+    EXPECT_THAT(e.what(), HasSubstr("more than the executor's private memory limit of 1048576 bytes per invocation "
+                                    "(it keeps 256 invocations per thread)"));
+  }
+  limits.max_private_bytes = 4096;
+  EXPECT_THROW(Kernel(local_array("2000"), limits), SpirvError);
+  Kernel small(local_array("100"), limits);
+  small.begin(4);
+  for (int l = 0; l < 4; ++l) small.set_i32("i", l, 0, 2 * l);
+  small.run();
+  for (int l = 0; l < 4; ++l) EXPECT_EQ(small.f32("r", l), 1.0f);
+}
+
+// One value holds at most kMaxValueWords: the module's flattened layout (an entry per scalar)
+// would otherwise take gigabytes before the executor could refuse it; 2^32 words wrapped around.
+TEST(Executor, VariablesPastSixteenMiBAreRefusedByName) {
+  EXPECT_NO_THROW(read_module(compile_stage(Stage::Vertex, local_array("4194304"))));  // exactly 16 MiB
+  for (const auto& [n, bytes] : {std::pair<std::string, std::string>{"4194305", "16777220"},
+                                 {"100000000", "400000000"}, {"65536][65536", "17179869184"}}) {
+    const std::string index = n.find(']') == std::string::npos ? "[i]" : "[i][i]";
+    try {
+      read_module(compile_stage(Stage::Vertex, local_array(n, index)));
+      FAIL() << n << ": no error";
+    } catch (const SpirvError& e) {
+      EXPECT_EQ(std::string(e.what()), "'big' is " + bytes + " bytes: one variable holds at most 16 MiB in tessref's "
+                                       "executor (GL's minimum GL_MAX_SHADER_STORAGE_BLOCK_SIZE)");
+    }
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // A fragment shader: discard and derivatives over 2x2 quads
 

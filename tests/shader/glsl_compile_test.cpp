@@ -482,6 +482,25 @@ void main() { EmitVertex(); }
             "tessellation and fragment shaders)");
 }
 
+// GLSL 4.50 section 4.4.2.1: more output patch vertices than GL_MAX_PATCH_VERTICES is a compile
+// error at the declaration (glslang does not check it).
+TEST(GlslCompile, OutputPatchPastGlMaxPatchVerticesIsRefused) {
+  auto control = [](int n) {
+    return "#version 450\n// an output patch\n\nlayout(vertices = " + std::to_string(n) +
+           ") out;\nvoid main() {\n  gl_TessLevelOuter[0] = 1.0;\n}\n";
+  };
+  const char* evaluation = "#version 450\nlayout(triangles) in;\nvoid main() { gl_Position = vec4(0.0); }\n";
+  EXPECT_EQ(error_of({{Stage::Vertex, "p.shader_test", 2, kPassThroughVertex},
+                      {Stage::TessControl, "p.shader_test", 10, control(33)},
+                      {Stage::TessEval, "p.shader_test", 20, evaluation}}),
+            "p.shader_test:13: error: layout(vertices = 33) is more than GL_MAX_PATCH_VERTICES (32): an output "
+            "patch has 1 to 32 vertices");
+  EXPECT_EQ(error_of({{Stage::Vertex, "p.shader_test", 2, kPassThroughVertex},
+                      {Stage::TessControl, "p.shader_test", 10, control(32)},
+                      {Stage::TessEval, "p.shader_test", 20, evaluation}}),
+            "");
+}
+
 TEST(GlslCompile, FixedFunctionStateIsRefused) {
   const char* vertex = R"(#version 150 compatibility
 in vec4 piglit_vertex;
