@@ -161,8 +161,8 @@ TessComparison compare_tess(const std::vector<TessDumpRecord>& reference_emitted
         continue;
       }
       emitted[it->second] = 1;
-      c.max_position_distance =
-          std::max(c.max_position_distance, double(glm::length(glm::dvec3(r.position) - glm::dvec3(m->position))));
+      const double distance = glm::length(glm::dvec3(r.position) - glm::dvec3(m->position));
+      if (distance > c.max_position_distance) c.max_position_distance = distance, c.worst_distance_patch = patch;
       for (int k3 = 0; k3 < 3; ++k3) {
         const std::uint32_t dp = ulp_distance(r.position[k3], m->position[k3]);
         const std::uint32_t dn = ulp_distance(r.normal[k3], m->normal[k3]);

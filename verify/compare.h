@@ -45,7 +45,8 @@ struct TessComparison {
   std::uint64_t reference_vertices = 0, unmatched_vertices = 0;
   UlpHistogram position_ulps{}, normal_ulps{};  // per component, at matched coordinates
   std::uint32_t max_position_ulp = 0, max_normal_ulp = 0;
-  std::int64_t worst_position_patch = -1;
+  std::int64_t worst_position_patch = -1;  // the patch of max_position_ulp
+  std::int64_t worst_distance_patch = -1;  // the patch of max_position_distance
   double max_position_distance = 0.0;  // world units, at matched coordinates
   bool coords_identical() const { return patches_mismatched == 0; }
 };

@@ -190,6 +190,16 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
                          std::to_string(t.first_mismatched_patch) + ")");
       rate(1.0 + double(t.patches_mismatched), 1.0);
     }
+    // The same patch and gl_TessCoord must evaluate to the same point: a capture whose records
+    // moved between patches (permuted ids) keeps its coordinates and its surface, not its positions.
+    if (position > limits.max_distance) {
+      char buf[200];
+      std::snprintf(buf, sizeof buf,
+                    "evaluated positions differ by up to %.3g of the diagonal at the same patch and gl_TessCoord "
+                    "(limit %g; worst: patch %lld)",
+                    position, limits.max_distance, static_cast<long long>(t.worst_distance_patch));
+      failures.push_back(buf);
+    }
     rate(position, limits.max_distance);
   }
 

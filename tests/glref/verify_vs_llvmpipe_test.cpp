@@ -22,6 +22,7 @@ namespace tessref {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 const std::string kSmall = " --set image.width=128 --set image.height=128";
 
@@ -118,6 +119,43 @@ TEST_F(VerifyVsLlvmpipe, AMovedPatchIsNamed) {
   const double h = j["surface_distance"]["hausdorff_of_diagonal"].get<double>();
   EXPECT_GT(h, 1e-3);
   EXPECT_LE(h, 0.0431 / j["diagonal"].get<double>());
+}
+
+// Planted corruptions of tess.bin, each failing for its own reason.
+// Patch ids permuted (the record of patch p moved to patch 7919 p mod 256): every patch keeps its
+// gl_TessCoord stream and the surface as a whole is unchanged (so coordinates, Hausdorff distance,
+// silhouette and colour all pass), but the same patch and coordinate no longer evaluate to the same
+// point. One vertex moved by 1e-3 of the diagonal: only the position check sees it.
+TEST_F(VerifyVsLlvmpipe, PermutedPatchesAndAMovedVertexFailOnPositions) {
+  const std::string permuted = edited_capture("permuted", [](std::vector<TessDumpRecord>& records) {
+    for (TessDumpRecord& r : records) r.patch_id = std::uint32_t((7919u * r.patch_id) % 256u);
+    std::stable_sort(records.begin(), records.end(),
+                     [](const TessDumpRecord& a, const TessDumpRecord& b) { return a.patch_id < b.patch_id; });
+  });
+  const test::CliRun p = test::run_cli("verify --ref " + permuted + kSmall);
+  EXPECT_EQ(p.exit_code, 1) << p.output;
+  EXPECT_THAT(p.output, HasSubstr("FAIL: evaluated positions differ by up to"));
+  EXPECT_THAT(p.output, HasSubstr("at the same patch and gl_TessCoord (limit 1e-05; worst: patch"));
+  EXPECT_THAT(p.output, Not(HasSubstr("FAIL: gl_TessCoord")));
+
+  const std::string moved = edited_capture("one_vertex", [](std::vector<TessDumpRecord>& records) {
+    for (TessDumpRecord& r : records)  // every emission of the same domain point of patch 90
+      if (r.patch_id == 90 && r.tess_coord == records[std::size_t(90 * 759)].tess_coord) r.position.y += 0.00431f;
+  });
+  const test::CliRun m = test::run_cli("verify --ref " + moved + kSmall);
+  EXPECT_EQ(m.exit_code, 1) << m.output;
+  EXPECT_THAT(m.output, HasSubstr("FAIL: evaluated positions differ by up to 0.001 of the diagonal"));
+  EXPECT_THAT(m.output, HasSubstr("worst: patch 90)"));
+}
+
+// A dropped patch: its coordinates are missing from the capture.
+TEST_F(VerifyVsLlvmpipe, ADroppedPatchIsNamed) {
+  const std::string dropped = edited_capture("dropped", [](std::vector<TessDumpRecord>& records) {
+    std::erase_if(records, [](const TessDumpRecord& r) { return r.patch_id == 10; });
+  });
+  const test::CliRun r = test::run_cli("verify --ref " + dropped + kSmall);
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("FAIL: gl_TessCoord streams differ in 1 of 256 patches (first: patch 10)"));
 }
 
 TEST_F(VerifyVsLlvmpipe, ALevelRoundedDifferentlyIsNamed) {
