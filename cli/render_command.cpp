@@ -143,6 +143,14 @@ std::string written_files(const RenderOptions& o, const TessDumpWriter* dump) {
 // An image of nothing but the background exits 0 (it may be what was asked for), but says why.
 void warn_nothing_drawn(const DrawStats& s) {
   const RasterStats& r = s.raster;
+  if (r.fragments_depth_failed > 0) {  // the geometry reached pixels: the depth test turned it away
+    std::fprintf(stderr,
+                 "tessref: warning: nothing was drawn (0 fragments shaded): %llu fragments covered pixels but "
+                 "failed the depth test. Check camera.near and camera.far (a huge far / near ratio leaves "
+                 "no depth precision), the depth range and, in a scene of draws, depth_func and the initial depth\n",
+                 static_cast<unsigned long long>(r.fragments_depth_failed));
+    return;
+  }
   std::fprintf(stderr,
                "tessref: warning: nothing was drawn (0 fragments shaded): of %llu triangles, "
                "%llu lie outside the view volume, %llu were culled (back-facing or zero area), "

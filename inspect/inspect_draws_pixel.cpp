@@ -111,14 +111,8 @@ std::optional<std::size_t> replay(const Scene& scene, const Framebuffer& initial
 }  // namespace
 
 PixelInspectResult inspect_draws_pixel(const Scene& scene, int x, int y, const Parallel& parallel, bool trace) {
-  check_pixel_on_image(scene, x, y);
+  PixelInspectResult r = pixel_result_for(scene, x, y);
   refuse_lines_and_points(scene);
-  PixelInspectResult r;
-  r.x = x;
-  r.y = y;
-  r.width = scene.width;
-  r.height = scene.height;
-  r.window_y = scene.height - 1 - y;
   r.program = "glsl, each draw's program (executor)";
   // The fragment shaders' sources, per draw, for --trace.
   std::vector<std::vector<shader::ShaderSource>> sources(scene.draws.size());

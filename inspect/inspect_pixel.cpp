@@ -37,36 +37,37 @@ std::optional<std::size_t> depth_verdicts(std::vector<PixelFragment>& fragments)
 
 }  // namespace
 
-void check_pixel_on_image(const Scene& scene, int x, int y) {
+PixelInspectResult pixel_result_for(const Scene& scene, int x, int y) {
   if (x < 0 || y < 0 || x >= scene.width || y >= scene.height)
     throw InputError("--pixel: (" + std::to_string(x) + ", " + std::to_string(y) + ") is off the " +
                      std::to_string(scene.width) + "x" + std::to_string(scene.height) + " image (X 0.." +
                      std::to_string(scene.width - 1) + ", Y 0.." + std::to_string(scene.height - 1) +
                      ", from the top row)");
-}
-
-PixelInspectResult inspect_pixel(const Scene& scene, const Mesh& mesh, int x, int y,
-                                 const Parallel& parallel, bool trace) {
-  check_pixel_on_image(scene, x, y);
-  if (trace && scene.shaders.program == ShaderProgram::Builtin) {
-    // The built-in C++ fragment program has no source lines: draw with its GLSL twins, which give
-    // the same bytes, and show theirs.
-    Scene twins = scene;
-    twins.shaders.program = ShaderProgram::Twins;
-    PixelInspectResult t = inspect_pixel(twins, mesh, x, y, parallel, true);
-    PixelInspectResult r = inspect_pixel(scene, mesh, x, y, parallel, false);
-    if (t.fragments.size() != r.fragments.size() || t.pixel_color != r.pixel_color)
-      throw std::logic_error("inspect --pixel --trace: the GLSL twins drew this pixel differently from the built-in programs");
-    for (std::size_t i = 0; i < r.fragments.size(); ++i) r.fragments[i].trace = std::move(t.fragments[i].trace);
-    r.traced_twins = true;
-    return r;
-  }
   PixelInspectResult r;
   r.x = x;
   r.y = y;
   r.width = scene.width;
   r.height = scene.height;
   r.window_y = scene.height - 1 - y;
+  return r;
+}
+
+PixelInspectResult inspect_pixel(const Scene& scene, const Mesh& mesh, int x, int y,
+                                 const Parallel& parallel, bool trace) {
+  PixelInspectResult r = pixel_result_for(scene, x, y);
+  if (trace && scene.shaders.program == ShaderProgram::Builtin) {
+    // The built-in C++ fragment program has no source lines: draw with its GLSL twins, which give
+    // the same bytes, and show theirs.
+    Scene twins = scene;
+    twins.shaders.program = ShaderProgram::Twins;
+    PixelInspectResult t = inspect_pixel(twins, mesh, x, y, parallel, true);
+    PixelInspectResult plain = inspect_pixel(scene, mesh, x, y, parallel, false);
+    if (t.fragments.size() != plain.fragments.size() || t.pixel_color != plain.pixel_color)
+      throw std::logic_error("inspect --pixel --trace: the GLSL twins drew this pixel differently from the built-in programs");
+    for (std::size_t i = 0; i < plain.fragments.size(); ++i) plain.fragments[i].trace = std::move(t.fragments[i].trace);
+    plain.traced_twins = true;
+    return plain;
+  }
   // The scene's fragment program, as the draw builds it.
   std::optional<BuiltinFragmentProgram> builtin;
   SceneProgram glsl;

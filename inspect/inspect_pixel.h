@@ -53,8 +53,9 @@ struct PixelInspectResult {
   std::vector<glm::vec4> pixel_outputs;  // a scene of draws: every draw buffer's value there
 };
 
-// InputError naming --pixel and the image size unless (x, y) (y down from the top row) is on it.
-void check_pixel_on_image(const Scene& scene, int x, int y);
+// The result's pixel and image fields for (x, y) (y down from the top row); InputError naming
+// --pixel and the image size unless the pixel is on the image.
+PixelInspectResult pixel_result_for(const Scene& scene, int x, int y);
 
 // Runs the scene's draw (the camera already fitted, as render does). InputError naming --pixel
 // and the image size for a pixel off the image, or for a scene that does not tessellate.

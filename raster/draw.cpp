@@ -23,6 +23,7 @@ RasterStats& RasterStats::operator+=(const RasterStats& o) {
   triangles_culled += o.triangles_culled;
   triangles_rasterized += o.triangles_rasterized;
   fragments_shaded += o.fragments_shaded;
+  fragments_depth_failed += o.fragments_depth_failed;
   return *this;
 }
 
@@ -199,7 +200,7 @@ RasterStats draw_batch(const Batch& batch, const RasterState& state, const Fragm
   else parallel.for_each(vertex_tasks, project);
 
   std::vector<std::size_t> active;            // tiles with triangles in this pass
-  std::vector<std::uint64_t> tile_fragments;  // per active tile
+  std::vector<std::uint64_t> tile_fragments, tile_depth_failed;  // per active tile
   for (std::size_t pass_first = 0; pass_first < n; pass_first += kPassTriangles) {
     const std::size_t pass_last = std::min(n, pass_first + kPassTriangles);
     const std::size_t num_chunks = (pass_last - pass_first + kChunkTriangles - 1) / kChunkTriangles;
@@ -224,6 +225,7 @@ RasterStats draw_batch(const Batch& batch, const RasterState& state, const Fragm
       binned += in_tile;
     }
     tile_fragments.assign(active.size(), 0);
+    tile_depth_failed.assign(active.size(), 0);
     auto scan_tile = [&](std::size_t a) {
       const std::size_t tile = active[a];
       const int tx = int(tile % grid.tiles_x), ty = int(tile / grid.tiles_x);
@@ -247,6 +249,7 @@ RasterStats draw_batch(const Batch& batch, const RasterState& state, const Fragm
       }
       sink.flush();
       tile_fragments[a] = sink.shaded();
+      tile_depth_failed[a] = sink.depth_failed();
     };
     // Starting tasks costs more than scanning a few hundred small triangles.
     if (binned < kMinBinnedForTasks) {
@@ -257,6 +260,7 @@ RasterStats draw_batch(const Batch& batch, const RasterState& state, const Fragm
 
     for (std::size_t c = 0; c < num_chunks; ++c) total += chunks[c].stats;
     for (std::uint64_t f : tile_fragments) total.fragments_shaded += f;
+    for (std::uint64_t f : tile_depth_failed) total.fragments_depth_failed += f;
   }
   return total;
 }

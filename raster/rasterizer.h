@@ -110,6 +110,7 @@ struct RasterStats {
   std::uint64_t triangles_culled = 0;        // back-facing or zero area
   std::uint64_t triangles_rasterized = 0;    // set up and scanned (after clipping: pieces count)
   std::uint64_t fragments_shaded = 0;        // passed the depth test and ran the fragment shader
+  std::uint64_t fragments_depth_failed = 0;  // covered a pixel centre but failed the depth test
   RasterStats& operator+=(const RasterStats& o);
 };
 

@@ -221,7 +221,10 @@ void FragmentSink::flush() {
     const std::size_t idx = pixel_[l];
     if (late_depth_) {  // lanes in arrival order: the test against fragments shaded before
       const float z = stored_depth(batch_.frag_coord[2][l]);
-      if (!depth_passes(z, fb_.depth[idx])) continue;
+      if (!depth_passes(z, fb_.depth[idx])) {
+        ++depth_failed_;
+        continue;
+      }
       if (depth_write_) fb_.depth[idx] = z;
     }
     // Blending and the colour mask (GL 4.6 17.3.6, 17.4.2) on every draw buffer, in arrival
@@ -293,7 +296,10 @@ struct Scanner {
           for (int i = 0; i < n; ++i) {
             if (sink.depth_test_) {
               const float stored = sink.stored_depth(z[i]);
-              if (!sink.depth_passes(stored, depth[i])) continue;
+              if (!sink.depth_passes(stored, depth[i])) {
+                ++sink.depth_failed_;
+                continue;
+              }
               if (sink.early_depth_write()) depth[i] = stored;  // no discard: the write is final
             }
             const int x = xs + i;
@@ -370,7 +376,10 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
       const std::size_t idx = fb.index(x, y);
       if (sink.depth_test_) {
         const float stored = sink.stored_depth(z);
-        if (!sink.depth_passes(stored, fb.depth[idx])) continue;
+        if (!sink.depth_passes(stored, fb.depth[idx])) {
+          ++sink.depth_failed_;
+          continue;
+        }
         if (sink.early_depth_write()) fb.depth[idx] = stored;
       }
       if ((x & ~1) != quad_x || (y & ~1) != quad_y) {

@@ -31,6 +31,7 @@ class FragmentSink {
   // destructor must not.
   void flush();
   std::uint64_t shaded() const { return shaded_; }
+  std::uint64_t depth_failed() const { return depth_failed_; }
   bool is_flat(int varying) const { return flat_ && (*flat_)[std::size_t(varying)]; }
 
  private:
@@ -67,6 +68,7 @@ class FragmentSink {
   }
   bool early_depth_write() const { return depth_write_ && !late_depth_; }
   std::uint64_t shaded_ = 0;
+  std::uint64_t depth_failed_ = 0;
   // The lanes live in per-thread storage, set up once per thread rather than once per tile (a
   // thread scans one tile at a time, so one sink per thread is alive at a time).
   struct Lanes;

@@ -459,6 +459,10 @@ TEST_F(Cli, NothingDrawnIsAWarning) {
   r = run("render --set mesh.type=icosphere --set camera.eye=0,0,0.01 --set camera.target=0,0,1 "
           "--set camera.near=0.001" + out);
   EXPECT_THAT(r.output, ::testing::ContainsRegex("outside the view volume, [1-9][0-9]* were culled \\(back-facing"));
+  // Issue 24: every depth rounds to the cleared 1 and fails GL_LESS: the depth test is named, not the camera.
+  r = run("render --set camera.near=1e-30 --set camera.far=1e30" + out);
+  EXPECT_THAT(r.output, ::testing::ContainsRegex("nothing was drawn \\(0 fragments shaded\\): [1-9][0-9]* fragments "
+                                                 "covered pixels but failed the depth test. Check camera.near"));
   r = run("render" + out);
   EXPECT_THAT(r.output, ::testing::Not(HasSubstr("warning")));
 }
