@@ -72,10 +72,11 @@ Reference load_reference(const std::filesystem::path& dir) {
   return r;
 }
 
-std::vector<std::uint32_t> emission_order_differs(const std::vector<TessDumpRecord>& reference_emitted,
-                                                  const std::vector<TessDumpRecord>& points,
-                                                  const std::vector<std::uint32_t>& indices) {
-  // tessref's emitted vertices of each patch: a range of `indices` (a draw emits patch by patch).
+namespace {
+
+// tessref's emitted vertices of each patch: a range of `indices` (a draw emits patch by patch).
+std::unordered_map<std::uint32_t, std::pair<std::size_t, std::size_t>> emitted_ranges(
+    const std::vector<TessDumpRecord>& points, const std::vector<std::uint32_t>& indices) {
   std::unordered_map<std::uint32_t, std::pair<std::size_t, std::size_t>> ranges;
   for (std::size_t i = 0; i < indices.size();) {
     const std::uint32_t patch = points[indices[i]].patch_id;
@@ -83,6 +84,31 @@ std::vector<std::uint32_t> emission_order_differs(const std::vector<TessDumpReco
     while (i < indices.size() && points[indices[i]].patch_id == patch) ++i;
     ranges.emplace(patch, std::pair(begin, i));
   }
+  return ranges;
+}
+
+}  // namespace
+
+std::vector<EmittedCountDifference> emitted_counts_differ(const std::vector<TessDumpRecord>& reference_emitted,
+                                                          const std::vector<TessDumpRecord>& points,
+                                                          const std::vector<std::uint32_t>& indices) {
+  const auto ranges = emitted_ranges(points, indices);
+  std::unordered_map<std::uint32_t, std::size_t> counts;  // the reference's, per patch, in any order
+  for (const TessDumpRecord& r : reference_emitted) ++counts[r.patch_id];
+  std::vector<EmittedCountDifference> differ;
+  for (const auto& [patch, count] : counts) {
+    const auto it = ranges.find(patch);
+    const std::size_t mine = it == ranges.end() ? 0 : it->second.second - it->second.first;
+    if (mine != count) differ.push_back({patch, count, mine});
+  }
+  std::sort(differ.begin(), differ.end(), [](const auto& a, const auto& b) { return a.patch < b.patch; });
+  return differ;
+}
+
+std::vector<std::uint32_t> emission_order_differs(const std::vector<TessDumpRecord>& reference_emitted,
+                                                  const std::vector<TessDumpRecord>& points,
+                                                  const std::vector<std::uint32_t>& indices) {
+  const auto ranges = emitted_ranges(points, indices);
   std::vector<std::uint32_t> differ;
   for (std::size_t i = 0; i < reference_emitted.size();) {
     const std::uint32_t patch = reference_emitted[i].patch_id;

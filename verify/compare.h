@@ -55,6 +55,17 @@ struct TessComparison {
 TessComparison compare_tess(const std::vector<TessDumpRecord>& reference_emitted,
                             const std::vector<TessDumpRecord>& tessref_points);
 
+// The patches of the reference stream that emit another number of vertices than tessref's
+// triangles (or lines, or points) of that patch: the primitive generator's output for given levels
+// is fixed by the specification up to order, so a patch emitted twice, or partly, is a defect.
+struct EmittedCountDifference {
+  std::uint32_t patch = 0;
+  std::size_t reference = 0, tessref = 0;
+};
+std::vector<EmittedCountDifference> emitted_counts_differ(const std::vector<TessDumpRecord>& reference_emitted,
+                                                          const std::vector<TessDumpRecord>& points,
+                                                          const std::vector<std::uint32_t>& indices);
+
 // The patches whose emitted stream (the driver's, 3 records a triangle) differs from tessref's
 // triangles (`indices` into `points`, 3 a triangle) in order: the same coordinates, bit for bit, in
 // the same sequence. The specification leaves the order to the implementation; llvmpipe's is

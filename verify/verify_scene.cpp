@@ -184,6 +184,14 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
     j["tessellation"]["order_compared_patches"] = compared;
     j["tessellation"]["order_differs_patches"] = order.size();
     j["tessellation"]["first_order_differs_patch"] = order.empty() ? -1 : std::int64_t(order.front());
+    const std::vector<EmittedCountDifference> counts = emitted_counts_differ(ref.tess, my_records, my_emitted);
+    j["tessellation"]["emitted_count_differs_patches"] = counts.size();
+    if (!counts.empty()) {
+      failures.push_back(std::to_string(counts.size()) + " patches emit another number of vertices than tessref's (first: patch " +
+                         std::to_string(counts[0].patch) + ", " + std::to_string(counts[0].reference) + " in the capture, " +
+                         std::to_string(counts[0].tessref) + " from tessref)");
+      rate(1.0 + double(counts.size()), 1.0);
+    }
     if (!t.coords_identical()) {
       failures.push_back("gl_TessCoord streams differ in " + std::to_string(t.patches_mismatched) + " of " +
                          std::to_string(t.patches) + " patches (first: patch " +

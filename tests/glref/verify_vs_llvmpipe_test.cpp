@@ -3,6 +3,7 @@
 // moved in the reference by 1% of the diagonal, a patch tessellated with one level rounded
 // otherwise, one coordinate off by one ULP, a mesh with split normals (cracks), a fragment shader
 // with the wrong sign on its specular term.
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -146,6 +147,22 @@ TEST_F(VerifyVsLlvmpipe, PermutedPatchesAndAMovedVertexFailOnPositions) {
   EXPECT_EQ(m.exit_code, 1) << m.output;
   EXPECT_THAT(m.output, HasSubstr("FAIL: evaluated positions differ by up to 0.001 of the diagonal"));
   EXPECT_THAT(m.output, HasSubstr("worst: patch 90)"));
+}
+
+// A patch emitted twice: every coordinate matches, but the primitive generator's output for its
+// levels is fixed up to order, so the count is a failure.
+TEST_F(VerifyVsLlvmpipe, ADuplicatedPatchIsNamed) {
+  const std::string duplicated = edited_capture("duplicated", [](std::vector<TessDumpRecord>& records) {
+    std::vector<TessDumpRecord> again;
+    for (const TessDumpRecord& r : records)
+      if (r.patch_id == 11) again.push_back(r);
+    const auto after = std::find_if(records.begin(), records.end(), [](const TessDumpRecord& r) { return r.patch_id == 12; });
+    records.insert(after, again.begin(), again.end());
+  });
+  const test::CliRun r = test::run_cli("verify --ref " + duplicated + kSmall);
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("FAIL: 1 patches emit another number of vertices than tessref's (first: patch 11, "
+                                  "1518 in the capture, 759 from tessref)"));
 }
 
 // A dropped patch: its coordinates are missing from the capture.
