@@ -18,7 +18,7 @@ struct InitialPixels {
   std::optional<std::vector<float>> depth;  // converted to the depth format
 };
 
-// InputError naming framebuffer.color[k] / framebuffer.depth for a file that cannot be read, of
+// InputError naming framebuffer.color.K / framebuffer.depth for a file that cannot be read, of
 // another size than the image, or (depth) with a value outside [0, 1] or not a number.
 InitialPixels load_initial_images(const Scene& scene);
 
