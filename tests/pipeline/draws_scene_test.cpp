@@ -251,3 +251,31 @@ TEST(DrawsScene, DepthRangeIsClampedAsGlDoes) {
 
 }  // namespace
 }  // namespace tessref
+
+namespace tessref {
+namespace {
+
+// The framebuffer's keys: each bad value names its key and the rule.
+TEST(DrawsScene, BadFramebuffersNameTheKeyAndTheRule) {
+  const std::string f = "attachments.json";
+  const auto expect_error = [&](const std::vector<std::string>& sets, const std::string& message) {
+    const std::string e = error_of(f, sets);
+    EXPECT_NE(e.find(message), std::string::npos) << sets[0] << ": " << e;
+  };
+  expect_error({"framebuffer.color.2.internalformat=\"GL_RGB8\""},
+               "framebuffer.color.2.internalformat: expected GL_RGBA32F, GL_RGBA16F, GL_RGBA8 or GL_SRGB8_ALPHA8, got \"GL_RGB8\"");
+  expect_error({"framebuffer.color=[\"a.png\", \"a.png\", \"a.png\", \"a.png\", \"a.png\", \"a.png\", \"a.png\", \"a.png\", \"a.png\"]"},
+               "framebuffer.color: expected 1 to 8 attachments (GL_MAX_DRAW_BUFFERS), got 9");
+  expect_error({"framebuffer.depth.internalformat=\"GL_DEPTH_COMPONENT16\""},
+               "expected GL_DEPTH_COMPONENT32F or GL_DEPTH_COMPONENT24, got \"GL_DEPTH_COMPONENT16\"");
+  expect_error({"framebuffer.color.0.file=\"heightmap.pgm\""}, "framebuffer.color.0: ");  // 32x32, the image 256x256
+  expect_error({"framebuffer.color.0.file=\"heightmap.pgm\""}, "is 32x32, the image 256x256");
+  expect_error({"framebuffer.color.0.file=\"missing.png\""}, "framebuffer.color.0: ");
+  expect_error({"draws.1.clear={}"}, "draws.1.clear.color: give color, depth or both");
+  expect_error({"draws.1.enable=[\"GL_FRAMEBUFFER_sRGB\"]"}, "GL_FRAMEBUFFER_SRGB or GL_DEPTH_CLAMP, got a string (\"GL_FRAMEBUFFER_sRGB\")");
+  const std::string mesh = error_of("../../../scenes/default.json", {"framebuffer={\"color\": \"x.png\"}"});
+  EXPECT_NE(mesh.find("framebuffer: takes a scene of draws"), std::string::npos) << mesh;
+}
+
+}  // namespace
+}  // namespace tessref
