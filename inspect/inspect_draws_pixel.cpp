@@ -6,7 +6,6 @@
 #include <string>
 
 #include "common/error.h"
-#include "common/fixed_point.h"
 #include "inspect/fragment_tags.h"
 #include "inspect/inspect_pixel.h"
 #include "inspect/pixel_recorder.h"
@@ -57,8 +56,6 @@ std::optional<std::size_t> replay(const Scene& scene, const Framebuffer& initial
   const int buffers = int(colors.size());
   for (int k = 0; k < buffers; ++k) colors[std::size_t(k)] = (*initial.draw_buffer(k))[idx];
   depth = initial.depth[idx];
-  const bool depth24 = initial.depth_format == DepthFormat::k24;
-  const auto stored_depth = [&](float z) { return depth24 ? fixed::quantize_depth24(z) : z; };
   std::optional<std::size_t> writer;      // the fragment whose depth is stored (none: cleared or initial)
   std::optional<std::size_t> last_color;  // the last fragment that wrote colour
   std::size_t next = 0;
@@ -71,7 +68,7 @@ std::optional<std::size_t> replay(const Scene& scene, const Framebuffer& initial
           colors[std::size_t(k)] = s.color_mask.apply(
               stored_color(initial.color_format[std::size_t(k)], s.framebuffer_srgb, *draw.clear_color), colors[std::size_t(k)]);
       if (draw.clear_depth && s.depth_write) {
-        depth = stored_depth(float(*draw.clear_depth));
+        depth = stored_depth(initial.depth_format, float(*draw.clear_depth));
         writer.reset();
       }
     }
@@ -84,7 +81,7 @@ std::optional<std::size_t> replay(const Scene& scene, const Framebuffer& initial
         if (s.depth_clamp)  // before the test (raster/tile_raster.h)
           z = std::clamp(z, float(std::min(s.depth_range_near, s.depth_range_far)),
                          float(std::max(s.depth_range_near, s.depth_range_far)));
-        z = stored_depth(z);
+        z = stored_depth(initial.depth_format, z);
         f.passed = depth_passes(s.depth_func, z, depth);
         if (!f.passed) continue;
         if (s.depth_write) {

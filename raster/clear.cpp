@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "common/fixed_point.h"
 
 namespace tessref {
 
@@ -29,7 +28,7 @@ void clear_buffers(Framebuffer& fb, const RasterState& state, const std::optiona
         }
     }
   if (depth && state.depth_write) {  // glDepthMask, whether or not the test is on
-    const float z = fb.depth_format == DepthFormat::k24 ? fixed::quantize_depth24(*depth) : *depth;
+    const float z = stored_depth(fb.depth_format, *depth);
     for (int y = y0; y < y1; ++y) std::fill_n(fb.depth.begin() + std::ptrdiff_t(fb.index(x0, y)), x1 - x0, z);
   }
 }

@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "common/fixed_point.h"
 #include "raster/fragment_ops.h"
 
 namespace tessref {
@@ -29,6 +30,10 @@ std::uint8_t srgb_encode(float linear);
 // for 8-bit channels (sRGB-encoded when srgb_write, i.e. GL_FRAMEBUFFER_SRGB is enabled and the
 // format is SRGB8_ALPHA8), rounded toward zero for RGBA16F, unchanged for RGBA32F.
 glm::vec4 stored_color(ColorFormat f, bool srgb_write, const glm::vec4& c);
+
+// What a depth buffer of format f holds for window depth z in [0, 1] (GL 4.6 13.8.1: converted to
+// its format; 24 bits: common/fixed_point.h).
+inline float stored_depth(DepthFormat f, float z) { return f == DepthFormat::k24 ? fixed::quantize_depth24(z) : z; }
 
 // GL 4.6 17.3.6: blends source s with what the attachment holds (d) and returns the value it
 // holds afterwards. Fixed-point formats clamp s and the constant colour to [0, 1] and blend 8-bit

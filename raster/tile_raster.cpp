@@ -188,7 +188,7 @@ FragmentSink::FragmentSink(const FragmentProgram& fs, Framebuffer& fb, int num_v
       fs_(fs),
       fb_(fb),
       draw_buffers_(fb.draw_buffers()),
-      depth24_(fb.depth_format == DepthFormat::k24),
+      depth_format_(fb.depth_format),
       depth_test_(state.depth_test),
       depth_write_(state.depth_test && state.depth_write),
       depth_func_(state.depth_func),

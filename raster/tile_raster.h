@@ -2,8 +2,6 @@
 // Scan conversion of one set-up triangle inside one screen rectangle (a tile).
 #include <cstdint>
 
-#include "common/fixed_point.h"
-
 #include "raster/line_setup.h"
 #include "raster/setup.h"
 
@@ -43,7 +41,7 @@ class FragmentSink {
   const FragmentProgram& fs_;
   Framebuffer& fb_;
   int draw_buffers_;  // fb's draw buffers 0 .. draw_buffers_ - 1 (some may be absent)
-  bool depth24_;      // a 24-bit depth buffer: fragment depths are rounded before the test
+  DepthFormat depth_format_;  // fragment depths are converted to it before the test
   bool depth_test_;
   bool depth_write_;
   DepthFunc depth_func_;
@@ -60,7 +58,7 @@ class FragmentSink {
   // converted to the buffer's format (GL 4.6 13.8.1).
   float stored_depth(float z) const {
     if (depth_clamp_) z = z < clamp_lo_ ? clamp_lo_ : (clamp_hi_ < z ? clamp_hi_ : z);
-    return depth24_ ? fixed::quantize_depth24(z) : z;
+    return tessref::stored_depth(depth_format_, z);
   }
   // GL_LESS, the common case, without the switch.
   bool depth_passes(float z, float stored) const {

@@ -5,7 +5,6 @@
 #include <string>
 
 #include "common/error.h"
-#include "common/fixed_point.h"
 #include "io/image_output.h"
 
 namespace tessref {
@@ -60,7 +59,7 @@ InitialPixels load_initial_images(const Scene& scene) {
         throw InputError(scene.source + ": framebuffer.depth: '" + f.depth_file.string() + "' holds " +
                          std::to_string(z) + " at pixel " + std::to_string(i % std::size_t(im.width)) + ", row " +
                          std::to_string(i / std::size_t(im.width)) + " from the bottom; a depth buffer holds [0, 1]");
-      depth[i] = f.depth_format == DepthFormat::k24 ? fixed::quantize_depth24(z) : z;
+      depth[i] = stored_depth(f.depth_format, z);
     }
   }
   return out;
