@@ -169,8 +169,8 @@ glsl::UniformValue uniform_int(int v, shader::Scalar s = shader::Scalar::I32) {
 // are checked bit for bit against Tessref's control points.
 struct Executor {
   std::unique_ptr<glsl::GlslProgram> program;
-  std::unique_ptr<TessControlProgram> tcs;
-  std::unique_ptr<TessEvalProgram> tes;
+  std::shared_ptr<const TessControlProgram> tcs;
+  std::shared_ptr<const TessEvalProgram> tes;
   std::vector<StageVertex> cp;
   std::size_t chunk;
   float level;

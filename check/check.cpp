@@ -343,8 +343,8 @@ shader::NanTrace trace_control(const TessDrawInput& input, const TessControlProg
   return trace;
 }
 
-shader::NanTrace trace_vertex(const glsl::GlslProgram& program,
-                              const std::vector<glsl::VertexAttribute>& attributes,
+shader::NanTrace trace_vertex(const DrawProgram& program,
+                              const std::vector<VertexAttribute>& attributes,
                               std::size_t vertex, int instance) {
   StageVertex out;
   const Parallel serial(1);

@@ -114,8 +114,8 @@ shader::NanTrace trace_evaluation(const TessDrawInput& input, const TessControlP
 shader::NanTrace trace_control(const TessDrawInput& input, const TessControlProgram& tcs,
                                std::size_t patch, int invocation);
 // Runs the vertex shader for vertex `vertex` (gl_VertexID) of instance `instance` alone, traced.
-shader::NanTrace trace_vertex(const glsl::GlslProgram& program,
-                              const std::vector<glsl::VertexAttribute>& attributes,
+shader::NanTrace trace_vertex(const DrawProgram& program,
+                              const std::vector<VertexAttribute>& attributes,
                               std::size_t vertex, int instance);
 
 }  // namespace tessref

@@ -6,12 +6,71 @@
 #include "common/error.h"
 
 namespace tessref {
+namespace {
+
+void check_room(int varyings) {
+  if (varyings + kFragmentTagCount > kMaxVaryings)
+    throw InputError("fragment tags: the draw's " + std::to_string(varyings) + " varyings leave no room for " +
+                     std::to_string(kFragmentTagCount) + " more (at most " + std::to_string(kMaxVaryings) + ")");
+}
+
+template <int Corners>
+PrimitiveBatch<Corners> tagged(const PrimitiveBatch<Corners>& batch, const std::vector<TessDumpRecord>* records,
+                               const std::vector<std::uint32_t>* emitted, std::uint32_t first_primitive) {
+  const int n = batch.num_varyings;
+  check_room(n);
+  PrimitiveBatch<Corners> out;
+  out.num_varyings = n + kFragmentTagCount;
+  out.flat_varyings = batch.flat_varyings;
+  out.flat_varyings.set(std::size_t(n + kTagTriangle));
+  out.flat_varyings.set(std::size_t(n + kTagPatch));
+  const std::size_t primitives = batch.primitive_count();
+  const std::size_t out_records = std::size_t(out.records());
+  out.vertices.resize(std::size_t(Corners) * primitives * out_records);
+  std::size_t in_patch = 0;
+  std::uint32_t last_patch = 0;
+  for (std::size_t p = 0; p < primitives; ++p) {
+    const TessDumpRecord* first = records ? &records->at(emitted->at(std::size_t(Corners) * p)) : nullptr;
+    if (first && p > 0 && first->patch_id != last_patch) in_patch = 0;
+    for (int k = 0; k < Corners; ++k) {
+      const std::size_t v = batch.vertex_index(p, k);
+      float* dst = reinterpret_cast<float*>(out.vertices.data() + (std::size_t(Corners) * p + std::size_t(k)) * out_records);
+      std::memcpy(dst, batch.vertex_data(v), sizeof(float) * std::size_t(4 + n));
+      float* tag = dst + 4 + n;
+      if (!records) {
+        tag[kTagPatch] = float(first_primitive + p);
+        continue;
+      }
+      const TessDumpRecord& r = records->at(emitted->at(v));
+      tag[kTagTriangle] = float(in_patch);
+      tag[kTagPatch] = float(r.patch_id);
+      for (int c = 0; c < 3; ++c) {
+        tag[kTagTessU + c] = r.tess_coord[c];
+        tag[kTagPositionX + c] = r.position[c];
+        tag[kTagNormalX + c] = r.normal[c];
+      }
+    }
+    if (first) last_patch = first->patch_id;
+    ++in_patch;
+  }
+  return out;
+}
+
+}  // namespace
+
+LineBatch tagged_lines(const LineBatch& batch, const std::vector<TessDumpRecord>* records,
+                       const std::vector<std::uint32_t>* emitted, std::uint32_t first_primitive) {
+  return tagged(batch, records, emitted, first_primitive);
+}
+
+PointBatch tagged_points(const PointBatch& batch, const std::vector<TessDumpRecord>* records,
+                         const std::vector<std::uint32_t>* emitted, std::uint32_t first_primitive) {
+  return tagged(batch, records, emitted, first_primitive);
+}
 
 TriangleBatch tagged_triangles(const std::vector<TessDumpRecord>& records, const TriangleBatch& batch) {
   const int n = batch.num_varyings;
-  if (n + kFragmentTagCount > kMaxVaryings)
-    throw InputError("fragment tags: the draw's " + std::to_string(n) + " varyings leave no room for " +
-                     std::to_string(kFragmentTagCount) + " more (at most " + std::to_string(kMaxVaryings) + ")");
+  check_room(n);
   TriangleBatch out;
   out.num_varyings = n + kFragmentTagCount;
   out.flat_varyings = batch.flat_varyings;

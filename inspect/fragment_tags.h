@@ -30,4 +30,13 @@ enum FragmentTag : int {
 // take the tags.
 TriangleBatch tagged_triangles(const std::vector<TessDumpRecord>& records, const TriangleBatch& batch);
 
+// The same for a batch of lines or points, whose primitives are consecutive vertices. Isolines
+// and point mode: vertex k of the batch is records[emitted[k]], and kTagTriangle numbers the
+// primitive within its patch. Untessellated ones (records null): kTagPatch numbers the primitive
+// from first_primitive on, and the other tags are zero.
+LineBatch tagged_lines(const LineBatch& batch, const std::vector<TessDumpRecord>* records,
+                       const std::vector<std::uint32_t>* emitted, std::uint32_t first_primitive);
+PointBatch tagged_points(const PointBatch& batch, const std::vector<TessDumpRecord>* records,
+                         const std::vector<std::uint32_t>* emitted, std::uint32_t first_primitive);
+
 }  // namespace tessref

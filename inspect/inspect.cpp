@@ -9,9 +9,10 @@
 
 #include "common/error.h"
 #include "common/parallel.h"
-#include "render/builtin_programs.h"
+#include "render/builtin_program.h"
 #include "render/draw_scene.h"
 #include "render/glsl_scene.h"
+#include "render/render.h"
 #include "stages/glsl/glsl_stages.h"
 #include "mesh/vertex_tags.h"
 
@@ -45,13 +46,6 @@ class ControlTap : public TessControlProgram {
 };
 
 // The stages after the vertex shader, as the draw builds them.
-struct StagePrograms {
-  std::unique_ptr<TessControlProgram> glsl_tcs;
-  std::unique_ptr<TessEvalProgram> glsl_tes;
-  std::optional<BuiltinTessPrograms> builtin;
-  const TessControlProgram& tcs() const { return builtin ? builtin->tcs() : *glsl_tcs; }
-  const TessEvalProgram& tes() const { return builtin ? builtin->tes() : *glsl_tes; }
-};
 
 // The TES at one coordinate, through the entry point the executor calls (evaluate_batch). The
 // coordinate rows are zero-padded as the pattern's are (kernels may read whole vectors).
@@ -82,11 +76,23 @@ void fill_dump_fields(InspectPoint& p, std::array<int, 2> at, int num_varyings) 
   p.normal = glm::vec3(get(at[1]), get(at[1] + 1), get(at[1] + 2));
 }
 
+std::string format_float(float v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", double(v));
+  return text;
+}
+
 // --coord: on the domain of the layout (barycentric for triangles, the unit square otherwise).
-void check_coord(const glm::vec3& c, TessDomain domain) {
-  for (int i = 0; i < 3; ++i)
-    if (!std::isfinite(c[i]) || c[i] < 0.0f || c[i] > 1.0f)
-      throw InputError("--coord: every component must lie in [0, 1], got " + std::to_string(c[i]));
+// w_computed: W was not given but computed as (1 - U) - V.
+void check_coord(const glm::vec3& c, TessDomain domain, bool w_computed) {
+  static const char* const kNames[3] = {"U", "V", "W"};
+  for (int i = 0; i < 3; ++i) {
+    if (std::isfinite(c[i]) && c[i] >= 0.0f && c[i] <= 1.0f) continue;
+    if (i == 2 && w_computed)
+      throw InputError("--coord: U + V must be at most 1 on a triangle patch: W = (1 - U) - V = " + format_float(c[i]) +
+                       " (computed from the U,V given)");
+    throw InputError("--coord: every component must lie in [0, 1], got " + std::string(kNames[i]) + " = " + format_float(c[i]));
+  }
   if (domain == TessDomain::Triangles) {
     const double sum = double(c.x) + double(c.y) + double(c.z);
     if (std::fabs(sum - 1.0) > 1e-6)
@@ -176,7 +182,7 @@ void inspect_stages(const PatchStages& st, const InspectRequest& request, Inspec
     p.tess_coord = *request.coord;
     if (!request.coord_has_w)
       p.tess_coord.z = r.layout.domain == TessDomain::Triangles ? (1.0f - p.tess_coord.x) - p.tess_coord.y : 0.0f;
-    check_coord(p.tess_coord, r.layout.domain);
+    check_coord(p.tess_coord, r.layout.domain, !request.coord_has_w && r.layout.domain == TessDomain::Triangles);
     for (std::size_t k = 0; k < records.size(); ++k)
       if (records[k].tess_coord == p.tess_coord) p.index = k;
     evaluate_at(tes, r.tcs_out, primitive_id, p, r.num_varyings);
@@ -240,45 +246,48 @@ InspectResult inspect_patch(const Scene& scene, const Mesh& mesh, const InspectR
 
   // ---- Vertex stage, over the mesh as the draw runs it --------------------------------------
   std::vector<StageVertex> shaded;
-  std::vector<glm::vec4> builtin_clip;
   std::span<const std::uint32_t> indices = mesh.indices;
-  StagePrograms programs;
   SceneProgram scene_program;
-  std::vector<glsl::VertexAttribute> attributes;
+  const BuiltinFragmentProgram builtin_fs = builtin_fragment_program(scene);
+  std::optional<BuiltinProgram> builtin;
+  const DrawProgram* program = nullptr;
+  std::vector<VertexAttribute> attributes;
   std::vector<shader::ShaderSource> sources;
+  glm::vec4 default_outer(1.0f);
+  glm::vec2 default_inner(1.0f);
   if (scene.shaders.program == ShaderProgram::Builtin) {
-    const auto vs = scene_vertex_shader(scene);
-    std::vector<programs::VertexOut> out(mesh.vertex_count());
-    for (std::size_t v = 0; v < out.size(); ++v) out[v] = vs.main(mesh.positions[v], mesh.normals[v]);
-    for (const auto& o : out) builtin_clip.push_back(o.gl_Position);
-    shaded = tess_control_points(out);
-    if (scene.tessellation.enabled && scene.tessellation.scheme == SurfaceScheme::ScalarTaggedPN)
-      attach_vertex_tags(shaded, load_vertex_tags(scene.tessellation, mesh), vs.u_normal_matrix);
-    programs.builtin = builtin_tess_programs(scene.tessellation, vs, glm::vec2(float(scene.width), float(scene.height)));
-    r.builtin_pn = programs.builtin->scheme == SurfaceScheme::PN;
-    const SurfaceScheme scheme = programs.builtin->scheme;
+    std::vector<VertexTags> tags;
+    if (scene.tessellation.scheme == SurfaceScheme::ScalarTaggedPN) tags = load_vertex_tags(scene.tessellation, mesh);
+    builtin.emplace(scene_vertex_shader(scene), scene.tessellation, glm::vec2(float(scene.width), float(scene.height)),
+                    builtin_fs.get(), std::move(tags));
+    program = &*builtin;
+    attributes = mesh_attributes(mesh);
+    shaded.resize(mesh.vertex_count());
+    const SurfaceScheme scheme = builtin->tess_programs().scheme;
+    r.builtin_pn = scheme == SurfaceScheme::PN;
     r.builtin_quadratic = scheme == SurfaceScheme::Phong || scheme == SurfaceScheme::NLSA || scheme == SurfaceScheme::Nagata;
-    r.program = programs.builtin->scheme == SurfaceScheme::Flat
+    r.program = scheme == SurfaceScheme::Flat
                     ? std::string("builtin flat")
-                    : std::string("builtin ") + to_string(programs.builtin->scheme) + " (" +
-                          to_string(scene.tessellation.normal_mode) + " normals)";
+                    : std::string("builtin ") + to_string(scheme) + " (" + to_string(scene.tessellation.normal_mode) + " normals)";
   } else {
     scene_program = build_scene_program(scene);
-    const glsl::GlslProgram& program = *scene_program.program;
-    const GlslDrawCall call = scene_draw_call(scene, mesh);
+    program = scene_program.program.get();
+    const DrawCall call = scene_draw_call(scene, mesh);
     r.patch_vertices = call.patch_vertices;
+    default_outer = call.default_outer;
+    default_inner = call.default_inner;
     shaded.resize(call.vertex_count);
-    attributes = scene_attributes(scene, program, mesh);
+    attributes = scene_attributes(scene, *scene_program.program, mesh);
     if (request.trace) sources = scene_sources(scene);
-    try {
-      program.run_vertices(attributes, 0, call.vertex_count, 0, shaded.data(), serial);
-    } catch (const glsl::StageError& e) {
-      throw InputError(scene.source + ": " + e.what());
-    }
-    programs.glsl_tcs = program.control(call.patch_vertices, call.default_outer, call.default_inner);
-    programs.glsl_tes = program.evaluation();
     r.program = scene.shaders.program == ShaderProgram::Twins ? "glsl twins (executor)" : "glsl custom (executor)";
   }
+  try {
+    program->run_vertices(attributes, 0, shaded.size(), 0, shaded.data(), serial);
+  } catch (const glsl::StageError& e) {
+    throw InputError(scene.source + ": " + e.what());
+  }
+  const auto tcs = program->control(r.patch_vertices, default_outer, default_inner);
+  const auto tes = program->evaluation();
 
   const TessDrawInput input{shaded, indices, r.patch_vertices};
   r.patch_count = input.patch_count();
@@ -295,16 +304,19 @@ InspectResult inspect_patch(const Scene& scene, const Mesh& mesh, const InspectR
       c.in_normal = mesh.normals[c.vertex];
     }
     if (c.vertex < shaded.size()) c.vs_out = shaded[c.vertex];
-    if (!builtin_clip.empty() && c.vertex < builtin_clip.size()) c.gl_position = builtin_clip[c.vertex];
+    if (builtin && c.vertex < shaded.size()) {  // shown on its own line, not among the TCS's inputs
+      c.gl_position = shaded[c.vertex].attr[kAttrClipPosition];
+      c.vs_out.attr[kAttrClipPosition] = glm::vec4(0.0f);
+    }
     r.corners.push_back(c);
   }
-  const PatchStages stages{scene.source, input, request.patch, programs.tcs(), programs.tes(),
+  const PatchStages stages{scene.source, input, request.patch, *tcs, *tes,
                            scene.tessellation.tessellator, sources, [&](std::size_t k) {
                              StageVertex out;
-                             scene_program.program->run_vertices(attributes, r.corners[k].vertex, 1, 0, &out, serial);
+                             program->run_vertices(attributes, r.corners[k].vertex, 1, 0, &out, serial);
                            }};
   inspect_stages(stages, request, r);
-  if (request.trace && programs.builtin) {
+  if (request.trace && builtin) {
     Scene twins = scene;
     twins.shaders.program = ShaderProgram::Twins;
     r.traces = inspect_patch(twins, mesh, request).traces;
@@ -332,7 +344,7 @@ InspectResult inspect_draw_patch(const Scene& scene, const InspectRequest& reque
   bool found = false;
   draws.for_each_call(draw + 1, [&](const PreparedCall& p) {
     if (p.draw != draw) return;
-    const GlslDrawCall& call = p.call;
+    const DrawCall& call = p.call;
     const std::size_t per_instance = call.indices.size() / std::size_t(call.patch_vertices);
     const std::size_t here = per_instance * std::size_t(call.instances);
     if (found || request.patch >= r.patch_count + here) {

@@ -21,18 +21,6 @@ struct NoProgram final : FragmentProgram {
   FragmentOutput shade(const FragmentInput&) const override { return {}; }
 };
 
-// Lines and points have no tags (fragment_tags.h tags triangles): such draws are refused.
-void refuse_lines_and_points(const Scene& scene) {
-  for (const DrawSetting& d : scene.draws) {
-    const bool lines = d.mode == DrawMode::Lines || d.mode == DrawMode::LineStrip ||
-                       d.mode == DrawMode::LineLoop || d.mode == DrawMode::Points;
-    if (lines || d.raster.polygon_mode != PolygonMode::kFill)
-      throw InputError("--pixel: " + d.key + " draws " + (lines ? "lines or points" : "in polygon mode line or point") +
-                       ", whose fragments --pixel does not follow (filled triangles only); render --draw-buffer and "
-                       "inspect --draw K --patch N still work");
-  }
-}
-
 // The draw's state for the tagged redraw: the same coverage (viewport, scissor, culling, clipping,
 // depth range and clamp), but no depth test, writes or blending, so that every fragment arrives.
 RasterState redraw_state(const RasterState& s) {
@@ -109,7 +97,6 @@ std::optional<std::size_t> replay(const Scene& scene, const Framebuffer& initial
 
 PixelInspectResult inspect_draws_pixel(const Scene& scene, int x, int y, const Parallel& parallel, bool trace) {
   PixelInspectResult r = pixel_result_for(scene, x, y);
-  refuse_lines_and_points(scene);
   r.program = "glsl, each draw's program (executor)";
   // The fragment shaders' sources, per draw, for --trace.
   std::vector<std::vector<shader::ShaderSource>> sources(scene.draws.size());
@@ -129,42 +116,55 @@ PixelInspectResult inspect_draws_pixel(const Scene& scene, int x, int y, const P
   Framebuffer scratch;  // the redraw's: nobody reads it
   scratch.reset(scene.width, scene.height, scene.background, parallel);
   std::size_t draw = 0;
-  std::uint32_t triangles_in_draw = 0;  // untessellated triangles so far, numbering them
-  std::optional<std::size_t> lines_from;
+  std::uint32_t primitives_in_draw = 0;  // untessellated primitives so far, numbering them
   RasterState state;
   DrawOptions options;
   options.begin_draw = [&](std::size_t d) {
     draw = d;
-    triangles_in_draw = 0;
+    primitives_in_draw = 0;
     state = redraw_state(scene.draws[d].raster);
   };
   options.fragment_program = [&](const FragmentProgram& fs) { recorder.set_draw(fs, fragment_source(draw), draw); };
   options.tess_surface = [&](const std::vector<TessDumpRecord>& records, const TriangleBatch& batch) {
     draw_triangles(tagged_triangles(records, batch), state, recorder, scratch, parallel);
   };
-  options.untessellated_triangles = [&](const TriangleBatch& batch) {
-    // Each triangle tagged as a "patch" of its own: its number in the draw (calls and instances
-    // in order).
-    std::vector<TessDumpRecord> records(batch.vertices.size() / std::size_t(batch.records()));
-    for (std::size_t v = 0; v < records.size(); ++v) records[v].patch_id = triangles_in_draw + std::uint32_t(v / 3);
-    triangles_in_draw += std::uint32_t(records.size() / 3);
-    const std::size_t before = recorder.fragments.size();
-    draw_triangles(tagged_triangles(records, batch), state, recorder, scratch, parallel);
+  // Fragments recorded since `before` came from `primitive`s, untessellated ones numbered in the
+  // draw (calls and instances in order) rather than within a patch.
+  const auto name_fragments = [&](std::size_t before, const char* primitive, bool from_patch) {
     for (std::size_t i = before; i < recorder.fragments.size(); ++i) {
       PixelFragment& f = recorder.fragments[i];
+      f.primitive = primitive;
+      if (from_patch) continue;
       f.from_patch = false;
       f.triangle = f.patch;
       f.patch = 0;
     }
   };
-  options.tess_lines_points = [&](const std::vector<TessDumpRecord>&, const std::vector<std::uint32_t>&) {
-    if (!lines_from) lines_from = draw;
+  options.untessellated_triangles = [&](const TriangleBatch& batch) {
+    // Each triangle tagged as a "patch" of its own: its number in the draw.
+    std::vector<TessDumpRecord> records(batch.vertices.size() / std::size_t(batch.records()));
+    for (std::size_t v = 0; v < records.size(); ++v) records[v].patch_id = primitives_in_draw + std::uint32_t(v / 3);
+    primitives_in_draw += std::uint32_t(records.size() / 3);
+    const std::size_t before = recorder.fragments.size();
+    draw_triangles(tagged_triangles(records, batch), state, recorder, scratch, parallel);
+    name_fragments(before, "triangle", false);
+  };
+  options.line_batch = [&](const LineBatch& batch, const std::vector<TessDumpRecord>* records,
+                           const std::vector<std::uint32_t>* emitted) {
+    const std::size_t before = recorder.fragments.size();
+    draw_lines(tagged_lines(batch, records, emitted, primitives_in_draw), state, recorder, scratch, parallel);
+    if (!records) primitives_in_draw += std::uint32_t(batch.primitive_count());
+    name_fragments(before, "line", records != nullptr);
+  };
+  options.point_batch = [&](const PointBatch& batch, const std::vector<TessDumpRecord>* records,
+                            const std::vector<std::uint32_t>* emitted) {
+    const std::size_t before = recorder.fragments.size();
+    draw_points(tagged_points(batch, records, emitted, primitives_in_draw), state, recorder, scratch, parallel);
+    if (!records) primitives_in_draw += std::uint32_t(batch.primitive_count());
+    name_fragments(before, "point", records != nullptr);
   };
   Framebuffer fb;
   render_scene(scene, Mesh{}, parallel, fb, options);
-  if (lines_from)
-    throw InputError("--pixel: " + scene.draws[*lines_from].key + "'s evaluation shader emits isolines or points, "
-                     "whose fragments --pixel does not follow (filled triangles only)");
 
   r.fragments = std::move(recorder.fragments);
   Framebuffer initial(scene.width, scene.height, scene.background);

@@ -71,7 +71,7 @@ PixelInspectResult inspect_pixel(const Scene& scene, const Mesh& mesh, int x, in
   // The scene's fragment program, as the draw builds it.
   std::optional<BuiltinFragmentProgram> builtin;
   SceneProgram glsl;
-  std::unique_ptr<FragmentProgram> glsl_fs;
+  std::shared_ptr<const FragmentProgram> glsl_fs;
   std::vector<shader::ShaderSource> sources;
   const shader::ShaderSource* fs_source = nullptr;
   if (scene.shaders.program == ShaderProgram::Builtin) {

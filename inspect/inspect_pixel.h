@@ -20,6 +20,10 @@ namespace tessref {
 struct PixelFragment {
   std::size_t patch = 0;     // gl_PrimitiveID
   std::size_t triangle = 0;  // within the patch, emission order (as inspect --patch numbers them)
+  // What made it: a "triangle" (filled, or its edges and corners in polygon mode line or point),
+  // a "line" or a "point" (GL_LINES and GL_POINTS and their strips, isolines, point mode); the
+  // number above counts these.
+  std::string primitive = "triangle";
   glm::vec3 tess_coord{0.0f};  // gl_TessCoord, interpolated from the triangle's corners' coordinates
   glm::vec4 frag_coord{0.0f};  // gl_FragCoord: window x, y (GL rows, from the bottom), depth, 1/w
   bool front_facing = true;

@@ -105,12 +105,12 @@ std::vector<VertexTags> load_vertex_tags(const TessellationSettings& settings, c
   return tags;
 }
 
-void attach_vertex_tags(std::vector<StageVertex>& control_points, const std::vector<VertexTags>& tags,
-                        const glm::mat3& normal_matrix) {
-  for (std::size_t v = 0; v < control_points.size() && v < tags.size(); ++v) {
-    const VertexTags& t = tags[v];
-    control_points[v].attr[kAttrTags] = glm::vec4(t.tension, t.sharpness, t.bias, 0.0f);
-    control_points[v].attr[kAttrCrease] = glm::vec4(world_crease(normal_matrix, t.crease), 0.0f);
+void attach_vertex_tags(StageVertex* out, std::size_t first, std::size_t count,
+                        const std::vector<VertexTags>& tags, const glm::mat3& normal_matrix) {
+  for (std::size_t i = 0; i < count && first + i < tags.size(); ++i) {
+    const VertexTags& t = tags[first + i];
+    out[i].attr[kAttrTags] = glm::vec4(t.tension, t.sharpness, t.bias, 0.0f);
+    out[i].attr[kAttrCrease] = glm::vec4(world_crease(normal_matrix, t.crease), 0.0f);
   }
 }
 

@@ -15,9 +15,10 @@ namespace tessref {
 // One entry per mesh vertex, in the mesh's vertex order.
 std::vector<VertexTags> load_vertex_tags(const TessellationSettings& settings, const Mesh& mesh);
 
-// The TCS inputs: control_points[v].attr[kAttrTags] = (tension, sharpness, bias, 0) and
-// attr[kAttrCrease] = (world_crease(normal_matrix, crease), 0), as tagged_transform.vert writes them.
-void attach_vertex_tags(std::vector<StageVertex>& control_points, const std::vector<VertexTags>& tags,
-                        const glm::mat3& normal_matrix);
+// The TCS inputs of vertices [first, first + count): out[i].attr[kAttrTags] = (tension, sharpness,
+// bias, 0) and attr[kAttrCrease] = (world_crease(normal_matrix, crease), 0) of tags[first + i], as
+// tagged_transform.vert writes them. Vertices past the tags are left as they are.
+void attach_vertex_tags(StageVertex* out, std::size_t first, std::size_t count,
+                        const std::vector<VertexTags>& tags, const glm::mat3& normal_matrix);
 
 }  // namespace tessref

@@ -11,7 +11,7 @@
 #include <memory>
 #include <set>
 
-#include "render/glsl_draw.h"
+#include "render/draw_call.h"
 #include "shader/glsl_compile.h"
 #include "stages/glsl/glsl_program.h"
 
@@ -236,7 +236,7 @@ class Runner {
 
   void draw_patches(const TestCommand& c, const std::vector<glsl::VertexAttribute>& attributes,
                     std::size_t first, std::size_t count, int instances, int patch_vertices) {
-    GlslDrawCall call;
+    DrawCall call;
     call.first = first;
     call.count = count;
     call.instances = instances;
@@ -244,7 +244,7 @@ class Runner {
     call.default_outer = default_outer_;
     call.default_inner = default_inner_;
     try {
-      draw_glsl(*program_, attributes, call, state_, fb_, parallel_);
+      run_draw(*program_, attributes, call, state_, fb_, parallel_);
     } catch (const glsl::StageError& e) {
       fail(c, e.what());
     } catch (const std::invalid_argument& e) {  // a draw tessref refuses, at this line

@@ -1,5 +1,6 @@
 #pragma once
-// The draw call: vertex shader -> [tessellation stages] -> primitive assembly -> rasterizer + FS.
+// What a draw reports and the options every draw takes (render/draw_call.h runs it), and the
+// convenient form: a mesh drawn with the built-in programs.
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -39,7 +40,8 @@ struct DrawStats {
 };
 
 struct DrawOptions {
-  // Triangles per TriangleBatch: bounds the memory of one batch (64 bytes per vertex).
+  // Untessellated draws: primitives per batch handed to the rasterizer; bounds the memory of one
+  // batch (64 bytes per vertex and 16 varyings). The image never depends on it.
   std::size_t batch_triangles = 65536;
   // Called on the calling thread after each batch with the fraction of the input done.
   std::function<void(double)> progress;
@@ -63,12 +65,22 @@ struct DrawOptions {
   // A scene of draws, isolines and point mode: each chunk's records and the vertices its lines
   // or points emit, as indices into them, before dump_tess, on the calling thread.
   std::function<void(const std::vector<TessDumpRecord>&, const std::vector<std::uint32_t>&)> tess_lines_points;
+  // A scene of draws: each batch of lines, or of points, before it is rasterized, on the calling
+  // thread. Untessellated ones (GL_LINES, strips, loops, GL_POINTS) come with null records;
+  // isolines and point mode with the chunk's records and, for vertex k of the batch, its record
+  // emitted[k].
+  std::function<void(const LineBatch&, const std::vector<TessDumpRecord>*, const std::vector<std::uint32_t>*)> line_batch;
+  std::function<void(const PointBatch&, const std::vector<TessDumpRecord>*, const std::vector<std::uint32_t>*)> point_batch;
   // `render --check`: every stage's outputs tested for NaN and infinity; the first offence throws
   // CheckOffence. Null: nothing is tested and nothing is added to the draw's work.
   Checker* check = nullptr;
 
   // Whether the executor must keep every TES invocation's record (dump_tess, tess_surface, check).
-  bool wants_tess_records() const { return dump_tess || tess_surface || tess_lines_points || check; }
+  bool wants_tess_records() const {
+    return dump_tess || tess_surface || tess_lines_points || line_batch || point_batch || check;
+  }
+  // Whether it must know which record each isoline and point vertex is.
+  bool wants_emitted() const { return tess_lines_points || line_batch || point_batch; }
   // Hands one drawn chunk's records to tess_surface and dump_tess, then empties them for the next.
   void hand_out_tess_chunk(std::vector<TessDumpRecord>& records, const TriangleBatch& batch,
                            std::vector<std::uint32_t>* emitted = nullptr) const {
@@ -80,8 +92,10 @@ struct DrawOptions {
   }
 };
 
-// Draws the mesh's triangles, in mesh order, into fb. The bytes of fb do not depend on
-// parallel.threads().
+// The mesh as a GL draw: its positions and normals as the attribute arrays at locations 0 and 1,
+// glDrawElements(GL_PATCHES with 3 vertices a patch, or GL_TRIANGLES) over its indices, drawn with
+// the built-in programs (render/builtin_program.h) through run_draw, the path of every draw. The
+// bytes of fb do not depend on parallel.threads().
 DrawStats draw_mesh(const Mesh& mesh, const programs::TransformVertexShader& vertex_shader,
                     const TessellationSettings& tessellation, const RasterState& raster_state,
                     const FragmentProgram& fragment_shader, Framebuffer& fb,

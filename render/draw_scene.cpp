@@ -224,7 +224,7 @@ void SceneDraws::for_each_call(std::size_t end, const std::function<void(const P
       const draw::DrawCall& c = d.calls[k];
       draw::VertexInput input;
       const std::vector<std::uint32_t> indices = call_primitives(scene_, d, buffers_, arrays, c, input);
-      GlslDrawCall call;
+      DrawCall call;
       call.indices = indices;
       call.vertex_ids = input.vertex_ids;
       call.vertex_count = input.vertex_ids.size();
@@ -270,7 +270,7 @@ DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& 
   draws.for_each_call(scene.draws.size(), [&](const PreparedCall& p) {
     begin_until(p.draw + 1);
     if (p.call.indices.empty() || p.call.instances == 0) return;
-    stats += draw_glsl(p.program, p.attributes, p.call, p.setting.raster, fb, parallel, options);
+    stats += run_draw(p.program, p.attributes, p.call, p.setting.raster, fb, parallel, options);
   });
   begin_until(scene.draws.size());  // draws without calls still clear
   return stats;

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "draw/vertex_fetch.h"
-#include "render/glsl_draw.h"
+#include "render/draw_call.h"
 #include "render/glsl_scene.h"
 #include "scene/scene.h"
 
@@ -25,7 +25,7 @@ int primitive_corners(DrawMode mode);
 std::vector<std::uint32_t> assemble(DrawMode mode, int patch_vertices,
                                     const std::vector<std::vector<std::uint32_t>>& runs);
 
-// The patch ids a scene of draws gives its patches (GlslDrawCall::first_patch_id): counted over
+// The patch ids a scene of draws gives its patches (DrawCall::first_patch_id): counted over
 // the draws, their calls and instances in order, gl_PrimitiveID within an instance. For each draw,
 // each call's first id and patches per instance (0 for an untessellated draw).
 struct CallPatches {
@@ -42,7 +42,7 @@ struct PreparedCall {
   const DrawSetting& setting;
   glsl::GlslProgram& program;
   const std::vector<glsl::VertexAttribute>& attributes;  // per fetched vertex (call.vertex_ids)
-  const GlslDrawCall& call;
+  const DrawCall& call;
 };
 
 // A scene's draws with their buffers loaded and their programs compiled (all of them before the

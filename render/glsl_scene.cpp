@@ -8,7 +8,7 @@
 
 #include "common/error.h"
 #include "mesh/camera.h"
-#include "render/glsl_draw.h"
+#include "render/draw_call.h"
 #include "io/image_output.h"
 #include "mesh/vertex_tags.h"
 #include "shader/glsl_compile.h"
@@ -303,8 +303,8 @@ std::vector<glsl::VertexAttribute> scene_attributes(const Scene& scene, const gl
   return attributes;
 }
 
-GlslDrawCall scene_draw_call(const Scene& scene, const Mesh& mesh) {
-  GlslDrawCall call;
+DrawCall scene_draw_call(const Scene& scene, const Mesh& mesh) {
+  DrawCall call;
   call.indices = mesh.indices;
   call.vertex_count = mesh.vertex_count();
   call.patches = scene.tessellation.enabled;
@@ -315,12 +315,12 @@ GlslDrawCall scene_draw_call(const Scene& scene, const Mesh& mesh) {
 DrawStats draw_glsl_scene(const Scene& scene, const glsl::GlslProgram& program, const Mesh& mesh,
                           Framebuffer& fb, const Parallel& parallel, const DrawOptions& options) {
   const std::vector<glsl::VertexAttribute> attributes = scene_attributes(scene, program, mesh);
-  const GlslDrawCall call = scene_draw_call(scene, mesh);
+  const DrawCall call = scene_draw_call(scene, mesh);
   RasterState state;
   state.cull_back_faces = scene.cull_back_faces;
   state.polygon_mode = scene.polygon_mode;
   try {
-    return draw_glsl(program, attributes, call, state, fb, parallel, options);
+    return run_draw(program, attributes, call, state, fb, parallel, options);
   } catch (const glsl::StageError& e) {
     throw InputError(scene.source + ": " + e.what());
   }

@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "render/draw.h"
-#include "render/glsl_draw.h"
+#include "render/draw_call.h"
 #include "mesh/mesh.h"
 #include "scene/scene.h"
 #include "shader/glsl_compile.h"
@@ -44,7 +44,7 @@ SceneProgram build_scene_program(const Scene& scene, const ShaderSettings& shade
 // what tessref inspect reruns.
 std::vector<glsl::VertexAttribute> scene_attributes(const Scene& scene, const glsl::GlslProgram& program,
                                                    const Mesh& mesh);
-GlslDrawCall scene_draw_call(const Scene& scene, const Mesh& mesh);
+DrawCall scene_draw_call(const Scene& scene, const Mesh& mesh);
 
 // Draws the mesh with the scene's GLSL program into fb (already cleared).
 DrawStats draw_glsl_scene(const Scene& scene, const glsl::GlslProgram& program, const Mesh& mesh,

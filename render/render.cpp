@@ -1,6 +1,6 @@
 #include "render/render.h"
 
-#include "render/builtin_programs.h"
+#include "render/builtin_program.h"
 #include "mesh/camera.h"
 #include "render/draw_scene.h"
 #include "render/glsl_scene.h"

@@ -7,20 +7,22 @@
 # of N such processes. Images are checked: the two builds give the same bytes, and the draw form
 # gives the twins' bytes.
 #
-#   scripts/bench-revisions.sh [--runs N] [--repeat R] [OLD_REV]
+#   scripts/bench-revisions.sh [--runs N] [--repeat R] [--new-build DIR] [OLD_REV]
 #
 # OLD_REV defaults to 3f7fe03, the last commit before scenes of draws. Builds into
-# build-rev/{old,new} (Release, only the tessref command); writes build-rev/revisions.md.
+# build-rev/{old,new} (Release, only the tessref command); --new-build takes this tree's tessref
+# from an existing Release build instead (e.g. build). Writes build-rev/revisions.md.
 # Exit status: 0 done, 1 an image differs, 2 bad usage or a build failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-runs=5 repeat=10 old=3f7fe03
+runs=5 repeat=10 old=3f7fe03 new_build=
 while (( $# )); do
   case "$1" in
     --runs) runs=$2; shift 2 ;;
     --repeat) repeat=$2; shift 2 ;;
-    -h|--help) sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --new-build) new_build=$2; shift 2 ;;
+    -h|--help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "bench-revisions.sh: unknown option '$1' (try --help)" >&2; exit 2 ;;
     *) old=$1; shift ;;
   esac
@@ -36,11 +38,25 @@ build() {  # build SOURCE_DIR BUILD_DIR
     { tail -30 "$2.build.log" "$2.cmake.log" >&2 2>/dev/null; echo "bench-revisions.sh: build of $1 failed" >&2; exit 2; }
 }
 echo "bench-revisions.sh: building $old and this tree (logs in $out/)" >&2
-rm -rf "$out/src-old" && mkdir -p "$out/src-old"
-git archive "$old" | tar -x -C "$out/src-old"
-build "$out/src-old" "$out/old"
-build . "$out/new"
+old_commit=$(git rev-parse "$old^{commit}")
+if [[ -x $out/old/cli/tessref && $(cat "$out/old.commit" 2>/dev/null) == "$old_commit" ]]; then
+  echo "bench-revisions.sh: $out/old is already $old" >&2  # a revision's build does not change
+else
+  rm -rf "$out/src-old" "$out/old" "$out/old.commit" && mkdir -p "$out/src-old"
+  git archive "$old" | tar -x -C "$out/src-old"
+  build "$out/src-old" "$out/old"
+  echo "$old_commit" >"$out/old.commit"
+fi
 old_bin=$out/old/cli/tessref new_bin=$out/new/cli/tessref
+if [[ -n $new_build ]]; then
+  grep -q '^CMAKE_BUILD_TYPE:STRING=Release$' "$new_build/CMakeCache.txt" 2>/dev/null ||
+    { echo "bench-revisions.sh: $new_build is not a Release build of this tree" >&2; exit 2; }
+  cmake --build "$new_build" -j"$(nproc)" --target tessref_cli >"$out/new.build.log" 2>&1 ||
+    { tail -30 "$out/new.build.log" >&2; echo "bench-revisions.sh: build of $new_build failed" >&2; exit 2; }
+  new_bin=$new_build/cli/tessref
+else
+  build . "$out/new"
+fi
 "$new_bin" scene --as-draws "$out/as_draws" >/dev/null
 
 # frame_ms BIN ARGS...: the median frame time of one process's --repeat frames.

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "common/error.h"
-#include "render/builtin_programs.h"
+#include "render/builtin_program.h"
 #include "inspect/fragment_dump.h"
 #include "stages/tess_stage.h"
 #include "stats/surface_stats.h"

@@ -537,6 +537,13 @@ std::optional<GlslProgram::UniformBlock> GlslProgram::unbound_storage_block() co
   return std::nullopt;
 }
 
+std::string GlslProgram::draw_refusal() const {
+  const auto block = unbound_storage_block();
+  if (!block) return {};
+  return "the shader storage block '" + block->name + "' (binding " + std::to_string(block->binding) +
+         ") has no buffer range bound; GL leaves its reads undefined (bind one)";
+}
+
 std::vector<std::string> GlslProgram::uniform_names() const {
   std::vector<std::string> names;
   for (const StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), fs_.get()})
@@ -576,19 +583,19 @@ void GlslProgram::run_vertices(const std::vector<VertexAttribute>& attributes, s
   run_vertex_stage(*vs_, attributes, first, count, instance, out, parallel, vertex_ids);
 }
 
-std::unique_ptr<TessControlProgram> GlslProgram::control(int patch_vertices, const glm::vec4& default_outer,
-                                                         const glm::vec2& default_inner) const {
+std::shared_ptr<const TessControlProgram> GlslProgram::control(int patch_vertices, const glm::vec4& default_outer,
+                                                               const glm::vec2& default_inner) const {
   if (tcs_) return std::make_unique<GlslControl>(*tcs_);
   return std::make_unique<PassThroughControl>(patch_vertices, default_outer, default_inner);
 }
 
-std::unique_ptr<TessEvalProgram> GlslProgram::evaluation() const {
+std::shared_ptr<const TessEvalProgram> GlslProgram::evaluation() const {
   if (!tes_) throw std::logic_error("evaluation: no tessellation evaluation shader");
   return std::make_unique<GlslEvaluation>(*tes_, tes_layout(), num_varyings_, flat_varyings_,
                                           primitive_id_varying_);
 }
 
-std::unique_ptr<FragmentProgram> GlslProgram::fragment() const {
+std::shared_ptr<const FragmentProgram> GlslProgram::fragment() const {
   return std::make_unique<GlslFragment>(*fs_, num_varyings_, primitive_id_varying_);
 }
 

@@ -15,6 +15,7 @@
 #include "raster/rasterizer.h"
 #include "shader/executor.h"
 #include "shader/glsl_compile.h"
+#include "stages/draw_program.h"
 #include "stages/glsl/glsl_interface.h"
 #include "stages/tess_stage.h"
 
@@ -55,16 +56,7 @@ struct UniformValue {
   std::vector<std::uint32_t> words;
 };
 
-// Vertex attribute arrays for the vertex shader, by location: `components` words per vertex.
-struct VertexAttribute {
-  std::uint32_t location = 0;
-  int components = 4;
-  shader::Scalar scalar = shader::Scalar::F32;
-  std::vector<std::uint32_t> words;  // vertex v's component k at v * components + k (doubles: 2 words)
-  // Every vertex reads the first element: an instanced array's element for this instance, or a
-  // disabled array's current value (glVertexAttrib*).
-  bool constant = false;
-};
+using VertexAttribute = tessref::VertexAttribute;  // stages/draw_program.h
 
 // A uniform's GLSL type: columns x rows of scalar (1 x N for a vector), elements for an array
 // (for an element "u[i]": the elements from i to the end, which may be set in a row); or a
@@ -77,7 +69,7 @@ struct UniformShape {
   std::vector<std::string> members;  // a struct's member names, in order
 };
 
-class GlslProgram {
+class GlslProgram final : public DrawProgram {
  public:
   // Builds the stages of a compiled program. The program must have vertex, tessellation
   // evaluation and fragment stages; the control stage is optional (default levels are then used).
@@ -86,7 +78,7 @@ class GlslProgram {
   // runtime arrays (shader/spirv_module.h); a block with one at an unsized binding is refused.
   explicit GlslProgram(const shader::CompiledProgram& compiled, shader::ExecLimits limits = {},
                        const shader::StorageBufferSizes& storage = {});
-  ~GlslProgram();
+  ~GlslProgram() override;
 
   // Sets a uniform by its GL name ("u", "u[i]", "lights[2].color", "Block.member") in every stage
   // that declares it; values for several array elements in a row set them from that one on, as
@@ -120,13 +112,15 @@ class GlslProgram {
   // drawn on one thread, in patch and tile order, so the counts and the values each invocation
   // sees do not depend on the thread count.
   bool uses_atomic_counters() const;
+  bool draws_serially() const override { return uses_atomic_counters(); }
+  std::string draw_refusal() const override;
   std::vector<std::uint32_t>& counter_buffer(std::uint32_t binding) { return counter_buffers_[binding]; }
 
   // The location of the vertex shader input with this name; nullopt if there is none.
   std::optional<std::uint32_t> attribute_location(const std::string& name) const;
 
   bool has_tcs() const { return tcs_ != nullptr; }
-  bool has_tes() const { return tes_ != nullptr; }
+  bool has_tes() const override { return tes_ != nullptr; }
   TessLayout tes_layout() const;
   int tcs_output_vertices() const;
 
@@ -135,16 +129,16 @@ class GlslProgram {
   // receives gl_Position and the outputs as I/O slots.
   void run_vertices(const std::vector<VertexAttribute>& attributes, std::size_t first, std::size_t count,
                     int instance, StageVertex* out, const Parallel& parallel,
-                    const std::uint32_t* vertex_ids = nullptr) const;
+                    const std::uint32_t* vertex_ids = nullptr) const override;
 
   // Stage programs for tessellate() and draw_triangles(). default_outer/inner: the levels used when
   // there is no control stage (glPatchParameterfv); patch_vertices: GL_PATCH_VERTICES.
-  std::unique_ptr<TessControlProgram> control(int patch_vertices, const glm::vec4& default_outer,
-                                              const glm::vec2& default_inner) const;
-  std::unique_ptr<TessEvalProgram> evaluation() const;
-  std::unique_ptr<FragmentProgram> fragment() const;
-  int varyings() const { return num_varyings_; }
-  const VaryingMask& flat_varyings() const { return flat_varyings_; }
+  std::shared_ptr<const TessControlProgram> control(int patch_vertices, const glm::vec4& default_outer,
+                                                    const glm::vec2& default_inner) const override;
+  std::shared_ptr<const TessEvalProgram> evaluation() const override;
+  std::shared_ptr<const FragmentProgram> fragment() const override;
+  int varyings() const override { return num_varyings_; }
+  VaryingMask flat_varyings() const override { return flat_varyings_; }
   // Draw the tessellation evaluation shader's patches with this layout instead of the one it
   // declares (the GLSL twins take the scene's spacing and winding, as the real-GL runner rewrites
   // their layout line).

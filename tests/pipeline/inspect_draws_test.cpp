@@ -151,18 +151,59 @@ TEST(InspectDrawsPixel, BlendingDepthFunctionsAndDrawBuffers) {
   EXPECT_EQ(g["fragments"].back()["outputs"].size(), 4u);
 }
 
-// Fragment shader traces per draw, and lines or points refused by name.
+// Fragment shader traces per draw; --pixel takes no --draw.
 TEST(InspectDrawsPixel, TracesAndRefusals) {
   const CliRun traced = run_cli("inspect " + kDraws + "two_draws_depth.json" + " --pixel 128,150 --trace");
   EXPECT_EQ(traced.exit_code, 0) << traced.output;
   EXPECT_THAT(traced.output, HasSubstr("frag_color = vec4(0.5 * normalize(e_normal) + 0.5, 1.0);"));
   EXPECT_THAT(traced.output, HasSubstr("frag_color = u_fill;"));
-  const CliRun lines = run_cli("inspect " + kDraws + "grass_isolines.json" + " --pixel 10,10");
-  EXPECT_EQ(lines.exit_code, 2) << lines.output;
-  EXPECT_THAT(lines.output, HasSubstr("whose fragments --pixel does not follow"));
   const CliRun with_draw = run_cli("inspect " + kDraws + "two_draws_depth.json" + " --pixel 1,1 --draw 0");
   EXPECT_EQ(with_draw.exit_code, 2);
   EXPECT_THAT(with_draw.output, HasSubstr("give --pixel alone"));
+}
+
+// Lines and points are followed like triangles: isolines numbered within their patch, with
+// gl_TessCoord along the line; GL_LINE_LOOP and GL_POINTS numbered in their draw; polygon mode line
+// keeps the triangle; point mode's point at the pixel is the one whose gl_TessCoord the fragment
+// shader writes as its colour (dome_points.tese passes the coordinate on), so the tags cannot have
+// named another point. Each run also checks that the replay agrees with the frame.
+TEST(InspectDrawsPixel, LinesAndPointsAreFollowed) {
+  TempDir dir;
+  const nlohmann::json grass = test::inspect_json(dir, kDraws + "grass_isolines.json" + " --pixel 48,88");
+  ASSERT_EQ(grass["fragments"].size(), 1u);
+  const nlohmann::json& blade = grass["fragments"][0];
+  EXPECT_EQ(blade["draw"], 0);
+  EXPECT_EQ(blade["primitive"], "line");
+  EXPECT_EQ(blade["patch"], 1);
+  EXPECT_EQ(blade["line"], 29);
+  EXPECT_TRUE(blade["from_patch"].get<bool>());
+
+  const nlohmann::json both = test::inspect_json(dir, kDraws + "grass_isolines.json" + " --pixel 10,179");
+  ASSERT_EQ(both["fragments"].size(), 2u);
+  EXPECT_EQ(both["fragments"][0]["draw"], 1);
+  EXPECT_EQ(both["fragments"][0]["primitive"], "line");
+  EXPECT_EQ(both["fragments"][0]["line"], 0);
+  EXPECT_FALSE(both["fragments"][0]["from_patch"].get<bool>());
+  EXPECT_EQ(both["fragments"][1]["draw"], 2);
+  EXPECT_EQ(both["fragments"][1]["primitive"], "point");
+  EXPECT_EQ(both["fragments"][1]["point"], 1);
+  EXPECT_EQ(both["winner"], 1);
+
+  const nlohmann::json wire = test::inspect_json(dir, kDraws + "dome_points.json" + " --pixel 34,99");
+  ASSERT_EQ(wire["fragments"].size(), 2u);
+  EXPECT_EQ(wire["fragments"][0]["primitive"], "triangle");  // polygon mode GL_LINE
+  EXPECT_EQ(wire["fragments"][0]["triangle"], 0);
+  EXPECT_FALSE(wire["fragments"][0]["front_facing"].get<bool>());
+  EXPECT_EQ(wire["fragments"][1]["primitive"], "line");  // GL_LINE_STRIP
+  EXPECT_EQ(wire["winner"], 1);
+
+  const nlohmann::json dome = test::inspect_json(dir, kDraws + "dome_points.json" + " --pixel 119,74");
+  ASSERT_EQ(dome["fragments"].size(), 1u);
+  const nlohmann::json& point = dome["fragments"][0];
+  EXPECT_EQ(point["primitive"], "point");
+  EXPECT_EQ(point["patch"], 1);
+  EXPECT_EQ(point["point"], 120);
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(point["gl_TessCoord"][c], point["outputs"][0][c]) << c;
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "render/builtin_programs.h"
+#include "render/builtin_program.h"
 #include "scene/scene_loader.h"
 
 namespace tessref {

@@ -1,11 +1,13 @@
 #pragma once
-// The built-in programs a scene is drawn with (shaders.program builtin), built in one place so that
-// the draw (render/draw.cpp, render/render.cpp) and tools that rerun part of it
+// The built-in programs a scene is drawn with (shaders.program builtin) as one program object, built
+// in one place so that the draw (render/draw.cpp, render/render.cpp) and tools that rerun part of it
 // (tessref inspect) construct the very same program objects with the same uniforms.
+#include <memory>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "mesh/mesh.h"
 #include "scene/scene.h"
 #include "scene/tessellation_settings.h"
 #include "stages/programs/transform.h"
@@ -17,6 +19,7 @@
 #include "stages/schemes/pn_triangles.h"
 #include "stages/schemes/quadratic_patch.h"
 #include "stages/schemes/scalar_tagged_pn.h"
+#include "stages/draw_program.h"
 #include "stages/tess_stage.h"
 
 namespace tessref {
@@ -74,8 +77,45 @@ BuiltinTessPrograms builtin_tess_programs(const TessellationSettings& settings,
                                           const programs::TransformVertexShader& vs,
                                           const glm::vec2& viewport);
 
-// The TCS's gl_in[] data: one StageVertex per vertex shader output (kAttrPosition = (world, 1),
-// kAttrNormal = (normal, 0)).
-std::vector<StageVertex> tess_control_points(const std::vector<programs::VertexOut>& shaded);
+// The built-in C++ programs as a program object: the scene's transform vertex shader (positions
+// at location 0, normals at location 1, three floats each), the scheme's control and evaluation
+// programs when tessellating, and a fragment program. Its vertex outputs are what the built-in
+// control programs read: kAttrPosition = (world, 1), kAttrNormal = (normal, 0), the scalar-tagged
+// scheme's kAttrTags and kAttrCrease, and gl_Position at kAttrClipPosition.
+inline constexpr int kAttrClipPosition = 4;
+class BuiltinProgram final : public DrawProgram {
+ public:
+  // viewport: the framebuffer's size (adaptive levels). tags: the scalar-tagged PN scheme's, by
+  // vertex (load_vertex_tags), else empty. fs must outlive the program.
+  BuiltinProgram(const programs::TransformVertexShader& vs, const TessellationSettings& settings,
+                 const glm::vec2& viewport, const FragmentProgram& fs, std::vector<VertexTags> tags = {});
+
+  bool has_tes() const override { return settings_.enabled; }
+  void run_vertices(const std::vector<VertexAttribute>& attributes, std::size_t first, std::size_t count,
+                    int instance, StageVertex* out, const Parallel& parallel,
+                    const std::uint32_t* vertex_ids = nullptr) const override;
+  void rasterizer_vertex(const StageVertex& shaded, ClipVertex* records) const override;
+  std::vector<CheckedOutput> checked_outputs() const override;
+  std::shared_ptr<const TessControlProgram> control(int patch_vertices, const glm::vec4& default_outer,
+                                                    const glm::vec2& default_inner) const override;
+  std::shared_ptr<const TessEvalProgram> evaluation() const override;
+  std::shared_ptr<const FragmentProgram> fragment() const override;
+  int varyings() const override { return kBuiltinVaryings; }
+  Tessellator tessellator() const override { return settings_.tessellator; }
+  TessGrain tess_grain() const override;
+
+  const programs::TransformVertexShader& vertex_shader() const { return vs_; }
+  const BuiltinTessPrograms& tess_programs() const { return programs_; }
+
+ private:
+  programs::TransformVertexShader vs_;
+  TessellationSettings settings_;
+  BuiltinTessPrograms programs_;
+  const FragmentProgram& fs_;
+  std::vector<VertexTags> tags_;
+};
+
+// The mesh as the built-in vertex shader reads it: positions at location 0, normals at location 1.
+std::vector<VertexAttribute> mesh_attributes(const Mesh& mesh);
 
 }  // namespace tessref

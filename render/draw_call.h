@@ -1,17 +1,17 @@
 #pragma once
-// A draw call with a user's GLSL program: vertex shader over the attribute arrays, then, for
-// GL_PATCHES, TCS -> primitive generator -> TES, then rasterizer -> fragment shader, instance by
-// instance.
+// The draw call every draw goes through, a user's GLSL program's and the built-in programs' alike:
+// vertex shader over the attribute arrays, then, for GL_PATCHES, TCS -> primitive generator -> TES,
+// then rasterizer -> fragment shader, instance by instance.
 #include <cstddef>
 #include <functional>
 #include <span>
 
 #include "render/draw.h"
-#include "stages/glsl/glsl_program.h"
+#include "stages/draw_program.h"
 
 namespace tessref {
 
-struct GlslDrawCall {
+struct DrawCall {
   // glDrawArrays: vertices [first, first + count). glDrawElements (indices not empty): the vertex
   // shader runs once for each of the attribute arrays' vertex_count vertices, and the primitives
   // take their vertices by index.
@@ -22,7 +22,7 @@ struct GlslDrawCall {
   // gl_VertexID, and indices (or, without indices, the order) refer to positions in this list.
   std::span<const std::uint32_t> vertex_ids;
   // Appends the attributes that change with the instance (instanced arrays) to the draw's.
-  std::function<void(int instance, std::vector<glsl::VertexAttribute>&)> instance_attributes;
+  std::function<void(int instance, std::vector<VertexAttribute>&)> instance_attributes;
   int instances = 1;
   bool patches = true;               // GL_PATCHES; false: no tessellation stages, and
   int corners = 3;                   // vertices per primitive: 3 triangles, 2 lines, 1 points
@@ -40,13 +40,12 @@ inline constexpr std::size_t kMaxDrawVertices = std::size_t(1) << 22;
 
 // Draws into fb. A partial last primitive is ignored, as in GL. Throws glsl::StageError when a
 // shader fails at run time (instruction budget) and std::invalid_argument for a call GL would
-// refuse (GL_PATCHES without a tessellation evaluation shader, or the reverse) or one that shades
-// more than kMaxDrawVertices vertices. options: progress,
-// tess_chunk_patches (0: 64 patches a chunk) and dump_tess as for draw_mesh. The bytes of fb do not
-// depend on parallel.threads() nor on the program's batch size.
-DrawStats draw_glsl(const glsl::GlslProgram& program,
-                    const std::vector<glsl::VertexAttribute>& attributes, const GlslDrawCall& call,
-                    const RasterState& raster_state, Framebuffer& fb, const Parallel& parallel,
-                    const DrawOptions& options = {});
+// refuse (GL_PATCHES without a tessellation evaluation shader, or the reverse; a program's
+// draw_refusal) or one that shades more than kMaxDrawVertices vertices. options.tess_chunk_patches
+// overrides the program's tess_grain. The bytes of fb do not depend on parallel.threads(), the
+// program's batch size nor the grain.
+DrawStats run_draw(const DrawProgram& program, const std::vector<VertexAttribute>& attributes,
+                   const DrawCall& call, const RasterState& raster_state, Framebuffer& fb,
+                   const Parallel& parallel, const DrawOptions& options = {});
 
 }  // namespace tessref

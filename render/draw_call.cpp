@@ -1,6 +1,5 @@
-#include "render/glsl_draw.h"
+#include "render/draw_call.h"
 
-#include <array>
 #include <chrono>
 #include <stdexcept>
 
@@ -13,11 +12,6 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
-
-// Patches per tessellated chunk when the caller sets none: a user's control shader may write any
-// level, so chunks are sized for the largest (64: about 6,000 triangles a patch).
-constexpr std::size_t kChunkPatches = 64;
-constexpr std::size_t kPrimitivesPerBatch = 65536;  // untessellated draws
 
 // The rasterizer's entry for each primitive kind.
 RasterStats draw_batch(const TriangleBatch& b, const RasterState& s, const FragmentProgram& fs,
@@ -36,9 +30,10 @@ RasterStats draw_batch(const PointBatch& b, const RasterState& s, const Fragment
 // Untessellated primitives: the vertex shader's gl_Position and outputs become the rasterizer's
 // vertices.
 template <class Batch>
-void draw_primitive_list(const glsl::GlslProgram& program, const std::vector<StageVertex>& shaded,
-                         const GlslDrawCall& call, const RasterState& state, const FragmentProgram& fs,
-                         Framebuffer& fb, const Parallel& parallel, DrawStats& stats, const DrawOptions& options) {
+void draw_primitive_list(const DrawProgram& program, const std::vector<StageVertex>& shaded,
+                         const DrawCall& call, const RasterState& state, const FragmentProgram& fs,
+                         Framebuffer& fb, const Parallel& parallel, DrawStats& stats, const DrawOptions& options,
+                         int instance) {
   constexpr std::size_t kCorners = Batch::kCorners;
   const std::size_t corners = call.indices.empty() ? call.count : call.indices.size();
   const std::size_t primitives = corners / kCorners;
@@ -46,25 +41,31 @@ void draw_primitive_list(const glsl::GlslProgram& program, const std::vector<Sta
   batch.num_varyings = program.varyings();
   batch.flat_varyings = program.flat_varyings();
   const std::size_t records = std::size_t(batch.records());
-  for (std::size_t first = 0; first < primitives; first += kPrimitivesPerBatch) {
-    const std::size_t n = std::min(kPrimitivesPerBatch, primitives - first);
+  const std::size_t per_batch = std::max<std::size_t>(1, options.batch_triangles);
+  for (std::size_t first = 0; first < primitives; first += per_batch) {
+    const std::size_t n = std::min(per_batch, primitives - first);
+    auto t = Clock::now();
     batch.vertices.assign(kCorners * n * records, ClipVertex{});
     for (std::size_t k = 0; k < kCorners * n; ++k) {
       const std::size_t at = kCorners * first + k;
       const std::size_t v = call.indices.empty() ? at : call.indices[at];
       if (v >= shaded.size()) throw std::invalid_argument("draw: index " + std::to_string(v) + " past the vertex arrays");
-      // I/O slot words (glsl_interface.h): gl_Position, then location L at 4 + 4L = varying 4L.
-      const auto* src = reinterpret_cast<const float*>(shaded[v].attr.data());
-      auto* dst = reinterpret_cast<float*>(batch.vertices.data() + k * records);
-      std::copy_n(src, 4 + std::min(batch.num_varyings, 4 * (kMaxStageAttributes - 1)), dst);
+      program.rasterizer_vertex(shaded[v], batch.vertices.data() + k * records);
     }
-    const auto t = Clock::now();
+    stats.vertex_seconds += seconds_since(t);
+    t = Clock::now();
     stats.triangles_generated += n;
     if constexpr (kCorners == 3)
       if (options.untessellated_triangles) options.untessellated_triangles(batch);
+    if constexpr (kCorners == 2)
+      if (options.line_batch) options.line_batch(batch, nullptr, nullptr);
+    if constexpr (kCorners == 1)
+      if (options.point_batch) options.point_batch(batch, nullptr, nullptr);
     stats.raster += draw_batch(batch, state, fs, fb, parallel);
     stats.raster_seconds += seconds_since(t);
     if (options.check) options.check->after_raster();
+    if (options.progress)
+      options.progress((double(instance) + double(first + n) / double(primitives)) / double(call.instances));
   }
 }
 
@@ -72,12 +73,17 @@ void draw_primitive_list(const glsl::GlslProgram& program, const std::vector<Sta
 template <class Batch>
 void draw_tess_primitives(std::vector<ClipVertex>& vertices, const TessEvalProgram& tes,
                           const RasterState& state, const FragmentProgram& fs, Framebuffer& fb,
-                          const Parallel& parallel, DrawStats& stats) {
+                          const Parallel& parallel, DrawStats& stats, const DrawOptions& options,
+                          const std::vector<TessDumpRecord>& records, const std::vector<std::uint32_t>& emitted) {
   if (vertices.empty()) return;
   Batch batch;
   batch.num_varyings = tes.num_varyings();
   batch.flat_varyings = tes.flat_varyings();
   batch.vertices.swap(vertices);
+  if constexpr (Batch::kCorners == 2)
+    if (options.line_batch) options.line_batch(batch, &records, &emitted);
+  if constexpr (Batch::kCorners == 1)
+    if (options.point_batch) options.point_batch(batch, &records, &emitted);
   stats.triangles_generated += batch.primitive_count();
   stats.raster += draw_batch(batch, state, fs, fb, parallel);
   batch.vertices.swap(vertices);
@@ -86,23 +92,20 @@ void draw_tess_primitives(std::vector<ClipVertex>& vertices, const TessEvalProgr
 
 }  // namespace
 
-DrawStats draw_glsl(const glsl::GlslProgram& program,
-                    const std::vector<glsl::VertexAttribute>& attributes, const GlslDrawCall& call,
-                    const RasterState& raster_state, Framebuffer& fb, const Parallel& parallel,
-                    const DrawOptions& options) {
+DrawStats run_draw(const DrawProgram& program, const std::vector<VertexAttribute>& attributes,
+                   const DrawCall& call, const RasterState& raster_state, Framebuffer& fb,
+                   const Parallel& parallel, const DrawOptions& options) {
   if (call.patches != program.has_tes())
     throw std::invalid_argument(call.patches
                                     ? "draw: GL_PATCHES needs a tessellation evaluation shader"
                                     : "draw: a program with tessellation shaders draws GL_PATCHES only");
-  if (const auto block = program.unbound_storage_block())
-    throw std::invalid_argument("draw: the shader storage block '" + block->name + "' (binding " +
-                                std::to_string(block->binding) +
-                                ") has no buffer range bound; GL leaves its reads undefined (bind one)");
+  if (const std::string refusal = program.draw_refusal(); !refusal.empty())
+    throw std::invalid_argument("draw: " + refusal);
   if (call.patches && (call.patch_vertices < 1 || call.patch_vertices > kMaxPatchVertices))
     throw std::invalid_argument("draw: GL_PATCH_VERTICES must be 1.." + std::to_string(kMaxPatchVertices));
   // Atomic counters: one thread, so that the values each invocation sees are the same every run.
   const Parallel serial(1);
-  const Parallel& par = program.uses_atomic_counters() ? serial : parallel;
+  const Parallel& par = program.draws_serially() ? serial : parallel;
   const bool indexed = !call.indices.empty();
   const bool by_id = !call.vertex_ids.empty();
   const std::size_t shade_first = indexed || by_id ? 0 : call.first;
@@ -113,9 +116,9 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
     throw std::invalid_argument("draw: " + std::to_string(shade_count) + " vertices to shade, more than tessref's limit of " +
                                 std::to_string(kMaxDrawVertices) + " per draw (" +
                                 std::to_string(kMaxDrawVertices * sizeof(StageVertex) >> 20) + " MiB of shaded vertices)");
-  std::vector<glsl::VertexAttribute> instance_attributes;  // the draw's, then this instance's
+  std::vector<VertexAttribute> instance_attributes;  // the draw's, then this instance's
   if (call.instance_attributes) instance_attributes = attributes;
-  const std::vector<glsl::VertexAttribute>& vertex_attributes = call.instance_attributes ? instance_attributes : attributes;
+  const std::vector<VertexAttribute>& vertex_attributes = call.instance_attributes ? instance_attributes : attributes;
 
   DrawStats stats;
   const auto tcs = call.patches ? program.control(call.patch_vertices, call.default_outer, call.default_inner) : nullptr;
@@ -128,10 +131,12 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
   std::vector<StageVertex> shaded(shade_count);
   std::vector<TessDumpRecord> records;
   TessOptions tess_options;
-  tess_options.patches_per_task = 4;
+  const TessGrain grain = program.tess_grain();
+  tess_options.patches_per_task = grain.task_patches;
+  tess_options.tessellator = program.tessellator();
   std::vector<std::uint32_t> emitted;  // isolines and point mode, into records
   if (options.wants_tess_records()) tess_options.dump = &records;
-  if (options.tess_lines_points) tess_options.dump_emitted = &emitted;
+  if (options.wants_emitted()) tess_options.dump_emitted = &emitted;
   // Isolines and point mode: the tessellator hands their vertices over here, chunk by chunk.
   std::vector<ClipVertex> lines, points;
   tess_options.lines = &lines;
@@ -141,7 +146,8 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
     tess_options.control_check = [&](std::size_t p, const PatchOutput& o) {
       options.check->control_output(p, o, [&](std::size_t q, int lane) { return trace_control(*check_input, *tcs, q, lane); });
     };
-  const std::size_t chunk = options.tess_chunk_patches ? options.tess_chunk_patches : kChunkPatches;
+  const std::size_t chunk = options.tess_chunk_patches ? options.tess_chunk_patches : grain.chunk_patches;
+  const std::vector<CheckedOutput> checked = options.check ? program.checked_outputs() : std::vector<CheckedOutput>{};
 
   for (int instance = 0; instance < call.instances; ++instance) {
     auto t0 = Clock::now();
@@ -155,19 +161,17 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
     stats.vertex_seconds += seconds_since(t0);
     if (options.check) {
       const Checker::VertexTrace trace = [&](std::size_t v) { return trace_vertex(program, vertex_attributes, v, instance); };
-      std::array<std::string, kMaxStageAttributes> slot_names;  // named once, not per vertex
-      for (int s = 0; s < kMaxStageAttributes; ++s) slot_names[s] = s == 0 ? "gl_Position" : "location " + std::to_string(s - 1);
       for (std::size_t v = 0; v < shaded.size(); ++v)
-        for (int s = 0; s < kMaxStageAttributes; ++s)
-          options.check->vertex_output(shade_first + v, slot_names[s],
-                                       &shaded[v].attr[s][0], 4, call.indices, call.patches ? call.patch_vertices : 3, trace);
+        for (const CheckedOutput& o : checked)
+          options.check->vertex_output(shade_first + v, o.name, &shaded[v].attr[o.slot][0], o.components, call.indices,
+                                       call.patches ? call.patch_vertices : 3, trace);
     }
     if (!call.patches) {
       stats.triangles_in += (indexed ? call.indices.size() : call.count) / std::size_t(call.corners);
       switch (call.corners) {
-        case 1: draw_primitive_list<PointBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options); break;
-        case 2: draw_primitive_list<LineBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options); break;
-        default: draw_primitive_list<TriangleBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options);
+        case 1: draw_primitive_list<PointBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options, instance); break;
+        case 2: draw_primitive_list<LineBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options, instance); break;
+        default: draw_primitive_list<TriangleBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options, instance);
       }
       continue;
     }
@@ -184,16 +188,17 @@ DrawStats draw_glsl(const glsl::GlslProgram& program,
         options.check->evaluation_outputs(records, batch, [&](std::uint32_t p, const glm::vec3& c) {
           return trace_evaluation(input, *tcs, *tes, tess_options, p, c);
         });
-      const auto r0 = Clock::now();
-      stats.triangles_generated += batch.triangle_count();
-      stats.raster += draw_triangles(batch, raster_state, *fs, fb, par);
-      draw_tess_primitives<LineBatch>(lines, *tes, raster_state, *fs, fb, par, stats);
-      draw_tess_primitives<PointBatch>(points, *tes, raster_state, *fs, fb, par, stats);
-      stats.raster_seconds += seconds_since(r0);
-      if (options.check) options.check->after_raster();
+      // The scene's patch ids from here on (the check above re-runs patches by their draw index).
       const std::uint32_t first_id = call.first_patch_id + std::uint32_t(instance) * std::uint32_t(patches);
       if (first_id)
         for (TessDumpRecord& r : records) r.patch_id += first_id;
+      const auto r0 = Clock::now();
+      stats.triangles_generated += batch.triangle_count();
+      stats.raster += draw_triangles(batch, raster_state, *fs, fb, par);
+      draw_tess_primitives<LineBatch>(lines, *tes, raster_state, *fs, fb, par, stats, options, records, emitted);
+      draw_tess_primitives<PointBatch>(points, *tes, raster_state, *fs, fb, par, stats, options, records, emitted);
+      stats.raster_seconds += seconds_since(r0);
+      if (options.check) options.check->after_raster();
       options.hand_out_tess_chunk(records, batch, &emitted);
       done = std::min(patches, done + chunk);
       if (options.progress)
