@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/scene_name.h"
 #include "cli/shard.h"
 #include "common/error.h"
 #include "mesh/camera.h"
@@ -53,7 +54,7 @@ void capture_one(glref::GlContext& context, const std::string& scene_path, const
                                                 : std::string();
   std::printf("tessref capture: %s -> %s (%dx%d, %s, %s): color.png, depth.exr, tess.bin (%zu emitted vertices%s), "
               "tess_patches.bin, manifest.json\n",
-              scene.source.c_str(), out.c_str(), scene.width, scene.height, context.vendor().c_str(),
+              drawn_scene_name(scene, sets).c_str(), out.c_str(), scene.width, scene.height, context.vendor().c_str(),
               context.renderer().c_str(), s.tess_records, sample.c_str());
   std::fflush(stdout);
 }

@@ -1,5 +1,7 @@
 #include "cli/dump_budget.h"
 
+#include <sys/stat.h>
+
 #include <cstdio>
 #include <filesystem>
 
@@ -18,17 +20,34 @@ std::string gigabytes(std::uint64_t bytes) {
   return buf;
 }
 
+// The file system a file will be written to (its folder's device); -1 if the folder is not there.
+long long device_of(const std::string& path) {
+  struct stat st {};
+  const std::filesystem::path folder = std::filesystem::absolute(path).parent_path();
+  return ::stat(folder.c_str(), &st) == 0 ? (long long)st.st_dev : -1;
+}
+
 }  // namespace
 
-DumpBudget::DumpBudget(const std::string& dump_path, std::uint64_t max_dump_bytes)
+DumpBudget::DumpBudget(const std::string& dump_path, std::uint64_t max_dump_bytes,
+                       const std::vector<std::string>& image_paths, std::uint64_t image_bytes)
     : path_(dump_path), max_dump_bytes_(max_dump_bytes) {
   std::error_code ec;
   const std::filesystem::path folder = std::filesystem::absolute(dump_path).parent_path();
   const std::filesystem::space_info space = std::filesystem::space(folder, ec);
   if (!ec) {
-    const std::uint64_t margin = 64ull << 20;
+    // Room for the images written to the same file system only: a dump alone on a small one may
+    // use all of it.
+    const long long device = device_of(dump_path);
+    std::uint64_t margin = 0;
+    int images = 0;
+    for (const std::string& image : image_paths)
+      if (device_of(image) == device) margin += image_bytes, ++images;
     limit_ = space.available > margin ? space.available - margin : 0;
-    bound_ = "the " + gigabytes(limit_) + " free in " + folder.string() + " (less 64 MiB for the images)";
+    bound_ = "the " + gigabytes(limit_) + " free in " + folder.string();
+    if (images)
+      bound_ += " (less " + gigabytes(margin) + " for the " + std::to_string(images) + " image" + (images > 1 ? "s" : "") +
+                " written there)";
   }
   if (max_dump_bytes != 0 && max_dump_bytes < limit_) {
     limit_ = max_dump_bytes;

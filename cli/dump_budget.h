@@ -1,8 +1,9 @@
 #pragma once
 // How large `render --dump-tess` may grow: --max-dump-bytes, and never more than the free space
-// where the dump goes (less 64 MiB for the images written beside it).
+// where the dump goes, less room for the images written to the same file system.
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "io/tess_dump.h"
 
@@ -10,7 +11,10 @@ namespace tessref::cli {
 
 class DumpBudget {
  public:
-  DumpBudget(const std::string& dump_path, std::uint64_t max_dump_bytes);  // 0: no --max-dump-bytes
+  // max_dump_bytes 0: no --max-dump-bytes. image_paths: the images the render writes; those on the
+  // dump's file system are given room for image_bytes each (their size uncompressed).
+  DumpBudget(const std::string& dump_path, std::uint64_t max_dump_bytes,
+             const std::vector<std::string>& image_paths = {}, std::uint64_t image_bytes = 0);
 
   // Before drawing, where fixed levels and the built-in programs fix the size: InputError with the
   // size when the dump would pass the limit.

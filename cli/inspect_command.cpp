@@ -8,6 +8,7 @@
 #include <fstream>
 #include <memory>
 #include <optional>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,13 +29,16 @@
 namespace tessref::cli {
 namespace {
 
+// An index option not given (any value the user types, -1 included, is checked as given).
+constexpr long long kNotGiven = std::numeric_limits<long long>::min();
+
 struct InspectArgs {
   std::string scene, coord, json, pixel;
   bool trace = false, no_fragments = false;
   std::string trace_stages = "all";
   int threads = 0;
   std::vector<std::string> sets;
-  long long patch = -1, vertex = -1, draw = -1;
+  long long patch = kNotGiven, vertex = kNotGiven, draw = kNotGiven;
 };
 
 // %.9g: a float printed so that it reads back as the same bits.
@@ -480,9 +484,10 @@ void print_pixel_text(const Scene& scene, const PixelInspectResult& r, double se
   for (std::size_t i = 0; i < r.fragments.size(); ++i) {
     const PixelFragment& f = r.fragments[i];
     const char* facing = f.front_facing ? "front facing" : "back facing";
-    if (!f.draw) std::printf("  fragment %zu: patch %zu, triangle %zu, %s\n", i, f.patch, f.triangle, facing);
-    else if (f.from_patch) std::printf("  fragment %zu: draw %zu, patch %zu, triangle %zu, %s\n", i, *f.draw, f.patch, f.triangle, facing);
-    else std::printf("  fragment %zu: draw %zu, triangle %zu (untessellated), %s\n", i, *f.draw, f.triangle, facing);
+    const char* kind = f.primitive.c_str();
+    if (!f.draw) std::printf("  fragment %zu: patch %zu, %s %zu, %s\n", i, f.patch, kind, f.triangle, facing);
+    else if (f.from_patch) std::printf("  fragment %zu: draw %zu, patch %zu, %s %zu, %s\n", i, *f.draw, f.patch, kind, f.triangle, facing);
+    else std::printf("  fragment %zu: draw %zu, %s %zu (untessellated), %s\n", i, *f.draw, kind, f.triangle, facing);
     if (f.from_patch) std::printf("      gl_TessCoord %s\n", vec(f.tess_coord).c_str());
     std::printf("      gl_FragCoord %s\n", vec(f.frag_coord).c_str());
     if (!f.draw) {  // the mesh path's convention: outputs 0 and 1 of the evaluation shader
@@ -526,7 +531,8 @@ nlohmann::json pixel_json(const Scene& scene, const PixelInspectResult& r) {
   for (std::size_t i = 0; i < r.fragments.size(); ++i) {
     const PixelFragment& f = r.fragments[i];
     fragments.push_back(json{{"patch", f.patch},
-                             {"triangle", f.triangle},
+                             {"primitive", f.primitive},
+                             {f.primitive, f.triangle},
                              {"gl_TessCoord", jvec(f.tess_coord)},
                              {"gl_FragCoord", jvec(f.frag_coord)},
                              {"front_facing", f.front_facing},
@@ -575,19 +581,19 @@ void write_json(const std::string& path, const nlohmann::json& j) {
 
 void run_inspect_pixel(const InspectArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
-  if (a.patch >= 0 || a.vertex >= 0 || !a.coord.empty())
+  if (a.patch != kNotGiven || a.vertex != kNotGiven || !a.coord.empty())
     throw InputError("--pixel: give it alone (--patch, --coord and --vertex ask about a patch)");
   Scene scene = load_scene(a.scene, a.sets);
   const bool trace = a.trace && (parse_trace_stages(a.trace_stages) & kTraceFragment);
   if (!scene.draws.empty()) {
-    if (a.draw >= 0) throw InputError("--draw: --pixel follows every draw of the scene at the pixel; give --pixel alone");
+    if (a.draw != kNotGiven) throw InputError("--draw: --pixel follows every draw of the scene at the pixel; give --pixel alone");
     const auto [x, y] = parse_pixel(a.pixel, scene);
     const PixelInspectResult r = inspect_draws_pixel(scene, x, y, Parallel(a.threads), trace);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!a.json.empty()) return write_json(a.json, pixel_json(scene, r));
     return print_pixel_text(scene, r, seconds);
   }
-  if (a.draw >= 0) throw InputError("--draw: the scene has no draws (it draws its mesh)");
+  if (a.draw != kNotGiven) throw InputError("--draw: the scene has no draws (it draws its mesh)");
   const auto [x, y] = parse_pixel(a.pixel, scene);
   std::vector<std::string> warnings;
   const Mesh mesh = build_mesh(scene.mesh, warnings);
@@ -602,13 +608,15 @@ void run_inspect_pixel(const InspectArgs& a) {
 void run_inspect(const InspectArgs& a) {
   if (!a.pixel.empty()) return run_inspect_pixel(a);
   const auto t0 = std::chrono::steady_clock::now();
-  if (a.patch < 0) throw InputError("--patch: required: which patch of the draw to inspect (counted from 0), or --pixel X,Y");
-  if (a.vertex != -1 && a.vertex < 0) throw InputError("--vertex: must be 0 or more, got " + std::to_string(a.vertex));
-  if (!a.coord.empty() && a.vertex >= 0)
+  if (a.patch == kNotGiven) throw InputError("--patch: required: which patch of the draw to inspect (counted from 0), or --pixel X,Y");
+  if (a.patch < 0) throw InputError("--patch: " + std::to_string(a.patch) + " is not a patch: patches count from 0");
+  if (a.vertex != kNotGiven && a.vertex < 0) throw InputError("--vertex: must be 0 or more, got " + std::to_string(a.vertex));
+  if (a.draw != kNotGiven && a.draw < 0) throw InputError("--draw: " + std::to_string(a.draw) + " is not a draw: draws count from 0");
+  if (!a.coord.empty() && a.vertex != kNotGiven)
     throw InputError("--coord and --vertex: give one of them (a coordinate, or a generated point's index)");
   Scene scene = load_scene(a.scene, a.sets);
   InspectRequest request;
-  if (a.draw >= 0) {
+  if (a.draw != kNotGiven) {
     if (scene.draws.empty()) throw InputError("--draw: the scene has no draws (it draws its mesh)");
     request.draw = std::size_t(a.draw);
   } else if (scene.draws.size() > 1) {
@@ -616,7 +624,7 @@ void run_inspect(const InspectArgs& a) {
                      " draws; say which one's patch to inspect (0.." + std::to_string(scene.draws.size() - 1) + ")");
   }
   request.patch = std::size_t(a.patch);
-  if (a.vertex >= 0) request.vertex = std::size_t(a.vertex);
+  if (a.vertex != kNotGiven) request.vertex = std::size_t(a.vertex);
   if (!a.coord.empty()) {
     const std::vector<float> c = parse_coord(a.coord);
     request.coord = glm::vec3(c[0], c[1], c.size() == 3 ? c[2] : 0.0f);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/scene_name.h"
 #include "cli/dump_budget.h"
 #include "common/error.h"
 #include "common/parallel.h"
@@ -108,26 +109,6 @@ struct StageTimes {
     return buf;
   }
 };
-
-// Runs a write to `temp` and names `target` instead of the temporary in any error it throws.
-template <class Write>
-void write_as(const std::filesystem::path& temp, const std::filesystem::path& target, Write&& write) {
-  try {
-    write();
-  } catch (const InputError& e) {
-    std::string message = e.what();
-    const std::string from = temp.string(), to = target.string();
-    for (std::size_t at; (at = message.find(from)) != std::string::npos;) message.replace(at, from.size(), to);
-    throw InputError(message);
-  }
-}
-
-// The scene as drawn: its file (or "<default scene>") and the keys --set changed.
-std::string drawn_scene_name(const Scene& scene, const std::vector<std::string>& sets) {
-  std::string name = scene.source, keys;
-  for (const std::string& set : sets) keys += (keys.empty() ? "" : ", ") + set.substr(0, set.find('='));
-  return keys.empty() ? name : name + " with --set " + keys;
-}
 
 // Every file the render wrote, the colour image first.
 std::string written_files(const RenderOptions& o, const TessDumpWriter* dump) {
@@ -233,7 +214,13 @@ void run_render(const RenderOptions& o) {
     if (!scene.tessellation.enabled)
       throw InputError("--dump-tess: the scene does not tessellate (tessellation.enabled is false)");
     write_as(dump_tmp, o.dump_tess, [&] { dump = std::make_unique<TessDumpWriter>(dump_tmp.string()); });
-    budget.emplace(o.dump_tess, o.max_dump_bytes);
+    std::vector<std::string> images{o.output};
+    for (const std::string& file : {o.depth, o.normals})
+      if (!file.empty()) images.push_back(file);
+    for (const std::string& b : o.draw_buffers) images.push_back(b.substr(b.find('=') + 1));
+    // An image's most: four float channels a pixel uncompressed, and 1 MiB of headers.
+    const std::uint64_t image_bytes = std::uint64_t(scene.width) * std::uint64_t(scene.height) * 16 + (1u << 20);
+    budget.emplace(o.dump_tess, o.max_dump_bytes, images, image_bytes);
     if (const auto invocations = predicted_tes_invocations(scene, mesh)) budget->check_estimate(*invocations, dump->text());
   }
   // --repeat: every frame renders the same scene again into the same framebuffer memory (as a GL

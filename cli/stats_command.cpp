@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/scene_name.h"
 #include "cli/stats_images.h"
 #include "common/error.h"
 #include "mesh/mesh_source.h"
@@ -66,11 +67,11 @@ nlohmann::json run_scene(const StatsArgs& a, const Parallel& parallel) {
   const Mesh mesh = build_mesh(scene.mesh, warnings);
   for (const std::string& w : warnings) std::fprintf(stderr, "tessref: warning: %s\n", w.c_str());
   const stats::MeshReport r = stats::measure_mesh("mesh", mesh, a.nagata_eps, parallel);
-  std::printf("%s (model space)\n\n", scene.source.c_str());
+  std::printf("%s (model space)\n\n", drawn_scene_name(scene, a.sets).c_str());
   print("Mesh", stats::format_table4({r.mesh}));
   print("Gaussian curvature", stats::format_table5(r.curvature));
   print("Cosine between adjacent patches' normals", stats::format_table6(r.edge_normals));
-  return {{"scene", scene.source},
+  return {{"scene", drawn_scene_name(scene, a.sets)},
           {"mesh", stats::to_json(std::vector<stats::MeshRow>{r.mesh})[0]},
           {"gaussian_curvature", stats::to_json(r.curvature)},
           {"adjacent_normal_cosine", stats::to_json(r.edge_normals)}};

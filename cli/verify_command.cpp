@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -79,14 +80,11 @@ void run(VerifyArgs a) {
     check_image_path(a.heat, ImageKind::Color);
     heat_tmp = outputs.add("--heat", a.heat);
   }
-  const auto make_folder = [](const std::string& folder, const char* option) {
-    std::error_code e;
-    std::filesystem::create_directories(folder, e);
-    if (e) throw InputError(folder + ": cannot create the " + option + " folder: " + e.message());
-  };
+  // Folders made for --images and --html are removed again if verify stops on bad input.
+  std::optional<CreatedFolder> images_folder, html_folder;
   std::filesystem::path image_tmp[4];
   if (!a.images.empty()) {
-    make_folder(a.images, "--images");
+    images_folder.emplace(a.images, "the --images folder");
     for (int k = 0; k < 4; ++k)
       image_tmp[k] = outputs.add("--images", std::filesystem::path(a.images) / kVerifyImageFiles[k]);
   }
@@ -94,7 +92,7 @@ void run(VerifyArgs a) {
   VerifyImages html_images;
   std::filesystem::path html_tmp;
   if (!a.html.empty()) {
-    make_folder(a.html, "--html");
+    html_folder.emplace(a.html, "the --html folder");
     for (int k = 0; k < 4; ++k)
       html_images[k] = outputs.add("--html", std::filesystem::path(a.html) / kVerifyImageFiles[k]);
     html_tmp = outputs.add("--html", std::filesystem::path(a.html) / "index.html");
@@ -105,17 +103,20 @@ void run(VerifyArgs a) {
   std::fputs(verify_summary(r.report).c_str(), stdout);
 
   if (!a.json.empty()) write_text_file(json_tmp, a.json, r.report.dump(2) + "\n");
-  if (!a.heat.empty()) write_rgb8_image(r.heat, heat_tmp);
-  if (!a.images.empty()) {
-    const Rgb8Image* images[4] = {&r.tessref, &r.reference, &r.difference, &r.heat};
-    for (int k = 0; k < 4; ++k) write_rgb8_image(*images[k], image_tmp[k]);
-  }
+  if (!a.heat.empty()) write_as(heat_tmp, a.heat, [&] { write_rgb8_image(r.heat, heat_tmp); });
+  const Rgb8Image* images[4] = {&r.tessref, &r.reference, &r.difference, &r.heat};
+  for (int k = 0; k < 4 && !a.images.empty(); ++k)
+    write_as(image_tmp[k], std::filesystem::path(a.images) / kVerifyImageFiles[k],
+             [&] { write_rgb8_image(*images[k], image_tmp[k]); });
   if (!a.html.empty()) {
-    const Rgb8Image* images[4] = {&r.tessref, &r.reference, &r.difference, &r.heat};
-    for (int k = 0; k < 4; ++k) write_rgb8_image(*images[k], html_images[k]);
+    for (int k = 0; k < 4; ++k)
+      write_as(html_images[k], std::filesystem::path(a.html) / kVerifyImageFiles[k],
+               [&] { write_rgb8_image(*images[k], html_images[k]); });
     write_text_file(html_tmp, a.html + "/index.html", verify_scene_page(r.report, html_images, ""));
   }
   outputs.commit();
+  if (images_folder) images_folder->keep();
+  if (html_folder) html_folder->keep();
   if (!r.pass()) set_exit_code(1);
 }
 

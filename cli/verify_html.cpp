@@ -267,9 +267,7 @@ std::string verify_index_page(const std::vector<SiteScene>& scenes) {
 }
 
 void write_verify_site(const std::filesystem::path& site_folder, const std::vector<SiteScene>& scenes) {
-  std::error_code ec;
-  std::filesystem::create_directories(site_folder, ec);
-  if (ec) throw InputError(site_folder.string() + ": cannot create the --html folder: " + ec.message());
+  CreatedFolder folder(site_folder, "the --html folder");  // removed again on failure
   OutputFiles outputs;
   const auto write = [&](const std::filesystem::path& target, const std::string& html) {
     write_text_file(outputs.add("--html", target), target.string(), html);
@@ -280,6 +278,7 @@ void write_verify_site(const std::filesystem::path& site_folder, const std::vect
     write(site_folder / (s.stem + ".html"), verify_scene_page(s.report, verify_images_in(s.image_folder), "index.html"));
   }
   outputs.commit();
+  folder.keep();
 }
 
 }  // namespace tessref::cli

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <ctime>
 #include <fstream>
+#include <optional>
 
 #include "common/error.h"
 #include "common/hash.h"
@@ -48,9 +49,7 @@ std::string scene_hash(const nlohmann::json& scene_json) {
 CaptureSummary capture_reference(GlContext& context, const Scene& scene, const Mesh& mesh,
                                  const nlohmann::json& scene_json, const std::string& command_line,
                                  const std::filesystem::path& dir, std::size_t max_tess_records) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError(dir.string() + ": cannot create the capture folder (" + ec.message() + ")");
+  CreatedFolder folder(dir, "the capture folder");  // removed again if the capture fails
   OutputFiles outputs;
   const auto color = outputs.add("color", dir / "color.png");
   const auto depth = outputs.add("depth", dir / "depth.exr");
@@ -60,11 +59,12 @@ CaptureSummary capture_reference(GlContext& context, const Scene& scene, const M
 
   SceneRenderer renderer(context, scene, mesh);
   const Framebuffer fb = renderer.render();
-  write_rgb8_image(to_rgb8(fb), color);
-  write_depth_image(fb, depth);
+  write_as(color, dir / "color.png", [&] { write_rgb8_image(to_rgb8(fb), color); });
+  write_as(depth, dir / "depth.exr", [&] { write_depth_image(fb, depth); });
   CaptureSummary summary;
   {
-    TessDumpWriter writer(tess.string());
+    std::optional<TessDumpWriter> writer;
+    write_as(tess, dir / "tess.bin", [&] { writer.emplace(tess.string()); });
     std::vector<TessDumpRecord> records;
     if (!scene.draws.empty())
       records = as_clip_records(renderer.capture_draws_tess());
@@ -72,7 +72,7 @@ CaptureSummary capture_reference(GlContext& context, const Scene& scene, const M
       for (const TessOutputVertex& v : renderer.capture_tess())
         records.push_back(TessDumpRecord{v.patch, v.tess_coord, v.position, v.normal});
     summary.tess_records = records.size();
-    write_patch_digests(digests.string(), digest_patches(records));
+    write_as(digests, dir / "tess_patches.bin", [&] { write_patch_digests(digests.string(), digest_patches(records)); });
     if (max_tess_records && records.size() > max_tess_records) {
       // Patches are about equally heavy: a stride of records / budget, rounded up, then grown
       // until the sample fits, or only patch 0 is left (kept even when it alone is over).
@@ -88,8 +88,10 @@ CaptureSummary capture_reference(GlContext& context, const Scene& scene, const M
       std::erase_if(records, [&](const TessDumpRecord& r) { return r.patch_id % summary.patch_stride != 0; });
     }
     summary.tess_records_stored = records.size();
-    writer.write(records);
-    writer.close();
+    write_as(tess, dir / "tess.bin", [&] {
+      writer->write(records);
+      writer->close();
+    });
   }
   context.make_current();
   summary.manifest = {
@@ -125,6 +127,7 @@ CaptureSummary capture_reference(GlContext& context, const Scene& scene, const M
     if (!out.flush()) throw InputError((dir / "manifest.json").string() + ": cannot write");
   }
   outputs.commit();
+  folder.keep();
   return summary;
 }
 

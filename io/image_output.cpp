@@ -1,12 +1,15 @@
 #include "io/image_output.h"
 
 #include <dlfcn.h>
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <iterator>
 #include <map>
 #include <mutex>
@@ -19,6 +22,30 @@
 
 namespace tessref {
 namespace {
+
+// Standard error sent to /dev/null for a scope: reading back a truncated PNG makes libpng print
+// its own "IDAT: Read error" before tessref can say what happened in words.
+class QuietStderr {
+ public:
+  QuietStderr() {
+    std::fflush(stderr);
+    saved_ = ::dup(2);
+    const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (saved_ >= 0 && null >= 0) ::dup2(null, 2);
+    if (null >= 0) ::close(null);
+  }
+  ~QuietStderr() {
+    std::fflush(stderr);
+    if (saved_ < 0) return;
+    ::dup2(saved_, 2);
+    ::close(saved_);
+  }
+  QuietStderr(const QuietStderr&) = delete;
+  QuietStderr& operator=(const QuietStderr&) = delete;
+
+ private:
+  int saved_ = -1;
+};
 
 std::string lower_extension(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
@@ -275,14 +302,20 @@ void write_rgb8_image(const Rgb8Image& image, const std::filesystem::path& path)
   if (check_image_path(path, ImageKind::Color).stores_float) return;
   bool whole = false;
   try {
+    const QuietStderr quiet;
     const Rgb8Image back = read_rgb8_image(path);  // 8 bits, as written: no float conversion
     whole = back.width == image.width && back.height == image.height;
   } catch (const InputError&) {
   }
-  if (!whole)
-    throw InputError(path.string() +
-                     ": the written file does not read back whole (the writer failed without saying so: a full "
-                     "disk, a file size limit, or an image size the format cannot hold)");
+  if (whole) return;
+  // A full file system is the usual cause: name it when it is.
+  std::error_code ec;
+  const auto space = std::filesystem::space(std::filesystem::absolute(path).parent_path(), ec);
+  if (!ec && space.available == 0)
+    throw InputError(path.string() + ": the file system holding it is full (0 bytes free): the image was cut short");
+  throw InputError(path.string() +
+                   ": the written file does not read back whole (the writer failed without saying so: a full "
+                   "disk, a file size limit, or an image size the format cannot hold)");
 }
 
 Rgb8Image read_rgb8_image(const std::filesystem::path& path) {

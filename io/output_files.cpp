@@ -178,6 +178,25 @@ void OutputFiles::commit() {
   committed_ = true;
 }
 
+CreatedFolder::CreatedFolder(const std::filesystem::path& dir, const std::string& what) {
+  // The outermost missing folder: the one to remove on failure.
+  fs::path missing;
+  for (fs::path p = fs::absolute(dir); !p.empty() && !fs::exists(p); p = p.parent_path()) {
+    missing = p;
+    if (p == p.parent_path()) break;
+  }
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw InputError(dir.string() + ": cannot create " + what + " (" + ec.message() + ")");
+  created_ = missing;
+}
+
+CreatedFolder::~CreatedFolder() {
+  if (created_.empty()) return;
+  std::error_code ec;
+  fs::remove_all(created_, ec);
+}
+
 void write_text_file(const std::filesystem::path& temp, const std::string& target, const std::string& text) {
   std::ofstream out(temp, std::ios::binary);
   out << text;

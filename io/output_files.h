@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "common/error.h"
+
 namespace tessref {
 
 class OutputFiles {
@@ -34,6 +36,36 @@ class OutputFiles {
   };
   std::vector<Entry> entries_;
   bool committed_ = false;
+};
+
+// Runs a write to `temp` (a path OutputFiles::add returned) and names `target` instead of the
+// temporary in any InputError it throws: users know the file they asked for, not its hidden twin.
+template <class Write>
+void write_as(const std::filesystem::path& temp, const std::filesystem::path& target, Write&& write) {
+  try {
+    write();
+  } catch (const InputError& e) {
+    std::string message = e.what();
+    const std::string from = temp.string(), to = target.string();
+    for (std::size_t at; (at = message.find(from)) != std::string::npos;) message.replace(at, from.size(), to);
+    throw InputError(message);
+  }
+}
+
+// A folder a command creates for its outputs (capture --out, verify --html): removed again, with
+// whatever is in it, unless keep() is called, so that a failed run leaves no empty folder behind.
+// A folder that already existed is left alone.
+class CreatedFolder {
+ public:
+  // Creates `dir` and its missing parents; InputError naming `what` when it cannot.
+  CreatedFolder(const std::filesystem::path& dir, const std::string& what);
+  CreatedFolder(const CreatedFolder&) = delete;
+  CreatedFolder& operator=(const CreatedFolder&) = delete;
+  ~CreatedFolder();
+  void keep() { created_.clear(); }
+
+ private:
+  std::filesystem::path created_;  // the outermost folder this created; empty: none
 };
 
 // Writes `text` into `temp` (a path OutputFiles::add returned). InputError naming `target` when

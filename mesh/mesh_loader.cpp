@@ -267,7 +267,10 @@ Mesh load_mesh_file(const std::filesystem::path& path, std::vector<std::string>&
   for (std::size_t v = 0; v < soup.positions.size(); ++v) {
     const glm::vec3& p = soup.positions[v];
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      fail("vertex " + std::to_string(v) + " (in file order) has a NaN or infinite coordinate");
+      // Counted from 1, as OBJ and PLY files number their vertices (the count is the importer's,
+      // which unrolls some formats; its coordinates are not shown: a "nan" in one makes the
+      // importer read the whole line as NaN).
+      fail("vertex " + std::to_string(v + 1) + " (counting from 1, as read) has a NaN or infinite coordinate");
   }
   join_exact_duplicates(soup);
   const std::size_t bad_normals = bad_stored_normals(soup);

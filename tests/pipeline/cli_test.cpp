@@ -362,6 +362,46 @@ TEST_F(Cli, DumpSizeIsBoundedAndEstimated) {
   EXPECT_TRUE(files_in(dir.path()).empty()) << ::testing::PrintToString(files_in(dir.path()));
 }
 
+// Issue 24, defect 5: room for the images is kept only on the file system they go to. A dump
+// that fits a small file system alone is written there; with the colour image beside it, the
+// refusal says how much room the image took (32x32: 16 bytes a pixel and 1 MiB). The small file
+// system is a 2 MiB tmpfs mounted in a user namespace.
+TEST_F(Cli, DumpOnASmallFileSystemKeepsRoomOnlyForTheImagesWrittenThere) {
+  if (!test::can_mount_small_file_systems())
+    GTEST_SKIP() << "unprivileged user namespaces are off here: no small file system to mount";
+  TempDir dir;
+  const std::filesystem::path mnt = dir.path() / "small";
+  std::filesystem::create_directories(mnt);
+  const std::string small = " --set image.width=32 --set image.height=32", m = mnt.string();
+  CliRun r = test::run_on_small_file_system(
+      mnt, "2m", kBinary + " render -o " + dir.path().string() + "/x.png --dump-tess " + m + "/t.bin" + small +
+                     " && stat -c 'dump %s bytes' " + m + "/t.bin");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("dump 1505296 bytes"));
+  r = test::run_on_small_file_system(mnt, "2m", kBinary + " render -o " + m + "/x.png --dump-tess " + m + "/t.bin" + small);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("more than the 1.0 MB (1032192 bytes) free in " + m +
+                                  " (less 1.1 MB (1064960 bytes) for the 1 image written there)"));
+}
+
+// Issue 24, defects 5 and 6: a PNG cut short by a full file system is named as such, with the
+// target's name (not its hidden temporary) and without libpng's own "IDAT: Read error" line, and
+// nothing is left behind.
+TEST_F(Cli, AFullFileSystemIsNamedAndLeavesNothing) {
+  if (!test::can_mount_small_file_systems())
+    GTEST_SKIP() << "unprivileged user namespaces are off here: no small file system to mount";
+  TempDir dir;
+  const std::filesystem::path mnt = dir.path() / "small";
+  std::filesystem::create_directories(mnt);
+  const std::string m = mnt.string();
+  const CliRun r = test::run_on_small_file_system(
+      mnt, "100k", kBinary + " render -o " + m + "/x.png; echo \"status $?\"; ls -A " + m + " | wc -l");
+  EXPECT_THAT(r.output, HasSubstr("tessref: error: " + m + "/x.png: the file system holding it is full (0 bytes free)"));
+  EXPECT_THAT(r.output, HasSubstr("status 2\n0\n"));  // exit 2, and no file left
+  EXPECT_THAT(r.output, ::testing::Not(HasSubstr("libpng")));
+  EXPECT_THAT(r.output, ::testing::Not(HasSubstr(".tessref-")));
+}
+
 // Issue 11, defect 11: what a new user looks for.
 TEST_F(Cli, VersionAndHelp) {
   CliRun r = run("--version");

@@ -130,7 +130,12 @@ TEST(Inspect, BadRequestsExitTwoNamingTheOption) {
   } cases[] = {
       {"--patch 256", "--patch: 256 is past the draw, which has 256 patches (0..255)"},
       {"--patch 0 --coord 0.5,0.5,0.5", "--coord: a triangle patch's gl_TessCoord has u + v + w = 1"},
-      {"--patch 0 --coord -0.5,1,0.5", "--coord: every component must lie in [0, 1]"},
+      {"--patch 0 --coord -0.5,1,0.5", "--coord: every component must lie in [0, 1], got U = -0.5"},
+      // Issue 24, defect 5: a W the user did not type is named as computed; -1 is not "missing".
+      {"--patch 0 --coord 0.7,0.7",
+       "--coord: U + V must be at most 1 on a triangle patch: W = (1 - U) - V = -0.399999976 (computed from the U,V given)"},
+      {"--patch -1", "--patch: -1 is not a patch: patches count from 0"},
+      {"--patch 0 --vertex -1", "--vertex: must be 0 or more, got -1"},
       {"--patch 0 --coord 0.5,x", "--coord: expected U,V[,W]"},
       {"--patch 0 --coord 0.1,0.2,0.3,0.4", "--coord: expected 2 or 3 components"},
       {"--patch 0 --vertex 147", "--vertex: 147 is past the patch's 147 generated domain points"},
@@ -142,7 +147,9 @@ TEST(Inspect, BadRequestsExitTwoNamingTheOption) {
     EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.output;
     EXPECT_THAT(r.output, HasSubstr(c.message)) << c.args;
   }
-  EXPECT_NE(run_cli("inspect --coord 0.2,0.2,0.6").exit_code, 0);  // --patch is required
+  const CliRun missing = run_cli("inspect --coord 0.2,0.2,0.6");
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_THAT(missing.output, HasSubstr("--patch: required"));
 }
 
 }  // namespace

@@ -275,7 +275,7 @@ TEST(MeshLoader, NaNVertexIsNamedAndNeedleTipsGetNormals) {
     load_mesh_file(dir.write("nan.obj", "v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n"), warnings);
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), HasSubstr("nan.obj: vertex 2 (in file order) has a NaN or infinite coordinate"));
+    EXPECT_THAT(e.what(), HasSubstr("nan.obj: vertex 3 (counting from 1, as read) has a NaN or infinite coordinate"));
   }
   const Mesh m = load_mesh_file(
       dir.write("needle.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1e6 1 0\nf 1 2 3\nf 2 4 3\n"), warnings);

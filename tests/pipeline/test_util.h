@@ -2,6 +2,7 @@
 // Helpers shared by the pipeline tests.
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -51,6 +52,28 @@ struct CliRun {
 inline CliRun run_cli(const std::string& args) {
   CliRun r;
   FILE* pipe = popen((kBinary + " " + args + " 2>&1").c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buf;
+  for (std::size_t n; (n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0;) r.output.append(buf.data(), n);
+  const int status = pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return r;
+}
+
+// Whether this machine lets an unprivileged process mount a file system in a user namespace (the
+// small or full file systems below need it).
+inline bool can_mount_small_file_systems() { return std::system("unshare -rm true >/dev/null 2>&1") == 0; }
+
+// Runs the shell command `script` with a fresh tmpfs of `size` (as mount's size=, e.g. "2m") on
+// `mnt`, in a user and mount namespace, so that nothing outside sees it: exit status and output.
+// The tmpfs disappears with the namespace; print what the test needs from it inside `script`.
+inline CliRun run_on_small_file_system(const std::filesystem::path& mnt, const std::string& size,
+                                       const std::string& script) {
+  const std::string whole = "mount -t tmpfs -o size=" + size + " tmpfs '" + mnt.string() + "' && " + script;
+  std::string quoted;  // for sh -c '...'
+  for (char c : whole) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  CliRun r;
+  FILE* pipe = popen(("unshare -rm sh -c '" + quoted + "' 2>&1").c_str(), "r");
   if (!pipe) return r;
   std::array<char, 4096> buf;
   for (std::size_t n; (n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0;) r.output.append(buf.data(), n);

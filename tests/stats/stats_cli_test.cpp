@@ -67,7 +67,10 @@ TEST_F(StatsCli, MeasuresASceneMesh) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("mesh         241/700/460"));
   EXPECT_THAT(r.output, HasSubstr("mesh Nagata eps = 0.06"));
+  // Issue 24, defect 8: the header names the --set keys, not a bare "<default scene>".
+  EXPECT_THAT(r.output, HasSubstr("<default scene> with --set mesh.type (model space)"));
   const nlohmann::json j = nlohmann::json::parse(read_file(out));
+  EXPECT_EQ(j["scene"], "<default scene> with --set mesh.type");
   EXPECT_EQ(j["mesh"]["triangles"], 460);
   EXPECT_EQ(j["mesh"]["boundary_edges"], 20);
   EXPECT_EQ(j["gaussian_curvature"].size(), 4u);
