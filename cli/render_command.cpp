@@ -2,14 +2,18 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <charconv>
 #include <chrono>
+#include <condition_variable>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "cli/commands.h"
@@ -65,25 +69,67 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-// A progress bar on stderr, only for a terminal and only once the render has run a second.
-class ProgressBar {
+// A progress line on stderr, only for a terminal and only once the run has taken a second: what
+// it is doing ("rendering", "writing FILE"), the share of the draw done and the time so far. Its
+// own thread redraws it five times a second, and only when the text changed: a draw that reports
+// rarely (one batch of a slow fragment shader) still shows that it is alive, and a fast one does
+// not flood the terminal.
+class ProgressLine {
  public:
-  ProgressBar() : enabled_(isatty(STDERR_FILENO) == 1), start_(Clock::now()) {}
-  ~ProgressBar() {
-    if (shown_) std::fprintf(stderr, "\r%*s\r", 60, "");
+  ProgressLine() : start_(Clock::now()) {
+    if (isatty(STDERR_FILENO) == 1) ticker_ = std::thread([this] { run(); });
   }
-  void update(double fraction) {
-    if (!enabled_ || seconds_since(start_) < 1.0) return;
-    shown_ = true;
-    const int width = 40, filled = static_cast<int>(fraction * width + 0.5);
-    std::fprintf(stderr, "\rrendering [%s%s] %3d%%", std::string(filled, '#').c_str(),
-                 std::string(width - filled, ' ').c_str(), static_cast<int>(fraction * 100.0 + 0.5));
+  ~ProgressLine() { stop(); }
+  ProgressLine(const ProgressLine&) = delete;
+  ProgressLine& operator=(const ProgressLine&) = delete;
+
+  void update(double fraction) { fraction_.store(fraction, std::memory_order_relaxed); }
+  void stage(std::string what) {
+    std::lock_guard lock(mutex_);
+    stage_ = std::move(what);
+  }
+  // Clears the line; nothing is drawn after it (call before printing anything else).
+  void stop() {
+    if (!ticker_.joinable()) return;
+    {
+      std::lock_guard lock(mutex_);
+      done_ = true;
+    }
+    wake_.notify_all();
+    ticker_.join();
+    if (!last_.empty()) std::fprintf(stderr, "\r%*s\r", int(last_.size()), "");
     std::fflush(stderr);
   }
 
  private:
-  bool enabled_, shown_ = false;
-  Clock::time_point start_;
+  void run() {
+    std::unique_lock lock(mutex_);
+    while (!wake_.wait_for(lock, std::chrono::milliseconds(200), [&] { return done_; })) {
+      const double elapsed = seconds_since(start_);
+      if (elapsed < 1.0) continue;
+      char line[200];
+      if (stage_ == "rendering") {
+        const double f = std::clamp(fraction_.load(std::memory_order_relaxed), 0.0, 1.0);
+        const int width = 30, filled = static_cast<int>(f * width + 0.5);
+        std::snprintf(line, sizeof line, "rendering [%s%s] %3d%%  %.0f s", std::string(filled, '#').c_str(),
+                      std::string(width - filled, ' ').c_str(), static_cast<int>(f * 100.0 + 0.5), elapsed);
+      } else {
+        std::snprintf(line, sizeof line, "%s  %.0f s", stage_.c_str(), elapsed);
+      }
+      if (line == last_) continue;
+      std::fprintf(stderr, "\r%-*s", int(last_.size()), line);  // padded over a longer last line
+      std::fflush(stderr);
+      last_ = line;
+    }
+  }
+
+  const Clock::time_point start_;
+  std::atomic<double> fraction_{0.0};
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool done_ = false;
+  std::string stage_ = "rendering", last_;
+  std::thread ticker_;
 };
 
 std::string ms(double seconds) {
@@ -231,12 +277,12 @@ void run_render(const RenderOptions& o) {
   RenderResult result;
   std::unique_ptr<Checker> checker;
   if (o.check || !o.check_ranges.empty()) checker = std::make_unique<Checker>(check_context(o, scene));
+  ProgressLine progress;
   try {
-    ProgressBar bar;
     for (int i = 0; i < o.repeat; ++i) {
       DrawOptions options;
       options.check = checker.get();
-      options.progress = [&](double f) { bar.update((i + f) / o.repeat); };
+      options.progress = [&](double f) { progress.update((i + f) / o.repeat); };
       if (dump && i == 0)
         options.dump_tess = [&](const std::vector<TessDumpRecord>& r) {
           dump->write(r);
@@ -250,14 +296,14 @@ void run_render(const RenderOptions& o) {
       raster.seconds.push_back(result.stats.raster_seconds);
     }
   } catch (const CheckOffence& e) {
+    progress.stop();
     // No image: the temporaries (outputs, the dump) are removed as `outputs` goes.
     std::fprintf(stderr, "tessref render --check: %s, nothing written\n%s\n",
                  e.out_of_range() ? "value out of range" : "non-finite value", e.what());
     set_exit_code(1);
     return;
   }
-  if (checker)
-    for (const std::string& w : checker->warnings()) std::fprintf(stderr, "tessref: warning: %s\n", w.c_str());
+  progress.stage("writing " + o.output);
   if (dump) write_as(dump_tmp, o.dump_tess, [&] { dump->close(); });
 
   t = Clock::now();
@@ -271,6 +317,9 @@ void run_render(const RenderOptions& o) {
   if (!o.dump_fragments.empty()) write_fragment_dump(scene, mesh, parallel, o.dump_fragments);  // draws again
   outputs.commit();
   const double write_seconds = seconds_since(t);
+  progress.stop();
+  if (checker)
+    for (const std::string& w : checker->warnings()) std::fprintf(stderr, "tessref: warning: %s\n", w.c_str());
 
   const DrawStats& s = result.stats;
   std::string tessellated;

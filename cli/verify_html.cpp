@@ -1,6 +1,7 @@
 #include "cli/verify_html.h"
 
 #include <algorithm>
+#include <map>
 #include <cstdio>
 #include <cstdlib>
 #include <utility>
@@ -81,6 +82,9 @@ table { border-collapse: collapse; margin: 0.4em 0; font-size: 0.9em; }
 td, th { border: 1px solid #ccc; padding: 0.2em 0.6em; text-align: left; }
 th { background: #f0f0f0; } td.num { text-align: right; font-family: monospace; max-width: 36em; }
 td.nowrap { white-space: nowrap; }
+.zoom { width: 256px; height: 256px; overflow: hidden; position: relative; border: 1px solid #ccc; }
+.zoom img { position: absolute; max-width: none; border: none; image-rendering: pixelated; }
+.zoom .mark { position: absolute; width: 8px; height: 8px; outline: 2px solid #00e5ff; }
 code { background: #f4f4f4; padding: 0 0.2em; }
 .tables { display: flex; flex-wrap: wrap; gap: 24px; align-items: flex-start; }
 </style>
@@ -104,6 +108,24 @@ std::string image(const std::filesystem::path& file, const std::string& caption)
   return "<figure>" + img + "<figcaption>" + escape(caption) + "</figcaption></figure>\n";
 }
 
+// The 32 x 32 pixels around (cx, cy) of a width x height image, 8 times larger, with the pixel
+// itself outlined: ten mismatching pixels are invisible in a thumbnail of a 1024-pixel image.
+// The page's own copy of the image is shifted inside a clipping box (no second image file).
+std::string zoomed(const std::filesystem::path& file, const std::string& caption, int cx, int cy, int width,
+                   int height) {
+  std::ifstream in(file, std::ios::binary);
+  const std::string bytes(std::istreambuf_iterator<char>(in), {});
+  if (bytes.empty()) return "";
+  constexpr int kSide = 32, kScale = 8;
+  const int x0 = std::clamp(cx - kSide / 2, 0, std::max(0, width - kSide));
+  const int y0 = std::clamp(cy - kSide / 2, 0, std::max(0, height - kSide));
+  const auto px = [](int v) { return std::to_string(v) + "px"; };
+  return "<figure><div class=\"zoom\"><img alt=\"" + escape(caption) + "\" src=\"data:image/png;base64," + base64(bytes) +
+         "\" style=\"width: " + px(width * kScale) + "; height: " + px(height * kScale) + "; left: " + px(-x0 * kScale) +
+         "; top: " + px(-y0 * kScale) + "\"><div class=\"mark\" style=\"left: " + px((cx - x0) * kScale) +
+         "; top: " + px((cy - y0) * kScale) + "\"></div></div><figcaption>" + escape(caption) + "</figcaption></figure>\n";
+}
+
 // A histogram's buckets ("0", "1", "3-4", "129-256": JSON sorts them as text) in numeric order,
 // on one line.
 bool is_histogram(const json& j) {
@@ -125,19 +147,77 @@ std::string histogram(const json& j) {
   return out;
 }
 
+// What a report key means, for people (the key itself stays in the cell's tooltip). Keys not
+// listed are shown with spaces for underscores.
+std::string label(const std::string& key) {
+  static const std::map<std::string, std::string> kLabels = {
+      {"emitted_vertices", "vertices emitted"},
+      {"first_mismatched_patch", "first patch whose gl_TessCoord differ"},
+      {"patches_mismatched", "patches whose gl_TessCoord differ"},
+      {"max_position_ulp", "largest position difference (ULPs)"},
+      {"max_normal_ulp", "largest normal difference (ULPs)"},
+      {"position_ulps", "position differences (ULPs: count)"},
+      {"normal_ulps", "normal differences (ULPs: count)"},
+      {"max_position_difference_of_diagonal", "largest position difference / diagonal"},
+      {"worst_position_patch", "patch with the largest position difference"},
+      {"records_compared", "vertices compared"},
+      {"unmatched_vertices", "vertices without a twin"},
+      {"patch_stride", "patches sampled: every"},
+      {"hausdorff_of_diagonal", "Hausdorff distance / diagonal"},
+      {"beyond_limit", "mismatches beyond the limit"},
+      {"by_distance_px", "mismatches by distance to the silhouette (px: count)"},
+      {"covered_rays", "pixels tessref's surface covers (rays)"},
+      {"covered_reference", "pixels the driver covered"},
+      {"covered_tessref", "pixels tessref's rasterizer covered"},
+      {"max_distance_px", "farthest mismatch from the silhouette (px)"},
+      {"mismatched_by_distance", "mismatches by 4-neighbour steps to the silhouette"},
+      {"off_silhouette", "mismatches off the silhouette"},
+      {"cracked_edges", "cracked shared edges"},
+      {"max_gap_of_diagonal", "widest gap / diagonal"},
+      {"rays_through", "rays through a crack"},
+      {"max_difference_255", "largest channel difference (of 255)"},
+      {"psnr_db", "PSNR (dB)"},
+      {"within_1_255", "pixels within 1/255"},
+      {"within_2_255", "pixels within 2/255"},
+      {"color_share_percent", "required share within 2/255 (%)"},
+      {"cracks_fail", "cracks fail"},
+      {"max_distance_of_diagonal", "largest surface distance allowed / diagonal"},
+      {"silhouette_px", "largest silhouette distance allowed (px)"},
+  };
+  const std::string last = key.substr(key.rfind('.') + 1);
+  const auto it = kLabels.find(last);
+  std::string prefix = key.substr(0, key.size() - last.size()), text = it != kLabels.end() ? it->second : last;
+  if (it == kLabels.end()) std::replace(text.begin(), text.end(), '_', ' ');
+  std::replace(prefix.begin(), prefix.end(), '_', ' ');
+  std::replace(prefix.begin(), prefix.end(), '.', ':');
+  return prefix.empty() ? text : prefix + " " + text;
+}
+
+// A value as the row shows it: "none" for the report's "no such thing" (-1 for a patch, an empty list).
+std::string shown(const std::string& key, const json& value) {
+  if ((value.is_array() && value.empty()) || (value.is_number_integer() && value.get<long long>() == -1 && key.ends_with("patch")))
+    return "none";
+  return scalar(value);
+}
+
+std::string row(const std::string& key, const std::string& value) {
+  return "<tr><td title=\"" + escape(key) + "\">" + escape(label(key)) + "</td><td class=\"num\">" + escape(value) +
+         "</td></tr>\n";
+}
+
 // Every scalar of a section, nested objects flattened to dotted keys; lists of records (the worst
 // patches, pixels, edges) have their own tables.
 void rows(const json& j, const std::string& prefix, std::string& out) {
   for (const auto& [key, value] : j.items()) {
     const std::string name = prefix + key;
     if (is_histogram(value)) {
-      out += "<tr><td>" + escape(name) + "</td><td class=\"num\">" + escape(histogram(value)) + "</td></tr>\n";
+      out += row(name, histogram(value));
     } else if (value.is_object()) {
       rows(value, name + ".", out);
     } else if (value.is_array() && !value.empty() && (value[0].is_object() || value[0].is_array())) {
       continue;
     } else {
-      out += "<tr><td>" + escape(name) + "</td><td class=\"num\">" + escape(scalar(value)) + "</td></tr>\n";
+      out += row(name, shown(name, value));
     }
   }
 }
@@ -155,13 +235,27 @@ std::string figures(const json& report) {
   return out + "</div>\n";
 }
 
+// A word for a POSIX shell: as it is when it needs no quoting, else in single quotes.
+std::string shell_quoted(const std::string& word) {
+  if (!word.empty() && word.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_./=,:+-") ==
+                           std::string::npos)
+    return word;
+  std::string out = "'";
+  for (char c : word) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
 std::string worst_patches(const json& report) {
   if (!report.contains("surface_distance") || !report["surface_distance"].contains("worst_patches")) return "";
   const json& list = report["surface_distance"]["worst_patches"];
   if (!list.is_array() || list.empty()) return "";
   // The built-in default scene is reported as "<default scene>": the command then takes no SCENE.
+  // The run's --set overrides go with it, or the command would inspect another scene.
   std::string scene = text(report, "scene", "SCENE");
-  scene = scene.empty() || scene[0] == '<' ? "" : scene + " ";
+  scene = scene.empty() || scene[0] == '<' ? "" : shell_quoted(scene) + " ";
+  if (report.contains("sets") && report["sets"].is_array())
+    for (const json& set : report["sets"])
+      if (set.is_string()) scene += "--set " + shell_quoted(set.get<std::string>()) + " ";
   std::string out = "<h2>Worst patches (surface distance)</h2>\n<table><tr><th>patch</th><th>distance / diagonal</th>"
                     "<th>look at it</th></tr>\n";
   for (const json& p : list) {
@@ -236,6 +330,20 @@ std::string verify_scene_page(const json& report, const VerifyImages& images, co
           image(images[2], "difference (x8)") +
           image(images[3], "silhouette heat map (yellow: within the limit, red: beyond)") +
           "</div>\n";
+  // The worst coverage mismatch, up close.
+  const json* worst = report.contains("silhouette") && report["silhouette"].contains("worst_pixels")
+                          ? &report["silhouette"]["worst_pixels"] : nullptr;
+  if (worst && worst->is_array() && !worst->empty() && (*worst)[0].is_array() && (*worst)[0].size() >= 2 &&
+      report.contains("width") && report.contains("height") && report["width"].is_number_integer() &&
+      report["height"].is_number_integer()) {
+    const int x = (*worst)[0][0].get<int>(), y = (*worst)[0][1].get<int>();
+    const int w = report["width"].get<int>(), h = report["height"].get<int>();
+    const std::string at = " at pixel " + std::to_string(x) + "," + std::to_string(y);
+    body += "<h2>The worst coverage mismatch, 8 times larger (" + std::to_string(x) + ", " + std::to_string(y) +
+            ": x from the left, y down)</h2>\n<div class=\"images\">\n" +
+            zoomed(images[1], "driver (reference)" + at, x, y, w, h) + zoomed(images[0], "tessref" + at, x, y, w, h) +
+            zoomed(images[2], "difference (x8)" + at, x, y, w, h) + "</div>\n";
+  }
   body += figures(report) + worst_patches(report) + worst_pixels(report) + worst_cracks(report);
   return page("tessref verify: " + scene, body);
 }

@@ -110,6 +110,31 @@ void untrack(const fs::path& temp) {
     }
 }
 
+// Temporaries of `target` (".STEM.tessref-PID-N.EXT" in its folder) whose process is gone: a run
+// killed with SIGKILL (or a machine that went down) had no chance to remove them. Those of live
+// processes are left alone: another run may be writing the same file right now.
+void remove_stale_temporaries(const fs::path& folder, const fs::path& target, const fs::path& extension) {
+  const std::string prefix = "." + target.stem().string() + ".tessref-";
+  std::error_code ec;
+  for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.size() <= prefix.size() + extension.string().size() || name.compare(0, prefix.size(), prefix) != 0 ||
+        it->path().extension() != extension)
+      continue;
+    // PID-N between the prefix and the extension, digits only.
+    const std::string middle = name.substr(prefix.size(), name.size() - prefix.size() - extension.string().size());
+    const std::size_t dash = middle.find('-');
+    if (dash == 0 || dash == std::string::npos || dash + 1 == middle.size() ||
+        middle.find_first_not_of("0123456789-") != std::string::npos || middle.find('-', dash + 1) != std::string::npos)
+      continue;
+    const long pid = std::strtol(middle.substr(0, dash).c_str(), nullptr, 10);
+    if (pid <= 0 || pid == long(getpid())) continue;
+    if (::kill(pid_t(pid), 0) == 0 || errno == EPERM) continue;  // still running (maybe another user's)
+    std::error_code rm;
+    if (it->is_regular_file(rm)) fs::remove(it->path(), rm);
+  }
+}
+
 }  // namespace
 
 OutputFiles::~OutputFiles() {
@@ -161,6 +186,7 @@ fs::path OutputFiles::add(const std::string& option, const fs::path& given) {
   temp_name += std::to_string(entries_.size());
   temp_name += given.extension().string();
   const fs::path temp = folder / temp_name;
+  remove_stale_temporaries(folder, target, given.extension());
   entries_.push_back(Entry{option, target, temp, identity});
   track(temp, target);
   return temp;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <climits>
+#include <cstdlib>
 #include <cmath>
 #include <cstring>
 #include <unordered_map>
@@ -213,6 +214,20 @@ bool ply_header_ends(const std::filesystem::path& path) {
   return false;
 }
 
+// assimp's validation messages in the file's terms: they name its internal structures.
+std::string explained_import_error(const std::string& message) {
+  // "Validation failed: aiMesh::mFaces[F]::mIndices[K] is out of range"
+  const std::string faces = "aiMesh::mFaces[";
+  if (const std::size_t at = message.find(faces); at != std::string::npos && message.ends_with("is out of range")) {
+    const unsigned long face = std::strtoul(message.c_str() + at + faces.size(), nullptr, 10);
+    return "face " + std::to_string(face + 1) + " (counting from 1) names a vertex past the file's vertex list";
+  }
+  if (message.find("contains no faces") != std::string::npos)
+    return "no face could be read (the importer drops a face whose vertex count disagrees with its indices); "
+           "the importer said: " + message;
+  return "the importer (assimp) said: " + message;
+}
+
 }  // namespace
 
 Mesh load_mesh_file(const std::filesystem::path& path, std::vector<std::string>& warnings, bool split_normals) {
@@ -238,9 +253,9 @@ Mesh load_mesh_file(const std::filesystem::path& path, std::vector<std::string>&
     try {
       scene = step();
     } catch (const std::exception& e) {
-      fail(std::string("cannot be read: ") + e.what());
+      fail("cannot be read: " + explained_import_error(e.what()));
     }
-    if (!scene) fail(std::string("cannot be read: ") + importer.GetErrorString());
+    if (!scene) fail("cannot be read: " + explained_import_error(importer.GetErrorString()));
   };
   run([&] { return importer.ReadFile(name, aiProcess_ValidateDataStructure); });
   // assimp 5.2.5's triangulation aborts the process (an ai_assert that Debian's build keeps) on a

@@ -71,16 +71,45 @@ std::string trim(std::string s) {
   return s;
 }
 
+// A function's GLSL name from glslang's mangled one ("f(f1;" -> "f").
+std::string unmangled(const std::string& mangled) { return trim(mangled.substr(0, mangled.find('('))); }
+
+// glslang's terse messages with what they mean for a GL program. `next` is the log's next line
+// (glslang lists a recursion's calls there, unprefixed).
+std::string explained(std::string message, const std::string& next) {
+  if (message.ends_with("Recursion detected:")) {
+    const std::size_t calling = next.find(" calling ");
+    message.pop_back();  // the colon
+    message += calling == std::string::npos
+                   ? ": a function calls itself, directly or through other functions"
+                   : ": " + unmangled(next.substr(0, calling)) + "() calls " + unmangled(next.substr(calling + 9)) +
+                         "(), and the calls lead back to it";
+    return message + "; GLSL forbids recursion (GLSL 4.60, section 6.1.2)";
+  }
+  if (message.find("requires SPIR-V 1.3") != std::string::npos)
+    return trim(message) + ": tessref compiles GLSL for OpenGL 4.5 (SPIR-V 1.0), which has no subgroup "
+                           "operations (GL_KHR_shader_subgroup_*)";
+  if (message.find("-- expected newline") != std::string::npos)
+    return trim(message) + " (the directive has more on its line than GLSL allows: only a comment may follow it)";
+  return message;
+}
+
 void add_log_errors(const char* log, const std::vector<ShaderSource>& sources,
                     const std::string& file, std::vector<std::string>& errors) {
-  std::istringstream lines(log);
-  for (std::string line; std::getline(lines, line);) {
+  std::vector<std::string> all;
+  {
+    std::istringstream in(log);
+    for (std::string line; std::getline(in, line);) all.push_back(line);
+  }
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const std::string& line = all[i];
     std::string message;
     for (const char* prefix : {"ERROR: ", "INTERNAL ERROR: ", "UNIMPLEMENTED: "})
       if (line.starts_with(prefix)) message = line.substr(std::string_view(prefix).size());
     if (message.empty() || message.find("compilation errors.") != std::string::npos ||
         message.find("compilation terminated") != std::string::npos)
       continue;
+    message = explained(message, i + 1 < all.size() ? all[i + 1] : std::string());
     std::string located;
     for (const ShaderSource& s : sources) {
       if (!message.starts_with(s.file + ":")) continue;

@@ -96,6 +96,7 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
   const Reference ref = load_reference(reference);
   nlohmann::json j;
   j["scene"] = scene.source;
+  j["sets"] = sets;  // the --set overrides: the report's commands must name the same scene
   j["reference"] = reference;
   j["driver"] = ref.manifest.value("gl_renderer", std::string("unknown driver"));
   j["driver_version"] = ref.manifest.value("gl_version", std::string());
@@ -263,10 +264,13 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
     nlohmann::json buckets = nlohmann::json::object();
     for (std::size_t b = 0; b < s.by_distance.size(); ++b)
       if (s.by_distance[b]) buckets[kSilhouetteBuckets[b]] = s.by_distance[b];
+    nlohmann::json worst = nlohmann::json::array();  // [x, y, distance in pixels], farthest first
+    for (const auto& [x, y] : s.worst_pixels)
+      worst.push_back({x, y, s.distance[std::size_t(y) * std::size_t(ref.depth.width) + std::size_t(x)]});
     j["silhouette"] = {{"examined", true}, {"covered_reference", s.covered_reference}, {"covered_rays", s.covered_rays},
                        {"mismatched", s.mismatched}, {"beyond_limit", beyond}, {"max_distance_px", s.max_distance},
                        {"by_distance_px", buckets}, {"silhouette_edges", s.silhouette_edges},
-                       {"worst_pixels", s.worst_pixels}};
+                       {"worst_pixels", worst}};
     if (beyond) {
       failures.push_back(std::to_string(beyond) + " coverage mismatches farther than " +
                          std::to_string(limits.silhouette_px).substr(0, 3) + " px from the silhouette (worst at pixel " +

@@ -1,8 +1,10 @@
 // The built `tessref render` binary: exit codes and messages for good and bad input.
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -387,6 +389,28 @@ TEST_F(Cli, DumpOnASmallFileSystemKeepsRoomOnlyForTheImagesWrittenThere) {
 // Issue 24, defects 5 and 6: a PNG cut short by a full file system is named as such, with the
 // target's name (not its hidden temporary) and without libpng's own "IDAT: Read error" line, and
 // nothing is left behind.
+// Issue 24, defect 6: a run killed with SIGKILL leaves its hidden temporary; the next run writing
+// the same target removes it, and leaves alone one whose process is still running and files that
+// only look alike.
+TEST_F(Cli, TemporariesOfKilledRunsAreRemovedByTheNextRun) {
+  TempDir dir;
+  pid_t dead = fork();  // a process id that is certainly gone
+  if (dead == 0) _exit(0);
+  waitpid(dead, nullptr, 0);
+  const std::string stale = ".x.tessref-" + std::to_string(dead) + "-0.png";
+  const std::string live = ".x.tessref-" + std::to_string(getppid()) + "-0.png";  // the shell or ctest: running
+  const std::string other = ".y.tessref-" + std::to_string(dead) + "-0.png";  // another target's
+  for (const std::string& name : {stale, live, std::string(".x.tessref-notapid-0.png"), other})
+    dir.write(name, "half an image");
+  const CliRun r = run("render -o " + (dir.path() / "x.png").string() + " --set image.width=16 --set image.height=16");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / stale));
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / live));
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / ".x.tessref-notapid-0.png"));
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / other));
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "x.png"));
+}
+
 TEST_F(Cli, AFullFileSystemIsNamedAndLeavesNothing) {
   if (!test::can_mount_small_file_systems())
     GTEST_SKIP() << "unprivileged user namespaces are off here: no small file system to mount";
@@ -400,6 +424,31 @@ TEST_F(Cli, AFullFileSystemIsNamedAndLeavesNothing) {
   EXPECT_THAT(r.output, HasSubstr("status 2\n0\n"));  // exit 2, and no file left
   EXPECT_THAT(r.output, ::testing::Not(HasSubstr("libpng")));
   EXPECT_THAT(r.output, ::testing::Not(HasSubstr(".tessref-")));
+}
+
+// Issue 24, defect 8: on a terminal (script(1) gives the run one), a render that takes more than a
+// second shows a progress line, redrawn at most five times a second and only when it changes,
+// then clears it before the summary.
+TEST_F(Cli, ProgressLineOnATerminal) {
+  if (std::system("script --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "script(1) is not installed";
+  TempDir dir;
+  const auto t0 = std::chrono::steady_clock::now();
+  const CliRun r = test::run_command("script -qec '" + kBinary + " render --repeat 4 --set shaders.program=twins -o " +
+                                    (dir.path() / "x.png").string() + "' /dev/null");
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  if (seconds < 1.5) GTEST_SKIP() << "the render took " << seconds << " s: too fast for a progress line";
+  std::size_t lines = 0;
+  for (std::size_t at = r.output.find("rendering ["); at != std::string::npos; at = r.output.find("rendering [", at + 1))
+    ++lines;
+  EXPECT_GE(lines, 1u) << r.output;
+  EXPECT_LE(double(lines), 5.0 * seconds + 1.0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("%  "));  // the share, then the time so far
+  // Cleared (overwritten with blanks) before the summary, and not drawn again after it.
+  const std::size_t summary = r.output.find("tessref render: ");
+  ASSERT_NE(summary, std::string::npos) << r.output;
+  EXPECT_EQ(r.output.rfind("\r", summary), summary - 1) << r.output;
+  EXPECT_EQ(r.output.find("rendering [", summary), std::string::npos) << r.output;
 }
 
 // Issue 11, defect 11: what a new user looks for.

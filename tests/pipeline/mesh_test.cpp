@@ -266,6 +266,28 @@ TEST(Mesh, CoordinatesTooLargeForSinglePrecision) {
                            "precision (coordinates up to 5e+36); scale the mesh down (below 1e18)");
 }
 
+// Issue 24, defect 5: assimp's validation messages are put in the file's terms.
+TEST(MeshLoader, ImporterMessagesNameTheFace) {
+  TempDir dir;
+  std::vector<std::string> warnings;
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                             "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  try {
+    load_mesh_file(dir.write("past.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"), warnings);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("past.ply: cannot be read: face 1 (counting from 1) names a vertex past the "
+                                    "file's vertex list"));
+  }
+  try {
+    load_mesh_file(dir.write("none.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n300 0 1 2\n"), warnings);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("none.off: cannot be read: no face could be read (the importer drops a face whose "
+                                    "vertex count disagrees with its indices)"));
+  }
+}
+
 // A NaN coordinate is named even when it is the only thing wrong (assimp's vertex joining would
 // have merged it into another vertex), and a needle triangle's tip still gets a normal.
 TEST(MeshLoader, NaNVertexIsNamedAndNeedleTipsGetNormals) {

@@ -49,9 +49,10 @@ struct CliRun {
   std::string output;  // stdout and stderr
 };
 
-inline CliRun run_cli(const std::string& args) {
+// Any shell command: exit status and stdout + stderr.
+inline CliRun run_command(const std::string& command) {
   CliRun r;
-  FILE* pipe = popen((kBinary + " " + args + " 2>&1").c_str(), "r");
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
   if (!pipe) return r;
   std::array<char, 4096> buf;
   for (std::size_t n; (n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0;) r.output.append(buf.data(), n);
@@ -59,6 +60,8 @@ inline CliRun run_cli(const std::string& args) {
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   return r;
 }
+
+inline CliRun run_cli(const std::string& args) { return run_command(kBinary + " " + args); }
 
 // Whether this machine lets an unprivileged process mount a file system in a user namespace (the
 // small or full file systems below need it).
@@ -72,14 +75,7 @@ inline CliRun run_on_small_file_system(const std::filesystem::path& mnt, const s
   const std::string whole = "mount -t tmpfs -o size=" + size + " tmpfs '" + mnt.string() + "' && " + script;
   std::string quoted;  // for sh -c '...'
   for (char c : whole) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  CliRun r;
-  FILE* pipe = popen(("unshare -rm sh -c '" + quoted + "' 2>&1").c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf;
-  for (std::size_t n; (n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0;) r.output.append(buf.data(), n);
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  return r;
+  return run_command("unshare -rm sh -c '" + quoted + "'");
 }
 
 inline std::string read_file(const std::filesystem::path& p) {

@@ -399,6 +399,26 @@ TEST(GlslCompile, SyntaxErrorNamesTheUsersLine) {
             "s.shader_test:22: error: 'undeclared' : undeclared identifier");
 }
 
+// Issue 24, defect 5: glslang's terse messages say what they mean for a GL program.
+TEST(GlslCompile, TerseCompilerMessagesAreExplained) {
+  const char* recursive =
+      "#version 450\nout vec4 c;\nfloat g(float x);\nfloat f(float x) { return g(x); }\n"
+      "float g(float x) { return f(x); }\nvoid main() { c = vec4(f(1.0)); }\n";
+  EXPECT_THAT(error_of({{Stage::Vertex, "r.vert", 1, kPassThroughVertex}, {Stage::Fragment, "r.frag", 1, recursive}}),
+              AllOf(HasSubstr("r.frag: error: link error: fragment shader: Recursion detected: "),
+                    HasSubstr("() calls "), HasSubstr("(), and the calls lead back to it; GLSL forbids recursion")));
+  const char* subgroup =
+      "#version 450\n#extension GL_KHR_shader_subgroup_ballot : require\nout vec4 c;\n"
+      "void main() { c = vec4(subgroupBallot(true)); }\n";
+  EXPECT_THAT(error_of({{Stage::Vertex, "s.vert", 1, kPassThroughVertex}, {Stage::Fragment, "s.frag", 1, subgroup}}),
+              HasSubstr("s.frag:4: error: 'subgroup op' : requires SPIR-V 1.3: tessref compiles GLSL for OpenGL 4.5 "
+                        "(SPIR-V 1.0), which has no subgroup operations"));
+  const char* tokens = "#version 450 core foo\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n";
+  EXPECT_THAT(error_of({{Stage::Vertex, "t.vert", 1, kPassThroughVertex}, {Stage::Fragment, "t.frag", 1, tokens}}),
+              HasSubstr("t.frag:1: error: '#version' : bad tokens following profile -- expected newline (the "
+                        "directive has more on its line than GLSL allows: only a comment may follow it)"));
+}
+
 TEST(GlslCompile, ErrorsOfSeveralShadersAreAllReported) {
   const char* bad_vertex = "#version 450\nvoid main() { gl_Position = 1 +; }\n";
   const char* bad_fragment = "#version 450\nvoid main() {\n  nothing();\n}\n";

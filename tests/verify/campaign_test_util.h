@@ -28,7 +28,9 @@ inline void write_fake_report(const std::filesystem::path& folder, const std::st
                                                                           "(limit 1e-05; worst: patch 17)"});
   j["warnings"] = nlohmann::json::array();
   j["diagonal"] = 3.25;
-  j["tessellation"] = {{"patches", 256}, {"patches_mismatched", 0}, {"emitted_vertices", 194304}};
+  j["sets"] = nlohmann::json::array({"tessellation.inner=7", "camera.eye=0,1,4"});
+  j["tessellation"] = {{"patches", 256}, {"patches_mismatched", 0}, {"emitted_vertices", 194304},
+                       {"first_mismatched_patch", -1}};
   j["surface_distance"] = {{"hausdorff_of_diagonal", pass ? 6.25e-8 : 2e-5},
                            {"worst_patches", {{{"patch", 17}, {"distance_of_diagonal", 2e-5}},
                                               {{"patch", 4}, {"distance_of_diagonal", 1e-6}}}}};

@@ -54,9 +54,15 @@ TEST_F(VerifyHtml, ScenePageHasVerdictFiguresPatchesAndImages) {
   const std::string page = test::read_file(site() + "/beta.html");
   EXPECT_THAT(page, HasSubstr("class=\"fail\">FAIL"));
   EXPECT_THAT(page, HasSubstr("Hausdorff distance 2e-05 of the diagonal"));
-  EXPECT_THAT(page, HasSubstr("tessref inspect scenes/beta.json --patch 17"));
-  EXPECT_THAT(page, HasSubstr("hausdorff_of_diagonal"));
-  EXPECT_EQ(count(page, "src=\"data:image/png;base64,iVBOR"), 4u);  // PNG's signature, base64
+  // Issue 24, defect 7: the commands keep the run's --set overrides; figures are named in words
+  // (the key in the tooltip), "no such patch" is "none"; worst pixels have their distances; the
+  // worst pixel is shown 8 times larger (three more copies of the images).
+  EXPECT_THAT(page, HasSubstr("tessref inspect scenes/beta.json --set tessellation.inner=7 --set camera.eye=0,1,4 --patch 17"));
+  EXPECT_THAT(page, HasSubstr("<td title=\"hausdorff_of_diagonal\">Hausdorff distance / diagonal</td>"));
+  EXPECT_THAT(page, HasSubstr("first patch whose gl_TessCoord differ</td><td class=\"num\">none</td>"));
+  EXPECT_THAT(page, HasSubstr("<td class=\"num\">12</td><td class=\"num\">40</td><td class=\"num\">0.25</td>"));
+  EXPECT_THAT(page, HasSubstr("The worst coverage mismatch, 8 times larger (12, 40"));
+  EXPECT_EQ(count(page, "src=\"data:image/png;base64,iVBOR"), 7u);  // PNG's signature, base64
   EXPECT_EQ(page.find("<script"), std::string::npos);
   EXPECT_EQ(page.find("http"), std::string::npos) << "no network";
 }
