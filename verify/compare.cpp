@@ -319,9 +319,10 @@ TessComparison compare_tess(const std::vector<TessDumpRecord>& reference_emitted
         continue;
       }
       emitted[it->second] = 1;
-      if (finite_differs(r, *m)) {
+      if (finite_differs(r, *m)) {  // counted apart; an infinite distance would only hide which
         ++c.nonfinite_records;
         if (c.first_nonfinite_patch < 0) c.first_nonfinite_patch = patch;
+        continue;
       }
       const double distance = glm::length(glm::dvec3(r.position) - glm::dvec3(m->position));
       if (distance > c.max_position_distance) c.max_position_distance = distance, c.worst_distance_patch = patch;

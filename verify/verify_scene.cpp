@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 #include <iterator>
+#include <limits>
 #include <memory>
 
 #include "common/error.h"
@@ -86,6 +87,24 @@ nlohmann::json without_folders(nlohmann::json scene) {
       for (auto& [name, t] : s["textures"].items()) name_only(t.is_object() && t.contains("path") ? t["path"] : t);
   }
   return scene;
+}
+
+// The records of the patches whose positions are all finite (`records` itself when every one
+// is): a NaN corner has no distance to anything, and an infinite maximum would leave the report's
+// figures null. Those patches fail on their own (nonfinite_records, or their coordinates).
+const std::vector<TessDumpRecord>& finite_patches(const std::vector<TessDumpRecord>& records,
+                                                  std::vector<TessDumpRecord>& copy) {
+  const auto finite = [](const TessDumpRecord& r) {
+    return std::isfinite(r.position.x) && std::isfinite(r.position.y) && std::isfinite(r.position.z);
+  };
+  if (std::all_of(records.begin(), records.end(), finite)) return records;
+  std::vector<std::uint32_t> bad;
+  for (const TessDumpRecord& r : records)
+    if (!finite(r)) bad.push_back(r.patch_id);
+  std::sort(bad.begin(), bad.end());
+  std::copy_if(records.begin(), records.end(), std::back_inserter(copy),
+               [&](const TessDumpRecord& r) { return !std::binary_search(bad.begin(), bad.end(), r.patch_id); });
+  return copy;
 }
 
 // A record or digest of a patch past the last one tessref tessellated: the driver numbered its
@@ -282,7 +301,9 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
   const SurfaceOracle mine_oracle(mine);
   // Two-sided distance between the surfaces.
   if (tessellated && !mine.indices.empty()) {
-    const TessSurface theirs = of_draws ? captured_triangles(ref.tess, drawn.triangle_patch) : TessSurface::from_emitted(ref.tess);
+    std::vector<TessDumpRecord> finite_copy;
+    const std::vector<TessDumpRecord>& finite = finite_patches(ref.tess, finite_copy);
+    const TessSurface theirs = of_draws ? captured_triangles(finite, drawn.triangle_patch) : TessSurface::from_emitted(finite);
     const SurfaceOracle their_oracle(theirs);
     const SurfaceDistance d = surface_distance(
         theirs, their_oracle, mine, mine_oracle, parallel,
@@ -394,7 +415,8 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
   j["pass"] = failures.empty();
   j["failures"] = failures;
   j["warnings"] = warnings;
-  j["severity"] = severity;
+  // JSON has no infinity (it would be written as null, and campaigns sort by this figure).
+  j["severity"] = std::isfinite(severity) ? severity : std::numeric_limits<double>::max();
   out.report = std::move(j);
   out.difference = difference_image(ref.color, out.tessref);
   if (s.distance.empty()) s.distance.assign(ref.depth.pixels.size(), -1.0f);  // not examined
