@@ -151,6 +151,11 @@ void add_verify_command(CLI::App& app) {
                   "largest Hausdorff distance and position difference, as a share of the bounding-box diagonal")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
+  cmd->add_option("--max-normal", args->limits.max_normal,
+                  "largest normal difference at the same patch and gl_TessCoord, relative to the longer normal "
+                  "(mesh scenes; 2 is a flipped normal)")
+      ->check(CLI::Range(0.0, 2.0))
+      ->capture_default_str();
   cmd->add_option("--silhouette-px", args->limits.silhouette_px,
                   "a coverage mismatch whose pixel centre is farther than this from the silhouette fails")
       ->check(CLI::Range(0.0, 1e6))

@@ -1,6 +1,7 @@
 #include "verify/compare.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -34,10 +35,79 @@ std::size_t ulp_bucket(std::uint32_t d) {
   return std::min<std::size_t>(k, UlpHistogram().size() - 1);
 }
 
+// A component finite on one side and not on the other: NaN and infinity compare false with any
+// limit, so a distance cannot be trusted to see them.
+bool finite_differs(const TessDumpRecord& a, const TessDumpRecord& b) {
+  for (int k = 0; k < 3; ++k)
+    if (std::isfinite(a.position[k]) != std::isfinite(b.position[k]) ||
+        std::isfinite(a.normal[k]) != std::isfinite(b.normal[k]))
+      return true;
+  return false;
+}
+
+// Relative to the longer normal, so that the figure does not depend on whether a shader
+// normalizes: a flipped normal gives 2, one scaled by 2 gives 0.5.
+double normal_difference(const glm::vec3& a, const glm::vec3& b) {
+  const double longer = std::max(glm::length(glm::dvec3(a)), glm::length(glm::dvec3(b)));
+  if (!(longer > 0.0)) return 0.0;  // both zero, or not finite (finite_differs counts those)
+  const double d = glm::length(glm::dvec3(a) - glm::dvec3(b)) / longer;
+  return std::isfinite(d) ? d : 0.0;
+}
+
 std::uint64_t coord_key(const glm::vec3& c) {
   // gl_TessCoord on triangles: (u, v) fix w; the key keeps all three for other domains' z.
   const std::uint64_t u = std::bit_cast<std::uint32_t>(c.x), v = std::bit_cast<std::uint32_t>(c.y);
   return (u << 32 | v) ^ (std::uint64_t(std::bit_cast<std::uint32_t>(c.z)) * 0x9E3779B97F4A7C15ull);
+}
+
+}  // namespace
+
+namespace {
+
+std::string size_text(int width, int height) { return std::to_string(width) + "x" + std::to_string(height); }
+
+// Each image against the size the manifest's scene renders, so that the message names the file
+// that is wrong; a capture whose manifest has no size (hand-made) compares depth.exr with color.png.
+void check_image_sizes(const std::filesystem::path& dir, const Reference& r) {
+  int width = r.color.width, height = r.color.height;
+  std::string whose = "color.png";
+  const nlohmann::json& scene = r.manifest.contains("scene") ? r.manifest["scene"] : nlohmann::json();
+  if (scene.is_object() && scene.contains("image") && scene["image"].is_object() &&
+      scene["image"].value("width", nlohmann::json()).is_number_integer() &&
+      scene["image"].value("height", nlohmann::json()).is_number_integer()) {
+    width = scene["image"]["width"].get<int>();
+    height = scene["image"]["height"].get<int>();
+    whose = "the scene in manifest.json";
+  }
+  const auto check = [&](const char* file, int w, int h) {
+    if (w != width || h != height)
+      throw InputError((dir / file).string() + ": the image is " + size_text(w, h) + ", " + whose + " is " +
+                       size_text(width, height));
+  };
+  check("color.png", r.color.width, r.color.height);
+  check("depth.exr", r.depth.width, r.depth.height);
+}
+
+// A manifest's count that is not the file's: the file was cut short (at a record boundary, which
+// reading cannot see) or edited. Captures made before the counts existed are not checked.
+void check_count(const std::filesystem::path& dir, const char* file, std::uint64_t held, const char* key,
+                 const nlohmann::json& manifest) {
+  const nlohmann::json expected = manifest.value(key, nlohmann::json());
+  if (!expected.is_number_unsigned() && !expected.is_number_integer()) return;
+  if (expected.get<std::int64_t>() != std::int64_t(held))
+    throw InputError((dir / file).string() + ": holds " + std::to_string(held) + " records, manifest.json's " + key +
+                     " is " + expected.dump() + " (the file was cut short or edited)");
+}
+
+void check_record_counts(const std::filesystem::path& dir, const Reference& r) {
+  std::error_code ec;
+  if (std::filesystem::exists(dir / "tess.bin", ec))
+    check_count(dir, "tess.bin", r.tess.size(), "tess_records_stored", r.manifest);
+  if (!r.digests.empty()) {
+    std::uint64_t emitted = 0;
+    for (const TessPatchDigest& d : r.digests) emitted += d.emitted;
+    check_count(dir, "tess_patches.bin", emitted, "tess_records", r.manifest);
+  }
 }
 
 }  // namespace
@@ -60,11 +130,14 @@ Reference load_reference(const std::filesystem::path& dir) {
   r.manifest = read_json_file(manifest, "capture manifest");
   r.color = read_rgb8_image(dir / "color.png");
   r.depth = read_float_image(dir / "depth.exr");
-  if (r.depth.channels != 1 || r.depth.width != r.color.width || r.depth.height != r.color.height)
-    throw InputError((dir / "depth.exr").string() + ": expected one channel the size of color.png");
+  if (r.depth.channels != 1)
+    throw InputError((dir / "depth.exr").string() + ": expected one channel (window-space depth), got " +
+                     std::to_string(r.depth.channels));
+  check_image_sizes(dir, r);
   if (std::filesystem::exists(dir / "tess.bin", ec)) r.tess = read_tess_dump((dir / "tess.bin").string());
   if (std::filesystem::exists(dir / "tess_patches.bin", ec))
     r.digests = read_patch_digests((dir / "tess_patches.bin").string());
+  check_record_counts(dir, r);
   const nlohmann::json stride = r.manifest.value("tess_patch_stride", nlohmann::json(1));
   if (!stride.is_number_integer() || stride.get<std::int64_t>() <= 0 || stride.get<std::int64_t>() > INT32_MAX)
     throw InputError(manifest.string() + ": tess_patch_stride must be a positive integer, got " + stride.dump());
@@ -122,6 +195,65 @@ std::vector<std::uint32_t> emission_order_differs(const std::vector<TessDumpReco
     if (!same) differ.push_back(patch);
   }
   return differ;
+}
+
+namespace {
+
+// A triangle as the bits of its three gl_TessCoord values, rotated so that the smallest comes
+// first: the same triangle from any first vertex gives one key, and the reversed triangle the key
+// with its last two swapped.
+using CoordBits = std::array<std::uint32_t, 3>;
+using TriangleKey = std::array<CoordBits, 3>;
+
+CoordBits coord_bits(const glm::vec3& c) {
+  return {std::bit_cast<std::uint32_t>(c.x), std::bit_cast<std::uint32_t>(c.y), std::bit_cast<std::uint32_t>(c.z)};
+}
+
+TriangleKey rotated(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+  TriangleKey k{coord_bits(a), coord_bits(b), coord_bits(c)};
+  std::rotate(k.begin(), std::min_element(k.begin(), k.end()), k.end());
+  return k;
+}
+
+// tessref's triangles of one patch, sorted for lookups.
+std::vector<TriangleKey> patch_triangles(const std::vector<TessDumpRecord>& points, const std::vector<std::uint32_t>& indices,
+                                         std::pair<std::size_t, std::size_t> range) {
+  std::vector<TriangleKey> keys;
+  for (std::size_t t = range.first; t + 2 < range.second; t += 3)
+    keys.push_back(rotated(points[indices[t]].tess_coord, points[indices[t + 1]].tess_coord,
+                           points[indices[t + 2]].tess_coord));
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
+}  // namespace
+
+WindingDifference winding_differs(const std::vector<TessDumpRecord>& reference_emitted,
+                                  const std::vector<TessDumpRecord>& points, const std::vector<std::uint32_t>& indices,
+                                  const std::function<bool(std::uint32_t)>& triangles) {
+  const auto ranges = emitted_ranges(points, indices);
+  WindingDifference w;
+  for (std::size_t i = 0; i < reference_emitted.size();) {
+    const std::uint32_t patch = reference_emitted[i].patch_id;
+    const std::size_t begin = i;
+    while (i < reference_emitted.size() && reference_emitted[i].patch_id == patch) ++i;
+    const auto it = ranges.find(patch);
+    if (it == ranges.end() || !triangles(patch)) continue;
+    const std::vector<TriangleKey> mine = patch_triangles(points, indices, it->second);
+    const auto has = [&](const TriangleKey& k) { return std::binary_search(mine.begin(), mine.end(), k); };
+    std::size_t reversed = 0;
+    for (std::size_t t = begin; t + 2 < i; t += 3) {
+      const glm::vec3 &a = reference_emitted[t].tess_coord, &b = reference_emitted[t + 1].tess_coord,
+                      &c = reference_emitted[t + 2].tess_coord;
+      // A degenerate triangle (two equal coordinates) has the same key both ways: found first.
+      if (!has(rotated(a, b, c)) && has(rotated(a, c, b))) ++reversed;
+    }
+    if (!reversed) continue;
+    if (w.patches.empty()) w.first_patch_triangles = reversed, w.first_patch_total = (i - begin) / 3;
+    w.patches.push_back(patch);
+    w.triangles += reversed;
+  }
+  return w;
 }
 
 std::vector<std::uint32_t> compare_digests(const std::vector<TessPatchDigest>& reference,
@@ -187,8 +319,15 @@ TessComparison compare_tess(const std::vector<TessDumpRecord>& reference_emitted
         continue;
       }
       emitted[it->second] = 1;
+      if (finite_differs(r, *m)) {  // counted apart; an infinite distance would only hide which
+        ++c.nonfinite_records;
+        if (c.first_nonfinite_patch < 0) c.first_nonfinite_patch = patch;
+        continue;
+      }
       const double distance = glm::length(glm::dvec3(r.position) - glm::dvec3(m->position));
       if (distance > c.max_position_distance) c.max_position_distance = distance, c.worst_distance_patch = patch;
+      const double normal = normal_difference(r.normal, m->normal);
+      if (normal > c.max_normal_difference) c.max_normal_difference = normal, c.worst_normal_patch = patch;
       for (int k3 = 0; k3 < 3; ++k3) {
         const std::uint32_t dp = ulp_distance(r.position[k3], m->position[k3]);
         const std::uint32_t dn = ulp_distance(r.normal[k3], m->normal[k3]);

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -30,7 +31,10 @@ struct Reference {
   std::uint32_t patch_stride = 1;
   bool sampled(std::uint32_t patch) const { return patch % patch_stride == 0; }
 };
-Reference load_reference(const std::filesystem::path& dir);  // InputError naming what is missing
+// InputError naming what is missing, and the file at fault when the files disagree: an image of
+// another size than the manifest's scene, a tess.bin or tess_patches.bin whose record count is not
+// the manifest's (a file cut short or edited).
+Reference load_reference(const std::filesystem::path& dir);
 
 // ULP distance buckets: 0, 1, 2, 3-4, 5-8, ..., 2^(k-2)+1 .. 2^(k-1), and the last for the rest.
 using UlpHistogram = std::array<std::uint64_t, 14>;
@@ -48,6 +52,15 @@ struct TessComparison {
   std::int64_t worst_position_patch = -1;  // the patch of max_position_ulp
   std::int64_t worst_distance_patch = -1;  // the patch of max_position_distance
   double max_position_distance = 0.0;  // world units, at matched coordinates
+  // |n_driver - n_tessref| / max(|n_driver|, |n_tessref|) at matched coordinates: 2 for a flipped
+  // normal, 0.5 for one scaled by 2; 0 where both are zero.
+  double max_normal_difference = 0.0;
+  std::int64_t worst_normal_patch = -1;
+  // Matched records where a position or normal component is finite on one side only (a NaN or an
+  // infinity the driver wrote where tessref has a number, or the reverse): the distances above
+  // cannot see them.
+  std::uint64_t nonfinite_records = 0;
+  std::int64_t first_nonfinite_patch = -1;
   bool coords_identical() const { return patches_mismatched == 0; }
 };
 // Patch by patch: every gl_TessCoord the driver emitted must be one tessref generated, bit for
@@ -73,6 +86,22 @@ std::vector<EmittedCountDifference> emitted_counts_differ(const std::vector<Tess
 std::vector<std::uint32_t> emission_order_differs(const std::vector<TessDumpRecord>& reference_emitted,
                                                   const std::vector<TessDumpRecord>& points,
                                                   const std::vector<std::uint32_t>& indices);
+
+// Triangles the driver emitted wound the other way round than tessref's same triangle (the same
+// three gl_TessCoord values, bit for bit, in reversed cyclic order). The order of the triangles and
+// the first vertex of each are the implementation's, but the orientation in the domain is fixed by
+// the evaluation shader's cw/ccw layout (GL 4.6, 11.2.2.1). Only patches for which
+// `triangles(patch)` holds are examined (lines and points have no winding), and only triangles
+// tessref also generated (others are coordinate mismatches).
+struct WindingDifference {
+  std::uint64_t triangles = 0;           // reversed, in all patches
+  std::vector<std::uint32_t> patches;    // with a reversed triangle, in stream order
+  std::size_t first_patch_triangles = 0; // reversed ones in patches[0]
+  std::size_t first_patch_total = 0;     // triangles of patches[0] in the capture
+};
+WindingDifference winding_differs(const std::vector<TessDumpRecord>& reference_emitted,
+                                  const std::vector<TessDumpRecord>& points, const std::vector<std::uint32_t>& indices,
+                                  const std::function<bool(std::uint32_t)>& triangles);
 
 // The patches whose digests differ (count or distinct coordinates), or that only one side has.
 std::vector<std::uint32_t> compare_digests(const std::vector<TessPatchDigest>& reference,

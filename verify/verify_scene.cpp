@@ -4,7 +4,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iterator>
+#include <limits>
 #include <memory>
 
 #include "common/error.h"
@@ -85,6 +87,63 @@ nlohmann::json without_folders(nlohmann::json scene) {
       for (auto& [name, t] : s["textures"].items()) name_only(t.is_object() && t.contains("path") ? t["path"] : t);
   }
   return scene;
+}
+
+// The records of the patches whose positions are all finite (`records` itself when every one
+// is): a NaN corner has no distance to anything, and an infinite maximum would leave the report's
+// figures null. Those patches fail on their own (nonfinite_records, or their coordinates).
+const std::vector<TessDumpRecord>& finite_patches(const std::vector<TessDumpRecord>& records,
+                                                  std::vector<TessDumpRecord>& copy) {
+  const auto finite = [](const TessDumpRecord& r) {
+    return std::isfinite(r.position.x) && std::isfinite(r.position.y) && std::isfinite(r.position.z);
+  };
+  if (std::all_of(records.begin(), records.end(), finite)) return records;
+  std::vector<std::uint32_t> bad;
+  for (const TessDumpRecord& r : records)
+    if (!finite(r)) bad.push_back(r.patch_id);
+  std::sort(bad.begin(), bad.end());
+  std::copy_if(records.begin(), records.end(), std::back_inserter(copy),
+               [&](const TessDumpRecord& r) { return !std::binary_search(bad.begin(), bad.end(), r.patch_id); });
+  return copy;
+}
+
+// A record or digest of a patch past the last one tessref tessellated: the driver numbered its
+// primitives otherwise (gl_PrimitiveID), or the file was edited.
+std::uint64_t check_patch_range(const Reference& ref, const std::vector<TessDumpRecord>& mine,
+                                std::vector<std::string>& failures) {
+  std::uint64_t count = 0;
+  for (const TessDumpRecord& r : mine) count = std::max<std::uint64_t>(count, std::uint64_t(r.patch_id) + 1);
+  std::uint64_t beyond = 0;
+  std::uint32_t first = 0;
+  const auto check = [&](std::uint32_t patch) {
+    if (patch < count) return;
+    if (!beyond++) first = patch;
+  };
+  for (const TessDumpRecord& r : ref.tess) check(r.patch_id);
+  const std::uint64_t records = beyond;
+  for (const TessPatchDigest& d : ref.digests) check(d.patch_id);
+  if (!beyond) return 0;
+  const std::string tessellated = count ? "patches 0 to " + std::to_string(count - 1) : "no patch";
+  failures.push_back(std::to_string(records) + " records of tess.bin and " + std::to_string(beyond - records) +
+                     " digests of tess_patches.bin name a patch the scene does not have (first: patch " +
+                     std::to_string(first) + "; tessref tessellated " + tessellated + ")");
+  return beyond;
+}
+
+// Triangles wound the other way round than tessref's (compare.h winding_differs): a failure, as
+// the cw/ccw layout fixes the orientation.
+std::uint64_t check_winding(const std::vector<TessDumpRecord>& reference, const std::vector<TessDumpRecord>& mine,
+                   const std::vector<std::uint32_t>& emitted, const std::function<bool(std::uint32_t)>& triangles,
+                   nlohmann::json& report, std::vector<std::string>& failures) {
+  const WindingDifference w = winding_differs(reference, mine, emitted, triangles);
+  report["winding_differs_patches"] = w.patches.size();
+  report["winding_differs_triangles"] = w.triangles;
+  if (w.patches.empty()) return 0;
+  failures.push_back(std::to_string(w.triangles) + " triangles in " + std::to_string(w.patches.size()) +
+                     " patches are wound the other way round than tessref's (first: patch " +
+                     std::to_string(w.patches[0]) + ", " + std::to_string(w.first_patch_triangles) + " of its " +
+                     std::to_string(w.first_patch_total) + " triangles; the cw/ccw layout fixes the orientation)");
+  return w.triangles;
 }
 
 }  // namespace
@@ -178,6 +237,9 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
                          {"max_position_ulp", t.max_position_ulp}, {"worst_position_patch", t.worst_position_patch},
                          {"max_normal_ulp", t.max_normal_ulp}, {"max_position_difference_of_diagonal", position},
                          {"patch_stride", ref.patch_stride}, {"records_compared", ref.tess.size()}};
+    j["tessellation"]["max_normal_difference"] = t.max_normal_difference;
+    j["tessellation"]["worst_normal_patch"] = t.worst_normal_patch;
+    j["tessellation"]["nonfinite_records"] = t.nonfinite_records;
     // Order is the implementation's choice: reported, not failed.
     const std::vector<std::uint32_t> order = emission_order_differs(ref.tess, my_records, my_emitted);
     std::size_t compared = 0;
@@ -185,6 +247,31 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
     j["tessellation"]["order_compared_patches"] = compared;
     j["tessellation"]["order_differs_patches"] = order.size();
     j["tessellation"]["first_order_differs_patch"] = order.empty() ? -1 : std::int64_t(order.front());
+    // Each a failure whatever its size: severity above 1.
+    if (const std::uint64_t n = check_patch_range(ref, my_records, failures)) rate(1.0 + double(n), 1.0);
+    const auto triangles = [&](std::uint32_t patch) {
+      return !of_draws || (patch < drawn.triangle_patch.size() && drawn.triangle_patch[patch]);
+    };
+    if (const std::uint64_t n = check_winding(ref.tess, my_records, my_emitted, triangles, j["tessellation"], failures))
+      rate(1.0 + double(n), 1.0);
+    if (t.nonfinite_records) {
+      failures.push_back("tess.bin: " + std::to_string(t.nonfinite_records) +
+                         " records hold a NaN or infinite position or normal where tessref's is finite, or the reverse "
+                         "(first: patch " + std::to_string(t.first_nonfinite_patch) + ")");
+      rate(1.0 + double(t.nonfinite_records), 1.0);
+    }
+    // A scene of draws keeps gl_Position's w where the normal would be: no normal to compare.
+    if (!of_draws) {
+      if (t.max_normal_difference > limits.max_normal) {
+        char buf[200];
+        std::snprintf(buf, sizeof buf,
+                      "normals differ by up to %.3g (|difference| / |longer normal|) at the same patch and "
+                      "gl_TessCoord (limit %g; worst: patch %lld)",
+                      t.max_normal_difference, limits.max_normal, static_cast<long long>(t.worst_normal_patch));
+        failures.push_back(buf);
+      }
+      rate(t.max_normal_difference, limits.max_normal);
+    }
     const std::vector<EmittedCountDifference> counts = emitted_counts_differ(ref.tess, my_records, my_emitted);
     j["tessellation"]["emitted_count_differs_patches"] = counts.size();
     if (!counts.empty()) {
@@ -215,7 +302,9 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
   const SurfaceOracle mine_oracle(mine);
   // Two-sided distance between the surfaces.
   if (tessellated && !mine.indices.empty()) {
-    const TessSurface theirs = of_draws ? captured_triangles(ref.tess, drawn.triangle_patch) : TessSurface::from_emitted(ref.tess);
+    std::vector<TessDumpRecord> finite_copy;
+    const std::vector<TessDumpRecord>& finite = finite_patches(ref.tess, finite_copy);
+    const TessSurface theirs = of_draws ? captured_triangles(finite, drawn.triangle_patch) : TessSurface::from_emitted(finite);
     const SurfaceOracle their_oracle(theirs);
     const SurfaceDistance d = surface_distance(
         theirs, their_oracle, mine, mine_oracle, parallel,
@@ -324,12 +413,14 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
   }
   rate((100.0 - share) / std::max(1e-9, 100.0 - limits.color_share), 1.0);
 
-  j["limits"] = {{"max_distance_of_diagonal", limits.max_distance}, {"silhouette_px", limits.silhouette_px},
+  j["limits"] = {{"max_distance_of_diagonal", limits.max_distance}, {"max_normal_difference", limits.max_normal},
+                 {"silhouette_px", limits.silhouette_px},
                  {"color_share_percent", limits.color_share}, {"cracks_fail", limits.cracks_fail}};
   j["pass"] = failures.empty();
   j["failures"] = failures;
   j["warnings"] = warnings;
-  j["severity"] = severity;
+  // JSON has no infinity (it would be written as null, and campaigns sort by this figure).
+  j["severity"] = std::isfinite(severity) ? severity : std::numeric_limits<double>::max();
   out.report = std::move(j);
   out.difference = difference_image(ref.color, out.tessref);
   if (s.distance.empty()) s.distance.assign(ref.depth.pixels.size(), -1.0f);  // not examined
@@ -358,6 +449,14 @@ std::string verify_summary(const nlohmann::json& j) {
                   t["order_compared_patches"].get<unsigned long long>() - t["order_differs_patches"].get<unsigned long long>(),
                   t["order_compared_patches"].get<unsigned long long>());
     out += buf;
+    if (t.contains("max_normal_difference")) {
+      std::snprintf(buf, sizeof buf,
+                    "  normals: largest difference %.3g of the longer normal (patch %lld); %llu triangles wound the "
+                    "other way round; %llu records with a NaN or infinity on one side only\n",
+                    t["max_normal_difference"].get<double>(), t["worst_normal_patch"].get<long long>(),
+                    t.value("winding_differs_triangles", 0ull), t["nonfinite_records"].get<unsigned long long>());
+      out += buf;
+    }
     if (t["patch_stride"].get<unsigned>() > 1)
       out += "    (coordinates of every patch by digest; values and distances on the patches whose id is a "
              "multiple of " + std::to_string(t["patch_stride"].get<unsigned>()) + ", the capture's sample)\n";

@@ -75,6 +75,68 @@ TEST(Verify, MovedPatchHasTheLargestDistance) {
   EXPECT_GT(c.max_position_ulp, 1000u);
 }
 
+// A flipped normal and one scaled by 2, relative to the longer normal: 2 and 0.5.
+TEST(Verify, NormalDifferencesAreRelativeToTheLongerNormal) {
+  const auto points = three_patches();
+  EXPECT_EQ(compare_tess(emitted(points), points).max_normal_difference, 0.0);
+  auto flipped = emitted(points);
+  flipped[5].normal = -flipped[5].normal;
+  TessComparison c = compare_tess(flipped, points);
+  EXPECT_DOUBLE_EQ(c.max_normal_difference, 2.0);
+  EXPECT_EQ(c.worst_normal_patch, flipped[5].patch_id);
+  auto scaled = emitted(points);
+  for (TessDumpRecord& r : scaled)
+    if (r.patch_id == 2) r.normal *= 2.0f;
+  c = compare_tess(scaled, points);
+  EXPECT_NEAR(c.max_normal_difference, 0.5, 1e-7);
+  EXPECT_EQ(c.worst_normal_patch, 2);
+  EXPECT_TRUE(c.coords_identical());
+  EXPECT_EQ(c.max_position_distance, 0.0);
+}
+
+// NaN is farther than no limit: it is counted apart, in its patch.
+TEST(Verify, NonFiniteValuesOnOneSideAreCounted) {
+  const auto points = three_patches();
+  auto ref = emitted(points);
+  ref[9].position.y = std::numeric_limits<float>::quiet_NaN();
+  ref[14].normal.x = std::numeric_limits<float>::infinity();
+  TessComparison c = compare_tess(ref, points);
+  EXPECT_EQ(c.nonfinite_records, 2u);
+  EXPECT_EQ(c.first_nonfinite_patch, ref[9].patch_id);
+  // The same NaN on both sides (a shader dividing by zero on either) is agreement.
+  auto mine = points;
+  for (TessDumpRecord& r : mine) r.position.x = std::numeric_limits<float>::quiet_NaN();
+  auto theirs = emitted(mine);
+  EXPECT_EQ(compare_tess(theirs, mine).nonfinite_records, 0u);
+}
+
+// One patch of two triangles (indices into its points), emitted in other orders: a rotation of a
+// triangle's corners and another order of triangles are the driver's choice; a reversal is not.
+TEST(Verify, ReversedTrianglesAreFoundInTheirPatch) {
+  std::vector<TessDumpRecord> points;
+  for (std::uint32_t p = 0; p < 2; ++p)
+    for (const glm::vec3& c : {glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 0, 1), glm::vec3(0.5f, 0.5f, 0)})
+      points.push_back({p, c, c, c});
+  const std::vector<std::uint32_t> indices = {0, 1, 3, 3, 1, 2, 4, 5, 7, 7, 5, 6};
+  const auto stream = [&](std::initializer_list<std::uint32_t> order) {
+    std::vector<TessDumpRecord> e;
+    for (std::uint32_t i : order) e.push_back(points[i]);
+    return e;
+  };
+  const auto all = [](std::uint32_t) { return true; };
+  EXPECT_TRUE(winding_differs(stream({0, 1, 3, 3, 1, 2, 4, 5, 7, 7, 5, 6}), points, indices, all).patches.empty());
+  EXPECT_TRUE(winding_differs(stream({1, 2, 3, 1, 3, 0, 5, 7, 4, 7, 5, 6}), points, indices, all).patches.empty());
+  const WindingDifference w = winding_differs(stream({0, 1, 3, 3, 1, 2, 4, 7, 5, 7, 5, 6}), points, indices, all);
+  ASSERT_EQ(w.patches, std::vector<std::uint32_t>{1});
+  EXPECT_EQ(w.triangles, 1u);
+  EXPECT_EQ(w.first_patch_triangles, 1u);
+  EXPECT_EQ(w.first_patch_total, 2u);
+  // Patches that emit lines or points are not examined.
+  EXPECT_TRUE(winding_differs(stream({0, 1, 3, 3, 1, 2, 4, 7, 5, 7, 5, 6}), points, indices,
+                              [](std::uint32_t p) { return p != 1; })
+                  .patches.empty());
+}
+
 TEST(Verify, UlpBucketsAreNamedByTheirRanges) {
   EXPECT_EQ(ulp_bucket_name(0), "0");
   EXPECT_EQ(ulp_bucket_name(2), "2");
