@@ -8,22 +8,27 @@
 namespace tessref {
 namespace {
 
-void check_room(int varyings) {
-  if (varyings + kFragmentTagCount > kMaxVaryings)
-    throw InputError("fragment tags: the draw's " + std::to_string(varyings) + " varyings leave no room for " +
+// An empty batch of the same primitives with room for the tags after the batch's own varyings
+// (the triangle and patch tags flat); InputError when there is no room.
+template <int Corners>
+PrimitiveBatch<Corners> with_tag_room(const PrimitiveBatch<Corners>& batch) {
+  const int n = batch.num_varyings;
+  if (n + kFragmentTagCount > kMaxVaryings)
+    throw InputError("fragment tags: the draw's " + std::to_string(n) + " varyings leave no room for " +
                      std::to_string(kFragmentTagCount) + " more (at most " + std::to_string(kMaxVaryings) + ")");
+  PrimitiveBatch<Corners> out;
+  out.num_varyings = n + kFragmentTagCount;
+  out.flat_varyings = batch.flat_varyings;
+  out.flat_varyings.set(std::size_t(n + kTagTriangle));
+  out.flat_varyings.set(std::size_t(n + kTagPatch));
+  return out;
 }
 
 template <int Corners>
 PrimitiveBatch<Corners> tagged(const PrimitiveBatch<Corners>& batch, const std::vector<TessDumpRecord>* records,
                                const std::vector<std::uint32_t>* emitted, std::uint32_t first_primitive) {
   const int n = batch.num_varyings;
-  check_room(n);
-  PrimitiveBatch<Corners> out;
-  out.num_varyings = n + kFragmentTagCount;
-  out.flat_varyings = batch.flat_varyings;
-  out.flat_varyings.set(std::size_t(n + kTagTriangle));
-  out.flat_varyings.set(std::size_t(n + kTagPatch));
+  PrimitiveBatch<Corners> out = with_tag_room(batch);
   const std::size_t primitives = batch.primitive_count();
   const std::size_t out_records = std::size_t(out.records());
   out.vertices.resize(std::size_t(Corners) * primitives * out_records);
@@ -70,12 +75,7 @@ PointBatch tagged_points(const PointBatch& batch, const std::vector<TessDumpReco
 
 TriangleBatch tagged_triangles(const std::vector<TessDumpRecord>& records, const TriangleBatch& batch) {
   const int n = batch.num_varyings;
-  check_room(n);
-  TriangleBatch out;
-  out.num_varyings = n + kFragmentTagCount;
-  out.flat_varyings = batch.flat_varyings;
-  out.flat_varyings.set(std::size_t(n + kTagTriangle));
-  out.flat_varyings.set(std::size_t(n + kTagPatch));
+  TriangleBatch out = with_tag_room(batch);
   const std::size_t triangles = batch.triangle_count();
   const std::size_t out_records = std::size_t(out.records());
   out.vertices.resize(3 * triangles * out_records);

@@ -1,6 +1,6 @@
 #pragma once
 // tessref inspect: the life of one patch of a scene's draw, stage by stage, as the draw computes it.
-// Nothing here re-derives a value: the scene's own program objects (builtin_programs.h, or the GLSL
+// Nothing here re-derives a value: the scene's own program objects (builtin_program.h, or the GLSL
 // program on the executor) run on the patch through the same executor (tessellate() over
 // [patch, patch + 1)), and what each stage handed to the next is recorded on the way.
 #include <cstddef>

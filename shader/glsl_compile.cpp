@@ -89,7 +89,8 @@ std::string explained(std::string message, const std::string& next) {
   if (message.find("requires SPIR-V 1.3") != std::string::npos)
     return trim(message) + ": tessref compiles GLSL for OpenGL 4.5 (SPIR-V 1.0), which has no subgroup "
                            "operations (GL_KHR_shader_subgroup_*)";
-  if (message.find("-- expected newline") != std::string::npos)
+  if (message.find("-- expected newline") != std::string::npos ||
+      message.find("unexpected tokens following directive") != std::string::npos)
     return trim(message) + " (the directive has more on its line than GLSL allows: only a comment may follow it)";
   return message;
 }

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../pipeline/test_util.h"
+#include "default_capture.h"
 #include "gl_fixture.h"
 #include "io/image_output.h"
 #include "io/tess_digest.h"
@@ -27,25 +28,15 @@ namespace {
 using ::testing::HasSubstr;
 using ::testing::Not;
 
-const std::string kSmall = " --set image.width=128 --set image.height=128";
+const std::string& kSmall = test::kCaptureSize;
 constexpr std::uint32_t kPatches = 256;
 constexpr std::size_t kPerPatch = 759;  // 253 triangles of the default scene's levels (12)
 
-class VerifyMutations : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    dir_ = std::filesystem::temp_directory_path() / ("tessref_VerifyMutations_" + std::to_string(::getpid()));
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-    capture_ = test::run_cli("capture --out " + ref() + kSmall);
-  }
-  static void TearDownTestSuite() { std::filesystem::remove_all(dir_); }
-  void SetUp() override {
-    TESSREF_REQUIRE_GL(ctx);
-    ASSERT_EQ(capture_.exit_code, 0) << capture_.output;
-  }
-  static std::string ref() { return (dir_ / "ref").string(); }
+class VerifyMutations : public test::DefaultCapture<VerifyMutations> {
+ public:
+  static constexpr const char* kName = "VerifyMutations";
 
+ protected:
   // A fresh copy of the capture.
   static std::filesystem::path copy_of_capture(const std::string& name) {
     const std::filesystem::path copy = dir_ / name;
@@ -120,11 +111,7 @@ class VerifyMutations : public ::testing::Test {
     return out;
   }
 
-  static std::filesystem::path dir_;
-  static test::CliRun capture_;
 };
-std::filesystem::path VerifyMutations::dir_;
-test::CliRun VerifyMutations::capture_;
 
 // A verdict of 1 with `reason` in one of its failures (the report's, printed on a FAIL: line):
 // the planted fault was found as itself.

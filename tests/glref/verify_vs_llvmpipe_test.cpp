@@ -14,6 +14,7 @@
 
 #include "../pipeline/test_util.h"
 #include "../verify/split_cylinder.h"
+#include "default_capture.h"
 #include "gl_fixture.h"
 #include "io/tess_digest.h"
 #include "io/tess_dump.h"
@@ -25,25 +26,13 @@ namespace {
 using ::testing::HasSubstr;
 using ::testing::Not;
 
-const std::string kSmall = " --set image.width=128 --set image.height=128";
+const std::string& kSmall = test::kCaptureSize;
 
-class VerifyVsLlvmpipe : public ::testing::Test {
+class VerifyVsLlvmpipe : public test::DefaultCapture<VerifyVsLlvmpipe> {
+ public:
+  static constexpr const char* kName = "VerifyVsLlvmpipe";
+
  protected:
-  // One capture for the suite (TempDir names itself after a test, which does not run yet here).
-  static void SetUpTestSuite() {
-    dir_ = std::filesystem::temp_directory_path() / ("tessref_VerifyVsLlvmpipe_" + std::to_string(::getpid()));
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-    capture_ = test::run_cli("capture --out " + ref() + kSmall);
-  }
-  static void TearDownTestSuite() { std::filesystem::remove_all(dir_); }
-  void SetUp() override {
-    TESSREF_REQUIRE_GL(ctx);
-    ASSERT_EQ(capture_.exit_code, 0) << capture_.output;
-  }
-  static std::string ref() { return (dir_ / "ref").string(); }
-  static std::string path(const std::string& name) { return (dir_ / name).string(); }
-
   // A copy of the capture whose tess.bin went through `edit`, its manifest counting the records
   // tess.bin now holds (as a capture of such a driver would; verify refuses a count that differs).
   template <typename Edit>
@@ -62,11 +51,7 @@ class VerifyVsLlvmpipe : public ::testing::Test {
     return copy.string();
   }
 
-  static std::filesystem::path dir_;
-  static test::CliRun capture_;
 };
-std::filesystem::path VerifyVsLlvmpipe::dir_;
-test::CliRun VerifyVsLlvmpipe::capture_;
 
 TEST_F(VerifyVsLlvmpipe, CaptureHasItsFilesAndManifest) {
   EXPECT_THAT(capture_.output, HasSubstr("tess.bin (194304 emitted vertices)"));  // 256 patches x 253 triangles x 3

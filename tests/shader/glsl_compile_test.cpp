@@ -413,10 +413,10 @@ TEST(GlslCompile, TerseCompilerMessagesAreExplained) {
   EXPECT_THAT(error_of({{Stage::Vertex, "s.vert", 1, kPassThroughVertex}, {Stage::Fragment, "s.frag", 1, subgroup}}),
               HasSubstr("s.frag:4: error: 'subgroup op' : requires SPIR-V 1.3: tessref compiles GLSL for OpenGL 4.5 "
                         "(SPIR-V 1.0), which has no subgroup operations"));
-  const char* tokens = "#version 450 core foo\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n";
+  const char* tokens = "#version 450\n#ifdef A\n#endif A\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n";
   EXPECT_THAT(error_of({{Stage::Vertex, "t.vert", 1, kPassThroughVertex}, {Stage::Fragment, "t.frag", 1, tokens}}),
-              HasSubstr("t.frag:1: error: '#version' : bad tokens following profile -- expected newline (the "
-                        "directive has more on its line than GLSL allows: only a comment may follow it)"));
+              HasSubstr("t.frag:3: error: '#endif' : unexpected tokens following directive (the directive has more on "
+                        "its line than GLSL allows: only a comment may follow it)"));
 }
 
 TEST(GlslCompile, ErrorsOfSeveralShadersAreAllReported) {

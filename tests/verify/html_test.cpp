@@ -83,10 +83,11 @@ TEST_F(VerifyHtml, ChromiumDrawsThePage) {
     colours.insert(img.pixels[i] << 16 | img.pixels[i + 1] << 8 | img.pixels[i + 2]);
   EXPECT_GT(colours.size(), 200u);
 
-  // The DOM as Chromium built it: the four images with data, the figures, the verdict.
+  // The DOM as Chromium built it: the four images and the three zoomed copies with data, the
+  // figures (named in words, keys in tooltips), the verdict.
   const std::string d = test::read_file(dom);
-  EXPECT_EQ(count(d, "<img alt="), 4u);
-  EXPECT_EQ(count(d, "src=\"data:image/png;base64,iVBOR"), 4u);
+  EXPECT_EQ(count(d, "<img alt="), 7u);
+  EXPECT_EQ(count(d, "src=\"data:image/png;base64,iVBOR"), 7u);
   for (const char* figure : {"hausdorff_of_diagonal", "max_distance_px", "within_2_255", "psnr_db", "58.5",
                              "--patch 17", "FAIL", "driver (reference)", "silhouette heat map"})
     EXPECT_THAT(d, HasSubstr(figure));
