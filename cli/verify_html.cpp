@@ -314,7 +314,11 @@ VerifyImages verify_images_in(const std::filesystem::path& folder) {
 }
 
 std::string verify_scene_page(const json& report, const VerifyImages& images, const std::string& index_href) {
-  const std::string scene = text(report, "scene", "(scene)");
+  std::string scene = text(report, "scene", "(scene)"), keys;  // with the keys --set changed, as render names it
+  if (report.contains("sets") && report["sets"].is_array())
+    for (const json& set : report["sets"])
+      if (set.is_string()) keys += (keys.empty() ? "" : ", ") + set.get<std::string>().substr(0, set.get<std::string>().find('='));
+  if (!keys.empty()) scene += " with --set " + keys;
   std::string body;
   if (!index_href.empty()) body += "<p><a href=\"" + escape(index_href) + "\">&larr; all scenes</a></p>\n";
   char sev[32];
