@@ -19,7 +19,7 @@
 #include "check/check_range.h"
 #include "raster/rasterizer.h"
 #include "shader/nan_trace.h"
-#include "stages/glsl/glsl_program.h"
+#include "stages/draw_program.h"
 #include "stages/tess_stage.h"
 
 namespace tessref {
