@@ -6,6 +6,8 @@
 # artifacts folder it names. Exits 1 if any target found a crash (or a leak, timeout or OOM).
 #
 #   scripts/fuzz.sh [SECONDS] [TARGET...]   # default: every fuzz/fuzz_*.cpp target
+#   scripts/fuzz.sh --minutes N [TARGET...]  # N minutes a target, each continuing from its kept
+#                                            # corpus (FUZZ_KEEP_CORPUS=1)
 #
 # Environment: FUZZ_WORK, the work folder (default out/fuzz: <target>/corpus, <target>/artifacts,
 # <target>/log.txt); FUZZ_JOBS, targets run at once (default 1, one core each);
@@ -13,8 +15,15 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
-seconds=${1:-60}
-[ $# -gt 0 ] && shift
+if [ "${1:-}" = --minutes ]; then
+  [[ ${2:-} =~ ^[0-9]+$ ]] || { echo "fuzz.sh: --minutes needs a whole number of minutes" >&2; exit 2; }
+  seconds=$(( $2 * 60 ))
+  export FUZZ_KEEP_CORPUS=1
+  shift 2
+else
+  seconds=${1:-60}
+  [ $# -gt 0 ] && shift
+fi
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
   for f in fuzz/fuzz_*.cpp; do targets+=("$(basename "$f" .cpp)"); done
@@ -38,10 +47,13 @@ run_target() {
     rm -rf "$dir/corpus"
     cp -r "fuzz/corpus/$t" "$dir/corpus"
   fi
-  local dict=()
+  local dict=() max_len=()
   [ -f "fuzz/$t.dict" ] && dict=(-dict="fuzz/$t.dict")
+  # libFuzzer's inputs stay under 4 KB by default; a scene file must reach the 300 KB of nesting
+  # that once overflowed the JSON library's stack.
+  [ "$t" = fuzz_scene ] && max_len=(-max_len=1048576)
   # -timeout: one input running longer is a hang (a finding); -rss_limit_mb: so is a blow-up.
-  "build-fuzz/fuzz/$t" "$dir/corpus" "${dict[@]}" -max_total_time="$seconds" -rss_limit_mb=4096 \
+  "build-fuzz/fuzz/$t" "$dir/corpus" "${dict[@]}" "${max_len[@]}" -max_total_time="$seconds" -rss_limit_mb=4096 \
     -timeout=60 -print_final_stats=1 -artifact_prefix="$dir/artifacts/" >"$dir/log.txt" 2>&1 || true
 }
 
