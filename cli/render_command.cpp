@@ -191,21 +191,10 @@ void warn_nothing_drawn(const DrawStats& s) {
                static_cast<unsigned long long>(s.tess.patches_discarded));
 }
 
-// An argument as a POSIX shell reads it back: single-quoted unless it is plain.
-std::string shell_word(const std::string& s) {
-  if (!s.empty() && s.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
-                                        "0123456789_./=,:+-@%") == std::string::npos)
-    return s;
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
 // --check's context: the inspect command's scene arguments, each GLSL stage's source, the ranges.
 CheckContext check_context(const RenderOptions& o, const Scene& scene) {
   CheckContext c;
-  if (!o.scene.empty()) c.inspect_args = shell_word(o.scene) + " ";
-  for (const std::string& set : o.sets) c.inspect_args += "--set " + shell_word(set) + " ";
+  c.inspect_args = scene_arguments(o.scene, o.sets);
   c.image_height = scene.height;
   if (scene.shaders.program != ShaderProgram::Builtin)
     for (const shader::ShaderSource& src : scene_sources(scene)) {

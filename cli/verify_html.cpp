@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "cli/scene_name.h"
 #include "common/error.h"
 #include "io/output_files.h"
 
@@ -235,14 +236,13 @@ std::string figures(const json& report) {
   return out + "</div>\n";
 }
 
-// A word for a POSIX shell: as it is when it needs no quoting, else in single quotes.
-std::string shell_quoted(const std::string& word) {
-  if (!word.empty() && word.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_./=,:+-") ==
-                           std::string::npos)
-    return word;
-  std::string out = "'";
-  for (char c : word) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
+// The --set overrides the run was given (the report keeps them).
+std::vector<std::string> sets_of(const json& report) {
+  std::vector<std::string> sets;
+  if (report.contains("sets") && report["sets"].is_array())
+    for (const json& set : report["sets"])
+      if (set.is_string()) sets.push_back(set.get<std::string>());
+  return sets;
 }
 
 std::string worst_patches(const json& report) {
@@ -251,11 +251,9 @@ std::string worst_patches(const json& report) {
   if (!list.is_array() || list.empty()) return "";
   // The built-in default scene is reported as "<default scene>": the command then takes no SCENE.
   // The run's --set overrides go with it, or the command would inspect another scene.
-  std::string scene = text(report, "scene", "SCENE");
-  scene = scene.empty() || scene[0] == '<' ? "" : shell_quoted(scene) + " ";
-  if (report.contains("sets") && report["sets"].is_array())
-    for (const json& set : report["sets"])
-      if (set.is_string()) scene += "--set " + shell_quoted(set.get<std::string>()) + " ";
+  std::string file = text(report, "scene", "SCENE");
+  if (!file.empty() && file[0] == '<') file.clear();
+  const std::string scene = scene_arguments(file, sets_of(report));
   std::string out = "<h2>Worst patches (surface distance)</h2>\n<table><tr><th>patch</th><th>distance / diagonal</th>"
                     "<th>look at it</th></tr>\n";
   for (const json& p : list) {
@@ -314,11 +312,7 @@ VerifyImages verify_images_in(const std::filesystem::path& folder) {
 }
 
 std::string verify_scene_page(const json& report, const VerifyImages& images, const std::string& index_href) {
-  std::string scene = text(report, "scene", "(scene)"), keys;  // with the keys --set changed, as render names it
-  if (report.contains("sets") && report["sets"].is_array())
-    for (const json& set : report["sets"])
-      if (set.is_string()) keys += (keys.empty() ? "" : ", ") + set.get<std::string>().substr(0, set.get<std::string>().find('='));
-  if (!keys.empty()) scene += " with --set " + keys;
+  const std::string scene = scene_label(text(report, "scene", "(scene)"), sets_of(report));  // as render names it
   std::string body;
   if (!index_href.empty()) body += "<p><a href=\"" + escape(index_href) + "\">&larr; all scenes</a></p>\n";
   char sev[32];

@@ -24,6 +24,18 @@ PrimitiveBatch<Corners> with_tag_room(const PrimitiveBatch<Corners>& batch) {
   return out;
 }
 
+// The tags a tessellated vertex carries: its primitive's number in the patch and the record's
+// patch, gl_TessCoord, world position and normal.
+void write_record_tags(float* tag, std::size_t in_patch, const TessDumpRecord& r) {
+  tag[kTagTriangle] = float(in_patch);
+  tag[kTagPatch] = float(r.patch_id);
+  for (int c = 0; c < 3; ++c) {
+    tag[kTagTessU + c] = r.tess_coord[c];
+    tag[kTagPositionX + c] = r.position[c];
+    tag[kTagNormalX + c] = r.normal[c];
+  }
+}
+
 template <int Corners>
 PrimitiveBatch<Corners> tagged(const PrimitiveBatch<Corners>& batch, const std::vector<TessDumpRecord>* records,
                                const std::vector<std::uint32_t>* emitted, std::uint32_t first_primitive) {
@@ -46,14 +58,7 @@ PrimitiveBatch<Corners> tagged(const PrimitiveBatch<Corners>& batch, const std::
         tag[kTagPatch] = float(first_primitive + p);
         continue;
       }
-      const TessDumpRecord& r = records->at(emitted->at(v));
-      tag[kTagTriangle] = float(in_patch);
-      tag[kTagPatch] = float(r.patch_id);
-      for (int c = 0; c < 3; ++c) {
-        tag[kTagTessU + c] = r.tess_coord[c];
-        tag[kTagPositionX + c] = r.position[c];
-        tag[kTagNormalX + c] = r.normal[c];
-      }
+      write_record_tags(tag, in_patch, records->at(emitted->at(v)));
     }
     if (first) last_patch = first->patch_id;
     ++in_patch;
@@ -87,15 +92,7 @@ TriangleBatch tagged_triangles(const std::vector<TessDumpRecord>& records, const
       const std::size_t v = batch.vertex_index(t, k);
       float* dst = reinterpret_cast<float*>(out.vertices.data() + (3 * t + std::size_t(k)) * out_records);
       std::memcpy(dst, batch.vertex_data(v), sizeof(float) * std::size_t(4 + n));
-      const TessDumpRecord& r = records.at(v);
-      float* tag = dst + 4 + n;
-      tag[kTagTriangle] = float(in_patch);
-      tag[kTagPatch] = float(r.patch_id);
-      for (int c = 0; c < 3; ++c) {
-        tag[kTagTessU + c] = r.tess_coord[c];
-        tag[kTagPositionX + c] = r.position[c];
-        tag[kTagNormalX + c] = r.normal[c];
-      }
+      write_record_tags(dst + 4 + n, in_patch, records.at(v));
     }
     ++in_patch;
   }

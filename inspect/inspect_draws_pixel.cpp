@@ -4,6 +4,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "common/error.h"
 #include "inspect/fragment_tags.h"
@@ -149,20 +150,20 @@ PixelInspectResult inspect_draws_pixel(const Scene& scene, int x, int y, const P
     draw_triangles(tagged_triangles(records, batch), state, recorder, scratch, parallel);
     name_fragments(before, "triangle", false);
   };
-  options.line_batch = [&](const LineBatch& batch, const std::vector<TessDumpRecord>* records,
-                           const std::vector<std::uint32_t>* emitted) {
+  // Lines and points: tessellated ones numbered within their patch, the others in the draw.
+  const auto lines_or_points = [&](const auto& batch, const std::vector<TessDumpRecord>* records,
+                                   const std::vector<std::uint32_t>* emitted) {
+    constexpr bool lines = std::decay_t<decltype(batch)>::kCorners == 2;
     const std::size_t before = recorder.fragments.size();
-    draw_lines(tagged_lines(batch, records, emitted, primitives_in_draw), state, recorder, scratch, parallel);
+    if constexpr (lines)
+      draw_lines(tagged_lines(batch, records, emitted, primitives_in_draw), state, recorder, scratch, parallel);
+    else
+      draw_points(tagged_points(batch, records, emitted, primitives_in_draw), state, recorder, scratch, parallel);
     if (!records) primitives_in_draw += std::uint32_t(batch.primitive_count());
-    name_fragments(before, "line", records != nullptr);
+    name_fragments(before, lines ? "line" : "point", records != nullptr);
   };
-  options.point_batch = [&](const PointBatch& batch, const std::vector<TessDumpRecord>* records,
-                            const std::vector<std::uint32_t>* emitted) {
-    const std::size_t before = recorder.fragments.size();
-    draw_points(tagged_points(batch, records, emitted, primitives_in_draw), state, recorder, scratch, parallel);
-    if (!records) primitives_in_draw += std::uint32_t(batch.primitive_count());
-    name_fragments(before, "point", records != nullptr);
-  };
+  options.line_batch = lines_or_points;
+  options.point_batch = lines_or_points;
   Framebuffer fb;
   render_scene(scene, Mesh{}, parallel, fb, options);
 

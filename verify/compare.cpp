@@ -60,10 +60,6 @@ std::uint64_t coord_key(const glm::vec3& c) {
   return (u << 32 | v) ^ (std::uint64_t(std::bit_cast<std::uint32_t>(c.z)) * 0x9E3779B97F4A7C15ull);
 }
 
-}  // namespace
-
-namespace {
-
 std::string size_text(int width, int height) { return std::to_string(width) + "x" + std::to_string(height); }
 
 // Each image against the size the manifest's scene renders, so that the message names the file

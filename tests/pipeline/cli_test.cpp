@@ -386,9 +386,6 @@ TEST_F(Cli, DumpOnASmallFileSystemKeepsRoomOnlyForTheImagesWrittenThere) {
                                   " (less 1.1 MB (1064960 bytes) for the 1 image written there)"));
 }
 
-// Issue 24, defects 5 and 6: a PNG cut short by a full file system is named as such, with the
-// target's name (not its hidden temporary) and without libpng's own "IDAT: Read error" line, and
-// nothing is left behind.
 // Issue 24, defect 6: a run killed with SIGKILL leaves its hidden temporary; the next run writing
 // the same target removes it, and leaves alone one whose process is still running and files that
 // only look alike.
@@ -411,6 +408,9 @@ TEST_F(Cli, TemporariesOfKilledRunsAreRemovedByTheNextRun) {
   EXPECT_TRUE(std::filesystem::exists(dir.path() / "x.png"));
 }
 
+// Issue 24, defects 5 and 6: a PNG cut short by a full file system is named as such, with the
+// target's name (not its hidden temporary) and without libpng's own "IDAT: Read error" line, and
+// nothing is left behind.
 TEST_F(Cli, AFullFileSystemIsNamedAndLeavesNothing) {
   if (!test::can_mount_small_file_systems())
     GTEST_SKIP() << "unprivileged user namespaces are off here: no small file system to mount";
