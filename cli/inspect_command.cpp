@@ -313,6 +313,11 @@ nlohmann::json traces_json(const std::vector<InspectTrace>& traces) {
         j["stores"] = stores;
       }
       if (l.has_result) j["result"] = trace_value(l.result);
+      if (!l.joins.empty()) {
+        json joins = json::array();
+        for (const shader::TraceValue& v : l.joins) joins.push_back(trace_value(v));
+        j["joins"] = joins;
+      }
       if (l.barrier) j["barrier"] = true;
       lines.push_back(j);
     }

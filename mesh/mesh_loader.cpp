@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <exception>
 #include <fstream>
+#include <new>
 #include <sstream>
 #include <stdexcept>
 #include <system_error>
@@ -252,6 +253,8 @@ Mesh load_mesh_file(const std::filesystem::path& path, std::vector<std::string>&
   auto run = [&](const auto& step) {
     try {
       scene = step();
+    } catch (const std::bad_alloc&) {
+      throw;  // the memory budget: the command says so
     } catch (const std::exception& e) {
       fail("cannot be read: " + explained_import_error(e.what()));
     }

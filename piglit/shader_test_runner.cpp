@@ -9,6 +9,7 @@
 #include <string>
 #include <map>
 #include <memory>
+#include <new>
 #include <set>
 
 #include "render/draw_call.h"
@@ -196,6 +197,8 @@ class Runner {
       for (const TestCommand& c : f_.commands) execute(c);
     } catch (const Failure& e) {
       return {Verdict::Fail, e.what};
+    } catch (const std::bad_alloc&) {
+      throw;  // the memory budget: the command says so, not a failed test
     } catch (const std::exception& e) {
       return {Verdict::Fail, e.what()};
     }

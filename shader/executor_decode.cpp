@@ -744,6 +744,12 @@ struct Decoder {
         }
     p.blocks.resize(m.blocks.size());
     for (std::size_t i = 0; i < m.blocks.size(); ++i) decode_block(m.blocks[i], p.blocks[i]);
+    for (std::size_t i = 0; i < m.blocks.size(); ++i)
+      for (const Instruction& ins : m.blocks[i].body)
+        if (ins.opcode == spv::OpSelectionMerge && !ins.operands.empty()) {
+          XBlock& merge = p.blocks[block_index(ins, ins.operands[0])];
+          if (!merge.phis.empty()) merge.join_line = p.blocks[i].term.line;
+        }
   }
 
   // A copy or a part of another SSA value (OpCopyObject, OpCompositeExtract with constant indices)

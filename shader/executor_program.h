@@ -99,6 +99,10 @@ struct XBlock {
   bool phis_overlap = false;  // a phi reads another phi's rows of this block: stage the copies
   std::uint32_t first = 0, count = 0;  // instructions in DecodedProgram::code
   Terminator term;
+  // The merge block of a selection (`c ? a : b`, `a || b`, an if) with phis: the line of the
+  // selection's branch, to which the source trace gives the values the phis take (the variables'
+  // values where the paths meet: mem2reg leaves no store to show them). 0 otherwise.
+  int join_line = 0;
 };
 
 struct DecodedProgram {

@@ -148,6 +148,8 @@ struct Runner {
   void traced_block(const XBlock& b);  // run_block, watching the traced lane's results
   void nan_check(const XIns& x);
   void source_record(const XIns& x);
+  void source_record_joins(const XBlock& b);
+  TraceLine* source_line(int line);
   void run_phis(const XBlock& b);
   void load(const XIns& x);
   std::uint32_t uniform_offset(const std::uint32_t* off) const;

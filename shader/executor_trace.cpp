@@ -71,24 +71,49 @@ void Runner::nan_check(const XIns& x) {
   trace->value = result;
 }
 
-void Runner::source_record(const XIns& x) {
+// The record of the traced lane's current execution of `line`, or null when none is kept. A new
+// execution starts where the line changes; instructions of no line (the front end's bookkeeping)
+// belong to the line before them.
+TraceLine* Runner::source_line(int line) {
   SourceTrace& t = *source;
-  const int lane = t.lane;
-  if (!mask[lane]) return;
-  // A new execution of a line starts where the line changes; instructions of no line (the
-  // front end's bookkeeping) belong to the line before them.
-  if (x.line > 0 && (t.lines.empty() || t.lines.back().line != x.line || source_new_line)) {
+  if (line > 0 && (t.lines.empty() || t.lines.back().line != line || source_new_line)) {
     source_new_line = false;
     source_blocks.clear();
     source_blocks.push_back(source_block);
     if (t.lines.size() >= t.max_lines) {
       ++t.dropped;
-      return;
+      return nullptr;
     }
-    t.lines.push_back(TraceLine{x.line});
+    t.lines.emplace_back().line = line;
   }
-  if (t.lines.empty() || t.dropped) return;
-  TraceLine& line = t.lines.back();
+  if (t.lines.empty() || t.dropped) return nullptr;
+  return &t.lines.back();
+}
+
+// The phis of a selection's merge block, given to the selection's line: after `mid = c ? h :
+// f(h);` (whose else path ran f's lines) the line comes back with the value mid took.
+void Runner::source_record_joins(const XBlock& b) {
+  const int lane = source->lane;
+  if (!mask[lane]) return;
+  TraceLine* line = source_line(b.join_line);
+  if (!line) return;
+  line->joins.clear();
+  for (const Phi& phi : b.phis) {
+    TraceValue value;
+    for (const FlatComponent& c : phi.flat) {
+      value.scalars.push_back(c.scalar);
+      value.bits.push_back(lane_bits(A, phi.dst, c.word, c.scalar, lane));
+    }
+    line->joins.push_back(std::move(value));
+  }
+}
+
+void Runner::source_record(const XIns& x) {
+  const int lane = source->lane;
+  if (!mask[lane]) return;
+  TraceLine* current = source_line(x.line);
+  if (!current) return;
+  TraceLine& line = *current;
   if (x.op == XOp::Nop && x.spv == spv::OpControlBarrier) line.barrier = true;
   if (x.op == XOp::Store) {
     const Access& a = p.accesses[x.aux];
@@ -134,6 +159,7 @@ void Runner::traced_block(const XBlock& b) {
     for (std::uint32_t seen : source_blocks)
       if (seen == source_block) source_new_line = true;
     if (!source_new_line) source_blocks.push_back(source_block);
+    if (b.join_line > 0) source_record_joins(b);
   }
   const XIns* code = p.code.data() + b.first;
   for (std::uint32_t i = 0; i < b.count; ++i) {

@@ -36,6 +36,9 @@ struct TraceLine {
   std::vector<TraceStore> stores;
   bool has_result = false;   // the line computed a value (beyond loads and stores)
   TraceValue result;         // the last one
+  // Where the paths of a `c ? a : b`, `a || b` or an if on this line meet: the values its
+  // variables take there (OpPhi; a local kept as an SSA value has no store to show).
+  std::vector<TraceValue> joins;
 };
 
 struct SourceTrace {

@@ -149,5 +149,47 @@ TEST_F(HostileInput, DiffScaleMustBeFiniteAndPositive) {
   EXPECT_EQ(ok.exit_code, 0) << ok.output;
 }
 
+// The whole process has a memory budget (--max-memory, TESSREF_MAX_MEMORY; default 3/4 of the
+// machine): a run that needs more stops with exit 2 and the budget named, wherever the
+// allocation happened (here a 4096 x 4096 render: colour, depth and normals are 576 MiB of
+// framebuffer; the run peaks at 864 MiB resident).
+TEST_F(HostileInput, MemoryPastTheBudgetIsAnErrorNamingIt) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer's shadow memory passes any budget: the budget is not set in its builds";
+#endif
+  const std::string out = (dir.path() / "big.png").string();
+  const std::string big = " --set image.width=4096 --set image.height=4096 -o " + out;
+  const std::string message =
+      "tessref: error: out of memory: this run needed more than its memory budget of 320.0 MiB (--max-memory SIZE "
+      "or TESSREF_MAX_MEMORY;";
+  for (const std::string command : {"--max-memory 320M render" + big, "render --max-memory 320M" + big,
+                                    "render --max-memory 320MiB" + big}) {
+    const CliRun r = run_cli(command);
+    EXPECT_EQ(r.exit_code, 2) << command << ": " << r.output;
+    EXPECT_THAT(r.output, HasSubstr(message)) << command;
+    EXPECT_FALSE(std::filesystem::exists(out)) << command;
+  }
+  CliRun r = test::run_command("TESSREF_MAX_MEMORY=320M " + kBinary + " render" + big);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr(message));
+  // The same render within a budget, and with none (0).
+  r = run_cli("render --max-memory 2G" + big);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  r = test::run_command("TESSREF_MAX_MEMORY=0 " + kBinary + " render" + big);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  // Under 256 MiB tessref's own libraries do not load (and x265, behind OpenImageIO's HEIF
+  // writer, hung when it could not start a thread): refused.
+  r = run_cli("render --max-memory 100M" + big);
+  EXPECT_GE(r.exit_code, 100) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("--max-memory: a budget under 256.0 MiB cannot load tessref's libraries"));
+  // A size CLI11 cannot read is refused before anything runs.
+  r = run_cli("render --max-memory lots" + big);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_THAT(r.output, HasSubstr("--max-memory"));
+  // --help gives the default for this machine.
+  r = run_cli("--help");
+  EXPECT_THAT(r.output, HasSubstr("Default: 3/4 of this machine's memory"));
+}
+
 }  // namespace
 }  // namespace tessref

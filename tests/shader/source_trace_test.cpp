@@ -99,6 +99,58 @@ TEST(SourceTrace, BranchesTheLaneDidNotTakeAreAbsentAndResultsAreUnchanged) {
   EXPECT_EQ(executions(trace, 12).at(0)->stores.at(0).value.text(), "(1.5, 3, 6)");  // 0.5 * (0 + 1 + 2)
 }
 
+// `mid = c ? h : f(h);` keeps mid as an SSA value (no store): the line shows the value mid takes
+// where the paths meet, after the lines of the inlined f on the path that called it (issue 24).
+TEST(SourceTrace, SelectionsShowTheValueWhereTheirPathsMeet) {
+  Kernel k(R"(#version 450
+layout(location = 0) in vec3 h;
+layout(location = 0) out vec3 result;
+vec3 safe_normalize(vec3 v) {
+  float len = length(v);
+  return len > 0.0 ? v / len : vec3(0.0);
+}
+void main() {
+  vec3 mid = h;
+  if (h.x > -10.0) {
+    mid = h.z > 1.0 ? h : safe_normalize(h);
+  }
+  result = mid * 2.0;
+}
+)");
+  auto trace_lane = [&](int lane) {
+    k.begin(2);
+    const float inputs[2][3] = {{3.0f, 0.0f, 4.0f}, {3.0f, 0.0f, -4.0f}};
+    for (int l = 0; l < 2; ++l)
+      for (int c = 0; c < 3; ++c) k.set_f32("h", l, c, inputs[l][c]);
+    SourceTrace trace;
+    trace.lane = lane;
+    {
+      SourceTraceScope scope(trace);
+      k.run();
+    }
+    return trace;
+  };
+  // Lane 0 (h.z = 4 > 1): mid = h; the callee never ran.
+  const SourceTrace taken = trace_lane(0);
+  const auto line = executions(taken, 11);
+  ASSERT_EQ(line.size(), 1u);
+  ASSERT_FALSE(line[0]->joins.empty());
+  EXPECT_EQ(line[0]->joins.back().text(), "(3, 0, 4)");
+  EXPECT_TRUE(executions(taken, 5).empty());
+  // Lane 1: mid = h / 5 through safe_normalize's lines; line 11 comes back with mid's value.
+  const SourceTrace called = trace_lane(1);
+  const auto again = executions(called, 11);
+  ASSERT_EQ(again.size(), 2u);
+  EXPECT_TRUE(again[0]->joins.empty());
+  ASSERT_FALSE(again[1]->joins.empty());
+  EXPECT_EQ(again[1]->joins.back().text(), "(0.600000024, 0, -0.800000012)");
+  const auto callee = executions(called, 5);
+  ASSERT_EQ(callee.size(), 1u);
+  EXPECT_LT(again[0], callee[0]);
+  EXPECT_LT(callee[0], again[1]);
+  EXPECT_EQ(k.f32("result", 1, 2), -1.6f);
+}
+
 TEST(SourceTrace, KeepsAtMostMaxLinesAndCountsTheRest) {
   Kernel k(R"(#version 450
 layout(location = 0) in float a;
