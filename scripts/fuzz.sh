@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer fuzzers (fuzz/, docs/fuzzing.md) with Clang in build-fuzz/ and runs each
 # target for SECONDS (default 60) on a copy of its seed corpus fuzz/corpus/<target>/ (the
-# committed corpus never grows). Prints, per target, the executions, the coverage of libFuzzer's
-# last status line (cov: edges, ft: features) and the crashes found; their inputs are kept in the
-# artifacts folder it names. Exits 1 if any target found a crash (or a leak, timeout or OOM).
+# committed corpus never grows). Prints, per target, the CPU seconds it got, the executions, the
+# coverage of libFuzzer's last status line (cov: edges, ft: features) and the crashes found; their
+# inputs are kept in the artifacts folder it names. Exits 1 if any target found a crash (or a leak, timeout or OOM).
 #
 #   scripts/fuzz.sh [SECONDS] [TARGET...]   # default: every fuzz/fuzz_*.cpp target
 #   scripts/fuzz.sh --minutes N [TARGET...]  # N minutes a target, each continuing from its kept
@@ -53,8 +53,11 @@ run_target() {
   # that once overflowed the JSON library's stack.
   [ "$t" = fuzz_scene ] && max_len=(-max_len=1048576)
   # -timeout: one input running longer is a hang (a finding); -rss_limit_mb: so is a blow-up.
-  "build-fuzz/fuzz/$t" "$dir/corpus" "${dict[@]}" "${max_len[@]}" -max_total_time="$seconds" -rss_limit_mb=4096 \
-    -timeout=60 -print_final_stats=1 -artifact_prefix="$dir/artifacts/" >"$dir/log.txt" 2>&1 || true
+  # The CPU time it got (user + system seconds) beside the wall time: on a shared machine the two
+  # differ, and the executions follow the CPU time.
+  local TIMEFORMAT='%U %S'
+  { time "build-fuzz/fuzz/$t" "$dir/corpus" "${dict[@]}" "${max_len[@]}" -max_total_time="$seconds" -rss_limit_mb=4096 \
+    -timeout=60 -print_final_stats=1 -artifact_prefix="$dir/artifacts/" >"$dir/log.txt" 2>&1 || true; } 2>"$dir/cpu.txt"
 }
 
 # Leaks inside libraries tessref cannot fix (fuzz/lsan.supp says which and why).
@@ -73,7 +76,7 @@ done
 wait
 
 status=0
-printf '%-14s %8s %12s %7s %8s %8s  %s\n' target seconds executions cov ft crashes artifacts
+printf '%-14s %8s %8s %12s %7s %8s %8s  %s\n' target seconds cpu_s executions cov ft crashes artifacts
 for t in "${targets[@]}"; do
   dir=$work/$t
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$dir/log.txt" | tail -1)
@@ -84,7 +87,8 @@ for t in "${targets[@]}"; do
   crashes=$(find "$dir/artifacts" -maxdepth 1 -type f -newer "$dir/artifacts/.start" \
               \( -name 'crash-*' -o -name 'leak-*' -o -name 'timeout-*' -o -name 'oom-*' \) | wc -l)
   [ "$crashes" -eq 0 ] || status=1
-  printf '%-14s %8s %12s %7s %8s %8s  %s\n' "$t" "$seconds" "${execs:-?}" "${cov:-?}" "${ft:-?}" "$crashes" \
-    "$dir/artifacts"
+  cpu=$(awk '{ printf "%.0f", $1 + $2 }' "$dir/cpu.txt" 2>/dev/null || true)
+  printf '%-14s %8s %8s %12s %7s %8s %8s  %s\n' "$t" "$seconds" "${cpu:-?}" "${execs:-?}" "${cov:-?}" "${ft:-?}" \
+    "$crashes" "$dir/artifacts"
 done
 exit $status

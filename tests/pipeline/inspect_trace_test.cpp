@@ -167,6 +167,15 @@ TEST(InspectTrace, CommandLinePrintsTheTraceAndItsJson) {
   EXPECT_THAT(last.at("source").get<std::string>(), HasSubstr("gl_Position = u_view_proj * vec4(p, 1.0);"));
   EXPECT_EQ(last.at("stores").at(0).at("target"), "gl_Position");
   EXPECT_EQ(last.at("stores").at(0).at("value").size(), 4u);
+  // `mid = u_normal_mode == 2 ? h : safe_normalize(h);` keeps mid as a value, not in memory: the
+  // line comes back after safe_normalize's lines with the value mid takes, which the next line
+  // stores (issue 24: the trace showed the condition and never mid).
+  const test::CliRun control = test::run_cli("inspect --patch 17 --vertex 5 --trace --trace-stages control");
+  ASSERT_EQ(control.exit_code, 0) << control.output;
+  EXPECT_THAT(control.output, HasSubstr("27: return v / sqrt(len2);"));
+  EXPECT_THAT(control.output, ::testing::ContainsRegex(
+      "103: mid = u_normal_mode == 2 \\? h : safe_normalize\\(h\\); +-> joined: \\(0.758645177, 0.557058692, 0.337850749\\)"));
+  EXPECT_THAT(control.output, HasSubstr("-> tcs_out[0].attr[4] = (0.758645177, 0.557058692, 0.337850749, 0)"));
   const test::CliRun bad = test::run_cli("inspect --patch 1 --trace --trace-stages vertx");
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_THAT(bad.output, HasSubstr("--trace-stages: unknown stage \"vertx\""));
