@@ -277,39 +277,40 @@ struct Scanner {
         if (batch.quads + seg_quads > kFragmentQuads) sink.flush();
         const int base = 4 * batch.quads;
         const int lanes = 4 * seg_quads;
-        for (int l = base; l < base + lanes; ++l) batch.live[l] = 0;
+        // Every lane of the segment at its own pixel centre: lane 4q + k is pixel (k & 1, k >> 1)
+        // of quad q. The lanes that cover nothing (or fail the depth test) run as GL's helper
+        // invocations (gl_HelperInvocation), with inputs interpolated at their own pixel, so that
+        // derivatives across a triangle's edge difference real values, as on llvmpipe's quads.
+        for (int l = base; l < base + lanes; ++l) {
+          const int k = l & 3;
+          const int x = seg_x + 2 * ((l - base) >> 2) + (k & 1), y = qy + (k >> 1);
+          batch.live[l] = 0;
+          ip.barycentrics(x, y, sink.b1_[l], sink.b2_[l]);
+          batch.frag_coord[0][l] = float(x) + 0.5f;
+          batch.frag_coord[1][l] = float(y) + 0.5f;
+          batch.frag_coord[2][l] = ip.depth(sink.b1_[l], sink.b2_[l]);
+        }
 
-        // Depth, row by row: barycentrics and depth over the covered run, then the test.
+        // The covered run of each row, then the depth test.
         for (int r = 0; r < 2; ++r) {
           const int y = qy + r;
           const int xs = std::max(span[r].lo, seg_x);
           const int xe = std::min(span[r].hi, seg_x + 2 * seg_quads - 1);
           const int n = xe - xs + 1;
           if (n <= 0) continue;
-          double b1[2 * kFragmentQuads], b2[2 * kFragmentQuads];
-          float z[2 * kFragmentQuads];
-          for (int i = 0; i < n; ++i) {
-            ip.barycentrics(xs + i, y, b1[i], b2[i]);
-            z[i] = ip.depth(b1[i], b2[i]);
-          }
           float* depth = fb.depth.data() + fb.index(xs, y);
           for (int i = 0; i < n; ++i) {
+            const int x = xs + i;
+            const int lane = base + 2 * (x - seg_x) - (x & 1) + 2 * r;  // 4 * quad + (x & 1) + 2r
             if (sink.depth_test_) {
-              const float stored = sink.stored_depth(z[i]);
+              const float stored = sink.stored_depth(batch.frag_coord[2][lane]);
               if (!sink.depth_passes(stored, depth[i])) {
                 ++sink.depth_failed_;
                 continue;
               }
               if (sink.early_depth_write()) depth[i] = stored;  // no discard: the write is final
             }
-            const int x = xs + i;
-            const int lane = base + 2 * (x - seg_x) - (x & 1) + 2 * r;  // 4 * quad + (x & 1) + 2r
             batch.live[lane] = 1;
-            sink.b1_[lane] = b1[i];
-            sink.b2_[lane] = b2[i];
-            batch.frag_coord[0][lane] = float(x) + 0.5f;
-            batch.frag_coord[1][lane] = float(y) + 0.5f;
-            batch.frag_coord[2][lane] = z[i];
             sink.pixel_[lane] = fb.index(x, y);
             ++passed;
           }
@@ -363,45 +364,54 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
 
   std::uint64_t passed = 0;
   if (t.small_mask) {
-    // Coverage known from setup: each covered center of the box, one lane at a time.
+    // Coverage known from setup: the box's covered centers, quad by quad, so that a quad's
+    // covered pixels shade together and its other lanes run as helper invocations at their own
+    // pixel centres (see Scanner::rows).
     const int width = t.max_x - t.min_x + 1;
-    int quad_x = -1, quad_y = -1, quad_base = 0;
-    for (int bit = 0; bit < kSmallTrianglePixels; ++bit) {
-      if (!(t.small_mask & (1u << bit))) continue;
-      const int x = t.min_x + bit % width, y = t.min_y + bit / width;
-      if (x < x0 || x > x1 || y < y0 || y > y1) continue;
-      double b1, b2;
-      ip.barycentrics(x, y, b1, b2);
-      const float z = ip.depth(b1, b2);
-      const std::size_t idx = fb.index(x, y);
-      if (sink.depth_test_) {
-        const float stored = sink.stored_depth(z);
-        if (!sink.depth_passes(stored, fb.depth[idx])) {
-          ++sink.depth_failed_;
-          continue;
+    for (int qy = t.min_y & ~1; qy <= t.max_y; qy += 2)
+      for (int qx = t.min_x & ~1; qx <= t.max_x; qx += 2) {
+        unsigned live = 0;
+        std::size_t idx[4] = {};
+        for (int k = 0; k < 4; ++k) {
+          const int x = qx + (k & 1), y = qy + (k >> 1);
+          if (x < t.min_x || x > t.max_x || y < t.min_y || y > t.max_y) continue;
+          if (!(t.small_mask & (1u << ((y - t.min_y) * width + (x - t.min_x))))) continue;
+          if (x < x0 || x > x1 || y < y0 || y > y1) continue;
+          double b1, b2;
+          ip.barycentrics(x, y, b1, b2);
+          idx[k] = fb.index(x, y);
+          if (sink.depth_test_) {
+            const float stored = sink.stored_depth(ip.depth(b1, b2));
+            if (!sink.depth_passes(stored, fb.depth[idx[k]])) {
+              ++sink.depth_failed_;
+              continue;
+            }
+            if (sink.early_depth_write()) fb.depth[idx[k]] = stored;
+          }
+          live |= 1u << k;
         }
-        if (sink.early_depth_write()) fb.depth[idx] = stored;
-      }
-      if ((x & ~1) != quad_x || (y & ~1) != quad_y) {
+        if (!live) continue;
         if (batch.quads == kFragmentQuads) sink.flush();
-        quad_x = x & ~1;
-        quad_y = y & ~1;
-        quad_base = 4 * batch.quads++;
-        for (int k = 0; k < 4; ++k) batch.live[quad_base + k] = 0;
+        const int base = 4 * batch.quads++;
+        for (int k = 0; k < 4; ++k) {
+          const int lane = base + k, x = qx + (k & 1), y = qy + (k >> 1);
+          double b1, b2;
+          ip.barycentrics(x, y, b1, b2);
+          float w1, w2;
+          batch.frag_coord[3][lane] = float(ip.perspective(b1, b2, w1, w2));
+          for (int j = 0; j < num_varyings; ++j)
+            batch.varyings[j][lane] = sink.is_flat(j) ? a0[j] : PixelInterpolation::varying(a0[j], d1[j], d2[j], w1, w2);
+          batch.frag_coord[0][lane] = float(x) + 0.5f;
+          batch.frag_coord[1][lane] = float(y) + 0.5f;
+          batch.frag_coord[2][lane] = ip.depth(b1, b2);
+          batch.front_facing[lane] = t.front_facing;
+          batch.live[lane] = (live >> k) & 1u;
+          if (batch.live[lane]) {
+            sink.pixel_[lane] = idx[k];
+            ++passed;
+          }
+        }
       }
-      const int lane = quad_base + (x & 1) + 2 * (y & 1);
-      float w1, w2;
-      batch.frag_coord[3][lane] = float(ip.perspective(b1, b2, w1, w2));
-      for (int j = 0; j < num_varyings; ++j)
-        batch.varyings[j][lane] = sink.is_flat(j) ? a0[j] : PixelInterpolation::varying(a0[j], d1[j], d2[j], w1, w2);
-      batch.frag_coord[0][lane] = float(x) + 0.5f;
-      batch.frag_coord[1][lane] = float(y) + 0.5f;
-      batch.frag_coord[2][lane] = z;
-      batch.front_facing[lane] = t.front_facing;
-      batch.live[lane] = 1;
-      sink.pixel_[lane] = idx;
-      ++passed;
-    }
     if (batch.quads == kFragmentQuads) sink.flush();
     sink.shaded_ += passed;
     return passed;

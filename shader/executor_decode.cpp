@@ -630,15 +630,10 @@ struct Decoder {
         emit(x);
         return;
       }
-      case spv::OpDPdx: simple(XOp::DPdx, 1); return;
-      case spv::OpDPdy: simple(XOp::DPdy, 1); return;
-      case spv::OpFwidth: simple(XOp::Fwidth, 1); return;
-      case spv::OpDPdxCoarse: simple(XOp::DPdx, 1); return;
-      case spv::OpDPdyCoarse: simple(XOp::DPdy, 1); return;
-      case spv::OpFwidthCoarse: simple(XOp::Fwidth, 1); return;
-      case spv::OpDPdxFine: simple(XOp::DPdxFine, 1); return;
-      case spv::OpDPdyFine: simple(XOp::DPdyFine, 1); return;
-      case spv::OpFwidthFine: simple(XOp::FwidthFine, 1); return;
+      // Plain, coarse and fine derivatives alike, all fine (Runner::derivative).
+      case spv::OpDPdx: case spv::OpDPdxCoarse: case spv::OpDPdxFine: simple(XOp::DPdx, 1); return;
+      case spv::OpDPdy: case spv::OpDPdyCoarse: case spv::OpDPdyFine: simple(XOp::DPdy, 1); return;
+      case spv::OpFwidth: case spv::OpFwidthCoarse: case spv::OpFwidthFine: simple(XOp::Fwidth, 1); return;
       case spv::OpSampledImage: case spv::OpImage: {
         XIns x = base(ins, XOp::Copy);
         x.a = V(0);

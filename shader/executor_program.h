@@ -27,7 +27,7 @@ enum class XOp : std::uint16_t {
   Load, Store, AccessChain, CopyMemory,
   Ext,  // GLSL.std.450: aux = instruction number, operands a, b, c
   BitCount, BitReverse, BitFieldInsert, BitFieldSExtract, BitFieldUExtract,
-  DPdx, DPdy, Fwidth, DPdxFine, DPdyFine, FwidthFine,
+  DPdx, DPdy, Fwidth,
   Sample, SampleLod, Fetch, QuerySize,
   AtomicInc, AtomicDec, AtomicLoad, AtomicAdd, AtomicSub, AtomicStore,
   Kill,

@@ -20,6 +20,7 @@ IoKind kind_of_builtin(std::uint32_t b) {
     case spv::BuiltInTessCoord: return IoKind::TessCoord;
     case spv::BuiltInFragCoord: return IoKind::FragCoord;
     case spv::BuiltInFrontFacing: return IoKind::FrontFacing;
+    case spv::BuiltInHelperInvocation: return IoKind::HelperInvocation;
     case spv::BuiltInVertexId: case spv::BuiltInVertexIndex: return IoKind::VertexId;
     case spv::BuiltInInstanceId: case spv::BuiltInInstanceIndex: return IoKind::InstanceId;
     case spv::BuiltInPointSize: return IoKind::PointSize;

@@ -20,7 +20,7 @@ struct IoWord {
 };
 
 enum class IoKind { User, Position, TessLevelOuter, TessLevelInner, PrimitiveId, InvocationId,
-                    PatchVertices, TessCoord, FragCoord, FrontFacing, VertexId, InstanceId,
+                    PatchVertices, TessCoord, FragCoord, FrontFacing, HelperInvocation, VertexId, InstanceId,
                     PointSize, ClipDistance, FragDepth, Other };
 
 struct IoVariable {

@@ -295,6 +295,9 @@ void GlslFragment::shade_lanes(FragmentBatch& batch, int first, int n) const {
       case IoKind::FrontFacing:
         for (int l = 0; l < n; ++l) inv.row(*v.slot, 0)[l] = batch.front_facing[first + l] ? 1u : 0u;
         break;
+      case IoKind::HelperInvocation:  // the lanes of a quad that cover no sample (tile_raster.cpp)
+        for (int l = 0; l < n; ++l) inv.row(*v.slot, 0)[l] = batch.live[first + l] ? 0u : 1u;
+        break;
       case IoKind::PrimitiveId:
         if (primitive_id_varying_ >= 0)
           std::memcpy(inv.row(*v.slot, 0), batch.varyings[primitive_id_varying_] + first, 4 * std::size_t(n));

@@ -61,6 +61,16 @@ TEST(DrawsVsLlvmpipe, BicubicPatchesFromDrawArrays) {
   expect_matches(o);
 }
 
+// Derivatives at triangle edges (issue 20): a fragment quad's lanes that cover nothing run as
+// helper invocations with inputs interpolated at their own pixels, as on llvmpipe. Before, they
+// held an earlier fragment's inputs, and dFdx/dFdy/fwidth were wrong along every edge.
+TEST(DrawsVsLlvmpipe, DerivativesAndHelperInvocationsAtTriangleEdges) {
+  TESSREF_REQUIRE_GL(ctx);
+  const DrawsOutcome o = compare_draws(*ctx, "derivatives.json");
+  EXPECT_GT(o.stats.raster.fragments_shaded, 10000u);
+  expect_matches(o);
+}
+
 // A frame of two draws with a program each: an untessellated triangle strip, then bicubic patches
 // depth-tested against it. Where the surface crosses the plane the two depths are near-equal, so
 // a pixel or two may resolve differently (GL_LESS on depths that differ in the last bits).

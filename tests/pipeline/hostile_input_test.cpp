@@ -162,7 +162,7 @@ TEST_F(HostileInput, MemoryPastTheBudgetIsAnErrorNamingIt) {
   const std::string message =
       "tessref: error: out of memory: this run needed more than its memory budget of 320.0 MiB (--max-memory SIZE "
       "or TESSREF_MAX_MEMORY;";
-  for (const std::string command : {"--max-memory 320M render" + big, "render --max-memory 320M" + big,
+  for (const std::string& command : {"--max-memory 320M render" + big, "render --max-memory 320M" + big,
                                     "render --max-memory 320MiB" + big}) {
     const CliRun r = run_cli(command);
     EXPECT_EQ(r.exit_code, 2) << command << ": " << r.output;

@@ -1903,8 +1903,9 @@ void main() {
     const bool killed = value(l) < 0.0f;
     EXPECT_EQ(k.inv().discarded()[l] != 0, killed);
     if (killed) continue;
-    const int q = l & ~3;
-    const float dx = value(q + 1) - value(q), dy = value(q + 2) - value(q);  // coarse: one per quad
+    // Fine, as llvmpipe computes every derivative: dFdx within the lane's row, dFdy within its column.
+    const int q = l & ~3, row = q + (l & 2), column = q + (l & 1);
+    const float dx = value(row + 1) - value(row), dy = value(column + 2) - value(column);
     EXPECT_EQ(k.f32("color", l, 0), value(l));
     EXPECT_EQ(k.f32("color", l, 1), dx);
     EXPECT_EQ(k.f32("color", l, 2), dy);
