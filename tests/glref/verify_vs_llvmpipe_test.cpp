@@ -272,6 +272,18 @@ TEST_F(VerifyVsLlvmpipe, UserShadersVerifyToo) {
   EXPECT_EQ(r.exit_code, 1) << r.output;
 }
 
+// Facet normals from derivatives (scenes/facets.json, issue 20): dFdx/dFdy of the world position
+// difference helper invocations at every triangle edge, which run at their own pixels as on
+// llvmpipe, so verify's colour check holds on every pixel.
+TEST_F(VerifyVsLlvmpipe, FacetNormalsFromDerivativesMatchOnEveryPixel) {
+  const std::string scene = std::string(TESSREF_SOURCE_DIR) + "/scenes/facets.json";
+  test::CliRun r = test::run_cli("capture " + scene + " --out " + path("facets") + kSmall);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = test::run_cli("verify " + scene + " --ref " + path("facets") + kSmall);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("colour: 100.0000% of pixels within 1/255"));
+}
+
 // A capture that keeps the records of every k-th patch only (--tess-records) still compares every
 // patch's coordinates, by digest: a patch outside the sample whose digest differs is named.
 TEST_F(VerifyVsLlvmpipe, SampledCapturesCompareEveryPatchByDigest) {
