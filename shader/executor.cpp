@@ -879,8 +879,8 @@ void Invocations::run() {
   const std::uint64_t budget = exe_.limits().max_instructions;
   const std::string budget_message =
       "instruction budget of " + std::to_string(budget) +
-      " exceeded (an infinite loop?); raise it with --max-shader-instructions or the scene's "
-      "shaders.max_instructions";
+      " exceeded (an infinite loop?); raise it with the scene key shaders.max_instructions "
+      "(render, inspect: --set shaders.max_instructions=N) or shader-test's --max-shader-instructions";
   for (int l = 0; l < lanes_; ++l) {
     r.pc[l] = 0;
     r.prev[l] = kNone;

@@ -346,28 +346,46 @@ bool has_function_call(const std::vector<std::uint32_t>& spirv) {
 // all its instructions: a call (inlined, the body keeps the callee's lines), a function header,
 // a store to a local that became an SSA value (`vec3 c = vec3(0.0);`). pn_triangles.tesc keeps
 // 72 of its 82 lines. Instructions the passes create (OpPhi) have no line.
-void register_passes(spvtools::Optimizer& optimizer) {
+// In two lists, so that the loops can be counted between them (legalize). The first inlines:
+void register_inlining_passes(spvtools::Optimizer& optimizer) {
   optimizer
       .RegisterPass(spvtools::CreateWrapOpKillPass())  // discard in a function: inlinable
       .RegisterPass(spvtools::CreateDeadBranchElimPass())  // unreachable blocks, for MergeReturn
       .RegisterPass(spvtools::CreateMergeReturnPass())     // one return per function, to inline
       .RegisterPass(spvtools::CreateInlineExhaustivePass())
       .RegisterPass(spvtools::CreateEliminateDeadFunctionsPass())
-      .RegisterPass(spvtools::CreatePrivateToLocalPass())  // globals main alone uses: locals
+      .RegisterPass(spvtools::CreatePrivateToLocalPass());  // globals main alone uses: locals
+}
+
+// The second promotes memory to SSA values and, with `dead_code`, removes dead code. AggressiveDCE
+// also removes a loop whose results nothing uses, even one that never ends (`while (true) {}`):
+// without it the executor runs such a loop into its instruction budget, as a GPU would hang.
+void register_ssa_passes(spvtools::Optimizer& optimizer, bool dead_code) {
+  auto dce = [&] {
+    if (dead_code) optimizer.RegisterPass(spvtools::CreateAggressiveDCEPass());
+  };
+  optimizer.RegisterPass(spvtools::CreateLocalSingleBlockLoadStoreElimPass())
+      .RegisterPass(spvtools::CreateLocalSingleStoreElimPass());
+  dce();
+  optimizer.RegisterPass(spvtools::CreateScalarReplacementPass(0))  // split local arrays/structs
       .RegisterPass(spvtools::CreateLocalSingleBlockLoadStoreElimPass())
-      .RegisterPass(spvtools::CreateLocalSingleStoreElimPass())
-      .RegisterPass(spvtools::CreateAggressiveDCEPass())
-      .RegisterPass(spvtools::CreateScalarReplacementPass(0))  // split local arrays/structs
-      .RegisterPass(spvtools::CreateLocalSingleBlockLoadStoreElimPass())
-      .RegisterPass(spvtools::CreateLocalSingleStoreElimPass())
-      .RegisterPass(spvtools::CreateAggressiveDCEPass())
-      .RegisterPass(spvtools::CreateLocalMultiStoreElimPass())  // the rest to SSA (OpPhi)
-      .RegisterPass(spvtools::CreateAggressiveDCEPass())
-      .RegisterPass(spvtools::CreateCopyPropagateArraysPass())
+      .RegisterPass(spvtools::CreateLocalSingleStoreElimPass());
+  dce();
+  optimizer.RegisterPass(spvtools::CreateLocalMultiStoreElimPass());  // the rest to SSA (OpPhi)
+  dce();
+  optimizer.RegisterPass(spvtools::CreateCopyPropagateArraysPass())
       .RegisterPass(spvtools::CreateVectorDCEPass())
-      .RegisterPass(spvtools::CreateDeadInsertElimPass())
-      .RegisterPass(spvtools::CreateAggressiveDCEPass())
-      .RegisterPass(spvtools::CreateBlockMergePass());  // the straight-line blocks inlining left
+      .RegisterPass(spvtools::CreateDeadInsertElimPass());
+  dce();
+  optimizer.RegisterPass(spvtools::CreateBlockMergePass());  // the straight-line blocks inlining left
+}
+
+std::size_t count_loops(const std::vector<std::uint32_t>& spirv) {
+  constexpr std::uint32_t kOpLoopMerge = 246;
+  std::size_t loops = 0;
+  for (std::size_t i = 5; i < spirv.size(); i += std::max<std::uint32_t>(spirv[i] >> 16, 1))
+    loops += (spirv[i] & 0xffffu) == kOpLoopMerge;
+  return loops;
 }
 
 // glslang keeps an OpenGL `uniform bool` as a bool in UniformConstant storage, which the SPIR-V
@@ -436,14 +454,23 @@ std::vector<std::uint32_t> legalize(const std::vector<std::uint32_t>& spirv,
                                     const std::string& file) {
   validate(spirv, file, "glslang's SPIR-V");
   std::string diagnostics;
-  spvtools::Optimizer optimizer(kTargetEnv);
-  optimizer.SetMessageConsumer(collect_errors(diagnostics));
-  register_passes(optimizer);
-  spvtools::OptimizerOptions options;
-  options.set_run_validator(false);  // validate() did, tolerating glslang's bool uniforms
-  std::vector<std::uint32_t> legal;
-  if (!optimizer.Run(spirv.data(), spirv.size(), &legal, options))
-    throw std::logic_error(file + ": internal error: SPIR-V legalization failed: " + diagnostics);
+  auto run = [&](const std::vector<std::uint32_t>& in, const auto& register_list) {
+    spvtools::Optimizer optimizer(kTargetEnv);
+    optimizer.SetMessageConsumer(collect_errors(diagnostics));
+    register_list(optimizer);
+    spvtools::OptimizerOptions options;
+    options.set_run_validator(false);  // validate() did, tolerating glslang's bool uniforms
+    std::vector<std::uint32_t> out;
+    if (!optimizer.Run(in.data(), in.size(), &out, options))
+      throw std::logic_error(file + ": internal error: SPIR-V legalization failed: " + diagnostics);
+    return out;
+  };
+  const std::vector<std::uint32_t> inlined = run(spirv, register_inlining_passes);
+  std::vector<std::uint32_t> legal = run(inlined, [](spvtools::Optimizer& o) { register_ssa_passes(o, true); });
+  // Dead-code removal dropped a loop (its results unused, or no way out of it): keep the dead
+  // code, so that every loop the shader runs is run, and one that never ends meets the budget.
+  if (count_loops(legal) < count_loops(inlined))
+    legal = run(inlined, [](spvtools::Optimizer& o) { register_ssa_passes(o, false); });
   validate(legal, file, "legalized SPIR-V");
   if (has_function_call(legal))
     throw CompileError(file + ": error: a function could not be inlined (discard in a loop's "

@@ -445,8 +445,9 @@ void expect_runaway_stops(const RunawayCase& c) {
   EXPECT_EQ(r.verdict, Verdict::Fail);
   const std::string draw = str(line_of(text, "draw arrays"));
   EXPECT_THAT(r.reason, StartsWith(draw + ": " + c.where));
-  EXPECT_THAT(r.reason, HasSubstr("instruction budget of 20000 exceeded (an infinite loop?); raise it with "
-                                  "--max-shader-instructions"));
+  EXPECT_THAT(r.reason, HasSubstr("instruction budget of 20000 exceeded (an infinite loop?); raise it with the "
+                                  "scene key shaders.max_instructions (render, inspect: --set "
+                                  "shaders.max_instructions=N) or shader-test's --max-shader-instructions"));
   EXPECT_THAT(r.reason, HasSubstr("[draw arrays GL_PATCHES 0 16]"));
   // With n even every loop ends: the same file passes.
   std::string finite = text;
@@ -454,9 +455,10 @@ void expect_runaway_stops(const RunawayCase& c) {
   EXPECT_TRUE(passed(run_text(finite, std::string(c.name) + ".shader_test", 20'000)));
 }
 
-TEST(GlslErrors, InfiniteLoopInEachStageStopsAtTheBudget) {
+// A runaway loop in the vertex, control and evaluation shaders.
+std::vector<RunawayCase> runaway_cases() {
   const std::string& loop = kLoop;
-  const std::vector<RunawayCase> cases = {
+  return {
       {"vertex",
        std::string(R"([vertex shader]
 in vec4 piglit_vertex;
@@ -494,7 +496,21 @@ void main() {
 )" + kGreen,
        "tessellation evaluation shader, patch 2, invocation 0"},
   };
-  for (const RunawayCase& c : cases) expect_runaway_stops(c);
+}
+
+TEST(GlslErrors, InfiniteLoopInEachStageStopsAtTheBudget) {
+  for (const RunawayCase& c : runaway_cases()) expect_runaway_stops(c);
+}
+
+// The same loops with results nothing uses (issue 23): dead-code removal dropped them, and the
+// invocations ended with no error, their outputs unwritten. Every loop now runs.
+TEST(GlslErrors, InfiniteLoopsWhoseResultsNothingUsesStopAtTheBudgetToo) {
+  for (RunawayCase c : runaway_cases()) {
+    const std::string use = " + vec4(float(i) * 0.0)";
+    ASSERT_NE(c.program.find(use), std::string::npos) << c.name;
+    c.program.erase(c.program.find(use), use.size());
+    expect_runaway_stops(c);
+  }
 }
 
 // A fragment shader's run-time error is a failure with its message, not an abort: the tile's

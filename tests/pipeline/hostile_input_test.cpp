@@ -132,6 +132,30 @@ TEST_F(HostileInput, LocalArraysPastTheExecutorsLimitsNameTheStageAndVariable) {
   EXPECT_EQ(r.exit_code, 0) << r.output;
 }
 
+// `while (true) {}` has no results, so dead-code removal dropped it: the draw finished with
+// exit 0 and the outputs unwritten (issue 23). It now runs into the instruction budget in render,
+// render --check and inspect alike.
+TEST_F(HostileInput, AnEmptyEndlessLoopStopsAtTheBudget) {
+  const auto frag = dir.write("endless.frag",
+                              "#version 450\nlayout(location = 0) in vec3 v_world_position;\n"
+                              "layout(location = 0) out vec4 out_color;\nvoid main() {\n  while (true) {}\n"
+                              "  out_color = vec4(1.0);\n}\n");
+  const std::string sets = kDisplacement + " --set shaders.fragment=" + frag.string() +
+                           " --set shaders.max_instructions=100000";
+  const std::string message = "fragment shader, fragment (";
+  const std::string budget = "line 5: instruction budget of 100000 exceeded (an infinite loop?)";
+  for (const std::string& args : {std::string(""), std::string(" --check")}) {
+    const CliRun r = render(sets + args);
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.output;
+    EXPECT_THAT(r.output, HasSubstr(message)) << args;
+    EXPECT_THAT(r.output, HasSubstr(budget)) << args;
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "x.png")) << args;
+  }
+  const CliRun r = run_cli("inspect " + sets + " --set image.width=32 --set image.height=32 --patch 3");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr(budget));
+}
+
 // --scale nan wrote a black image and --scale -5 printed DBL_MAX in 310 digits.
 TEST_F(HostileInput, DiffScaleMustBeFiniteAndPositive) {
   const std::string image = kSource + "/tests/golden/default.png";
