@@ -3,11 +3,6 @@
 #include <spirv/unified1/spirv.hpp>
 
 namespace tessref::glsl {
-namespace {
-
-using shader::Module;
-using shader::Type;
-using shader::TypeKind;
 
 IoKind kind_of_builtin(std::uint32_t b) {
   switch (spv::BuiltIn(b)) {
@@ -29,6 +24,12 @@ IoKind kind_of_builtin(std::uint32_t b) {
     default: return IoKind::Other;
   }
 }
+
+namespace {
+
+using shader::Module;
+using shader::Type;
+using shader::TypeKind;
 
 struct Walker {
   const Module& m;

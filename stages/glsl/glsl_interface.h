@@ -42,6 +42,10 @@ struct StageInterface {
 // Locations a 'patch' variable may use (before GlslProgram maps them to PatchOutput slots).
 inline constexpr int kMaxPatchLocations = 256;
 
+// The kind of a built-in variable (spv::BuiltIn); IoKind::Other for one the pipeline does not
+// carry, which a program may not use (glsl_program.cpp refuses it by name).
+IoKind kind_of_builtin(std::uint32_t builtin);
+
 // Reads the interface of an executable. Throws shader::SpirvError naming the variable when a
 // location is past tessref's limits (max_slots I/O slots of 4 words, slot 0 being gl_Position).
 StageInterface read_interface(const shader::Executable& exe, int max_slots);

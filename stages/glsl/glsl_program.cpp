@@ -24,7 +24,7 @@ constexpr int kPatchSlots = 1 + kMaxPatchAttributes;               // PatchOutpu
 static_assert(shader::kGlMaxPatchVertices == kMaxPatchVertices, "GL_MAX_PATCH_VERTICES: one value");
 
 // What the executor runs but the pipeline does not carry, refused by name rather than ignored.
-void refuse_unsupported_outputs(const shader::Module& m, shader::Stage stage) {
+void refuse_unsupported_io(const shader::Module& m, shader::Stage stage) {
   // The compiler refuses a larger patch (glsl_compile.cpp); this guards SPIR-V from elsewhere.
   if (stage == shader::Stage::TessControl &&
       (m.modes.output_vertices < 1 || m.modes.output_vertices > kMaxPatchVertices))
@@ -32,6 +32,13 @@ void refuse_unsupported_outputs(const shader::Module& m, shader::Stage stage) {
                              "): an output patch has 1 to GL_MAX_PATCH_VERTICES (" +
                              std::to_string(kMaxPatchVertices) + ") vertices");
   for (const shader::Variable& v : m.variables) {
+    // A built-in the pipeline does not carry (gl_SubGroupSizeARB, gl_PointCoord, gl_SampleID,
+    // gl_Layer, gl_DrawID, ...) would read 0 or go nowhere: refused by name.
+    // (glslang declares gl_SubGroupSizeARB as a UniformConstant, not an Input.)
+    if (v.decorations.builtin && kind_of_builtin(*v.decorations.builtin) == IoKind::Other)
+      throw shader::SpirvError("'" + (v.name.empty() ? "built-in " + std::to_string(*v.decorations.builtin) : v.name) +
+                               "' is a built-in " + (v.storage == spv::StorageClassOutput ? "output" : "input") +
+                               " tessref's pipeline does not provide");
     if (v.storage != spv::StorageClassOutput) continue;
     const auto b = v.decorations.builtin;
     if (b == std::uint32_t(spv::BuiltInClipDistance) || b == std::uint32_t(spv::BuiltInCullDistance))
@@ -66,7 +73,7 @@ std::unique_ptr<StageProgram> make_stage(const shader::CompiledStage& cs, shader
   sp->stage = cs.stage;
   try {
     shader::Module module = shader::read_module(cs.spirv, storage);
-    refuse_unsupported_outputs(module, cs.stage);
+    refuse_unsupported_io(module, cs.stage);
     sp->exe = std::make_unique<shader::Executable>(std::move(module), limits);
   } catch (const shader::SpirvError& e) {
     throw shader::SpirvError(std::string(shader::stage_name(cs.stage)) + ": " + e.what());

@@ -421,6 +421,31 @@ TEST(GlslErrors, ClipDistanceHighOutputsAndInterpolateAtAreRefusedByName) {
   }
 }
 
+// Built-ins the pipeline does not provide read 0 before (gl_SubGroupSizeARB, where GL requires at
+// least 1: issue 23); each is refused by name.
+TEST(GlslErrors, BuiltInsThePipelineDoesNotProvideAreRefusedByName) {
+  const struct {
+    const char* name;
+    std::string fragment;
+    std::string named;
+  } cases[] = {
+      {"ballot", "#extension GL_ARB_shader_ballot : require\nvoid main() { gl_FragColor = vec4(float(gl_SubGroupSizeARB)); }\n",
+       "'gl_SubGroupSizeARB' is a built-in input tessref's pipeline does not provide"},
+      {"point_coord", "void main() { gl_FragColor = vec4(gl_PointCoord, 0.0, 1.0); }\n",
+       "'gl_PointCoord' is a built-in input tessref's pipeline does not provide"},
+      {"sample_id", "#extension GL_ARB_sample_shading : require\nvoid main() { gl_FragColor = vec4(float(gl_SampleID)); }\n",
+       "'gl_SampleID' is a built-in input tessref's pipeline does not provide"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    const std::string text = std::string(kRequire) + kVertex + kControl + kEvaluation + "[fragment shader]\n" +
+                             c.fragment + "\n[test]\ndraw rect patch -1 -1 2 2\n";
+    const ShaderTestResult r = run_text(text, std::string(c.name) + ".shader_test");
+    EXPECT_EQ(r.verdict, Verdict::Fail);
+    EXPECT_THAT(r.reason, HasSubstr(c.named));
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Runaway shaders stop at the instruction budget, naming the stage, primitive and invocation
 
