@@ -364,6 +364,10 @@ TEST(MeshLoader, DeclaredCountsLargerThanTheFile) {
   auto huge_ply = dir.write("huge.ply", "ply\nformat ascii 1.0\nelement vertex " + huge +
                                             "\nproperty float x\nend_header\n0\n");
   EXPECT_THAT(error_of(huge_ply), HasSubstr("the header declares 18446744073709551615 vertex elements"));
+  // A count glued to the keyword (fuzz_mesh, 17 bytes): assimp read 99949999490 vertices as their
+  // 32-bit wrap, 1165751682, and asked for 14 GB.
+  auto glued = dir.write("glued.off", "OFF99949999490 9");
+  EXPECT_THAT(error_of(glued), HasSubstr("the header declares 99949999490 vertex elements, more than a file of 16 bytes"));
   // The honest versions load.
   auto good = dir.write("good.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
   EXPECT_EQ(load_mesh_file(good, warnings).triangle_count(), 1u);
