@@ -41,7 +41,10 @@ std::uint64_t machine_memory_bytes() {
   return cgroup ? std::min(physical, cgroup) : physical;
 }
 
-std::uint64_t default_memory_budget() { return machine_memory_bytes() / 4 * 3; }
+std::uint64_t default_memory_budget() {
+  const std::uint64_t three_quarters = machine_memory_bytes() / 4 * 3;
+  return three_quarters < kMinMemoryBudget ? 0 : three_quarters;  // a tiny machine: no bound
+}
 
 bool set_memory_budget(std::uint64_t bytes) {
 #ifdef TESSREF_ASAN

@@ -17,7 +17,8 @@ inline constexpr std::uint64_t kMinMemoryBudget = std::uint64_t(256) << 20;
 std::uint64_t machine_memory_bytes();
 
 // The default budget: three quarters of machine_memory_bytes() (room for the page cache and the
-// rest of the machine); 0, no budget, where the machine's memory cannot be read.
+// rest of the machine); 0, no budget, where the machine's memory cannot be read or three
+// quarters of it is under kMinMemoryBudget.
 std::uint64_t default_memory_budget();
 
 // Sets the budget (0: none). Returns false where it cannot be enforced: in AddressSanitizer builds,

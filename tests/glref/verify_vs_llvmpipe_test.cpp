@@ -257,13 +257,19 @@ TEST_F(VerifyVsLlvmpipe, AWrongSpecularSignIsAColourFailure) {
   EXPECT_THAT(r.output, HasSubstr("% of pixels within 2/255 (required: 99.99%"));
 }
 
+// Captures `scene` into `out` at the small size and verifies tessref against it: verify's run, or
+// the capture's when it failed.
+test::CliRun capture_and_verify(const std::string& scene, const std::string& out) {
+  const test::CliRun capture = test::run_cli("capture " + scene + " --out " + out + kSmall);
+  if (capture.exit_code != 0) return capture;
+  return test::run_cli("verify " + scene + " --ref " + out + kSmall);
+}
+
 // A user's evaluation shader (seed 001's displacement): the driver runs the same GLSL as tessref's
 // executor, and the two agree as closely as with the built-in programs.
 TEST_F(VerifyVsLlvmpipe, UserShadersVerifyToo) {
   const std::string scene = std::string(TESSREF_SOURCE_DIR) + "/scenes/displacement.json";
-  test::CliRun r = test::run_cli("capture " + scene + " --out " + path("displacement") + kSmall);
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  r = test::run_cli("verify " + scene + " --ref " + path("displacement") + kSmall);
+  test::CliRun r = capture_and_verify(scene, path("displacement"));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("256 patches, 0 with streams that differ"));
   // The displacement left out on tessref's side moves every patch: found.
@@ -276,10 +282,7 @@ TEST_F(VerifyVsLlvmpipe, UserShadersVerifyToo) {
 // difference helper invocations at every triangle edge, which run at their own pixels as on
 // llvmpipe, so verify's colour check holds on every pixel.
 TEST_F(VerifyVsLlvmpipe, FacetNormalsFromDerivativesMatchOnEveryPixel) {
-  const std::string scene = std::string(TESSREF_SOURCE_DIR) + "/scenes/facets.json";
-  test::CliRun r = test::run_cli("capture " + scene + " --out " + path("facets") + kSmall);
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  r = test::run_cli("verify " + scene + " --ref " + path("facets") + kSmall);
+  const test::CliRun r = capture_and_verify(std::string(TESSREF_SOURCE_DIR) + "/scenes/facets.json", path("facets"));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("colour: 100.0000% of pixels within 1/255"));
 }
