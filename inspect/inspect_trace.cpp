@@ -67,10 +67,11 @@ std::string format_traces(const std::vector<InspectTrace>& traces) {
       std::string text = trimmed(t.source_line(l.line));
       std::string values;
       for (const shader::TraceStore& s : l.stores) values += (values.empty() ? "" : "; ") + s.target + " = " + s.value.text();
-      // Where the paths of a ?:, && or || or an if meet: the values its variables take there.
-      for (const shader::TraceValue& j : l.joins)
-        if (l.stores.empty()) values += (values.empty() ? "joined: " : "; ") + j.text();
-      if (l.stores.empty() && l.joins.empty() && l.has_result) values = l.result.text();
+      if (l.stores.empty()) {
+        // Where the paths of a ?:, && or || or an if meet: the values its variables take there.
+        for (const shader::TraceValue& j : l.joins) values += (values.empty() ? "joined: " : "; ") + j.text();
+        if (l.joins.empty() && l.has_result) values = l.result.text();
+      }
       if (l.barrier) values += values.empty() ? "(barrier: the next phase starts)" : "  (barrier)";
       std::string row = "    " + std::to_string(l.line) + ": " + text;
       if (!values.empty()) {

@@ -370,18 +370,21 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
     const int width = t.max_x - t.min_x + 1;
     for (int qy = t.min_y & ~1; qy <= t.max_y; qy += 2)
       for (int qx = t.min_x & ~1; qx <= t.max_x; qx += 2) {
-        unsigned live = 0;
+        unsigned live = 0, computed = 0;  // lanes covered (and passing), lanes with b1, b2, z
         std::size_t idx[4] = {};
+        double b1[4], b2[4];
+        float z[4];
         for (int k = 0; k < 4; ++k) {
           const int x = qx + (k & 1), y = qy + (k >> 1);
           if (x < t.min_x || x > t.max_x || y < t.min_y || y > t.max_y) continue;
           if (!(t.small_mask & (1u << ((y - t.min_y) * width + (x - t.min_x))))) continue;
           if (x < x0 || x > x1 || y < y0 || y > y1) continue;
-          double b1, b2;
-          ip.barycentrics(x, y, b1, b2);
+          ip.barycentrics(x, y, b1[k], b2[k]);
+          z[k] = ip.depth(b1[k], b2[k]);
+          computed |= 1u << k;
           idx[k] = fb.index(x, y);
           if (sink.depth_test_) {
-            const float stored = sink.stored_depth(ip.depth(b1, b2));
+            const float stored = sink.stored_depth(z[k]);
             if (!sink.depth_passes(stored, fb.depth[idx[k]])) {
               ++sink.depth_failed_;
               continue;
@@ -395,15 +398,17 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
         const int base = 4 * batch.quads++;
         for (int k = 0; k < 4; ++k) {
           const int lane = base + k, x = qx + (k & 1), y = qy + (k >> 1);
-          double b1, b2;
-          ip.barycentrics(x, y, b1, b2);
+          if (!((computed >> k) & 1u)) {  // a helper lane: not covered, so not computed above
+            ip.barycentrics(x, y, b1[k], b2[k]);
+            z[k] = ip.depth(b1[k], b2[k]);
+          }
           float w1, w2;
-          batch.frag_coord[3][lane] = float(ip.perspective(b1, b2, w1, w2));
+          batch.frag_coord[3][lane] = float(ip.perspective(b1[k], b2[k], w1, w2));
           for (int j = 0; j < num_varyings; ++j)
             batch.varyings[j][lane] = sink.is_flat(j) ? a0[j] : PixelInterpolation::varying(a0[j], d1[j], d2[j], w1, w2);
           batch.frag_coord[0][lane] = float(x) + 0.5f;
           batch.frag_coord[1][lane] = float(y) + 0.5f;
-          batch.frag_coord[2][lane] = ip.depth(b1, b2);
+          batch.frag_coord[2][lane] = z[k];
           batch.front_facing[lane] = t.front_facing;
           batch.live[lane] = (live >> k) & 1u;
           if (batch.live[lane]) {

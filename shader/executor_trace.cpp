@@ -51,6 +51,16 @@ std::uint64_t lane_bits(const std::uint32_t* arena, std::uint32_t row, std::uint
   return arena[std::size_t(row + word) * kMaxLanes + lane];
 }
 
+// The value of `flat` components at `row` for `lane`.
+TraceValue lane_value(const std::uint32_t* arena, std::uint32_t row, const std::vector<FlatComponent>& flat, int lane) {
+  TraceValue value;
+  for (const FlatComponent& c : flat) {
+    value.scalars.push_back(c.scalar);
+    value.bits.push_back(lane_bits(arena, row, c.word, c.scalar, lane));
+  }
+  return value;
+}
+
 }  // namespace
 
 void Runner::nan_check(const XIns& x) {
@@ -98,14 +108,7 @@ void Runner::source_record_joins(const XBlock& b) {
   TraceLine* line = source_line(b.join_line);
   if (!line) return;
   line->joins.clear();
-  for (const Phi& phi : b.phis) {
-    TraceValue value;
-    for (const FlatComponent& c : phi.flat) {
-      value.scalars.push_back(c.scalar);
-      value.bits.push_back(lane_bits(A, phi.dst, c.word, c.scalar, lane));
-    }
-    line->joins.push_back(std::move(value));
-  }
+  for (const Phi& phi : b.phis) line->joins.push_back(lane_value(A, phi.dst, phi.flat, lane));
 }
 
 void Runner::source_record(const XIns& x) {
@@ -128,10 +131,7 @@ void Runner::source_record(const XIns& x) {
     if (name != m.names.end() && !name->second.empty()) store.target = name->second + path;
     else if (!path.empty() && path[0] == '.') store.target = path.substr(1);
     else return;  // a temporary the front end made (a call's argument copy): not the user's
-    for (const FlatComponent& c : a.flat) {
-      store.value.scalars.push_back(c.scalar);
-      store.value.bits.push_back(lane_bits(A, x.a, c.word, c.scalar, lane));
-    }
+    store.value = lane_value(A, x.a, a.flat, lane);
     line.stores.push_back(std::move(store));
     return;
   }

@@ -325,12 +325,14 @@ std::vector<std::uint32_t> to_spirv(const glslang::TIntermediate& intermediate,
   return {spirv.begin(), spirv.end()};
 }
 
-bool has_function_call(const std::vector<std::uint32_t>& spirv) {
-  constexpr std::uint32_t kOpFunctionCall = 57;
+// How many instructions of `opcode` a module holds.
+std::size_t count_opcode(const std::vector<std::uint32_t>& spirv, std::uint32_t opcode) {
+  std::size_t n = 0;
   for (std::size_t i = 5; i < spirv.size(); i += std::max<std::uint32_t>(spirv[i] >> 16, 1))
-    if ((spirv[i] & 0xffffu) == kOpFunctionCall) return true;
-  return false;
+    n += (spirv[i] & 0xffffu) == opcode;
+  return n;
 }
+constexpr std::uint32_t kOpFunctionCall = 57, kOpLoopMerge = 246;
 
 // Optimizer::RegisterLegalizationPasses (SPIRV-Tools 2023.1) without the passes that may change
 // a floating-point result or that only HLSL needs:
@@ -378,14 +380,6 @@ void register_ssa_passes(spvtools::Optimizer& optimizer, bool dead_code) {
       .RegisterPass(spvtools::CreateDeadInsertElimPass());
   dce();
   optimizer.RegisterPass(spvtools::CreateBlockMergePass());  // the straight-line blocks inlining left
-}
-
-std::size_t count_loops(const std::vector<std::uint32_t>& spirv) {
-  constexpr std::uint32_t kOpLoopMerge = 246;
-  std::size_t loops = 0;
-  for (std::size_t i = 5; i < spirv.size(); i += std::max<std::uint32_t>(spirv[i] >> 16, 1))
-    loops += (spirv[i] & 0xffffu) == kOpLoopMerge;
-  return loops;
 }
 
 // glslang keeps an OpenGL `uniform bool` as a bool in UniformConstant storage, which the SPIR-V
@@ -469,10 +463,10 @@ std::vector<std::uint32_t> legalize(const std::vector<std::uint32_t>& spirv,
   std::vector<std::uint32_t> legal = run(inlined, [](spvtools::Optimizer& o) { register_ssa_passes(o, true); });
   // Dead-code removal dropped a loop (its results unused, or no way out of it): keep the dead
   // code, so that every loop the shader runs is run, and one that never ends meets the budget.
-  if (count_loops(legal) < count_loops(inlined))
+  if (count_opcode(legal, kOpLoopMerge) < count_opcode(inlined, kOpLoopMerge))
     legal = run(inlined, [](spvtools::Optimizer& o) { register_ssa_passes(o, false); });
   validate(legal, file, "legalized SPIR-V");
-  if (has_function_call(legal))
+  if (count_opcode(legal, kOpFunctionCall) > 0)
     throw CompileError(file + ": error: a function could not be inlined (discard in a loop's "
                               "continue expression?)");
   return legal;
