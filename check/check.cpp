@@ -74,6 +74,7 @@ class WatchedFragment final : public FragmentProgram {
   WatchedFragment(const FragmentProgram& fs, Checker& checker) : fs_(fs), checker_(checker) {}
   FragmentOutput shade(const FragmentInput& in) const override { return fs_.shade(in); }
   bool may_discard() const override { return fs_.may_discard(); }
+  bool reads_quads() const override { return fs_.reads_quads(); }
   void shade_batch(FragmentBatch& batch) const override {
     fs_.shade_batch(batch);
     for (int l = 0; l < batch.lanes(); ++l) {

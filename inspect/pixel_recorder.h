@@ -20,6 +20,7 @@ class PixelRecorder final : public FragmentProgram {
                 int outputs = 1);
   FragmentOutput shade(const FragmentInput& in) const override { return inner_->shade(in); }
   bool may_discard() const override { return inner_->may_discard(); }
+  bool reads_quads() const override { return inner_->reads_quads(); }
   void shade_batch(FragmentBatch& b) const override;
   // A scene of draws: the program and source of the draw being redrawn, and its index.
   void set_draw(const FragmentProgram& inner, const shader::ShaderSource* source, std::size_t draw);

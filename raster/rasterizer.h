@@ -55,6 +55,9 @@ struct FragmentProgram {
   // Whether shade_batch may clear a lane's live flag (GLSL discard). The rasterizer then tests
   // depth again and writes it only after shading, in arrival order.
   virtual bool may_discard() const { return false; }
+  // Whether shade_batch reads other lanes of a quad (derivatives). Only then do the lanes that
+  // cover nothing need their own inputs (helper invocations); otherwise nothing can see them.
+  virtual bool reads_quads() const { return false; }
 };
 
 // glPolygonMode(GL_FRONT_AND_BACK, GL_FILL / GL_LINE / GL_POINT).

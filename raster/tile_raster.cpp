@@ -193,6 +193,7 @@ FragmentSink::FragmentSink(const FragmentProgram& fs, Framebuffer& fb, int num_v
       depth_write_(state.depth_test && state.depth_write),
       depth_func_(state.depth_func),
       late_depth_(state.depth_test && fs.may_discard()),
+      helpers_(fs.reads_quads()),
       blend_(state.blend),
       color_mask_(state.color_mask),
       srgb_write_(state.framebuffer_srgb),
@@ -277,18 +278,20 @@ struct Scanner {
         if (batch.quads + seg_quads > kFragmentQuads) sink.flush();
         const int base = 4 * batch.quads;
         const int lanes = 4 * seg_quads;
-        // Every lane of the segment at its own pixel centre: lane 4q + k is pixel (k & 1, k >> 1)
-        // of quad q. The lanes that cover nothing (or fail the depth test) run as GL's helper
-        // invocations (gl_HelperInvocation), with inputs interpolated at their own pixel, so that
-        // derivatives across a triangle's edge difference real values, as on llvmpipe's quads.
-        for (int l = base; l < base + lanes; ++l) {
-          const int k = l & 3;
-          const int x = seg_x + 2 * ((l - base) >> 2) + (k & 1), y = qy + (k >> 1);
-          batch.live[l] = 0;
+        // A lane at its own pixel centre: lane 4q + k is pixel (k & 1, k >> 1) of quad q.
+        auto place = [&](int l, int x, int y) {
           ip.barycentrics(x, y, sink.b1_[l], sink.b2_[l]);
           batch.frag_coord[0][l] = float(x) + 0.5f;
           batch.frag_coord[1][l] = float(y) + 0.5f;
           batch.frag_coord[2][l] = ip.depth(sink.b1_[l], sink.b2_[l]);
+        };
+        // For a program that takes derivatives, every lane of the segment: those that cover
+        // nothing (or fail the depth test) run as GL's helper invocations (gl_HelperInvocation),
+        // with inputs interpolated at their own pixel, so that derivatives across a triangle's
+        // edge difference real values, as on llvmpipe's quads. Other programs never read them.
+        for (int l = base; l < base + lanes; ++l) {
+          batch.live[l] = 0;
+          if (sink.helpers_) place(l, seg_x + 2 * ((l - base) >> 2) + (l & 1), qy + ((l & 3) >> 1));
         }
 
         // The covered run of each row, then the depth test.
@@ -302,6 +305,7 @@ struct Scanner {
           for (int i = 0; i < n; ++i) {
             const int x = xs + i;
             const int lane = base + 2 * (x - seg_x) - (x & 1) + 2 * r;  // 4 * quad + (x & 1) + 2r
+            if (!sink.helpers_) place(lane, x, y);
             if (sink.depth_test_) {
               const float stored = sink.stored_depth(batch.frag_coord[2][lane]);
               if (!sink.depth_passes(stored, depth[i])) {
@@ -365,8 +369,8 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
   std::uint64_t passed = 0;
   if (t.small_mask) {
     // Coverage known from setup: the box's covered centers, quad by quad, so that a quad's
-    // covered pixels shade together and its other lanes run as helper invocations at their own
-    // pixel centres (see Scanner::rows).
+    // covered pixels shade together and, for a program that takes derivatives, its other lanes
+    // run as helper invocations at their own pixel centres (see Scanner::rows).
     const int width = t.max_x - t.min_x + 1;
     for (int qy = t.min_y & ~1; qy <= t.max_y; qy += 2)
       for (int qx = t.min_x & ~1; qx <= t.max_x; qx += 2) {
@@ -398,6 +402,8 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
         const int base = 4 * batch.quads++;
         for (int k = 0; k < 4; ++k) {
           const int lane = base + k, x = qx + (k & 1), y = qy + (k >> 1);
+          batch.live[lane] = (live >> k) & 1u;
+          if (!batch.live[lane] && !sink.helpers_) continue;  // nothing reads the lane
           if (!((computed >> k) & 1u)) {  // a helper lane: not covered, so not computed above
             ip.barycentrics(x, y, b1[k], b2[k]);
             z[k] = ip.depth(b1[k], b2[k]);
@@ -410,7 +416,6 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
           batch.frag_coord[1][lane] = float(y) + 0.5f;
           batch.frag_coord[2][lane] = z[k];
           batch.front_facing[lane] = t.front_facing;
-          batch.live[lane] = (live >> k) & 1u;
           if (batch.live[lane]) {
             sink.pixel_[lane] = idx[k];
             ++passed;

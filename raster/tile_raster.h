@@ -46,6 +46,7 @@ class FragmentSink {
   bool depth_write_;
   DepthFunc depth_func_;
   bool late_depth_;  // depth written after shading (the program may discard)
+  bool helpers_;     // lanes that cover nothing get their own inputs (the program reads quads)
   BlendState blend_;
   ColorMask color_mask_;
   bool srgb_write_;

@@ -1055,6 +1055,12 @@ bool Executable::may_discard() const {
   return false;
 }
 
+bool Executable::reads_quads() const {
+  for (const XIns& x : program_->code)
+    if (x.op == XOp::DPdx || x.op == XOp::DPdy || x.op == XOp::Fwidth) return true;
+  return false;
+}
+
 const VariableSlot* Executable::slot(std::uint32_t id) const {
   if (id >= program_->slot_of_id.size() || program_->slot_of_id[id] == kNone) return nullptr;
   return &program_->slots[program_->slot_of_id[id]];

@@ -148,6 +148,8 @@ class Executable {
   const ExecLimits& limits() const { return limits_; }
   // Whether the entry point can discard (OpKill, OpTerminateInvocation, OpDemoteToHelperInvocation).
   bool may_discard() const;
+  // Whether the entry point takes a derivative (dFdx, dFdy, fwidth: other lanes of its quad).
+  bool reads_quads() const;
   // This thread's Invocations of this executable, made on first use and kept for the thread's
   // life (stage programs are shared by the worker threads; each thread runs its own batches).
   Invocations& local() const;

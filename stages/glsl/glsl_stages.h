@@ -71,6 +71,7 @@ class GlslFragment final : public FragmentProgram {
   FragmentOutput shade(const FragmentInput& in) const override;
   void shade_batch(FragmentBatch& batch) const override;
   bool may_discard() const override { return sp_.exe->may_discard(); }
+  bool reads_quads() const override { return sp_.exe->reads_quads(); }
 
  private:
   void shade_lanes(FragmentBatch& batch, int first, int n) const;  // lanes [first, first + n)
