@@ -311,6 +311,7 @@ void run_render(const RenderOptions& o) {
     for (const std::string& w : checker->warnings()) std::fprintf(stderr, "tessref: warning: %s\n", w.c_str());
 
   const DrawStats& s = result.stats;
+  for (const std::string& w : s.warnings) std::fprintf(stderr, "tessref: warning: %s\n", w.c_str());
   std::string tessellated;
   // A scene of draws counts GL's primitives (patches, triangles, lines, points); the mesh path its
   // triangles.

@@ -137,4 +137,20 @@ inline float half_round_toward_zero(float f) {
   return std::trunc(f / kSubnormalStep) * kSubnormalStep;  // both steps exact
 }
 
+// ---------------------------------------------------------------------------------------------
+// Textures. GL 4.6 section 8.14.2 gives the texel weights of GL_LINEAR as real numbers and leaves
+// their precision open ("implementation-dependent"); 2.3.5.1 (equation 2.1) converts a normalized
+// channel k to k / (2^b - 1), again at the implementation's precision. llvmpipe (Mesa 22.3.6;
+// docs/textures.md, measured bit for bit) reads an 8-bit channel as k times the float nearest
+// 1/255 (a multiply: 126 of the 256 values differ from k / 255.0f), and filters textures of 8-bit
+// normalized channels in 8-bit fixed point: weights of 8 bits, each interpolation rounded.
+
+inline float unorm8_texel_to_float(std::uint8_t k) { return float(k) * (1.0f / 255.0f); }
+
+// v0 + (v1 - v0) * w / 256, rounded (ties up), for channels v0, v1 and a weight w in 0..255
+// (lp_build_lerp with pre-scaled 8-bit weights).
+inline std::uint8_t unorm8_lerp(int w, int v0, int v1) {
+  return static_cast<std::uint8_t>((v0 + ((w * (v1 - v0) + 128) >> 8)) & 255);
+}
+
 }  // namespace tessref::fixed

@@ -20,6 +20,7 @@
 #include "shader/executor.h"
 #include "shader/glsl_compile.h"
 #include "shader/spirv_module.h"
+#include "texture/mipmap.h"
 
 namespace {
 
@@ -92,15 +93,21 @@ void run(const std::vector<std::uint32_t>& spirv, Stage stage, Words& words) {
         for (std::uint32_t w = 0; w < s->words; ++w) inv.shared(*s, g)[w] = words.next();
     }
   }
-  Texture textures[2];
-  for (Texture& t : textures) {
-    t.width = 1 + int(words.next() % 3);
-    t.height = 1 + int(words.next() % 3);
-    for (int i = 0; i < 4 * t.width * t.height; ++i) t.texels.push_back(float(words.next() % 256) / 255.0f);
+  texture::Texture textures[2];
+  for (texture::Texture& t : textures) {
+    const int width = 1 + int(words.next() % 3), height = 1 + int(words.next() % 3);
+    std::vector<float> rgba;
+    for (int i = 0; i < 4 * width * height; ++i) rgba.push_back(float(words.next() % 256) / 255.0f);
     const std::uint32_t mode = words.next();
-    t.linear = mode & 1;
-    t.wrap_s = static_cast<Texture::Wrap>((mode >> 1) % 4);
-    t.wrap_t = static_cast<Texture::Wrap>((mode >> 3) % 4);
+    t.format = static_cast<texture::TexelFormat>((mode >> 5) % 12);
+    t.levels.push_back(texture::make_level(t.format, width, height, rgba.data()));
+    t.sampler.min_filter = static_cast<texture::Filter>((mode >> 9) % 6);
+    t.sampler.mag_filter = static_cast<texture::Filter>(mode & 1);
+    t.sampler.wrap_s = static_cast<texture::Wrap>((mode >> 1) % 5);
+    t.sampler.wrap_t = static_cast<texture::Wrap>((mode >> 12) % 5);
+    t.sampler.lod_bias = float(std::int32_t(words.next())) / 65536.0f;
+    if (mode & 0x8000) texture::generate_mipmaps(t);
+    else t.finalize();
   }
   inv.bind_texture(0, &textures[0]);
   inv.bind_texture(1, &textures[1]);

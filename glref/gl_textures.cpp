@@ -1,5 +1,8 @@
 #include "glref/gl_textures.h"
 
+#include <algorithm>
+#include <bit>
+
 #include <epoxy/gl.h>
 
 #include "glref/gl_error.h"
@@ -8,12 +11,70 @@
 namespace tessref::glref {
 namespace {
 
-GLint gl_wrap(shader::Texture::Wrap w) {
+using texture::ChannelType;
+using texture::Filter;
+using texture::Wrap;
+
+GLint gl_wrap(Wrap w) {
   switch (w) {
-    case shader::Texture::Wrap::Repeat: return GL_REPEAT;
-    case shader::Texture::Wrap::MirroredRepeat: return GL_MIRRORED_REPEAT;
-    default: return GL_CLAMP_TO_EDGE;
+    case Wrap::Repeat: return GL_REPEAT;
+    case Wrap::MirroredRepeat: return GL_MIRRORED_REPEAT;
+    case Wrap::ClampToEdge: return GL_CLAMP_TO_EDGE;
+    case Wrap::ClampToBorder: return GL_CLAMP_TO_BORDER;
+    case Wrap::MirrorClampToEdge: return GL_MIRROR_CLAMP_TO_EDGE;
   }
+  return GL_REPEAT;
+}
+
+GLint gl_filter(Filter f) {
+  switch (f) {
+    case Filter::Nearest: return GL_NEAREST;
+    case Filter::Linear: return GL_LINEAR;
+    case Filter::NearestMipmapNearest: return GL_NEAREST_MIPMAP_NEAREST;
+    case Filter::LinearMipmapNearest: return GL_LINEAR_MIPMAP_NEAREST;
+    case Filter::NearestMipmapLinear: return GL_NEAREST_MIPMAP_LINEAR;
+    case Filter::LinearMipmapLinear: return GL_LINEAR_MIPMAP_LINEAR;
+  }
+  return GL_LINEAR;
+}
+
+GLint gl_swizzle(texture::Swizzle s) {
+  switch (s) {
+    case texture::Swizzle::Red: return GL_RED;
+    case texture::Swizzle::Green: return GL_GREEN;
+    case texture::Swizzle::Blue: return GL_BLUE;
+    case texture::Swizzle::Alpha: return GL_ALPHA;
+    case texture::Swizzle::Zero: return GL_ZERO;
+    case texture::Swizzle::One: return GL_ONE;
+  }
+  return GL_RED;
+}
+
+struct GlFormat {
+  GLenum internal, format, type;
+};
+
+GlFormat gl_format(texture::TexelFormat f) {
+  using TF = texture::TexelFormat;
+  const texture::TexelFormatInfo& fi = texture::info(f);
+  static constexpr GLenum kByChannels[4] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
+  const GLenum format = kByChannels[fi.channels - 1];
+  const GLenum type = fi.type == ChannelType::kFloat32 ? GL_FLOAT : fi.type == ChannelType::kFloat16 ? GL_HALF_FLOAT : GL_UNSIGNED_BYTE;
+  switch (f) {
+    case TF::kRgba32F: return {GL_RGBA32F, format, type};
+    case TF::kRg32F: return {GL_RG32F, format, type};
+    case TF::kR32F: return {GL_R32F, format, type};
+    case TF::kRgba16F: return {GL_RGBA16F, format, type};
+    case TF::kRg16F: return {GL_RG16F, format, type};
+    case TF::kR16F: return {GL_R16F, format, type};
+    case TF::kRgba8: return {GL_RGBA8, format, type};
+    case TF::kRgb8: return {GL_RGB8, format, type};
+    case TF::kRg8: return {GL_RG8, format, type};
+    case TF::kR8: return {GL_R8, format, type};
+    case TF::kSrgb8Alpha8: return {GL_SRGB8_ALPHA8, format, type};
+    case TF::kSrgb8: return {GL_SRGB8, format, type};
+  }
+  return {GL_RGBA32F, GL_RGBA, GL_FLOAT};
 }
 
 }  // namespace
@@ -24,16 +85,35 @@ GlTextures::GlTextures(const std::string& scene_source, const ShaderSettings& sh
   glGenTextures(GLsizei(ids_.size()), ids_.data());
   for (std::size_t k = 0; k < ids_.size(); ++k) {
     const TextureSetting& t = shaders.textures[k];
-    const shader::Texture tex = load_texture(t, scene_source + ": " + shaders.key + ".textures." + t.sampler);
+    const texture::Texture tex = load_texture(t, scene_source + ": " + shaders.key + ".textures." + t.sampler);
+    const GlFormat f = gl_format(tex.format);
+    const texture::Level& level0 = tex.levels[0];
+    // glTexStorage2D: the levels given, or every level down to 1 x 1 for glGenerateMipmap.
+    const int all = int(std::bit_width(unsigned(std::max(level0.width, level0.height))));
+    const int levels = t.generate_mipmaps ? all : int(t.levels.size());
     glBindTexture(GL_TEXTURE_2D, ids_[k]);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, tex.width, tex.height, 0, GL_RGBA, GL_FLOAT, tex.texels.data());
-    const GLint filter = tex.linear ? GL_LINEAR : GL_NEAREST;  // no mipmaps: level 0 only
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, gl_wrap(tex.wrap_s));
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, gl_wrap(tex.wrap_t));
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glTexStorage2D(GL_TEXTURE_2D, levels, f.internal, level0.width, level0.height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    for (int l = 0; l < int(t.levels.size()); ++l) {
+      const texture::Level& level = tex.levels[std::size_t(l)];
+      glTexSubImage2D(GL_TEXTURE_2D, l, 0, 0, level.width, level.height, f.format, f.type, level.stored.data());
+    }
+    // Base and max level before glGenerateMipmap, which fills levels base + 1 .. q.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, tex.base_level);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, tex.max_level);
+    if (t.generate_mipmaps) glGenerateMipmap(GL_TEXTURE_2D);
+    const texture::SamplerState& s = tex.sampler;
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, gl_filter(s.min_filter));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, gl_filter(s.mag_filter));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, gl_wrap(s.wrap_s));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, gl_wrap(s.wrap_t));
+    glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, s.border.data());
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD, s.min_lod);
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LOD, s.max_lod);
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, s.lod_bias);
+    const GLint swizzle[4] = {gl_swizzle(tex.swizzle[0]), gl_swizzle(tex.swizzle[1]), gl_swizzle(tex.swizzle[2]),
+                              gl_swizzle(tex.swizzle[3])};
+    glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
   }
   glBindTexture(GL_TEXTURE_2D, 0);
   check_gl("GlTextures: uploading shaders.textures");

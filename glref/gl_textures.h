@@ -1,7 +1,9 @@
 #pragma once
 // A program's shaders.textures as GL textures, on the units tessref binds them to: texture k of
-// the list on unit k, its sampler uniform set to k; the same texels (render/glsl_scene.h,
-// load_texture) uploaded as GL_RGBA32F, level 0 only, with the scene's filter and wrap.
+// the list on unit k, its sampler uniform set to k. Each is created as an application would:
+// glTexStorage2D with its internal format and every level it has, glTexSubImage2D with the bytes
+// tessref stored (render/glsl_scene.h, load_texture) per level given, glGenerateMipmap when the
+// scene asks for it, then the scene's glTexParameter state.
 #include <vector>
 
 #include "scene/scene.h"

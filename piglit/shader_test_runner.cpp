@@ -15,6 +15,7 @@
 #include "render/draw_call.h"
 #include "shader/glsl_compile.h"
 #include "stages/glsl/glsl_program.h"
+#include "texture/texture.h"
 
 namespace tessref {
 namespace {
@@ -376,21 +377,22 @@ class Runner {
         for (int i = 0; i < 4; ++i) tolerance_[i] = n.size() == 1 ? n[0] : n.at(std::size_t(i));
         break;
       case CommandKind::TextureCheckerboard: {
-        auto t = std::make_unique<shader::Texture>();
-        t->width = int(n[2]);
-        t->height = int(n[3]);
-        t->texels.resize(std::size_t(t->width) * t->height * 4);
-        // piglit_checkerboard_texture: 2 x 2 squares, GL_RGBA (8 bits a channel), GL_NEAREST,
+        // piglit_checkerboard_texture: 2 x 2 squares, GL_RGBA8, level 0 only, GL_NEAREST,
         // GL_CLAMP_TO_BORDER with a red border.
-        for (int j = 0; j < t->height; ++j)
-          for (int i = 0; i < t->width; ++i) {
-            const bool odd = ((i / std::max(1, t->width / 2)) + (j / std::max(1, t->height / 2))) & 1;
-            for (int k = 0; k < 4; ++k)
-              t->texels[(std::size_t(j) * t->width + i) * 4 + k] =
-                  std::round(std::clamp(float(n[odd ? 8 + k : 4 + k]), 0.0f, 1.0f) * 255.0f) / 255.0f;
+        const int width = int(n[2]), height = int(n[3]);
+        std::vector<float> rgba(std::size_t(width) * std::size_t(height) * 4);
+        for (int j = 0; j < height; ++j)
+          for (int i = 0; i < width; ++i) {
+            const bool odd = ((i / std::max(1, width / 2)) + (j / std::max(1, height / 2))) & 1;
+            for (int k = 0; k < 4; ++k) rgba[(std::size_t(j) * std::size_t(width) + std::size_t(i)) * 4 + std::size_t(k)] = float(n[odd ? 8 + k : 4 + k]);
           }
-        t->wrap_s = t->wrap_t = shader::Texture::Wrap::ClampToBorder;
-        t->border[0] = t->border[3] = 1.0f;
+        auto t = std::make_unique<texture::Texture>();
+        t->format = texture::TexelFormat::kRgba8;
+        t->levels.push_back(texture::make_level(t->format, width, height, rgba.data()));
+        t->sampler.min_filter = t->sampler.mag_filter = texture::Filter::Nearest;
+        t->sampler.wrap_s = t->sampler.wrap_t = texture::Wrap::ClampToBorder;
+        t->sampler.border = {1.0f, 0.0f, 0.0f, 1.0f};
+        t->finalize();
         const std::uint32_t unit = std::uint32_t(n[0]);
         program_->bind_texture(unit, t.get());
         textures_[unit] = std::move(t);
@@ -401,14 +403,17 @@ class Runner {
         if (!last_texture_ || c.words.size() < 3) break;
         const std::string& name = c.words[1];
         const std::string& value = c.words[2];
-        using Wrap = shader::Texture::Wrap;
+        using texture::Filter;
+        using texture::Wrap;
+        texture::SamplerState& st = last_texture_->sampler;
         if (name == "min" || name == "mag") {
-          last_texture_->linear = value == "linear";
+          (name == "min" ? st.min_filter : st.mag_filter) = value == "linear" ? Filter::Linear : Filter::Nearest;
         } else if (name == "wrap_s" || name == "wrap_t") {
           const Wrap w = value == "repeat" ? Wrap::Repeat : value == "mirrored_repeat" ? Wrap::MirroredRepeat
                          : value == "clamp_to_edge" ? Wrap::ClampToEdge : Wrap::ClampToBorder;
-          (name == "wrap_s" ? last_texture_->wrap_s : last_texture_->wrap_t) = w;
+          (name == "wrap_s" ? st.wrap_s : st.wrap_t) = w;
         }
+        last_texture_->finalize();
         break;
       }
       case CommandKind::Enable: case CommandKind::Disable:
@@ -454,8 +459,8 @@ class Runner {
   int patch_vertices_ = 3;
   double tolerance_[4] = {0.01, 0.01, 0.01, 0.01};
   std::vector<glsl::VertexAttribute> attributes_;
-  std::map<std::uint32_t, std::unique_ptr<shader::Texture>> textures_;
-  shader::Texture* last_texture_ = nullptr;
+  std::map<std::uint32_t, std::unique_ptr<texture::Texture>> textures_;
+  texture::Texture* last_texture_ = nullptr;
 };
 
 }  // namespace

@@ -1,14 +1,11 @@
 #include "raster/color_format.h"
 
 #include <algorithm>
-#include <iterator>
 
 #include "common/fixed_point.h"
 
 namespace tessref {
 namespace {
-
-#include "raster/srgb_tables.inc"
 
 std::uint8_t unorm8(float c) { return fixed::unorm8_from_float(c); }
 
@@ -85,14 +82,6 @@ const char* gl_name(ColorFormat f) {
 
 const char* gl_name(DepthFormat f) {
   return f == DepthFormat::k24 ? "GL_DEPTH_COMPONENT24" : "GL_DEPTH_COMPONENT32F";
-}
-
-float srgb_decode(std::uint8_t k) { return kSrgbDecode[k]; }
-
-std::uint8_t srgb_encode(float linear) {
-  if (!(linear > 0.0f)) return 0;  // NaN and negatives: 0, as equation 17.1 clamps
-  return static_cast<std::uint8_t>(std::upper_bound(std::begin(kSrgbThreshold), std::end(kSrgbThreshold), linear) -
-                                   std::begin(kSrgbThreshold));
 }
 
 glm::vec4 stored_color(ColorFormat f, bool srgb_write, const glm::vec4& c) {

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "common/fixed_point.h"
+#include "common/srgb.h"
 #include "raster/fragment_ops.h"
 
 namespace tessref {
@@ -20,11 +21,6 @@ enum class DepthFormat { k32F, k24 };
 const char* gl_name(ColorFormat f);
 const char* gl_name(DepthFormat f);
 inline bool is_fixed_point(ColorFormat f) { return f == ColorFormat::kRgba8 || f == ColorFormat::kSrgb8Alpha8; }
-
-// GL 4.6 equation 8.17 (sRGB to linear) for an 8-bit channel, and equation 17.1 (linear to sRGB)
-// rounded to 8 bits, both exact to the equations (tables built in double precision).
-float srgb_decode(std::uint8_t k);
-std::uint8_t srgb_encode(float linear);
 
 // The value an attachment of format f holds after storing c (no blending): clamped and rounded
 // for 8-bit channels (sRGB-encoded when srgb_write, i.e. GL_FRAMEBUFFER_SRGB is enabled and the

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "common/parallel.h"
@@ -26,6 +27,7 @@ struct DrawStats {
   double vertex_seconds = 0.0;            // vertex shader and primitive assembly
   double tessellation_seconds = 0.0;
   double raster_seconds = 0.0;            // rasterization and fragment shading
+  std::vector<std::string> warnings;      // what a driver would draw but a user should know
   DrawStats& operator+=(const DrawStats& o) {
     vertices_shaded += o.vertices_shaded;
     triangles_in += o.triangles_in;
@@ -35,6 +37,7 @@ struct DrawStats {
     vertex_seconds += o.vertex_seconds;
     tessellation_seconds += o.tessellation_seconds;
     raster_seconds += o.raster_seconds;
+    warnings.insert(warnings.end(), o.warnings.begin(), o.warnings.end());
     return *this;
   }
 };

@@ -204,6 +204,12 @@ SceneDraws::SceneDraws(const Scene& scene) : scene_(scene), buffers_(load_buffer
 
 SceneDraws::~SceneDraws() = default;
 
+std::vector<std::string> SceneDraws::warnings() const {
+  std::vector<std::string> out = shared_.warnings;
+  for (const SceneProgram& p : own_) out.insert(out.end(), p.warnings.begin(), p.warnings.end());
+  return out;
+}
+
 std::vector<shader::ShaderSource> SceneDraws::sources(std::size_t draw) const {
   const DrawSetting& d = scene_.draws.at(draw);
   return d.shaders ? scene_sources(scene_, *d.shaders) : scene_sources(scene_);
@@ -273,6 +279,7 @@ DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& 
     stats += run_draw(p.program, p.attributes, p.call, p.setting.raster, fb, parallel, options);
   });
   begin_until(scene.draws.size());  // draws without calls still clear
+  stats.warnings = draws.warnings();
   return stats;
 }
 

@@ -57,6 +57,8 @@ class SceneDraws {
   // Calls fn for each call of draws [0, end), in order. The references fn receives live until
   // it returns. InputError naming the scene (and the draw's key for the stages' errors).
   void for_each_call(std::size_t end, const std::function<void(const PreparedCall&)>& fn);
+  // What the programs' textures give a user reason to hear (incomplete ones).
+  std::vector<std::string> warnings() const;
 
  private:
   const Scene& scene_;

@@ -1,5 +1,6 @@
 #include "render/glsl_scene.h"
 
+#include <algorithm>
 #include <bit>
 #include <fstream>
 #include <mutex>
@@ -15,6 +16,7 @@
 #include "stages/glsl/twins.h"
 #include "stages/programs/transform.h"
 #include "stages/tess_levels_adaptive.h"
+#include "texture/mipmap.h"
 
 namespace tessref {
 namespace {
@@ -170,7 +172,10 @@ void bind_textures(const Scene& scene, const ShaderSettings& shaders, glsl::Glsl
     if (shape->glsl_name != "sampler2D")
       throw InputError(key + ": the uniform is a " + shape->glsl_name + ", but textures are 2D images (GL_TEXTURE_2D); "
                        "GL draws nothing from a sampler whose unit holds a texture of another target");
-    auto tex = std::make_unique<shader::Texture>(load_texture(t, key));
+    auto tex = std::make_unique<texture::Texture>(load_texture(t, key));
+    // GL 4.6 11.1.3.5: an incomplete texture reads (0, 0, 0, 1); the draw goes on, as on a driver.
+    if (!tex->complete)
+      out.warnings.push_back(key + ": the texture is incomplete, so it reads (0, 0, 0, 1): " + tex->incomplete_reason);
     program.bind_texture(unit, tex.get());
     program.set_uniform(t.sampler, integer(int(unit)));
     out.textures.push_back(std::move(tex));
@@ -326,30 +331,78 @@ DrawStats draw_glsl_scene(const Scene& scene, const glsl::GlslProgram& program, 
   }
 }
 
-shader::Texture load_texture(const TextureSetting& t, const std::string& key) {
-  FloatImage image;
-  try {
-    image = read_float_image(t.path);
-  } catch (const InputError& e) {
-    throw InputError(key + ": " + e.what());
+namespace {
+
+const char* channels_name(int channels) {
+  switch (channels) {
+    case 1: return "gray (1 channel)";
+    case 2: return "gray and alpha (2 channels)";
+    case 3: return "RGB (3 channels)";
+    default: return "RGBA (4 channels)";
   }
-  shader::Texture tex;
-  tex.width = image.width;
-  tex.height = image.height;
-  tex.linear = t.linear;
-  using Wrap = shader::Texture::Wrap;
-  tex.wrap_s = tex.wrap_t = t.wrap == "repeat"            ? Wrap::Repeat
-                            : t.wrap == "mirrored_repeat" ? Wrap::MirroredRepeat
-                                                          : Wrap::ClampToEdge;
-  tex.texels.resize(std::size_t(image.width) * image.height * 4);
+}
+
+// An image's pixels as RGBA rows from the bottom (GL's order): gray repeated in R, G and B
+// (GL_RGBA32F from a gray file) or kept in R (an R format), alpha 1 where the file has none.
+std::vector<float> rgba_rows(const FloatImage& image, bool gray_to_rgb) {
+  std::vector<float> out(std::size_t(image.width) * std::size_t(image.height) * 4);
   const int ch = image.channels;
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
-      const float* src = image.pixels.data() + (std::size_t(image.height - 1 - y) * image.width + x) * ch;
-      float* dst = tex.texels.data() + (std::size_t(y) * image.width + x) * 4;
-      for (int c = 0; c < 3; ++c) dst[c] = src[ch >= 3 ? c : 0];
-      dst[3] = ch == 4 ? src[3] : ch == 2 ? src[1] : 1.0f;
+      const float* src = image.pixels.data() + (std::size_t(image.height - 1 - y) * std::size_t(image.width) + std::size_t(x)) * std::size_t(ch);
+      float* dst = out.data() + (std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * 4;
+      if (ch <= 2) {
+        dst[0] = src[0];
+        dst[1] = gray_to_rgb ? src[0] : ch == 2 ? src[1] : 0.0f;
+        dst[2] = gray_to_rgb ? src[0] : 0.0f;
+        dst[3] = ch == 2 && gray_to_rgb ? src[1] : 1.0f;
+      } else {
+        for (int c = 0; c < 4; ++c) dst[c] = c < ch ? src[c] : 1.0f;
+      }
     }
+  return out;
+}
+
+}  // namespace
+
+texture::Texture load_texture(const TextureSetting& t, const std::string& key) {
+  texture::Texture tex;
+  tex.format = t.format.value_or(texture::TexelFormat::kRgba32F);
+  const texture::TexelFormatInfo& format = texture::info(tex.format);
+  int width0 = 0, height0 = 0;
+  for (std::size_t k = 0; k < t.levels.size(); ++k) {
+    const std::string at = t.levels.size() > 1 ? key + ".levels." + std::to_string(k) : key;
+    FloatImage image;
+    try {
+      image = read_float_image(t.levels[k]);
+    } catch (const InputError& e) {
+      throw InputError(at + ": " + e.what());
+    }
+    if (t.format && image.channels != format.channels)
+      throw InputError(at + ": " + t.levels[k].string() + " is " + channels_name(image.channels) + ", and " +
+                       format.gl_name + " has " + std::to_string(format.channels) + " channel" +
+                       (format.channels > 1 ? "s" : "") + " (internalformat)");
+    if (k == 0) {
+      width0 = image.width;
+      height0 = image.height;
+    }
+    // glTexStorage2D fixes level k's size from level 0's (GL 4.6 8.19).
+    const int w = std::max(1, width0 >> k), h = std::max(1, height0 >> k);
+    if (image.width != w || image.height != h || (k > 0 && std::max(width0, height0) >> k == 0))
+      throw InputError(at + ": level " + std::to_string(k) + " is " + std::to_string(image.width) + "x" +
+                       std::to_string(image.height) + ", and a level " + std::to_string(k) + " of a " +
+                       std::to_string(width0) + "x" + std::to_string(height0) + " texture is " +
+                       (std::max(width0, height0) >> k == 0 ? std::string("past its last level")
+                                                            : std::to_string(w) + "x" + std::to_string(h)));
+    const std::vector<float> rgba = rgba_rows(image, !t.format);
+    tex.levels.push_back(texture::make_level(tex.format, image.width, image.height, rgba.data()));
+  }
+  tex.sampler = t.sampler_state;
+  tex.base_level = t.base_level;
+  tex.max_level = t.max_level;
+  tex.swizzle = t.swizzle;
+  if (t.generate_mipmaps) texture::generate_mipmaps(tex);
+  else tex.finalize();
   return tex;
 }
 

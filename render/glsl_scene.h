@@ -17,13 +17,16 @@ namespace tessref {
 // The scene's program and the textures bound to it.
 struct SceneProgram {
   std::unique_ptr<glsl::GlslProgram> program;
-  std::vector<std::unique_ptr<shader::Texture>> textures;
+  std::vector<std::unique_ptr<texture::Texture>> textures;
+  std::vector<std::string> warnings;  // incomplete textures
 };
 
-// shaders.textures[k]'s image as a texture (RGBA; fewer channels: gray, gray + alpha, RGB with
-// alpha 1; rows from the bottom, as GL numbers them) with its filter and wrap: what tessref
-// samples and the GL runner uploads. key: "SCENE: shaders.textures.NAME" for InputError.
-shader::Texture load_texture(const TextureSetting& t, const std::string& key);
+// shaders.textures[k] as a texture: its level files in its internal format (rows from the bottom,
+// as GL numbers them), glGenerateMipmap's levels when asked, its sampler state, finalized: what
+// tessref samples and the GL runner uploads. InputError, naming `key` ("SCENE:
+// shaders.textures.NAME"), for an unreadable file, a file whose channels are not the declared
+// format's, or a level whose size is not the one glTexStorage2D gives it.
+texture::Texture load_texture(const TextureSetting& t, const std::string& key);
 
 // The GLSL of the scene's program, stage by stage: the twins, or the user's files (`twin:NAME`
 // resolved). InputError when a file cannot be read. The real-GL runner draws the same sources.

@@ -59,7 +59,9 @@ DrawStats render_scene(const Scene& scene, const Mesh& mesh, const Parallel& par
   if (scene.shaders.program != ShaderProgram::Builtin) {
     const SceneProgram program = build_scene_program(scene);
     fb.reset(scene.width, scene.height, scene.background, parallel);
-    return draw_glsl_scene(scene, *program.program, mesh, fb, parallel, options);
+    DrawStats stats = draw_glsl_scene(scene, *program.program, mesh, fb, parallel, options);
+    stats.warnings.insert(stats.warnings.end(), program.warnings.begin(), program.warnings.end());
+    return stats;
   }
   const auto vs = scene_vertex_shader(scene);
   RasterState state;

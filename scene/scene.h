@@ -2,6 +2,7 @@
 // A scene as read from JSON (scenes/*.json; format in README.md): what to draw and how.
 // Scene files take every value they omit from scenes/default.json (scene_loader.h); the
 // initializers below only serve code that builds a Scene by hand.
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -15,6 +16,7 @@
 #include "scene/tessellation_settings.h"
 #include "raster/rasterizer.h"
 #include "stages/programs/phong.h"
+#include "texture/texture.h"
 
 namespace tessref {
 
@@ -84,12 +86,23 @@ struct UniformSetting {
   bool boolean = false;
 };
 
-// shaders.textures: an image bound to a sampler2D uniform.
+// shaders.textures: a 2D texture bound to a sampler2D uniform, as an application creates it
+// (glTexStorage2D with its internal format and levels, glTexSubImage2D per level from an image
+// file, glGenerateMipmap when asked) with its sampler state (glTexParameter). Read by
+// scene/texture_schema.h.
 struct TextureSetting {
   std::string sampler;  // the uniform's name
-  std::filesystem::path path;
-  bool linear = true;   // GL_LINEAR, else GL_NEAREST
-  std::string wrap = "repeat";  // repeat | mirrored_repeat | clamp_to_edge
+  std::vector<std::filesystem::path> levels;  // level k's image file, from level 0
+  // GL_RGBA32F from any image when absent (the image's gray expanded to RGB); else the file's
+  // channels must be the format's.
+  std::optional<texture::TexelFormat> format;
+  bool generate_mipmaps = false;  // glGenerateMipmap after level 0 is given
+  // The file's levels are all the texture has unless generate_mipmaps: its storage then has
+  // every level down to 1 x 1.
+  texture::SamplerState sampler_state{texture::Filter::Linear, texture::Filter::Linear};
+  int base_level = 0, max_level = 1000;
+  std::array<texture::Swizzle, 4> swizzle{texture::Swizzle::Red, texture::Swizzle::Green, texture::Swizzle::Blue,
+                                          texture::Swizzle::Alpha};
 };
 
 struct ShaderSettings {

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "scene/draw_schema.h"
+#include "scene/texture_schema.h"
 #include "shader/executor.h"
 
 namespace tessref {
@@ -339,35 +340,15 @@ ShaderSettings read_shaders(JsonObject o, const JsonSource& source, const std::f
       o.fail("attributes." + name, "expected \"position\" or \"normal\", got " + describe_json(value));
     s.attributes.push_back({name, value.get<std::string>()});
   }
-  o.describe("textures", "an object of sampler name: image file or {path, filter, wrap}");
+  o.describe("textures", "an object of sampler name: image file or {path or levels, internalformat, generate_mipmap, "
+                         "filter, min_filter, mag_filter, wrap, wrap_s, wrap_t, border_color, min_lod, max_lod, lod_bias, "
+                         "base_level, max_level, swizzle}");
   if (o.has("textures")) {
     const nlohmann::json& textures = o.value("textures");
     if (!textures.is_object())
       o.fail("textures", "expected an object of sampler name: image file, got " + describe_json(textures));
-    for (const auto& [name, value] : textures.items()) {
-      TextureSetting t;
-      t.sampler = name;
-      std::string file;
-      if (value.is_string()) {
-        file = value.get<std::string>();
-      } else {
-        JsonObject to(value, o.path_of("textures") + "." + name, source);
-        file = to.string("path");
-        if (to.has("filter")) {
-          const std::string f = to.string("filter");
-          if (f != "linear" && f != "nearest") to.fail("filter", "expected linear or nearest, got \"" + f + "\"");
-          t.linear = f == "linear";
-        }
-        if (to.has("wrap")) {
-          t.wrap = to.string("wrap");
-          if (t.wrap != "repeat" && t.wrap != "mirrored_repeat" && t.wrap != "clamp_to_edge")
-            to.fail("wrap", "expected repeat, mirrored_repeat or clamp_to_edge, got \"" + t.wrap + "\"");
-        }
-        to.finish();
-      }
-      t.path = std::filesystem::path(file).is_relative() ? base_dir / file : std::filesystem::path(file);
-      s.textures.push_back(std::move(t));
-    }
+    for (const auto& [name, value] : textures.items())
+      s.textures.push_back(read_texture_setting(name, value, o.path_of("textures") + "." + name, source, base_dir));
   }
   s.patch_vertices = o.integer("patch_vertices", 1, 32);
   s.batch_lanes = o.integer("batch_lanes", 1, shader::kMaxLanes);

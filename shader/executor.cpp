@@ -12,6 +12,7 @@
 #include <spirv/unified1/GLSL.std.450.h>
 
 #include "shader/executor_runner.h"
+#include "texture/sample.h"
 #include "shader/nan_trace.h"
 
 namespace tessref::shader {
@@ -292,58 +293,100 @@ void Runner::derivative(const XIns& x) {
 }
 
 void Runner::texture(const XIns& x) {
-  const std::uint32_t* unit = A + std::size_t(x.a) * L;
-  // GL 4.6 section 8.14.2: the texel index after the wrap mode; -1 for the border.
-  auto wrap = [](int i, int size, Texture::Wrap mode) {
-    switch (mode) {
-      case Texture::Wrap::Repeat: return ((i % size) + size) % size;
-      case Texture::Wrap::MirroredRepeat: {
-        const int m = ((i % (2 * size)) + 2 * size) % (2 * size);
-        return m < size ? m : 2 * size - 1 - m;
-      }
-      case Texture::Wrap::ClampToEdge: return std::clamp(i, 0, size - 1);
-      case Texture::Wrap::ClampToBorder: return i < 0 || i >= size ? -1 : i;
+  using Kind = TexOp::Kind;
+  const TexOp& op = p.textures[x.aux];
+  const std::uint32_t* unit = row<std::uint32_t>(op.image);
+  auto bound = [&](int l) -> const texture::Texture* {
+    const std::uint32_t u = unit[l];
+    return u < inv.textures_.size() ? inv.textures_[u] : nullptr;
+  };
+  static const texture::Texture kUnbound;  // no levels: incomplete, reads (0, 0, 0, 1)
+  auto tex = [&](int l) -> const texture::Texture& {
+    const texture::Texture* t = bound(l);
+    return t ? *t : kUnbound;
+  };
+  auto irow = [&](std::uint32_t r, std::uint32_t c, int l) { return std::int32_t(row<std::uint32_t>(r, c)[l]); };
+  auto frow = [&](std::uint32_t r, std::uint32_t c, int l) { return row<float>(r, c)[l]; };
+
+  if (op.kind == Kind::QuerySize || op.kind == Kind::QueryLevels) {
+    for (int l = 0; l < n; ++l) {
+      if (!mask[l]) continue;
+      int size[2];
+      texture::level_size(tex(l), op.lod == kNone ? 0 : irow(op.lod, 0, l), size);
+      if (op.kind == Kind::QueryLevels) row<std::uint32_t>(x.dst)[l] = std::uint32_t(texture::query_levels(tex(l)));
+      else
+        for (std::uint32_t c = 0; c < x.n && c < 2; ++c) row<std::uint32_t>(x.dst, c)[l] = std::uint32_t(size[c]);
     }
-    return 0;
-  };
-  auto texel = [&](const Texture& t, int i, int j, int c) {
-    i = wrap(i, t.width, t.wrap_s);
-    j = wrap(j, t.height, t.wrap_t);
-    if (i < 0 || j < 0) return t.border[c];
-    return t.texels[(std::size_t(j) * t.width + i) * 4 + c];
-  };
-  if (x.op == XOp::QuerySize) {
-    for (int c = 0; c < 2; ++c)
-      put(row<std::uint32_t>(x.dst, c), [&](int l) {
-        const std::uint32_t u = unit[l];
-        const Texture* t = u < inv.textures_.size() ? inv.textures_[u] : nullptr;
-        return std::uint32_t(t ? (c ? t->height : t->width) : 0);
-      });
     return;
   }
-  for (int c = 0; c < 4; ++c) {
-    put(row<float>(x.dst, c), [&](int l) -> float {
-      const std::uint32_t u = unit[l];
-      const Texture* t = u < inv.textures_.size() ? inv.textures_[u] : nullptr;
-      if (!t || t->width <= 0 || t->height <= 0) return c == 3 ? 1.0f : 0.0f;  // incomplete texture
-      if (x.op == XOp::Fetch) {
-        const std::int32_t i = std::int32_t(row<std::uint32_t>(x.b, 0)[l]);
-        const std::int32_t j = std::int32_t(row<std::uint32_t>(x.b, 1)[l]);
-        if (i < 0 || j < 0 || i >= t->width || j >= t->height) return 0.0f;  // out of range: zero
-        return texel(*t, i, j, c);
-      }
-      const float s = row<float>(x.b, 0)[l] * float(t->width);
-      const float r = row<float>(x.b, 1)[l] * float(t->height);
-      // Texel indices through to_int: a coordinate that is NaN, infinite or past int's range
-      // (fuzz_glsl) reads the texel at INT_MIN after wrapping, as float-to-int conversion does
-      // elsewhere, with weights from the coordinate's own fraction (0 once it has none, NaN for NaN).
-      if (!t->linear) return texel(*t, to_int(std::floor(s)), to_int(std::floor(r)), c);
-      const float fs = s - 0.5f, fr = r - 0.5f;
-      const int i0 = to_int(std::floor(fs)), j0 = to_int(std::floor(fr));
-      const float a = fs - std::floor(fs), b = fr - std::floor(fr);
-      return (1.0f - a) * (1.0f - b) * texel(*t, i0, j0, c) + a * (1.0f - b) * texel(*t, i0 + 1, j0, c) +
-             (1.0f - a) * b * texel(*t, i0, j0 + 1, c) + a * b * texel(*t, i0 + 1, j0 + 1, c);
-    });
+  if (op.kind == Kind::Fetch) {
+    for (int l = 0; l < n; ++l) {
+      if (!mask[l]) continue;
+      float texel[4];
+      const int ox = op.offset == kNone ? 0 : irow(op.offset, 0, l), oy = op.offset == kNone ? 0 : irow(op.offset, 1, l);
+      // The offset is added in 64 bits by fetch's bounds check: no overflow at INT_MAX.
+      const std::int64_t i = std::int64_t(irow(op.coord, 0, l)) + ox, j = std::int64_t(irow(op.coord, 1, l)) + oy;
+      const bool inside = i >= 0 && j >= 0 && i <= 0x7fffffff && j <= 0x7fffffff;
+      // Outside int's range: a texel no level has.
+      texture::fetch(tex(l), inside ? int(i) : -1, inside ? int(j) : -1, op.lod == kNone ? 0 : irow(op.lod, 0, l), texel);
+      for (std::uint32_t c = 0; c < x.n; ++c) row<float>(x.dst, c)[l] = texel[c];
+    }
+    return;
+  }
+  // Sample and QueryLod: the coordinates, divided by q for the Proj forms.
+  float s[L], t[L];
+  for (int l = 0; l < n; ++l) {
+    s[l] = frow(op.coord, 0, l);
+    t[l] = frow(op.coord, 1, l);
+    if (op.proj) {
+      const float q = frow(op.coord, op.coord_comps - 1, l);
+      s[l] = s[l] / q;
+      t[l] = t[l] / q;
+    }
+  }
+  // Each lane's LOD input: the explicit LOD or gradients; for an implicit LOD in a fragment shader
+  // the quad's derivatives, from its top-left pixel (lane 4q, whose right and upper neighbours
+  // are lanes 4q + 1 and 4q + 2), one LOD for the quad as llvmpipe computes it; elsewhere LOD 0
+  // plus the bias (GLSL 4.60 8.9: no implicit derivatives outside fragment shaders).
+  auto lod_input = [&](int l) {
+    texture::LodInput in;
+    if (op.lod != kNone) {
+      in.lod = frow(op.lod, 0, l);
+    } else if (op.grad_x != kNone) {
+      in.from = texture::LodInput::From::Derivatives;
+      in.gradients = true;
+      in.dsdx = frow(op.grad_x, 0, l);
+      in.dtdx = frow(op.grad_x, 1, l);
+      in.dsdy = frow(op.grad_y, 0, l);
+      in.dtdy = frow(op.grad_y, 1, l);
+    } else if (p.fragment && (l | 3) < n) {
+      const int q = l & ~3;
+      in.from = texture::LodInput::From::Derivatives;
+      in.dsdx = s[q + 1] - s[q];
+      in.dtdx = t[q + 1] - t[q];
+      in.dsdy = s[q + 2] - s[q];
+      in.dtdy = t[q + 2] - t[q];
+      in.has_bias = op.bias != kNone;
+      in.bias = in.has_bias ? frow(op.bias, 0, l) : 0.0f;
+      in.per_quad = !in.has_bias;
+    } else {
+      in.lod = op.bias != kNone ? 0.0f + frow(op.bias, 0, l) : 0.0f;
+    }
+    return in;
+  };
+  for (int l = 0; l < n; ++l) {
+    if (!mask[l]) continue;
+    const texture::LodInput in = lod_input(l);
+    if (op.kind == Kind::QueryLod) {
+      float lod[2];
+      texture::query_lod(tex(l), in, lod);
+      for (std::uint32_t c = 0; c < x.n && c < 2; ++c) row<float>(x.dst, c)[l] = lod[c];
+      continue;
+    }
+    float texel[4];
+    const int ox = op.offset == kNone ? 0 : irow(op.offset, 0, l), oy = op.offset == kNone ? 0 : irow(op.offset, 1, l);
+    texture::sample(tex(l), s[l], t[l], in, ox, oy, texel);
+    for (std::uint32_t c = 0; c < x.n; ++c) row<float>(x.dst, c)[l] = texel[c];
   }
 }
 
@@ -669,7 +712,7 @@ void Runner::exec(const XIns& x) {
     case XOp::DPdx: case XOp::DPdy: case XOp::Fwidth:
       derivative(x);
       break;
-    case XOp::Sample: case XOp::SampleLod: case XOp::Fetch: case XOp::QuerySize: texture(x); break;
+    case XOp::Texture: texture(x); break;
     case XOp::AtomicInc: case XOp::AtomicDec: case XOp::AtomicLoad: case XOp::AtomicAdd:
     case XOp::AtomicSub: case XOp::AtomicStore:
       atomic(x);
@@ -810,7 +853,7 @@ void Invocations::zero_shared(int groups) {
 
 void Invocations::set_group(int lane, int group) { group_base_[lane] = group_word(group); }
 
-void Invocations::bind_texture(std::uint32_t binding, const Texture* t) {
+void Invocations::bind_texture(std::uint32_t binding, const texture::Texture* t) {
   if (textures_.size() <= binding) textures_.resize(binding + 1, nullptr);
   textures_[binding] = t;
 }

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "shader/spirv_module.h"
+#include "texture/texture.h"
 
 namespace tessref::shader {
 
@@ -37,17 +38,6 @@ class ShaderRuntimeError : public std::runtime_error {
       : std::runtime_error(what), lane(lane), line(line) {}
   int lane;  // the lane (invocation within the batch) that failed
   int line;  // source line, 0 when unknown
-};
-
-// A 2D texture bound to a sampler's binding point: RGBA texels, row 0 at the bottom (GL).
-// One mip level, sampled at level 0 whatever the derivatives (no mipmaps yet).
-struct Texture {
-  enum class Wrap { Repeat, MirroredRepeat, ClampToEdge, ClampToBorder };
-  int width = 0, height = 0;
-  std::vector<float> texels;  // 4 floats per texel
-  bool linear = false;        // GL_LINEAR (else GL_NEAREST) for minification and magnification
-  Wrap wrap_s = Wrap::Repeat, wrap_t = Wrap::Repeat;
-  float border[4] = {0.0f, 0.0f, 0.0f, 0.0f};  // GL_TEXTURE_BORDER_COLOR
 };
 
 struct ExecLimits {
@@ -109,7 +99,9 @@ class Invocations {
   // Zeroes the common words and the first `groups` groups' blocks.
   void zero_shared(int groups = 1);
 
-  void bind_texture(std::uint32_t binding, const Texture* t);
+  // The texture a sampler whose value is `binding` (its texture unit) reads; null: none, which
+  // reads as an incomplete texture.
+  void bind_texture(std::uint32_t binding, const texture::Texture* t);
 
   // Runs main() for lanes 0 .. lanes() - 1. Throws ShaderRuntimeError.
   void run();
@@ -128,7 +120,7 @@ class Invocations {
   std::vector<std::uint8_t> killed_;
   std::vector<std::uint32_t> staging_;  // phi values between reading and writing
   std::vector<std::uint32_t> phi_doubles_;  // scratch for Runner::run_phis
-  std::vector<const Texture*> textures_;
+  std::vector<const texture::Texture*> textures_;
   int lanes_ = 0;
 };
 

@@ -19,6 +19,25 @@ namespace {
                    (name ? std::string(name) : "SPIR-V opcode " + std::to_string(ins.opcode)) + ")");
 }
 
+// A sampled image type's GLSL name: "sampler2D", "isampler3D", "samplerCubeShadow", ...
+std::string sampler_glsl_name(const Module& m, const Type& t) {
+  std::string prefix;
+  if (m.type(t.image_sampled_type).scalar == Scalar::I32) prefix = "i";
+  if (m.type(t.image_sampled_type).scalar == Scalar::U32) prefix = "u";
+  std::string dim;
+  switch (t.image_dim) {
+    case spv::Dim1D: dim = "1D"; break;
+    case spv::Dim2D: dim = "2D"; break;
+    case spv::Dim3D: dim = "3D"; break;
+    case spv::DimCube: dim = "Cube"; break;
+    case spv::DimRect: dim = "2DRect"; break;
+    case spv::DimBuffer: dim = "Buffer"; break;
+    default: dim = "(dimension " + std::to_string(t.image_dim) + ")"; break;
+  }
+  return prefix + "sampler" + dim + (t.image_ms ? "MS" : "") + (t.image_arrayed ? "Array" : "") +
+         (t.image_depth ? "Shadow" : "");
+}
+
 bool is_shared(const Module& m, const Variable& v) {
   switch (spv::StorageClass(v.storage)) {
     case spv::StorageClassUniform:
@@ -252,6 +271,54 @@ struct Decoder {
   }
 
   void emit(XIns x) { p.code.push_back(x); }
+
+  // OpImageSample*, OpImageFetch and OpImageQuery* on a sampler2D: one TexOp each.
+  void texture(const Instruction& ins, const std::vector<std::uint32_t>& o) {
+    const spv::Op op = spv::Op(ins.opcode);
+    const Type& image = m.type(value_type.at(o.at(0)));
+    const std::string name = sampler_glsl_name(m, image);
+    if (name != "sampler2D") unsupported(m, ins, "a " + name + " (tessref samples sampler2D only)");
+    TexOp t;
+    t.image = value(ins, o[0]);
+    XIns x = base(ins, XOp::Texture);
+    switch (op) {
+      case spv::OpImageQuerySizeLod: case spv::OpImageQuerySize:
+        t.kind = TexOp::Kind::QuerySize;
+        if (o.size() > 1) t.lod = value(ins, o[1]);
+        break;
+      case spv::OpImageQueryLevels: t.kind = TexOp::Kind::QueryLevels; break;
+      case spv::OpImageQueryLod:
+        t.kind = TexOp::Kind::QueryLod;
+        t.coord = value(ins, o.at(1));
+        t.coord_comps = comps_of(o[1]);
+        break;
+      default: {
+        t.kind = op == spv::OpImageFetch ? TexOp::Kind::Fetch : TexOp::Kind::Sample;
+        t.proj = op == spv::OpImageSampleProjImplicitLod || op == spv::OpImageSampleProjExplicitLod;
+        t.coord = value(ins, o.at(1));
+        t.coord_comps = comps_of(o[1]);
+        const std::uint32_t mask = o.size() > 2 ? o[2] : 0u;
+        const std::uint32_t known = std::uint32_t(spv::ImageOperandsBiasMask) | spv::ImageOperandsLodMask |
+                                    spv::ImageOperandsGradMask | spv::ImageOperandsConstOffsetMask |
+                                    spv::ImageOperandsOffsetMask;
+        if (mask & ~known) unsupported(m, ins, "image operands other than bias, lod, gradients and offsets");
+        std::size_t k = 3;  // operands follow the mask in the order of its bits
+        auto next = [&] { return value(ins, o.at(k++)); };
+        if (mask & spv::ImageOperandsBiasMask) t.bias = next();
+        if (mask & spv::ImageOperandsLodMask) t.lod = next();
+        if (mask & spv::ImageOperandsGradMask) {
+          t.grad_x = next();
+          t.grad_y = next();
+        }
+        if (mask & spv::ImageOperandsConstOffsetMask) t.offset = next();
+        if (mask & spv::ImageOperandsOffsetMask) t.offset = next();
+        t.implicit_lod = t.kind == TexOp::Kind::Sample && t.lod == kNone && t.grad_x == kNone;
+      }
+    }
+    x.aux = std::uint32_t(p.textures.size());
+    p.textures.push_back(t);
+    emit(x);
+  }
 
   void decode(const Instruction& ins) {
     if (ins.result && aliased[ins.result]) return;  // nothing to run: see alias_of
@@ -641,32 +708,12 @@ struct Decoder {
         emit(x);
         return;
       }
-      case spv::OpImageSampleImplicitLod: case spv::OpImageSampleExplicitLod: case spv::OpImageFetch: {
-        const spv::Op op = spv::Op(ins.opcode);
-        XIns x = base(ins, op == spv::OpImageFetch ? XOp::Fetch
-                           : op == spv::OpImageSampleExplicitLod ? XOp::SampleLod : XOp::Sample);
-        x.a = V(0);
-        x.b = V(1);
-        const Type& it = m.type(value_type.at(o[0]));
-        if (it.image_dim != spv::Dim2D || it.image_arrayed)
-          unsupported(m, ins, "a sampler other than sampler2D");
-        x.m = comps_of(o[1]);
-        x.aux = std::uint32_t(scalar_of(o[1]));
-        if (o.size() > 3) {
-          const std::uint32_t mask = o[2];
-          if (mask & ~(spv::ImageOperandsLodMask | spv::ImageOperandsBiasMask))
-            unsupported(m, ins, "image operands other than Lod and Bias");
-          if (mask & spv::ImageOperandsLodMask) x.c = V(3);
-        }
-        emit(x);
+      case spv::OpImageSampleImplicitLod: case spv::OpImageSampleExplicitLod:
+      case spv::OpImageSampleProjImplicitLod: case spv::OpImageSampleProjExplicitLod:
+      case spv::OpImageFetch: case spv::OpImageQuerySizeLod: case spv::OpImageQuerySize:
+      case spv::OpImageQueryLevels: case spv::OpImageQueryLod:
+        texture(ins, o);
         return;
-      }
-      case spv::OpImageQuerySizeLod: case spv::OpImageQuerySize: {
-        XIns x = base(ins, XOp::QuerySize);
-        x.a = V(0);
-        emit(x);
-        return;
-      }
       case spv::OpAtomicIIncrement: case spv::OpAtomicIDecrement: case spv::OpAtomicLoad:
       case spv::OpAtomicIAdd: case spv::OpAtomicISub: case spv::OpAtomicStore: {
         const spv::Op op = spv::Op(ins.opcode);
@@ -737,6 +784,7 @@ struct Decoder {
           reg[ins.result] = alloc_rows(std::max<std::uint32_t>(t.words, 1));
           describe_rows(reg[ins.result], t);
         }
+    p.fragment = m.model == ExecutionModel::Fragment;
     p.blocks.resize(m.blocks.size());
     for (std::size_t i = 0; i < m.blocks.size(); ++i) decode_block(m.blocks[i], p.blocks[i]);
     for (std::size_t i = 0; i < m.blocks.size(); ++i)

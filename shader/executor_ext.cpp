@@ -8,6 +8,7 @@
 
 #include <spirv/unified1/GLSL.std.450.h>
 
+#include "common/half_float.h"
 #include "shader/executor_runner.h"
 #include "shader/glsl_math.h"
 
@@ -22,31 +23,6 @@ T fsign(T a) {
 std::uint32_t find_lsb(std::uint32_t v) { return v ? std::uint32_t(std::countr_zero(v)) : 0xffffffffu; }
 std::uint32_t find_umsb(std::uint32_t v) { return v ? 31u - std::uint32_t(std::countl_zero(v)) : 0xffffffffu; }
 std::uint32_t find_smsb(std::uint32_t v) { return find_umsb(std::int32_t(v) < 0 ? ~v : v); }
-
-// IEEE half from float, round to nearest even (packHalf2x16).
-std::uint32_t to_half(float f) {
-  const std::uint32_t x = std::bit_cast<std::uint32_t>(f);
-  const std::uint32_t sign = (x >> 16) & 0x8000u;
-  const std::uint32_t ax = x & 0x7fffffffu;
-  if (ax > 0x7f800000u) return sign | 0x7e00u;  // NaN
-  if (ax >= 0x477ff000u) return sign | 0x7c00u;  // overflow (incl. inf) after rounding
-  if (ax < 0x38800000u) {                        // half subnormal or zero
-    const float scaled = std::bit_cast<float>(ax) * 16777216.0f;  // 2^24: exact
-    return sign | std::uint32_t(std::nearbyint(scaled));
-  }
-  const std::uint32_t mant = ax & 0x7fffffu;
-  std::uint32_t h = ((ax >> 23) - 112u) << 10 | (mant >> 13);
-  const std::uint32_t rest = mant & 0x1fffu;
-  if (rest > 0x1000u || (rest == 0x1000u && (h & 1u))) ++h;
-  return sign | h;
-}
-float from_half(std::uint32_t h) {
-  const std::uint32_t sign = (h & 0x8000u) << 16;
-  const std::uint32_t e = (h >> 10) & 0x1fu, m = h & 0x3ffu;
-  if (e == 0) return std::bit_cast<float>(sign) + (sign ? -1.0f : 1.0f) * float(m) * (1.0f / 16777216.0f);
-  if (e == 31) return std::bit_cast<float>(sign | 0x7f800000u | (m << 13));
-  return std::bit_cast<float>(sign | ((e + 112u) << 23) | (m << 13));
-}
 
 }  // namespace
 
@@ -348,12 +324,12 @@ void Runner::ext(const XIns& x) {
     }
     case GLSLstd450PackHalf2x16:
       put(row<std::uint32_t>(x.dst), [&](int l) {
-        return to_half(row<float>(x.a, 0)[l]) | (to_half(row<float>(x.a, 1)[l]) << 16);
+        return half_from_float(row<float>(x.a, 0)[l]) | (half_from_float(row<float>(x.a, 1)[l]) << 16);
       });
       break;
     case GLSLstd450UnpackHalf2x16:
       for (std::uint32_t c = 0; c < 2; ++c)
-        put(row<float>(x.dst, c), [&](int l) { return from_half((row<std::uint32_t>(x.a)[l] >> (16 * c)) & 0xffffu); });
+        put(row<float>(x.dst, c), [&](int l) { return half_to_float((row<std::uint32_t>(x.a)[l] >> (16 * c)) & 0xffffu); });
       break;
     case GLSLstd450PackUnorm4x8: case GLSLstd450PackSnorm4x8: case GLSLstd450PackUnorm2x16:
     case GLSLstd450PackSnorm2x16: {

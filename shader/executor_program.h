@@ -28,7 +28,7 @@ enum class XOp : std::uint16_t {
   Ext,  // GLSL.std.450: aux = instruction number, operands a, b, c
   BitCount, BitReverse, BitFieldInsert, BitFieldSExtract, BitFieldUExtract,
   DPdx, DPdy, Fwidth,
-  Sample, SampleLod, Fetch, QuerySize,
+  Texture,  // aux = DecodedProgram::textures index
   AtomicInc, AtomicDec, AtomicLoad, AtomicAdd, AtomicSub, AtomicStore,
   Kill,
 };
@@ -46,6 +46,21 @@ struct XIns {
   std::uint32_t doubles = kNone;
   std::uint32_t m = 0;        // second dimension: matrix rows, vector size of an operand
   int line = 0;
+};
+
+// A texture instruction (OpImageSample*, OpImageFetch, OpImageQuery*): its operands' rows, kNone
+// where absent. Constant operands (ConstOffset) are rows like any other.
+struct TexOp {
+  enum class Kind : std::uint8_t { Sample, Fetch, QuerySize, QueryLevels, QueryLod };
+  Kind kind = Kind::Sample;
+  std::uint32_t image = kNone;  // the sampler's texture unit (one U32 row)
+  std::uint32_t coord = kNone;  // float coordinates (Fetch: integer texel indices)
+  std::uint32_t coord_comps = 0;
+  bool proj = false;            // divide s and t by the coordinate's last component
+  // Sample without Lod or Grad: the LOD comes from the quad's derivatives of the coordinate in a
+  // fragment shader, and is 0 in other stages (GLSL 4.60 8.9).
+  bool implicit_lod = false;
+  std::uint32_t bias = kNone, lod = kNone, grad_x = kNone, grad_y = kNone, offset = kNone;
 };
 
 // dst word w := src row's word sw, `words` rows in a row. doubles: index into
@@ -116,6 +131,8 @@ struct DecodedProgram {
   std::vector<std::vector<std::uint32_t>> doubles;
   std::vector<Chain> chains;
   std::vector<Access> accesses;
+  std::vector<TexOp> textures;
+  bool fragment = false;  // a fragment shader: lanes are 2x2 quads
   // Arena layout: rows [0, constant_rows) hold constants, set once per Invocations; then SSA
   // registers; then per-lane variables.
   std::uint32_t arena_rows = 0;

@@ -380,6 +380,8 @@ Module read_module(std::span<const std::uint32_t> words, const StorageBufferSize
         t.image_sampled_type = w[1];
         t.image_dim = w[2];
         t.image_arrayed = w[4] != 0;
+        t.image_depth = w[3] == 1;
+        t.image_ms = w[5] != 0;
         lay_out(m, t);
         m.types[w[0]] = t;
         break;
@@ -398,6 +400,8 @@ Module read_module(std::span<const std::uint32_t> words, const StorageBufferSize
         const Type& image = m.type(w[1]);
         t.image_dim = image.image_dim;
         t.image_arrayed = image.image_arrayed;
+        t.image_depth = image.image_depth;
+        t.image_ms = image.image_ms;
         t.image_sampled_type = image.image_sampled_type;
         lay_out(m, t);
         m.types[w[0]] = t;

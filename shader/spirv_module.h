@@ -52,6 +52,8 @@ struct Type {
   std::vector<FlatComponent> flat;       // every scalar, in order
   std::uint32_t image_dim = 0;           // Image: Dim
   bool image_arrayed = false;
+  bool image_depth = false;  // a shadow sampler's image (Depth 1)
+  bool image_ms = false;
   std::uint32_t image_sampled_type = 0;
   bool runtime = false;  // Array: an OpTypeRuntimeArray (count set from the bound buffer, else 0)
   // Words of a type above kMaxValueWords (saturated), whose `words` and `flat` are then empty;

@@ -566,7 +566,7 @@ bool GlslProgram::uses_atomic_counters() const {
   return false;
 }
 
-void GlslProgram::bind_texture(std::uint32_t unit, const shader::Texture* texture) {
+void GlslProgram::bind_texture(std::uint32_t unit, const texture::Texture* texture) {
   if (textures_.size() <= unit) textures_.resize(unit + 1, nullptr);
   textures_[unit] = texture;
 }

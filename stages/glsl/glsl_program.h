@@ -35,7 +35,7 @@ struct StageProgram {
   StageInterface io;
   std::vector<std::uint32_t> uniforms;  // an image of the shared words holding uniforms
   std::vector<std::pair<std::uint32_t, std::uint32_t>> uniform_ranges;  // (first word, words)
-  const std::vector<const shader::Texture*>* textures = nullptr;  // the program's, by unit
+  const std::vector<const texture::Texture*>* textures = nullptr;  // the program's, by unit
   // Atomic counters: (shared word, binding, word offset in the binding's buffer), and the
   // program's buffers (binding -> words), which every run reads and writes back.
   std::vector<std::array<std::uint32_t, 3>> counters;
@@ -107,7 +107,7 @@ class GlslProgram final : public DrawProgram {
   // A storage block no range was bound to, if any: a draw refuses it (GL leaves its reads undefined).
   std::optional<UniformBlock> unbound_storage_block() const;
   // Binds a texture to a sampler's binding (texture unit). The texture must outlive the draws.
-  void bind_texture(std::uint32_t unit, const shader::Texture* texture);
+  void bind_texture(std::uint32_t unit, const texture::Texture* texture);
   // Atomic counter buffers (binding -> 32-bit counters). A program that uses atomic counters is
   // drawn on one thread, in patch and tile order, so the counts and the values each invocation
   // sees do not depend on the thread count.
@@ -148,7 +148,7 @@ class GlslProgram final : public DrawProgram {
   StageProgram* find(shader::Stage s);
   void map_patch_locations();
   std::unique_ptr<StageProgram> vs_, tcs_, tes_, fs_;
-  std::vector<const shader::Texture*> textures_;
+  std::vector<const texture::Texture*> textures_;
   std::map<std::uint32_t, std::vector<std::uint32_t>> counter_buffers_;
   std::set<std::uint32_t> bound_storage_;  // bindings bind_storage_buffer filled
   int num_varyings_ = 0;

@@ -356,9 +356,9 @@ TEST(Scene, ShaderSettingChecks) {
   EXPECT_THAT(scene_error("{}", {"shaders.attributes.in_position=uv"}),
               HasSubstr("shaders.attributes.in_position: expected \"position\" or \"normal\", got a string (\"uv\")"));
   EXPECT_THAT(scene_error(R"({"shaders": {"textures": {"u_tex": {"path": "a.png", "filter": "cubic"}}}})"),
-              HasSubstr("shaders.textures.u_tex.filter: expected linear or nearest, got \"cubic\""));
+              HasSubstr("shaders.textures.u_tex.filter: expected one of nearest, linear, got \"cubic\""));
   EXPECT_THAT(scene_error(R"({"shaders": {"textures": {"u_tex": {"path": "a.png", "wrap": "clamp"}}}})"),
-              HasSubstr("shaders.textures.u_tex.wrap: expected repeat, mirrored_repeat or clamp_to_edge"));
+              HasSubstr("shaders.textures.u_tex.wrap: expected one of repeat, mirrored_repeat, clamp_to_edge, clamp_to_border, mirror_clamp_to_edge"));
   EXPECT_THAT(scene_error(R"({"shaders": {"uniforms": {"u_k": "high"}}})"),
               HasSubstr("shaders.uniforms.u_k: expected numbers or booleans"));
 }

@@ -1913,6 +1913,15 @@ void main() {
   }
 }
 
+// A GL_RGBA32F texture of one level with `filter` for minification and magnification.
+texture::Texture rgba32f_texture(int width, int height, const std::vector<float>& rgba, texture::Filter filter) {
+  texture::Texture t;
+  t.levels.push_back(texture::make_level(texture::TexelFormat::kRgba32F, width, height, rgba.data()));
+  t.sampler.min_filter = t.sampler.mag_filter = filter;
+  t.finalize();
+  return t;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Each sampler reads its own texture unit (found writing the test below: a sampler had no flat
 // component, so loading one moved no word and every sampler read unit 0).
@@ -1925,10 +1934,8 @@ layout(location = 0) out vec4 color;
 void main() { color = vec4(texture(first, vec2(0.5)).x, texture(second, vec2(0.5)).x, 0.0, 0.0); }
 )",
            ExecLimits{}, Stage::Fragment);
-  Texture one, two;
-  one.width = one.height = two.width = two.height = 1;
-  one.texels = {1, 0, 0, 1};
-  two.texels = {2, 0, 0, 1};
+  const texture::Texture one = rgba32f_texture(1, 1, {1, 0, 0, 1}, texture::Filter::Nearest);
+  const texture::Texture two = rgba32f_texture(1, 1, {2, 0, 0, 1}, texture::Filter::Nearest);
   k.inv().bind_texture(3, &one);
   k.inv().bind_texture(5, &two);
   k.begin(4);
@@ -1942,8 +1949,9 @@ void main() { color = vec4(texture(first, vec2(0.5)).x, texture(second, vec2(0.5
 }
 
 // ---------------------------------------------------------------------------------------------
-// Texture sampling at coordinates past int's range (fuzz_glsl): defined, as float-to-int
-// conversion is (the texel at INT_MIN after wrapping, weights from the coordinate's fraction).
+// Texture sampling at coordinates past int's range (fuzz_glsl): defined, and llvmpipe's. A width
+// that is not a power of two wraps GL_REPEAT through the coordinate's fraction (texture/filter.cpp),
+// which is 0 for ±1e20 and, for nearest filtering, just below 1 for NaN.
 
 TEST(Executor, TextureCoordinatesPastIntRangeAreDefined) {
   Kernel k(R"(#version 450
@@ -1954,14 +1962,10 @@ layout(location = 0) out vec4 color;
 void main() { color = vec4(texture(linear_tex, uv).x, texture(nearest_tex, uv).x, 0.0, 0.0); }
 )",
            ExecLimits{}, Stage::Fragment);
-  // Three texels in a row, red 1, 2, 3; repeat wrapping: index INT_MIN is texel 1 (INT_MIN % 3 = -2).
-  Texture linear, nearest;
-  for (Texture* t : {&linear, &nearest}) {
-    t->width = 3;
-    t->height = 1;
-    t->texels = {1, 0, 0, 1, 2, 0, 0, 1, 3, 0, 0, 1};
-  }
-  linear.linear = true;
+  // Three texels in a row, red 1, 2, 3; repeat wrapping.
+  const std::vector<float> texels = {1, 0, 0, 1, 2, 0, 0, 1, 3, 0, 0, 1};
+  const texture::Texture linear = rgba32f_texture(3, 1, texels, texture::Filter::Linear);
+  const texture::Texture nearest = rgba32f_texture(3, 1, texels, texture::Filter::Nearest);
   k.inv().bind_texture(0, &linear);
   k.inv().bind_texture(1, &nearest);
   const float uv[4][2] = {{0.5f, 0.5f}, {1e20f, 0.5f}, {-1e20f, 0.5f}, {kNaN, 0.5f}};
@@ -1975,11 +1979,13 @@ void main() { color = vec4(texture(linear_tex, uv).x, texture(nearest_tex, uv).x
   EXPECT_TRUE(same(2.0f, k.f32("color", 0, 1)));
   for (int l = 1; l < 3; ++l) {
     SCOPED_TRACE("u = " + std::to_string(uv[l][0]));
-    EXPECT_TRUE(same(2.0f, k.f32("color", l, 0)));  // was 1e20 with a weight from INT_MIN
-    EXPECT_TRUE(same(2.0f, k.f32("color", l, 1)));
+    // Fraction 0: linear reads texels 2 and 0 half and half (once 1e20 with a weight from INT_MIN),
+    // nearest reads texel 0.
+    EXPECT_TRUE(same(2.0f, k.f32("color", l, 0)));
+    EXPECT_TRUE(same(1.0f, k.f32("color", l, 1)));
   }
   EXPECT_TRUE(std::isnan(k.f32("color", 3, 0)));  // NaN weights
-  EXPECT_TRUE(same(2.0f, k.f32("color", 3, 1)));
+  EXPECT_TRUE(same(3.0f, k.f32("color", 3, 1)));  // the fraction just below 1: the last texel
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -1,0 +1,124 @@
+#include "scene/texture_schema.h"
+
+#include <array>
+#include <utility>
+
+namespace tessref {
+namespace {
+
+using texture::Filter;
+using texture::Swizzle;
+using texture::Wrap;
+
+constexpr std::array<std::pair<const char*, Filter>, 6> kFilters{{
+    {"nearest", Filter::Nearest},
+    {"linear", Filter::Linear},
+    {"nearest_mipmap_nearest", Filter::NearestMipmapNearest},
+    {"linear_mipmap_nearest", Filter::LinearMipmapNearest},
+    {"nearest_mipmap_linear", Filter::NearestMipmapLinear},
+    {"linear_mipmap_linear", Filter::LinearMipmapLinear},
+}};
+constexpr std::array<std::pair<const char*, Wrap>, 5> kWraps{{
+    {"repeat", Wrap::Repeat},
+    {"mirrored_repeat", Wrap::MirroredRepeat},
+    {"clamp_to_edge", Wrap::ClampToEdge},
+    {"clamp_to_border", Wrap::ClampToBorder},
+    {"mirror_clamp_to_edge", Wrap::MirrorClampToEdge},
+}};
+constexpr std::array<std::pair<const char*, Swizzle>, 6> kSwizzles{{
+    {"red", Swizzle::Red}, {"green", Swizzle::Green}, {"blue", Swizzle::Blue},
+    {"alpha", Swizzle::Alpha}, {"zero", Swizzle::Zero}, {"one", Swizzle::One},
+}};
+
+template <class Enum, std::size_t N>
+std::string names(const std::array<std::pair<const char*, Enum>, N>& table, std::size_t count = N) {
+  std::string out;
+  for (std::size_t i = 0; i < count; ++i) out += (i ? ", " : "") + std::string(table[i].first);
+  return out;
+}
+
+// A string key that names one of the first `count` entries of table.
+template <class Enum, std::size_t N>
+Enum choice(JsonObject& o, const std::string& key, const std::array<std::pair<const char*, Enum>, N>& table,
+            std::size_t count = N) {
+  const std::string s = o.string(key);
+  o.describe(key, "one of " + names(table, count));
+  for (std::size_t i = 0; i < count; ++i)
+    if (s == table[i].first) return table[i].second;
+  o.fail(key, "expected one of " + names(table, count) + ", got \"" + s + "\"");
+}
+
+}  // namespace
+
+TextureSetting read_texture_setting(const std::string& name, const nlohmann::json& value, const std::string& path,
+                                    const JsonSource& source, const std::filesystem::path& base_dir) {
+  TextureSetting t;
+  t.sampler = name;
+  auto resolve = [&](const std::string& file) {
+    const std::filesystem::path p(file);
+    return p.is_relative() ? base_dir / p : p;
+  };
+  if (value.is_string()) {
+    t.levels.push_back(resolve(value.get<std::string>()));
+    return t;
+  }
+  JsonObject o(value, path, source);
+  const bool has_path = o.has("path"), has_levels = o.has("levels");
+  o.describe("path", "an image file: level 0");
+  o.describe("levels", "an array of image files: levels 0, 1, ... (glTexSubImage2D per level)");
+  if (has_path == has_levels) o.fail(has_path ? "levels" : "path", "give either path (level 0) or levels (one file per level)");
+  if (has_path) {
+    t.levels.push_back(resolve(o.string("path")));
+  } else {
+    const nlohmann::json& files = o.value("levels");
+    if (!files.is_array() || files.empty() || files.size() > 16)
+      o.fail("levels", "expected an array of 1 to 16 image files, got " + describe_json(files));
+    for (std::size_t k = 0; k < files.size(); ++k) {
+      if (!files[k].is_string()) o.fail("levels." + std::to_string(k), "expected an image file name, got " + describe_json(files[k]));
+      t.levels.push_back(resolve(files[k].get<std::string>()));
+    }
+  }
+  if (o.has("internalformat")) {
+    const std::string f = o.string("internalformat");
+    o.describe("internalformat", "one of " + texture::texel_format_names());
+    t.format = texture::parse_texel_format(f);
+    if (!t.format) o.fail("internalformat", "expected one of " + texture::texel_format_names() + ", got \"" + f + "\"");
+  }
+  if (o.has("generate_mipmap")) {
+    t.generate_mipmaps = o.boolean("generate_mipmap");
+    if (t.generate_mipmaps && t.levels.size() > 1)
+      o.fail("generate_mipmap", "glGenerateMipmap computes levels 1 and up from level 0: give levels or generate_mipmap, not both");
+  }
+  texture::SamplerState& s = t.sampler_state;
+  // filter and wrap set both filters and both wraps; the specific keys override them.
+  if (o.has("filter")) s.min_filter = s.mag_filter = choice(o, "filter", kFilters, 2);
+  if (o.has("min_filter")) s.min_filter = choice(o, "min_filter", kFilters);
+  if (o.has("mag_filter")) s.mag_filter = choice(o, "mag_filter", kFilters, 2);
+  if (o.has("wrap")) s.wrap_s = s.wrap_t = choice(o, "wrap", kWraps);
+  if (o.has("wrap_s")) s.wrap_s = choice(o, "wrap_s", kWraps);
+  if (o.has("wrap_t")) s.wrap_t = choice(o, "wrap_t", kWraps);
+  if (o.has("border_color")) {
+    const glm::vec4 b = o.rgba("border_color");
+    s.border = {b.r, b.g, b.b, b.a};
+  }
+  if (o.has("min_lod")) s.min_lod = o.number("min_lod");
+  if (o.has("max_lod")) s.max_lod = o.number("max_lod");
+  if (o.has("lod_bias")) s.lod_bias = o.number("lod_bias");
+  if (o.has("base_level")) t.base_level = o.integer("base_level", 0, 1000);
+  if (o.has("max_level")) t.max_level = o.integer("max_level", 0, 1000);
+  if (o.has("swizzle")) {
+    const nlohmann::json& sw = o.value("swizzle");
+    o.describe("swizzle", "an array of 4 of " + names(kSwizzles) + " (GL_TEXTURE_SWIZZLE_RGBA)");
+    if (!sw.is_array() || sw.size() != 4) o.fail("swizzle", "expected an array of 4 of " + names(kSwizzles) + ", got " + describe_json(sw));
+    for (std::size_t c = 0; c < 4; ++c) {
+      bool found = false;
+      for (const auto& [n, v] : kSwizzles)
+        if (sw[c].is_string() && sw[c].get<std::string>() == n) t.swizzle[c] = v, found = true;
+      if (!found) o.fail("swizzle." + std::to_string(c), "expected one of " + names(kSwizzles) + ", got " + describe_json(sw[c]));
+    }
+  }
+  o.finish();
+  return t;
+}
+
+}  // namespace tessref

@@ -1,0 +1,228 @@
+#include "texture/filter.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/fixed_point.h"
+#include "texture/sampler_ops.h"
+
+namespace tessref::texture {
+namespace {
+
+using namespace ops;
+
+// GL's mirror function by llvmpipe's lp_build_coord_mirror: 2 * (c/2 - round(c/2)), its absolute
+// value, NaN to 0.
+float mirror(float c) {
+  const float h = c * 0.5f;
+  const float f = h - std::nearbyint(h);
+  return max_ps(std::fabs(f + f), 0.0f);
+}
+
+// The fraction of c, at most the float just below 1 (NaN: that float).
+float fract_safe(float c) { return min_ps(c - std::floor(c), 0x1.fffffep-1f); }
+
+// GL_NEAREST: the texel index along one axis of a level `w` texels long; -1 for the border colour
+// (lp_build_sample_wrap_nearest).
+i32 nearest_index(float s, i32 w, i32 off, Wrap wrap, bool pot) {
+  const float wf = float(w);
+  i32 i = 0;
+  switch (wrap) {
+    case Wrap::Repeat:
+      if (pot) return add(ifloor(s * wf), off) & (w - 1);
+      if (off) s = s + float(off) / wf;
+      i = fptosi(fract_safe(s) * wf);
+      break;
+    case Wrap::ClampToEdge: {
+      float c = s * wf;
+      if (off) c = c + float(off);
+      i = std::clamp(fptosi(c), 0, w - 1);
+      break;
+    }
+    case Wrap::ClampToBorder:
+      i = add(ifloor(s * wf), off);
+      return i < 0 || i >= w ? -1 : i;
+    case Wrap::MirroredRepeat:
+      if (off) s = s + float(off) / wf;
+      i = std::min(fptosi(mirror(s) * wf), w - 1);
+      break;
+    case Wrap::MirrorClampToEdge: {
+      float c = s * wf;
+      if (off) c = c + float(off);
+      i = i32(std::min(std::uint32_t(fptosi(std::fabs(c))), std::uint32_t(w - 1)));  // unsigned min
+      break;
+    }
+  }
+  return std::clamp(i, 0, w - 1);
+}
+
+// GL_LINEAR in float: the two texel indices (-1 for the border) and the weight of the second
+// (lp_build_sample_wrap_linear).
+struct LinearIndices {
+  i32 i0, i1;
+  float weight;
+};
+LinearIndices linear_indices(float s, i32 w, i32 off, Wrap wrap, bool pot) {
+  const float wf = float(w);
+  auto floor_fract = [](float c, i32& i, float& f) {
+    const float fl = std::floor(c);
+    i = fptosi(fl);
+    f = c - fl;
+  };
+  LinearIndices r{0, 0, 0.0f};
+  switch (wrap) {
+    case Wrap::Repeat:
+      if (pot) {
+        float c = s * wf - 0.5f;
+        if (off) c = c + float(off);
+        floor_fract(c, r.i0, r.weight);
+        r.i1 = add(r.i0, 1) & (w - 1);
+        r.i0 &= w - 1;
+      } else {
+        if (off) s = s + float(off) / wf;
+        const float c = (s - std::floor(s)) * wf - 0.5f;
+        const bool negative = !(c >= 0.0f);  // unordered: NaN counts
+        floor_fract(c, r.i0, r.weight);
+        if (negative) r.i0 = w - 1;
+        r.i1 = r.i0 != w - 1 ? add(r.i0, 1) : 0;
+      }
+      break;
+    case Wrap::ClampToEdge: {
+      float c = s * wf;
+      if (off) c = c + float(off);
+      c = max_ps(min_ps(c, wf) - 0.5f, 0.0f);  // NaN: w - 0.5
+      floor_fract(c, r.i0, r.weight);
+      r.i1 = std::min(add(r.i0, 1), w - 1);
+      break;
+    }
+    case Wrap::ClampToBorder: {
+      float c = s * wf;
+      if (off) c = c + float(off);
+      floor_fract(c - 0.5f, r.i0, r.weight);
+      r.i1 = add(r.i0, 1);
+      if (r.i0 < 0 || r.i0 >= w) r.i0 = -1;
+      if (r.i1 < 0 || r.i1 >= w) r.i1 = -1;
+      return r;
+    }
+    case Wrap::MirroredRepeat: {
+      if (off) s = s + float(off) / wf;
+      floor_fract(mirror(s) * wf - 0.5f, r.i0, r.weight);
+      r.i1 = std::min(add(r.i0, 1), w - 1);
+      r.i0 = std::max(r.i0, 0);
+      break;
+    }
+    case Wrap::MirrorClampToEdge: {
+      float c = s * wf;
+      if (off) c = c + float(off);
+      c = max_ps(min_ps(std::fabs(c), wf) - 0.5f, 0.0f);
+      floor_fract(c, r.i0, r.weight);
+      r.i1 = std::min(add(r.i0, 1), w - 1);
+      break;
+    }
+  }
+  r.i0 = std::clamp(r.i0, 0, w - 1);
+  r.i1 = std::clamp(r.i1, 0, w - 1);
+  return r;
+}
+
+// GL_LINEAR in 8-bit fixed point: the coordinate in 1/256 texels, rounded (ties to even), less
+// half a texel; its integer part and 8-bit weight (lp_build_sample_image_linear, AoS).
+struct LinearIndices8 {
+  i32 i0, i1, weight;
+};
+LinearIndices8 linear_indices8(float s, i32 w, i32 off, Wrap wrap, bool pot) {
+  const i32 u = add(iround(s * float(w * 256)), -128);
+  LinearIndices8 r{add(u >> 8, off), 0, u & 255};
+  if (wrap == Wrap::ClampToEdge) {
+    r.i1 = std::clamp(add(r.i0, 1), 0, w - 1);
+    r.i0 = std::clamp(r.i0, 0, w - 1);
+  } else if (pot) {
+    r.i1 = add(r.i0, 1) & (w - 1);
+    r.i0 &= w - 1;
+  } else {
+    // lp_build_coord_repeat_npot_linear_int: from the coordinate's fraction.
+    if (off) s = s + float(off) / float(w);
+    const i32 v = add(iround((s - std::floor(s)) * float(w) * 256.0f), -128);
+    r.weight = v & 255;
+    r.i0 = v >> 8;
+    if (r.i0 < 0) r.i0 = w - 1;
+    r.i0 = std::min(r.i0, w - 1);
+    r.i1 = r.i0 != w - 1 ? r.i0 + 1 : 0;
+  }
+  r.i0 = std::clamp(r.i0, 0, w - 1);
+  r.i1 = std::clamp(r.i1, 0, w - 1);
+  return r;
+}
+
+i32 nearest_index8(float s, i32 w, i32 off, Wrap wrap, bool pot) {
+  if (wrap == Wrap::Repeat && !pot) return nearest_index(s, w, off, wrap, pot);
+  const i32 i = add(ifloor(s * float(w)), off);
+  return wrap == Wrap::Repeat ? i & (w - 1) : std::clamp(i, 0, w - 1);
+}
+
+void texel8(TexelFormat format, const Level& l, i32 i, i32 j, std::uint8_t out[4]) {
+  const int channels = info(format).channels;
+  const std::uint8_t* p = l.stored.data() + (std::size_t(j) * std::size_t(l.width) + std::size_t(i)) * std::size_t(channels);
+  for (int c = 0; c < 4; ++c) out[c] = c < channels ? p[c] : c == 3 ? 255 : 0;
+}
+
+void texelf(const Level& l, const std::array<float, 4>& border, i32 i, i32 j, float out[4]) {
+  if (i < 0 || j < 0) {
+    for (int c = 0; c < 4; ++c) out[c] = border[std::size_t(c)];
+    return;
+  }
+  const float* p = l.texels.data() + (std::size_t(j) * std::size_t(l.width) + std::size_t(i)) * 4;
+  for (int c = 0; c < 4; ++c) out[c] = p[c];
+}
+
+}  // namespace
+
+void filter_unorm8(TexelFormat format, const Level& level, const Axes& axes, bool linear, float s, float t,
+                   int offset_s, int offset_t, std::uint8_t out[4]) {
+  const i32 w = level.width, h = level.height;
+  if (!linear) {
+    texel8(format, level, nearest_index8(s, w, offset_s, axes.wrap[0], axes.pot[0]),
+           nearest_index8(t, h, offset_t, axes.wrap[1], axes.pot[1]), out);
+    return;
+  }
+  const LinearIndices8 x = linear_indices8(s, w, offset_s, axes.wrap[0], axes.pot[0]);
+  const LinearIndices8 y = linear_indices8(t, h, offset_t, axes.wrap[1], axes.pot[1]);
+  std::uint8_t t00[4], t10[4], t01[4], t11[4];
+  texel8(format, level, x.i0, y.i0, t00);
+  texel8(format, level, x.i1, y.i0, t10);
+  texel8(format, level, x.i0, y.i1, t01);
+  texel8(format, level, x.i1, y.i1, t11);
+  for (int c = 0; c < 4; ++c)
+    out[c] = fixed::unorm8_lerp(y.weight, fixed::unorm8_lerp(x.weight, t00[c], t10[c]),
+                                fixed::unorm8_lerp(x.weight, t01[c], t11[c]));
+}
+
+void filter_float(const Level& level, const Axes& axes, const std::array<float, 4>& border, bool linear, float s,
+                  float t, int offset_s, int offset_t, float out[4]) {
+  const i32 w = level.width, h = level.height;
+  if (!linear) {
+    const i32 i = nearest_index(s, w, offset_s, axes.wrap[0], axes.pot[0]);
+    const i32 j = nearest_index(t, h, offset_t, axes.wrap[1], axes.pot[1]);
+    texelf(level, border, i < 0 || j < 0 ? -1 : i, j, out);
+    return;
+  }
+  const LinearIndices x = linear_indices(s, w, offset_s, axes.wrap[0], axes.pot[0]);
+  const LinearIndices y = linear_indices(t, h, offset_t, axes.wrap[1], axes.pot[1]);
+  float t00[4], t10[4], t01[4], t11[4];
+  texelf(level, border, y.i0 < 0 ? -1 : x.i0, y.i0, t00);
+  texelf(level, border, y.i0 < 0 ? -1 : x.i1, y.i0, t10);
+  texelf(level, border, y.i1 < 0 ? -1 : x.i0, y.i1, t01);
+  texelf(level, border, y.i1 < 0 ? -1 : x.i1, y.i1, t11);
+  for (int c = 0; c < 4; ++c)
+    out[c] = lerp(y.weight, lerp(x.weight, t00[c], t10[c]), lerp(x.weight, t01[c], t11[c]));
+}
+
+std::array<float, 4> border_color(const Texture& t) {
+  std::array<float, 4> b = t.sampler.border;
+  const ChannelType type = info(t.format).type;
+  if (type == ChannelType::kUnorm8 || type == ChannelType::kSrgb8)
+    for (float& c : b) c = std::min(std::max(c, 0.0f), 1.0f);
+  return b;
+}
+
+}  // namespace tessref::texture

@@ -1,0 +1,31 @@
+#pragma once
+// One mip level filtered at one coordinate: how (s, t) becomes texel indices and weights for
+// each wrap mode, and how the texels are combined, as llvmpipe's sampler computes them (GL 4.6
+// 8.14.2 gives the same texels and weights in exact arithmetic; docs/textures.md has the rules).
+#include <array>
+#include <cstdint>
+
+#include "texture/texture.h"
+
+namespace tessref::texture {
+
+// The wrap mode of s and t, and whether level 0's width and height are powers of two (llvmpipe
+// wraps REPEAT with a mask then, and through the coordinate's fraction otherwise).
+struct Axes {
+  std::array<Wrap, 2> wrap;
+  std::array<bool, 2> pot;
+};
+
+// Formats of 8-bit normalized channels, filtered in 8-bit fixed point (repeat and clamp-to-edge
+// only): the channels, four per texel (missing green and blue 0, missing alpha 255).
+void filter_unorm8(TexelFormat format, const Level& level, const Axes& axes, bool linear, float s, float t,
+                   int offset_s, int offset_t, std::uint8_t out[4]);
+
+// Every other format and wrap, in float: the texels as decoded, border texels as `border`.
+void filter_float(const Level& level, const Axes& axes, const std::array<float, 4>& border, bool linear, float s,
+                  float t, int offset_s, int offset_t, float out[4]);
+
+// GL_TEXTURE_BORDER_COLOR as the sampler uses it: clamped to [0, 1] for normalized formats.
+std::array<float, 4> border_color(const Texture& t);
+
+}  // namespace tessref::texture

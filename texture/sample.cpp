@@ -1,0 +1,255 @@
+#include "texture/sample.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "common/fixed_point.h"
+#include "texture/filter.h"
+#include "texture/sampler_ops.h"
+
+namespace tessref::texture {
+namespace {
+
+using namespace ops;
+
+enum class Mip { None, Nearest, Linear };
+
+Mip mip_mode(Filter f) {
+  switch (f) {
+    case Filter::NearestMipmapNearest: case Filter::LinearMipmapNearest: return Mip::Nearest;
+    case Filter::NearestMipmapLinear: case Filter::LinearMipmapLinear: return Mip::Linear;
+    default: return Mip::None;
+  }
+}
+bool linear_image(Filter f) {
+  return f == Filter::Linear || f == Filter::LinearMipmapNearest || f == Filter::LinearMipmapLinear;
+}
+
+// The levels a lookup reads and how: what llvmpipe's lp_build_lod_selector and its mip level
+// functions compute.
+struct LevelChoice {
+  bool linear = false;  // the image filter: min or mag
+  i32 level0 = 0, level1 = 0;
+  float fpart = 0.0f;  // weight of level1 (mip LINEAR); 0: level0 alone
+};
+
+// The sampler's LOD state as Gallium keeps it: GL_TEXTURE_MIN_LOD no lower than 0, the bias
+// quantized to 1/256 within ±16 (util_quantize_lod_bias), and which clamps apply.
+struct GalliumLod {
+  float min_lod, max_lod, bias;
+  bool min_max_equal, apply_min, apply_max;
+};
+GalliumLod gallium_lod(const SamplerState& s, bool needs_lod) {
+  GalliumLod g;
+  g.min_lod = s.min_lod > 0.0f ? s.min_lod : 0.0f;
+  g.max_lod = s.max_lod;
+  g.bias = std::round(std::clamp(s.lod_bias, -16.0f, 16.0f) * 256.0f) / 256.0f;
+  g.min_max_equal = needs_lod && g.min_lod == g.max_lod;
+  g.apply_min = needs_lod && !g.min_max_equal && g.min_lod > 0.0f;
+  g.apply_max = needs_lod && !g.min_max_equal && g.max_lod < 15.0f;  // PIPE_MAX_TEXTURE_LEVELS - 1
+  return g;
+}
+
+// ρ² of GL 4.6 equation 8.7 with the base level's size, each product and sum a float operation
+// (lp_build_rho without the ρ approximation): the square root is folded into the log2 below.
+float rho_squared(const Texture& t, const LodInput& in) {
+  const Level& base = t.levels[std::size_t(t.base_level)];
+  const float w = float(base.width), h = float(base.height);
+  const float a = in.dsdx * w, b = in.dtdx * h, c = in.dsdy * w, d = in.dtdy * h;
+  const float rx = a * a + b * b, ry = c * c + d * d;
+  float rho2 = max_ps(rx, ry);
+  if (in.gradients && !std::isfinite(rho2)) rho2 = 0.0f;
+  return rho2;
+}
+
+// 0.5 * log2(ρ²) by lp_build_fast_log2: exponent plus mantissa - 1, exact at powers of two and
+// linear between them (ρ = 1.5 gives 0.5625, not 0.585).
+float half_fast_log2(float x) {
+  const std::uint32_t bits = std::bit_cast<std::uint32_t>(x);
+  const i32 e = i32((bits >> 23) & 255u) - 127;
+  const float m = std::bit_cast<float>((bits & 0x7fffffu) | 0x3f800000u);
+  return (float(e - 1) + m) * 0.5f;
+}
+
+// The LOD after the shader's and the sampler's bias, before the clamps (textureQueryLod's .y),
+// and after them. False for the shortcut: no bias, no clamp and a NEAREST or no mip filter give
+// the level straight from ρ²'s exponent (lp_build_ilog2_sqrt), in `ipart` and `positive`.
+struct LodValue {
+  float unclamped = 0.0f, lod = 0.0f;
+  bool shortcut = false;
+  i32 ipart = 0;
+  bool positive = false;
+};
+LodValue compute_lod(const Texture& t, const LodInput& in, Mip mip, const GalliumLod& g, bool query) {
+  LodValue v;
+  if (g.min_max_equal && !query) {
+    v.unclamped = v.lod = g.min_lod;
+    return v;
+  }
+  if (in.from == LodInput::From::Explicit) {
+    v.lod = in.lod;
+  } else {
+    const float rho2 = rho_squared(t, in);
+    if (!in.has_bias && !query && g.bias == 0.0f && !g.apply_max && !g.apply_min && mip != Mip::Linear) {
+      v.shortcut = true;
+      v.ipart = (i32((std::bit_cast<std::uint32_t>(rho2) >> 23) & 255u) - 127 + 1) >> 1;
+      v.positive = rho2 > 1.0f;
+      return v;
+    }
+    v.lod = half_fast_log2(rho2);
+    if (in.has_bias) v.lod = v.lod + in.bias;
+  }
+  if (g.bias != 0.0f) v.lod = v.lod + g.bias;
+  v.unclamped = v.lod;
+  if (g.apply_max) v.lod = min_ps(v.lod, g.max_lod);
+  if (g.apply_min) v.lod = max_ps(v.lod, g.min_lod);
+  return v;
+}
+
+LevelChoice choose_levels(const Texture& t, const LodInput& in) {
+  const SamplerState& s = t.sampler;
+  Mip mip = mip_mode(s.min_filter);
+  // A view of one level whose LOD range ends at 0 samples level 0 only (level_zero_only).
+  if (t.last_level == t.base_level && s.max_lod <= 0.0f) mip = Mip::None;
+  const bool min_linear = linear_image(s.min_filter), mag_linear = linear_image(s.mag_filter);
+  LevelChoice c;
+  c.level0 = c.level1 = t.base_level;
+  const bool needs_lod = mip != Mip::None || min_linear != mag_linear;
+  if (!needs_lod) {
+    c.linear = min_linear;
+    return c;
+  }
+  const LodValue v = compute_lod(t, in, mip, gallium_lod(s, needs_lod), false);
+  const bool positive = v.shortcut ? v.positive : v.lod > 0.0f;  // GL 4.6 8.15 with c = 0
+  c.linear = positive ? min_linear : mag_linear;
+  if (!positive || mip == Mip::None) return c;
+  const i32 first = t.base_level, last = t.last_level;
+  if (mip == Mip::Nearest) {
+    const i32 ipart = v.shortcut ? v.ipart : iround(v.lod);
+    c.level0 = c.level1 = std::clamp(add(ipart, first), first, last);
+    return c;
+  }
+  const float fl = std::floor(v.lod);
+  i32 level0 = add(fptosi(fl), first);
+  float fpart = v.lod - fl;
+  if (level0 < first) {
+    level0 = first;
+    fpart = 0.0f;
+  } else if (level0 >= last) {
+    level0 = last;
+    fpart = 0.0f;
+  }
+  c.level0 = level0;
+  c.level1 = fpart != 0.0f ? level0 + 1 : level0;
+  c.fpart = fpart;
+  return c;
+}
+
+// The 8-bit fixed-point path (lp_build_sample_aos) serves formats of 8-bit unsigned normalized
+// channels (not sRGB) with repeat or clamp-to-edge wraps, when the quad has one LOD or the
+// minification and magnification filters agree.
+bool fixed_point_path(const Texture& t, const LodInput& in) {
+  const TexelFormatInfo& f = info(t.format);
+  const SamplerState& s = t.sampler;
+  auto simple = [](Wrap w) { return w == Wrap::Repeat || w == Wrap::ClampToEdge; };
+  return f.type == ChannelType::kUnorm8 && simple(s.wrap_s) && simple(s.wrap_t) &&
+         (in.per_quad || linear_image(s.min_filter) == linear_image(s.mag_filter));
+}
+
+void apply_swizzle(const Texture& t, const float in[4], float out[4]) {
+  for (int c = 0; c < 4; ++c) {
+    switch (t.swizzle[std::size_t(c)]) {
+      case Swizzle::Red: out[c] = in[0]; break;
+      case Swizzle::Green: out[c] = in[1]; break;
+      case Swizzle::Blue: out[c] = in[2]; break;
+      case Swizzle::Alpha: out[c] = in[3]; break;
+      case Swizzle::Zero: out[c] = 0.0f; break;
+      case Swizzle::One: out[c] = 1.0f; break;
+    }
+  }
+}
+
+void incomplete(float out[4]) {
+  out[0] = out[1] = out[2] = 0.0f;
+  out[3] = 1.0f;
+}
+
+}  // namespace
+
+void sample(const Texture& t, float s, float tc, const LodInput& lod, int offset_s, int offset_t, float out[4]) {
+  if (!t.complete) return incomplete(out);
+  const LevelChoice c = choose_levels(t, lod);
+  const Level& l0 = t.levels[std::size_t(c.level0)];
+  const Level& level_zero = t.levels[0];
+  const Axes axes{{t.sampler.wrap_s, t.sampler.wrap_t},
+                  {std::has_single_bit(unsigned(level_zero.width)), std::has_single_bit(unsigned(level_zero.height))}};
+  float texel[4];
+  if (fixed_point_path(t, lod)) {
+    std::uint8_t r0[4];
+    filter_unorm8(t.format, l0, axes, c.linear, s, tc, offset_s, offset_t, r0);
+    // The levels' weight in 8 bits, truncated (lp_build_sample_mipmap's lod_fpart.fixed16).
+    const i32 w = fptosi(c.fpart * 256.0f);
+    if (w > 0) {
+      std::uint8_t r1[4];
+      filter_unorm8(t.format, t.levels[std::size_t(c.level1)], axes, c.linear, s, tc, offset_s, offset_t, r1);
+      for (int k = 0; k < 4; ++k) r0[k] = fixed::unorm8_lerp(w, r0[k], r1[k]);
+    }
+    for (int k = 0; k < 4; ++k) texel[k] = fixed::unorm8_texel_to_float(r0[k]);
+  } else {
+    const std::array<float, 4> border = border_color(t);
+    filter_float(l0, axes, border, c.linear, s, tc, offset_s, offset_t, texel);
+    if (c.fpart > 0.0f) {
+      float t1[4];
+      filter_float(t.levels[std::size_t(c.level1)], axes, border, c.linear, s, tc, offset_s, offset_t, t1);
+      for (int k = 0; k < 4; ++k) texel[k] = lerp(c.fpart, texel[k], t1[k]);
+    }
+  }
+  apply_swizzle(t, texel, out);
+}
+
+void fetch(const Texture& t, int i, int j, int lod, float out[4]) {
+  if (!t.complete) return incomplete(out);
+  const std::int64_t level = std::int64_t(t.base_level) + lod;
+  float texel[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  if (level >= t.base_level && level <= t.last_level) {
+    const Level& l = t.levels[std::size_t(level)];
+    if (i >= 0 && j >= 0 && i < l.width && j < l.height)
+      for (int c = 0; c < 4; ++c) texel[c] = l.texels[(std::size_t(j) * std::size_t(l.width) + std::size_t(i)) * 4 + std::size_t(c)];
+  }
+  apply_swizzle(t, texel, out);
+}
+
+void level_size(const Texture& t, int lod, int out[2]) {
+  if (!t.complete) {
+    out[0] = out[1] = 1;
+    return;
+  }
+  const std::int64_t level = std::int64_t(t.base_level) + lod;
+  out[0] = out[1] = 0;
+  if (level < t.base_level || level > t.last_level) return;
+  out[0] = t.levels[std::size_t(level)].width;
+  out[1] = t.levels[std::size_t(level)].height;
+}
+
+int query_levels(const Texture& t) { return t.complete ? t.last_level - t.base_level + 1 : 1; }
+
+void query_lod(const Texture& t, const LodInput& in, float out[2]) {
+  if (!t.complete) {
+    out[0] = out[1] = 0.0f;
+    return;
+  }
+  const Mip mip = mip_mode(t.sampler.min_filter);
+  const bool needs_lod = mip != Mip::None || linear_image(t.sampler.min_filter) != linear_image(t.sampler.mag_filter);
+  const LodValue v = compute_lod(t, in, mip, gallium_lod(t.sampler, needs_lod), true);
+  float level = 0.0f;
+  const float top = float(t.last_level - t.base_level);
+  if (mip == Mip::Nearest) level = min_ps(max_ps(std::nearbyint(v.lod), 0.0f), top);
+  if (mip == Mip::Linear) level = min_ps(max_ps(v.lod, 0.0f), top);
+  out[0] = level;
+  out[1] = v.unclamped;
+}
+
+}  // namespace tessref::texture

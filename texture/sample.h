@@ -1,0 +1,46 @@
+#pragma once
+// Texture lookups on one texture, one invocation at a time: GL 4.6 8.14 (level of detail,
+// minification and magnification, mipmapping), 8.14.2 (wrapping and texel selection) and
+// 11.1.3.5 (an incomplete texture reads (0, 0, 0, 1)). Where GL leaves the arithmetic to the
+// implementation (the LOD's log2 and its rounding, filter weight precision, how coordinates
+// become texel indices), this is llvmpipe's arithmetic operation for operation, as read from Mesa
+// 22.3.6's gallivm sampler and measured bit for bit (docs/textures.md lists each rule).
+#include "texture/texture.h"
+
+namespace tessref::texture {
+
+// Where a lookup's level of detail comes from.
+struct LodInput {
+  enum class From { Derivatives, Explicit };
+  From from = From::Explicit;
+  // Derivatives: ds/dx, dt/dx, ds/dy, dt/dy. For an implicit LOD in a fragment shader, the quad's
+  // (its top-left pixel's differences to its right and upper neighbours: one LOD per quad); for
+  // textureGrad, the invocation's own.
+  float dsdx = 0.0f, dtdx = 0.0f, dsdy = 0.0f, dtdy = 0.0f;
+  bool gradients = false;  // textureGrad: a ρ² that is infinite or NaN counts as 0
+  float lod = 0.0f;        // Explicit: textureLod's (an implicit LOD outside fragment shaders: 0)
+  bool has_bias = false;   // texture(..., bias) in a fragment shader
+  float bias = 0.0f;
+  // One LOD for the quad: an implicit LOD without bias in a fragment shader. llvmpipe filters
+  // 8-bit normalized textures in fixed point only then (or when min and mag filters agree).
+  bool per_quad = false;
+};
+
+// texture(), textureLod(), textureGrad(), the Offset and Proj forms (s and t already divided):
+// the filtered, swizzled texel.
+void sample(const Texture& t, float s, float tc, const LodInput& lod, int offset_s, int offset_t, float out[4]);
+
+// texelFetch(): texel (i, j) of level base_level + lod; (0, 0, 0, 0) outside the level or for a
+// level outside base_level .. last_level (GL 4.6 11.1.3.2 leaves it undefined).
+void fetch(const Texture& t, int i, int j, int lod, float out[4]);
+
+// textureSize(): level base_level + lod's width and height, (0, 0) for a level outside the
+// texture's; (1, 1) for an incomplete texture (the 1 x 1 texture Mesa binds in its place).
+void level_size(const Texture& t, int lod, int out[2]);
+// textureQueryLevels(): last_level - base_level + 1 (1 for an incomplete texture, as above).
+int query_levels(const Texture& t);
+// textureQueryLod() (GLSL 4.60 8.9.2): (the level that would be accessed relative to
+// base_level, as a float; the LOD after both biases and before the LOD range clamp).
+void query_lod(const Texture& t, const LodInput& lod, float out[2]);
+
+}  // namespace tessref::texture

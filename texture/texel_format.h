@@ -1,0 +1,48 @@
+#pragma once
+// The internal formats a texture's texels can have (glTexStorage2D's internalformat), what an
+// image's float values become when stored in one, and what the sampler reads back.
+//
+// tessref converts a file's values to the format itself and gives the driver the stored bytes
+// (GL_UNSIGNED_BYTE, GL_HALF_FLOAT or GL_FLOAT data of the format's own layout), so both read the
+// same texels: GL 4.6 8.4.4.2 leaves the rounding of an upload's conversion to the implementation.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tessref::texture {
+
+enum class TexelFormat {
+  kRgba32F, kRg32F, kR32F,
+  kRgba16F, kRg16F, kR16F,
+  kRgba8, kRgb8, kRg8, kR8,
+  kSrgb8Alpha8, kSrgb8,
+};
+
+enum class ChannelType { kFloat32, kFloat16, kUnorm8, kSrgb8 };
+
+struct TexelFormatInfo {
+  const char* gl_name;  // "GL_RGBA8"
+  int channels;         // 1..4 (R, RG, RGB, RGBA)
+  ChannelType type;
+  int bytes_per_channel() const { return type == ChannelType::kFloat32 ? 4 : type == ChannelType::kFloat16 ? 2 : 1; }
+  int bytes_per_texel() const { return channels * bytes_per_channel(); }
+  bool eight_bit() const { return type == ChannelType::kUnorm8 || type == ChannelType::kSrgb8; }
+};
+
+const TexelFormatInfo& info(TexelFormat f);
+std::optional<TexelFormat> parse_texel_format(const std::string& gl_name);
+std::string texel_format_names();  // "GL_RGBA32F, GL_RG32F, ...", for messages
+
+// Stores `texels` RGBA floats (4 per texel) in format f: 32-bit float channels unchanged, 16-bit
+// ones rounded to the nearest half (ties to even; beyond 65504: infinity), 8-bit normalized ones
+// clamped to [0, 1] and rounded to the nearest k / 255 (sRGB formats: the value is taken as
+// already encoded, as an 8-bit image file holds it). Channels the format lacks are dropped.
+std::vector<std::uint8_t> encode_texels(TexelFormat f, const float* rgba, std::size_t texels);
+
+// What the sampler reads from stored texels (GL 4.6 15.2.1 and 8.24): each channel converted to
+// float (8-bit channels as llvmpipe converts them: common/fixed_point.h; sRGB ones decoded before
+// filtering), missing green and blue 0, missing alpha 1. Four floats per texel.
+std::vector<float> decode_texels(TexelFormat f, const std::vector<std::uint8_t>& bytes);
+
+}  // namespace tessref::texture

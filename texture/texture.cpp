@@ -1,0 +1,84 @@
+#include "texture/texture.h"
+
+#include <algorithm>
+#include <bit>
+
+namespace tessref::texture {
+
+const char* gl_name(Filter f) {
+  switch (f) {
+    case Filter::Nearest: return "GL_NEAREST";
+    case Filter::Linear: return "GL_LINEAR";
+    case Filter::NearestMipmapNearest: return "GL_NEAREST_MIPMAP_NEAREST";
+    case Filter::LinearMipmapNearest: return "GL_LINEAR_MIPMAP_NEAREST";
+    case Filter::NearestMipmapLinear: return "GL_NEAREST_MIPMAP_LINEAR";
+    case Filter::LinearMipmapLinear: return "GL_LINEAR_MIPMAP_LINEAR";
+  }
+  return "?";
+}
+
+const char* gl_name(Wrap w) {
+  switch (w) {
+    case Wrap::Repeat: return "GL_REPEAT";
+    case Wrap::MirroredRepeat: return "GL_MIRRORED_REPEAT";
+    case Wrap::ClampToEdge: return "GL_CLAMP_TO_EDGE";
+    case Wrap::ClampToBorder: return "GL_CLAMP_TO_BORDER";
+    case Wrap::MirrorClampToEdge: return "GL_MIRROR_CLAMP_TO_EDGE";
+  }
+  return "?";
+}
+
+Level make_level(TexelFormat f, int width, int height, const float* rgba) {
+  Level l;
+  l.width = width;
+  l.height = height;
+  l.stored = encode_texels(f, rgba, std::size_t(width) * std::size_t(height));
+  l.texels = decode_texels(f, l.stored);
+  return l;
+}
+
+// GL 4.6 8.17: a texture is complete when its base level exists and, for a minification filter
+// that uses mipmaps, level_base <= level_max and every level from the base to
+// q = min(p, level_max), p = level_base + floor(log2(max(w_b, h_b))), exists with the size
+// max(1, floor(w_b / 2^(k - level_base))) x max(1, floor(h_b / 2^(k - level_base))).
+void Texture::finalize() {
+  complete = false;
+  last_level = base_level;
+  const int n = int(levels.size());
+  if (base_level < 0 || base_level >= n || levels[std::size_t(base_level)].width <= 0 ||
+      levels[std::size_t(base_level)].height <= 0) {
+    incomplete_reason = "it has no level " + std::to_string(base_level) + " (GL_TEXTURE_BASE_LEVEL)";
+    return;
+  }
+  const Level& base = levels[std::size_t(base_level)];
+  const int p = base_level + int(std::bit_width(unsigned(std::max(base.width, base.height)))) - 1;
+  if (!uses_mipmaps(sampler.min_filter)) {
+    complete = true;
+    return;
+  }
+  if (base_level > max_level) {
+    incomplete_reason = "GL_TEXTURE_BASE_LEVEL " + std::to_string(base_level) + " is above GL_TEXTURE_MAX_LEVEL " +
+                        std::to_string(max_level);
+    return;
+  }
+  const int q = std::min(p, max_level);
+  for (int k = base_level + 1; k <= q; ++k) {
+    const int w = std::max(1, base.width >> (k - base_level)), h = std::max(1, base.height >> (k - base_level));
+    if (k >= n) {
+      incomplete_reason = std::string("its minification filter ") + gl_name(sampler.min_filter) + " needs levels " +
+                          std::to_string(base_level) + " to " + std::to_string(q) + ", and level " +
+                          std::to_string(k) + " is missing";
+      return;
+    }
+    const Level& l = levels[std::size_t(k)];
+    if (l.width != w || l.height != h) {
+      incomplete_reason = "level " + std::to_string(k) + " is " + std::to_string(l.width) + "x" +
+                          std::to_string(l.height) + ", and GL requires " + std::to_string(w) + "x" + std::to_string(h);
+      return;
+    }
+  }
+  last_level = q;
+  complete = true;
+}
+
+}  // namespace tessref::texture

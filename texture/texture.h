@@ -1,0 +1,71 @@
+#pragma once
+// A GL texture as the sampler sees it: a 2D image with its mip levels, the internal format its
+// texels were converted to, and the texture's and sampler object's state (GL 4.6 8.10 and 8.14).
+// Plain data: the scene loader fills it, the executor reads it through texture/sample.h.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "texture/texel_format.h"
+
+namespace tessref::texture {
+
+// GL_TEXTURE_MIN_FILTER / GL_TEXTURE_MAG_FILTER (the magnification filter is Nearest or Linear).
+enum class Filter {
+  Nearest, Linear,
+  NearestMipmapNearest, LinearMipmapNearest, NearestMipmapLinear, LinearMipmapLinear,
+};
+// GL_TEXTURE_WRAP_S / _T / _R.
+enum class Wrap { Repeat, MirroredRepeat, ClampToEdge, ClampToBorder, MirrorClampToEdge };
+// GL_TEXTURE_SWIZZLE_R/G/B/A: which component (or constant) each result component reads.
+enum class Swizzle : std::uint8_t { Red, Green, Blue, Alpha, Zero, One };
+
+const char* gl_name(Filter f);
+const char* gl_name(Wrap w);
+inline bool uses_mipmaps(Filter f) { return f != Filter::Nearest && f != Filter::Linear; }
+
+// Sampler state (a sampler object's, or the texture's own when no sampler object is bound),
+// with GL's initial values.
+struct SamplerState {
+  Filter min_filter = Filter::NearestMipmapLinear;
+  Filter mag_filter = Filter::Linear;
+  Wrap wrap_s = Wrap::Repeat, wrap_t = Wrap::Repeat;
+  std::array<float, 4> border{0.0f, 0.0f, 0.0f, 0.0f};  // GL_TEXTURE_BORDER_COLOR
+  float min_lod = -1000.0f, max_lod = 1000.0f;           // GL_TEXTURE_MIN_LOD / MAX_LOD
+  float lod_bias = 0.0f;                                 // GL_TEXTURE_LOD_BIAS
+};
+
+// One mip level: width x height texels, row 0 at the bottom (GL). `stored` holds them in the
+// format's own layout (what a driver is given); `texels` as the sampler reads them, four floats
+// each (k / 255 for 8-bit normalized channels, linear values for sRGB ones, missing green and
+// blue 0, missing alpha 1).
+struct Level {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> stored;
+  std::vector<float> texels;
+};
+
+// A level of format f from RGBA floats, 4 per texel, row 0 at the bottom: stored in the format and
+// read back (encode_texels, decode_texels).
+Level make_level(TexelFormat f, int width, int height, const float* rgba);
+
+struct Texture {
+  TexelFormat format = TexelFormat::kRgba32F;
+  std::vector<Level> levels;  // levels[k] is mip level k (from level 0, whatever base_level is)
+  int base_level = 0;         // GL_TEXTURE_BASE_LEVEL
+  int max_level = 1000;       // GL_TEXTURE_MAX_LEVEL
+  std::array<Swizzle, 4> swizzle{Swizzle::Red, Swizzle::Green, Swizzle::Blue, Swizzle::Alpha};
+  SamplerState sampler;
+
+  // GL 4.6 8.17 (texture completeness), for this sampler state; set by finalize().
+  bool complete = false;
+  std::string incomplete_reason;  // why not, for the warning
+  int last_level = 0;             // q of 8.14.3: the last level sampled (base_level .. max_level)
+
+  // Checks completeness and sets complete, incomplete_reason and last_level. Call after the
+  // levels and state are set.
+  void finalize();
+};
+
+}  // namespace tessref::texture
