@@ -98,10 +98,10 @@ GlTextures::GlTextures(const std::string& scene_source, const ShaderSettings& sh
       const texture::Level& level = tex.levels[std::size_t(l)];
       glTexSubImage2D(GL_TEXTURE_2D, l, 0, 0, level.width, level.height, f.format, f.type, level.stored.data());
     }
-    // Base and max level before glGenerateMipmap, which fills levels base + 1 .. q.
+    // glGenerateMipmap right after the upload, with the initial base and max level: every level.
+    if (t.generate_mipmaps) glGenerateMipmap(GL_TEXTURE_2D);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, tex.base_level);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, tex.max_level);
-    if (t.generate_mipmaps) glGenerateMipmap(GL_TEXTURE_2D);
     const texture::SamplerState& s = tex.sampler;
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, gl_filter(s.min_filter));
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, gl_filter(s.mag_filter));

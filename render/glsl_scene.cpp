@@ -397,12 +397,13 @@ texture::Texture load_texture(const TextureSetting& t, const std::string& key) {
     const std::vector<float> rgba = rgba_rows(image, !t.format);
     tex.levels.push_back(texture::make_level(tex.format, image.width, image.height, rgba.data()));
   }
+  // glGenerateMipmap right after level 0 is uploaded, before any glTexParameter: every level.
+  if (t.generate_mipmaps) texture::generate_mipmaps(tex);
   tex.sampler = t.sampler_state;
   tex.base_level = t.base_level;
   tex.max_level = t.max_level;
   tex.swizzle = t.swizzle;
-  if (t.generate_mipmaps) texture::generate_mipmaps(tex);
-  else tex.finalize();
+  tex.finalize();
   return tex;
 }
 

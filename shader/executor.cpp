@@ -333,15 +333,15 @@ void Runner::texture(const XIns& x) {
     }
     return;
   }
-  // Sample and QueryLod: the coordinates, divided by q for the Proj forms.
+  // Sample and QueryLod: the coordinates, projected for the Proj forms.
   float s[L], t[L];
   for (int l = 0; l < n; ++l) {
     s[l] = frow(op.coord, 0, l);
     t[l] = frow(op.coord, 1, l);
-    if (op.proj) {
-      const float q = frow(op.coord, op.coord_comps - 1, l);
-      s[l] = s[l] / q;
-      t[l] = t[l] / q;
+    if (op.proj) {  // times 1/q, as Mesa lowers the projection (nir_lower_tex)
+      const float inv_q = 1.0f / frow(op.coord, op.coord_comps - 1, l);
+      s[l] = s[l] * inv_q;
+      t[l] = t[l] * inv_q;
     }
   }
   // Each lane's LOD input: the explicit LOD or gradients; for an implicit LOD in a fragment shader
@@ -374,6 +374,22 @@ void Runner::texture(const XIns& x) {
     }
     return in;
   };
+  // llvmpipe samples a vector of invocations at once, and when its filters differ for
+  // minification and magnification, one invocation filtered linearly changes how the others are
+  // filtered (texture::linear_in_vector). Its vectors are two quads of a fragment shader (the
+  // caller's keys: Invocations::set_sampling_vectors), eight invocations of other stages, which
+  // tessref takes one by one so that no result depends on which share a batch.
+  auto vector_of = [&](int l) -> std::uint32_t {
+    if (inv.has_sampling_vectors_) return inv.sampling_vector_[l];
+    return p.fragment ? std::uint32_t(l / 4) : std::uint32_t(l);
+  };
+  bool linear_lane[L] = {}, vector_linear[L] = {};
+  if (op.kind == Kind::Sample) {
+    for (int l = 0; l < n; ++l) linear_lane[l] = texture::linear_in_vector(tex(l), lod_input(l));
+    for (int l = 0; l < n; ++l)  // a vector's lanes are adjacent: at most 8
+      for (int k = std::max(0, l - 7); k < std::min(n, l + 8) && !vector_linear[l]; ++k)
+        vector_linear[l] = linear_lane[k] && vector_of(k) == vector_of(l);
+  }
   for (int l = 0; l < n; ++l) {
     if (!mask[l]) continue;
     const texture::LodInput in = lod_input(l);
@@ -385,7 +401,7 @@ void Runner::texture(const XIns& x) {
     }
     float texel[4];
     const int ox = op.offset == kNone ? 0 : irow(op.offset, 0, l), oy = op.offset == kNone ? 0 : irow(op.offset, 1, l);
-    texture::sample(tex(l), s[l], t[l], in, ox, oy, texel);
+    texture::sample(tex(l), s[l], t[l], in, ox, oy, texel, vector_linear[l]);
     for (std::uint32_t c = 0; c < x.n; ++c) row<float>(x.dst, c)[l] = texel[c];
   }
 }
@@ -858,7 +874,13 @@ void Invocations::bind_texture(std::uint32_t binding, const texture::Texture* t)
   textures_[binding] = t;
 }
 
+void Invocations::set_sampling_vectors(const std::uint32_t* keys) {
+  std::copy_n(keys, lanes_, sampling_vector_);
+  has_sampling_vectors_ = true;
+}
+
 void Invocations::begin(int lanes, int groups) {
+  has_sampling_vectors_ = false;
   lanes_ = std::clamp(lanes, 0, kMaxLanes);
   groups_ = std::clamp(groups, 1, kMaxLanes);
   const std::uint32_t first = group_word(0);
@@ -1099,8 +1121,14 @@ bool Executable::may_discard() const {
 }
 
 bool Executable::reads_quads() const {
-  for (const XIns& x : program_->code)
+  for (const XIns& x : program_->code) {
     if (x.op == XOp::DPdx || x.op == XOp::DPdy || x.op == XOp::Fwidth) return true;
+    // An implicit LOD (texture() without Lod or Grad, textureQueryLod) differentiates too.
+    if (x.op == XOp::Texture) {
+      const TexOp& t = program_->textures[x.aux];
+      if (t.implicit_lod || t.kind == TexOp::Kind::QueryLod) return true;
+    }
+  }
   return false;
 }
 

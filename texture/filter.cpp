@@ -197,17 +197,21 @@ void filter_unorm8(TexelFormat format, const Level& level, const Axes& axes, boo
                                 fixed::unorm8_lerp(x.weight, t01[c], t11[c]));
 }
 
-void filter_float(const Level& level, const Axes& axes, const std::array<float, 4>& border, bool linear, float s,
-                  float t, int offset_s, int offset_t, float out[4]) {
+void filter_float(const Level& level, const Axes& axes, const std::array<float, 4>& border, FloatFilter filter,
+                  float s, float t, int offset_s, int offset_t, float out[4]) {
   const i32 w = level.width, h = level.height;
-  if (!linear) {
+  if (filter == FloatFilter::Nearest) {
     const i32 i = nearest_index(s, w, offset_s, axes.wrap[0], axes.pot[0]);
     const i32 j = nearest_index(t, h, offset_t, axes.wrap[1], axes.pot[1]);
     texelf(level, border, i < 0 || j < 0 ? -1 : i, j, out);
     return;
   }
-  const LinearIndices x = linear_indices(s, w, offset_s, axes.wrap[0], axes.pot[0]);
-  const LinearIndices y = linear_indices(t, h, offset_t, axes.wrap[1], axes.pot[1]);
+  LinearIndices x = linear_indices(s, w, offset_s, axes.wrap[0], axes.pot[0]);
+  LinearIndices y = linear_indices(t, h, offset_t, axes.wrap[1], axes.pot[1]);
+  if (filter == FloatFilter::NearestByWeights) {
+    x.weight = x.weight > 0.5f ? 1.0f : 0.0f;
+    y.weight = y.weight > 0.5f ? 1.0f : 0.0f;
+  }
   float t00[4], t10[4], t01[4], t11[4];
   texelf(level, border, y.i0 < 0 ? -1 : x.i0, y.i0, t00);
   texelf(level, border, y.i0 < 0 ? -1 : x.i1, y.i0, t10);

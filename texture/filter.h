@@ -21,9 +21,16 @@ struct Axes {
 void filter_unorm8(TexelFormat format, const Level& level, const Axes& axes, bool linear, float s, float t,
                    int offset_s, int offset_t, std::uint8_t out[4]);
 
+// How filter_float filters. NearestByWeights: GL_NEAREST as llvmpipe computes it for the
+// magnified pixels of a vector that also has minified ones (or the reverse): the GL_LINEAR
+// texel pair and weights, each weight rounded to 0 or 1 (above one half: 1), then interpolated
+// as for GL_LINEAR. That picks the nearer texel, the lower one at an exact tie, and returns
+// t0 + (t1 - t0) for t1, which can differ from t1 in the last bit.
+enum class FloatFilter { Nearest, Linear, NearestByWeights };
+
 // Every other format and wrap, in float: the texels as decoded, border texels as `border`.
-void filter_float(const Level& level, const Axes& axes, const std::array<float, 4>& border, bool linear, float s,
-                  float t, int offset_s, int offset_t, float out[4]);
+void filter_float(const Level& level, const Axes& axes, const std::array<float, 4>& border, FloatFilter filter,
+                  float s, float t, int offset_s, int offset_t, float out[4]);
 
 // GL_TEXTURE_BORDER_COLOR as the sampler uses it: clamped to [0, 1] for normalized formats.
 std::array<float, 4> border_color(const Texture& t);

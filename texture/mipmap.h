@@ -6,7 +6,8 @@
 namespace tessref::texture {
 
 // Replaces levels base_level + 1 .. min(p, max_level) of t (p as in 8.17) with levels computed
-// from the base level, each stored in t's format. Then finalize()s t.
+// from the base level, each stored in t's format (the levels a texture allocated with every level
+// has). Then finalize()s t.
 void generate_mipmaps(Texture& t);
 
 }  // namespace tessref::texture

@@ -179,7 +179,14 @@ void incomplete(float out[4]) {
 
 }  // namespace
 
-void sample(const Texture& t, float s, float tc, const LodInput& lod, int offset_s, int offset_t, float out[4]) {
+bool linear_in_vector(const Texture& t, const LodInput& lod) {
+  if (!t.complete || fixed_point_path(t, lod)) return false;
+  if (linear_image(t.sampler.min_filter) == linear_image(t.sampler.mag_filter)) return false;
+  return choose_levels(t, lod).linear;
+}
+
+void sample(const Texture& t, float s, float tc, const LodInput& lod, int offset_s, int offset_t, float out[4],
+            bool vector_linear) {
   if (!t.complete) return incomplete(out);
   const LevelChoice c = choose_levels(t, lod);
   const Level& l0 = t.levels[std::size_t(c.level0)];
@@ -200,10 +207,14 @@ void sample(const Texture& t, float s, float tc, const LodInput& lod, int offset
     for (int k = 0; k < 4; ++k) texel[k] = fixed::unorm8_texel_to_float(r0[k]);
   } else {
     const std::array<float, 4> border = border_color(t);
-    filter_float(l0, axes, border, c.linear, s, tc, offset_s, offset_t, texel);
+    const FloatFilter filter = c.linear ? FloatFilter::Linear
+                               : vector_linear && linear_image(t.sampler.min_filter) != linear_image(t.sampler.mag_filter)
+                                   ? FloatFilter::NearestByWeights
+                                   : FloatFilter::Nearest;
+    filter_float(l0, axes, border, filter, s, tc, offset_s, offset_t, texel);
     if (c.fpart > 0.0f) {
       float t1[4];
-      filter_float(t.levels[std::size_t(c.level1)], axes, border, c.linear, s, tc, offset_s, offset_t, t1);
+      filter_float(t.levels[std::size_t(c.level1)], axes, border, filter, s, tc, offset_s, offset_t, t1);
       for (int k = 0; k < 4; ++k) texel[k] = lerp(c.fpart, texel[k], t1[k]);
     }
   }

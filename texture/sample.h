@@ -27,8 +27,17 @@ struct LodInput {
 };
 
 // texture(), textureLod(), textureGrad(), the Offset and Proj forms (s and t already divided):
-// the filtered, swizzled texel.
-void sample(const Texture& t, float s, float tc, const LodInput& lod, int offset_s, int offset_t, float out[4]);
+// the filtered, swizzled texel. `vector_linear`: whether another invocation sampled together with
+// this one (llvmpipe runs a vector of them at once) is filtered with GL_LINEAR, which changes how
+// llvmpipe filters the others with GL_NEAREST (see linear_in_vector).
+void sample(const Texture& t, float s, float tc, const LodInput& lod, int offset_s, int offset_t, float out[4],
+            bool vector_linear = false);
+
+// Whether this lookup counts as GL_LINEAR for the invocations sampled with it: true when the
+// texture's minification and magnification filters differ, it is filtered in float and this
+// lookup uses GL_LINEAR. When one invocation of llvmpipe's vector does, the others that use
+// GL_NEAREST are filtered by rounded linear weights (texture/filter.h, NearestByWeights).
+bool linear_in_vector(const Texture& t, const LodInput& lod);
 
 // texelFetch(): texel (i, j) of level base_level + lod; (0, 0, 0, 0) outside the level or for a
 // level outside base_level .. last_level (GL 4.6 11.1.3.2 leaves it undefined).

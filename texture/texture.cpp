@@ -53,6 +53,9 @@ void Texture::finalize() {
   const Level& base = levels[std::size_t(base_level)];
   const int p = base_level + int(std::bit_width(unsigned(std::max(base.width, base.height)))) - 1;
   if (!uses_mipmaps(sampler.min_filter)) {
+    // Complete with the base level alone; texelFetch, textureSize and textureQueryLevels still
+    // see the levels the storage has, up to max_level (as Mesa's sampler view does).
+    last_level = std::max(base_level, std::min({p, max_level, n - 1}));
     complete = true;
     return;
   }

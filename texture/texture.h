@@ -61,7 +61,8 @@ struct Texture {
   // GL 4.6 8.17 (texture completeness), for this sampler state; set by finalize().
   bool complete = false;
   std::string incomplete_reason;  // why not, for the warning
-  int last_level = 0;             // q of 8.14.3: the last level sampled (base_level .. max_level)
+  // q of 8.14.3: the last level (base_level .. max_level, and the levels the texture has).
+  int last_level = 0;
 
   // Checks completeness and sets complete, incomplete_reason and last_level. Call after the
   // levels and state are set.

@@ -277,16 +277,35 @@ ClipVertex GlslEvaluation::evaluate(const glm::vec3& tess_coord, const PatchOutp
 // ---------------------------------------------------------------------------------------------
 // Fragment
 
+namespace {
+
+// The vector llvmpipe shades a fragment's quad in: 4 x 2 pixels, two quads side by side
+// (texture lookups read it: Invocations::set_sampling_vectors).
+std::uint32_t sampling_vector(const FragmentBatch& batch, int lane) {
+  const auto x = std::uint32_t(std::int32_t(batch.frag_coord[0][lane])), y = std::uint32_t(std::int32_t(batch.frag_coord[1][lane]));
+  return (x >> 2) | (y >> 1) << 16;
+}
+
+}  // namespace
+
 void GlslFragment::shade_batch(FragmentBatch& batch) const {
-  // Whole quads per run: derivatives difference the lanes of a quad.
-  const int step = std::max(4, std::clamp(sp_.exe->limits().batch_lanes, 1, shader::kMaxLanes) & ~3);
-  for (int first = 0; first < batch.lanes(); first += step)
-    shade_lanes(batch, first, std::min(step, batch.lanes() - first));
+  // Whole quads per run: derivatives difference the lanes of a quad. A run does not end between
+  // the two quads of one sampling vector, so that no lookup depends on batch_lanes.
+  const int step = std::max(8, std::clamp(sp_.exe->limits().batch_lanes, 1, shader::kMaxLanes) & ~3);
+  for (int first = 0; first < batch.lanes();) {
+    int n = std::min(step, batch.lanes() - first);
+    if (first + n < batch.lanes() && sampling_vector(batch, first + n - 4) == sampling_vector(batch, first + n)) n -= 4;
+    shade_lanes(batch, first, n);
+    first += n;
+  }
 }
 
 void GlslFragment::shade_lanes(FragmentBatch& batch, int first, int n) const {
   Invocations& inv = sp_.prepare();
   inv.begin(n);
+  std::uint32_t vectors[shader::kMaxLanes];
+  for (int l = 0; l < n; ++l) vectors[l] = sampling_vector(batch, first + l);
+  inv.set_sampling_vectors(vectors);
   for (const IoVariable& v : sp_.io.inputs) {
     switch (v.kind) {
       case IoKind::FragCoord:

@@ -1,0 +1,22 @@
+# Writes the sampling sweep's noise images (8-bit PNG, deterministic): python3 make_noise.py DIR.
+# noise_64x64.exr is noise_64x64.png times 6.1 less 3, as float: oiiotool noise_64x64.png --mulc 6.1 --subc 3 -d float --compression zip -o noise_64x64.exr
+import struct, zlib, sys
+def png(path, w, h, channels, pixel):
+    raw = b''
+    for y in range(h):
+        raw += b'\x00' + bytes(v for x in range(w) for v in pixel(x, y)[:channels])
+    color = {1: 0, 2: 4, 3: 2, 4: 6}[channels]
+    def chunk(t, d): return struct.pack('>I', len(d)) + t + d + struct.pack('>I', zlib.crc32(t + d) & 0xffffffff)
+    data = b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', w, h, 8, color, 0, 0, 0)) + chunk(b'IDAT', zlib.compress(raw, 9)) + chunk(b'IEND', b'')
+    open(path, 'wb').write(data)
+def h(x):
+    x &= 0xffffffff
+    x ^= x >> 16; x = (x * 0x7feb352d) & 0xffffffff; x ^= x >> 15; x = (x * 0x846ca68b) & 0xffffffff; x ^= x >> 16
+    return x
+def noise(seed):
+    return lambda x, y: [h(x * 73856093 ^ y * 19349663 ^ seed * 83492791 ^ c * 2654435761) & 255 for c in range(4)]
+d = sys.argv[1]
+png(d + '/noise_64x64.png', 64, 64, 4, noise(1))
+png(d + '/noise_24x10.png', 24, 10, 4, noise(2))
+png(d + '/noise_64x64_rgb.png', 64, 64, 3, noise(3))
+png(d + '/noise_64x64_gray.png', 64, 64, 1, noise(4))

@@ -1,0 +1,212 @@
+// The sampling sweep (issue 20): one texture lookup per pixel, written as returned to a
+// GL_RGBA32F draw buffer, drawn by tessref and by llvmpipe from the same scene
+// (tests/data/draws/sampling_sweep.json) for textures of several formats and sizes, every filter,
+// wrap mode and lookup function, and sampler state. Each case is 16,384 lookups at dyadic
+// coordinates (lookup.frag): random, at texture edges, texel edges and centres, LODs from -2 past
+// the last level, ties at .5. Compared bit for bit; where tessref's arithmetic is knowingly not
+// llvmpipe's, the differences are counted against a stated bound.
+//
+// TESSREF_SAMPLING_SWEEP=full runs every format x minification x magnification filter x wrap
+// x lookup (scripts/sampling-sweep.sh): 4,416 cases, 72.4 million lookups.
+#include <bit>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "gl_fixture.h"
+#include "glref/scene_renderer.h"
+#include "mesh/mesh_source.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
+
+namespace tessref::glref {
+namespace {
+
+const std::string kScene = std::string(TESSREF_SOURCE_DIR) + "/tests/data/draws/sampling_sweep.json";
+
+const char* const kFunctions[] = {"texture",      "texture+bias",      "textureLod", "textureGrad",
+                                  "textureOffset", "textureLodOffset", "texelFetch", "textureQueryLod",
+                                  "textureProj",  "textureSize+QueryLevels"};
+
+struct Outcome {
+  std::size_t lookups = 0, identical = 0;
+  float max_difference = 0.0f;  // over channels that differ (NaN against a number: infinity)
+  std::string first;            // the first difference, for the failure message
+};
+
+// Draws both with `sets` (keys under draws.0.shaders) and compares draw buffer 0 bit for bit.
+Outcome compare(GlContext& ctx, const std::vector<std::string>& sets) {
+  std::vector<std::string> full;
+  for (const std::string& s : sets) full.push_back("draws.0.shaders." + s);
+  const Scene scene = load_scene(kScene, full);
+  std::vector<std::string> warnings;
+  const Mesh mesh = build_mesh(scene.mesh, warnings);
+  const RenderResult ours = render_scene(scene, mesh, Parallel());
+  SceneRenderer renderer(ctx, scene, mesh);
+  const Framebuffer gl = renderer.render();
+  Outcome o;
+  for (std::size_t i = 0; i < gl.color.size(); ++i) {
+    ++o.lookups;
+    bool same = true;
+    for (int c = 0; c < 4; ++c) {
+      const float a = ours.framebuffer.color[i][c], b = gl.color[i][c];
+      if (std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b)) continue;
+      same = false;
+      const float d = std::isnan(a) != std::isnan(b) ? INFINITY : std::fabs(a - b);
+      o.max_difference = std::max(o.max_difference, d);
+      if (o.first.empty()) {
+        char buf[256];
+        std::snprintf(buf, sizeof buf, "pixel (%zu, %zu) channel %d: tessref %.9g (0x%08x), llvmpipe %.9g (0x%08x)",
+                      i % std::size_t(gl.width), i / std::size_t(gl.width), c, double(a), std::bit_cast<std::uint32_t>(a),
+                      double(b), std::bit_cast<std::uint32_t>(b));
+        o.first = buf;
+      }
+    }
+    o.identical += same;
+  }
+  return o;
+}
+
+std::string joined(const std::vector<std::string>& sets) {
+  std::string out;
+  for (const std::string& s : sets) out += (out.empty() ? "" : " ") + s;
+  return out;
+}
+
+// What a case must show: bit-exact, or within a bound stated with its reason.
+struct Case {
+  std::vector<std::string> sets;
+  // sRGB textures with glGenerateMipmap: llvmpipe encodes each generated level with an
+  // approximation built on the CPU's rsqrtps, whose bits differ between x86 vendors, so tessref
+  // encodes by GL's equation; a generated texel can then be one 8-bit step away, and a lookup by
+  // at most the largest step of the decoded scale (0.0089, at k = 254).
+  float tolerance = 0.0f;  // 0: bit-exact
+  // Minification and magnification filters that differ, filtered in float: llvmpipe decides how
+  // to filter the GL_NEAREST lanes for a vector of two quads (texture::linear_in_vector), tessref
+  // for the quads of the vector that the triangle covers: along the diagonal of the full-screen
+  // pair of triangles the other quad is the other triangle's. A lane differs there by one float
+  // ulp, or, at an exact texel edge, by reading the lower texel of the pair. At most this share.
+  double max_differing = 0.0;
+};
+
+// A texture's keys: file, format, mipmaps, filters and wraps.
+std::vector<std::string> texture(const std::string& file, const std::string& format, const std::string& min_filter,
+                                 const std::string& mag_filter, const std::string& wrap) {
+  return {"textures.u_tex.path=\"sampling/" + file + "\"", "textures.u_tex.internalformat=\"" + format + "\"",
+          "textures.u_tex.min_filter=\"" + min_filter + "\"", "textures.u_tex.mag_filter=\"" + mag_filter + "\"",
+          "textures.u_tex.wrap=\"" + wrap + "\""};
+}
+
+std::vector<std::string> with(std::vector<std::string> sets, const std::vector<std::string>& more) {
+  sets.insert(sets.end(), more.begin(), more.end());
+  return sets;
+}
+
+std::string function(int f) { return "uniforms.u_function=" + std::to_string(f); }
+
+bool linear_image(const std::string& filter) { return filter.rfind("linear", 0) == 0; }
+
+// A case and what it must show (Case): bit-exact unless an sRGB format's generated levels or
+// filters that differ for minification and magnification on llvmpipe's float path apply.
+Case make_case(const std::string& file, const std::string& format, const std::string& min, const std::string& mag,
+               const std::string& wrap, int fn, const std::vector<std::string>& extra = {}) {
+  Case c{with(with(texture(file, format, min, mag, wrap), {function(fn)}), extra)};
+  if (format.find("SRGB") != std::string::npos) c.tolerance = 0.0089f;
+  const bool unorm8 = format == "GL_RGBA8" || format == "GL_RGB8" || format == "GL_RG8" || format == "GL_R8";
+  const bool fixed_point = unorm8 && (wrap == "repeat" || wrap == "clamp_to_edge");
+  const bool one_lod_a_quad = fn == 0 || fn == 4 || fn == 8;  // implicit LOD without bias
+  const bool filters = fn != 6 && fn != 7 && fn != 9;
+  if (filters && linear_image(min) != linear_image(mag) && !(fixed_point && one_lod_a_quad)) c.max_differing = 0.005;
+  return c;
+}
+
+// The suite's cases: each lookup function on the fixed-point path (RGBA8, repeat) and on the
+// float path (RGBA32F, mirrored repeat); every wrap and filter on both; a size that is not a
+// power of two; each format; and the sampler state keys.
+std::vector<Case> suite_cases() {
+  std::vector<Case> cases;
+  for (int f = 0; f < 10; ++f) {
+    cases.push_back(make_case("noise_64x64.png", "GL_RGBA8", "linear_mipmap_linear", "linear", "repeat", f));
+    cases.push_back(make_case("noise_64x64.exr", "GL_RGBA32F", "linear_mipmap_linear", "linear", "mirrored_repeat", f));
+  }
+  for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge", "clamp_to_border", "mirror_clamp_to_edge"})
+    for (const char* min : {"nearest_mipmap_nearest", "linear_mipmap_nearest", "nearest_mipmap_linear", "linear"})
+      for (const char* mag : {"nearest", "linear"}) {
+        cases.push_back(make_case("noise_24x10.png", "GL_RGBA8", min, mag, wrap, 0));
+        cases.push_back(make_case("noise_64x64.exr", "GL_RGBA32F", min, mag, wrap, 2));
+      }
+  for (const char* format : {"GL_RGBA16F", "GL_RGBA8", "GL_SRGB8_ALPHA8"})
+    for (int f : {0, 3})
+      cases.push_back(make_case(std::string(format) == "GL_RGBA16F" ? "noise_64x64.exr" : "noise_64x64.png", format,
+                                "linear_mipmap_linear", "linear", "clamp_to_edge", f));
+  cases.push_back(make_case("noise_64x64_gray.png", "GL_R8", "linear_mipmap_linear", "linear", "repeat", 0));
+  cases.push_back(make_case("noise_64x64_rgb.png", "GL_RGB8", "linear_mipmap_nearest", "linear", "repeat", 1));
+  // Sampler state: LOD bias (quantized to 1/256 on both) and range, base and max level, a range
+  // of one LOD, swizzle and border colour.
+  auto state = [](int fn, const std::vector<std::string>& extra) {
+    return make_case("noise_64x64.png", "GL_RGBA8", "linear_mipmap_linear", "linear", "clamp_to_border", fn, extra);
+  };
+  cases.push_back(state(0, {"textures.u_tex.lod_bias=0.3", "textures.u_tex.min_lod=1.25", "textures.u_tex.max_lod=5.6"}));
+  cases.push_back(state(7, {"textures.u_tex.lod_bias=-0.7", "textures.u_tex.max_lod=3.5"}));
+  cases.push_back(state(2, {"textures.u_tex.base_level=1", "textures.u_tex.max_level=4"}));
+  cases.push_back(state(9, {"textures.u_tex.base_level=2", "uniforms.u_size_lod=1"}));
+  cases.push_back(state(0, {"textures.u_tex.min_lod=2", "textures.u_tex.max_lod=2"}));
+  cases.push_back(state(1, {"textures.u_tex.swizzle=[\"blue\", \"zero\", \"red\", \"one\"]",
+                            "textures.u_tex.border_color=[0.25, 1.5, -1, 0.5]"}));
+  return cases;
+}
+
+// Every format x minification filter x magnification filter x wrap x lookup.
+std::vector<Case> full_cases() {
+  struct Format {
+    const char* file;
+    const char* name;
+  };
+  const Format formats[] = {{"noise_64x64.png", "GL_RGBA8"},         {"noise_24x10.png", "GL_RGBA8"},
+                            {"noise_64x64.exr", "GL_RGBA32F"},       {"noise_64x64.exr", "GL_RGBA16F"},
+                            {"noise_64x64.png", "GL_SRGB8_ALPHA8"},  {"noise_64x64_gray.png", "GL_R8"},
+                            {"noise_64x64_rgb.png", "GL_RGB8"},      {"noise_24x10.png", "GL_RGBA32F"}};
+  std::vector<Case> cases;
+  for (const Format& f : formats)
+    for (const char* min : {"nearest", "linear", "nearest_mipmap_nearest", "linear_mipmap_nearest",
+                            "nearest_mipmap_linear", "linear_mipmap_linear"})
+      for (const char* mag : {"nearest", "linear"})
+        for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge", "clamp_to_border", "mirror_clamp_to_edge"})
+          for (int fn = 0; fn < 10; ++fn) {
+            if (fn == 9 && std::string(wrap) != "repeat") continue;  // sizes do not depend on the wrap
+            cases.push_back(make_case(f.file, f.name, min, mag, wrap, fn));
+          }
+  return cases;
+}
+
+TEST(SamplingSweepVsLlvmpipe, EveryLookupMatchesBitForBit) {
+  TESSREF_REQUIRE_GL(ctx);
+  const char* mode = std::getenv("TESSREF_SAMPLING_SWEEP");
+  const bool full = mode && std::string(mode) == "full";
+  const std::vector<Case> cases = full ? full_cases() : suite_cases();
+  std::size_t lookups = 0, identical = 0, cases_exact = 0;
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const Case& c = cases[k];
+    const Outcome o = compare(*ctx, c.sets);
+    lookups += o.lookups;
+    identical += o.identical;
+    cases_exact += o.identical == o.lookups;
+    if (o.identical != o.lookups)
+      std::printf("[ figures  ] %s: %zu of %zu identical, largest difference %g; first: %s\n", joined(c.sets).c_str(),
+                  o.identical, o.lookups, double(o.max_difference), o.first.c_str());
+    if (c.tolerance > 0.0f) EXPECT_LE(o.max_difference, c.tolerance) << joined(c.sets) << "\n" << o.first;
+    else if (c.max_differing > 0.0) EXPECT_LE(double(o.lookups - o.identical), c.max_differing * double(o.lookups)) << joined(c.sets);
+    else EXPECT_EQ(o.identical, o.lookups) << joined(c.sets) << "\n" << o.first;
+    if (full && (k + 1) % 100 == 0) std::printf("[ progress ] %zu of %zu cases\n", k + 1, cases.size());
+  }
+  std::printf("[ figures  ] sampling sweep (%s): %zu cases, %zu lookups, %zu identical (%zu cases bit-exact)\n",
+              full ? "full" : "suite", cases.size(), lookups, identical, cases_exact);
+  EXPECT_GE(lookups, 20000u);
+}
+
+}  // namespace
+}  // namespace tessref::glref
