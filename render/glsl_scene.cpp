@@ -385,6 +385,11 @@ texture::Texture load_texture(const TextureSetting& t, const std::string& key) {
     if (k == 0) {
       width0 = image.width;
       height0 = image.height;
+      // GL_MAX_TEXTURE_SIZE on llvmpipe; the sampler's fixed-point coordinates need it.
+      constexpr int kMaxTextureSize = 16384;
+      if (width0 > kMaxTextureSize || height0 > kMaxTextureSize)
+        throw InputError(at + ": " + t.levels[k].string() + " is " + std::to_string(width0) + "x" + std::to_string(height0) +
+                         ", more than GL_MAX_TEXTURE_SIZE (" + std::to_string(kMaxTextureSize) + ")");
     }
     // glTexStorage2D fixes level k's size from level 0's (GL 4.6 8.19).
     const int w = std::max(1, width0 >> k), h = std::max(1, height0 >> k);

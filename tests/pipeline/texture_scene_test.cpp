@@ -1,0 +1,157 @@
+// Textures in scenes (docs/textures.md) on tessref alone: bad texture descriptions are errors that
+// name the key, an incomplete texture is GL's (0, 0, 0, 1) with a warning, and lookups do not
+// depend on the thread count or the executor's batch size.
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "common/error.h"
+#include "mesh/mesh_source.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
+#include "texture/mipmap.h"
+#include "texture/sample.h"
+
+namespace tessref {
+namespace {
+
+const std::string kSweep = std::string(TESSREF_SOURCE_DIR) + "/tests/data/draws/sampling_sweep.json";
+
+RenderResult render_sweep(std::vector<std::string> sets, int threads = 0) {
+  for (std::string& s : sets) s = "draws.0.shaders." + s;
+  const Scene scene = load_scene(kSweep, sets);
+  std::vector<std::string> warnings;
+  return render_scene(scene, build_mesh(scene.mesh, warnings), threads ? Parallel(threads) : Parallel());
+}
+
+std::string error_of(const std::vector<std::string>& sets) {
+  try {
+    render_sweep(sets);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(TextureScene, BadTexturesAreErrorsNamingTheKey) {
+  // A file whose channels contradict the declared format.
+  EXPECT_NE(error_of({"textures.u_tex.internalformat=\"GL_R8\""})
+                .find("draws.0.shaders.textures.u_tex: " + std::string(TESSREF_SOURCE_DIR) +
+                      "/tests/data/draws/sampling/noise_64x64.png is RGBA (4 channels), and GL_R8 has 1 channel (internalformat)"),
+            std::string::npos)
+      << error_of({"textures.u_tex.internalformat=\"GL_R8\""});
+  // A format GL does not have for textures here, a filter GL does not have for magnification.
+  EXPECT_NE(error_of({"textures.u_tex.internalformat=\"GL_RGBA12\""}).find("draws.0.shaders.textures.u_tex.internalformat: expected one of GL_RGBA32F"),
+            std::string::npos);
+  EXPECT_NE(error_of({"textures.u_tex.mag_filter=\"linear_mipmap_linear\""}).find("draws.0.shaders.textures.u_tex.mag_filter: expected one of nearest, linear"),
+            std::string::npos);
+  // The sweep scene with its texture's path replaced by `texture_keys`, and glGenerateMipmap
+  // unless `generate`.
+  auto edited_error = [](const std::string& texture_keys, bool generate = false) {
+    std::ifstream in(kSweep);
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string json = text.str();
+    const std::string path = R"("path": "sampling/noise_64x64.png",)";
+    json.replace(json.find(path), path.size(), texture_keys);
+    if (!generate) json.replace(json.find("\"generate_mipmap\": true"), 23, "\"generate_mipmap\": false");
+    try {
+      const Scene scene = parse_scene(json, kSweep, std::filesystem::path(kSweep).parent_path());
+      std::vector<std::string> warnings;
+      render_scene(scene, build_mesh(scene.mesh, warnings), Parallel());
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  // A mip level of the wrong size: level 1 of a 64 x 64 texture is 32 x 32.
+  const std::string wrong = edited_error(R"("levels": ["sampling/noise_64x64.png", "sampling/noise_24x10.png"],)");
+  EXPECT_NE(wrong.find("draws.0.shaders.textures.u_tex.levels.1: level 1 is 24x10, and a level 1 of a 64x64 texture is 32x32"),
+            std::string::npos) << wrong;
+  // Levels and glGenerateMipmap together (the scene generates), and neither path nor levels.
+  const std::string both = edited_error(R"("levels": ["sampling/noise_64x64.png", "sampling/noise_24x10.png"],)", true);
+  EXPECT_NE(both.find("draws.0.shaders.textures.u_tex.generate_mipmap: glGenerateMipmap computes levels 1 and up from level 0"),
+            std::string::npos) << both;
+  const std::string neither = edited_error("");
+  EXPECT_NE(neither.find("draws.0.shaders.textures.u_tex.path: give either path (level 0) or levels"), std::string::npos) << neither;
+}
+
+TEST(TextureScene, IncompleteTextureReadsZeroZeroZeroOneWithAWarning) {
+  // A mipmap filter with level 0 alone: GL 4.6 8.17 makes it incomplete.
+  const RenderResult r = render_sweep({"textures.u_tex.generate_mipmap=false"});
+  ASSERT_EQ(r.stats.warnings.size(), 1u);
+  EXPECT_NE(r.stats.warnings[0].find("draws.0.shaders.textures.u_tex: the texture is incomplete, so it reads (0, 0, 0, 1): "
+                                     "its minification filter GL_LINEAR_MIPMAP_LINEAR needs levels 0 to 6, and level 1 is missing"),
+            std::string::npos) << r.stats.warnings[0];
+  for (const glm::vec4& c : r.framebuffer.color) ASSERT_EQ(c, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  EXPECT_TRUE(render_sweep({}).stats.warnings.empty());
+}
+
+TEST(TextureScene, LookupsDoNotDependOnThreadsOrBatchSize) {
+  // Filters that differ for minification and magnification: the lanes of one sampling vector
+  // (two quads) decide together, so runs must not split them.
+  for (int fn : {0, 2}) {
+    const std::vector<std::string> base = {"uniforms.u_function=" + std::to_string(fn), "textures.u_tex.mag_filter=\"nearest\"",
+                                           "textures.u_tex.wrap=\"mirrored_repeat\""};
+    const std::vector<glm::vec4> reference = render_sweep(base, 1).framebuffer.color;
+    for (int lanes : {4, 12, 256}) {
+      std::vector<std::string> sets = base;
+      sets.push_back("batch_lanes=" + std::to_string(lanes));
+      const std::vector<glm::vec4> color = render_sweep(sets, 2).framebuffer.color;
+      ASSERT_EQ(color.size(), reference.size());
+      EXPECT_EQ(std::memcmp(color.data(), reference.data(), color.size() * sizeof(glm::vec4)), 0)
+          << "function " << fn << ", " << lanes << " lanes";
+    }
+  }
+}
+
+// glGenerateMipmap on an odd size: a two-tap sample at each new texel's centre (Mesa's blit), in
+// 8-bit fixed point for GL_RGBA8: a 5-texel row 0, 64, 128, 192, 255 becomes two texels, the first
+// from texels 0 and 1 with weight 192/256 on texel 1, the second from texels 3 and 4 with weight
+// 64/256 on texel 4; texel 2 is not read.
+TEST(TextureMipmap, OddSizesAreBilinearAtTheNewTexelCentres) {
+  texture::Texture t;
+  t.format = texture::TexelFormat::kRgba8;
+  const float row[5] = {0.0f, 64.0f / 255.0f, 128.0f / 255.0f, 192.0f / 255.0f, 1.0f};
+  std::vector<float> rgba;
+  for (float v : row) rgba.insert(rgba.end(), {v, v, v, 1.0f});
+  t.levels.push_back(texture::make_level(t.format, 5, 1, rgba.data()));
+  texture::generate_mipmaps(t);
+  ASSERT_EQ(t.levels.size(), 3u);
+  ASSERT_EQ(t.levels[1].width, 2);
+  // 0 + ((192 * 64 + 128) >> 8) = 48; 192 + ((64 * 63 + 128) >> 8) = 208 (a box filter: 32 and 224).
+  EXPECT_EQ(t.levels[1].stored[0], 48);
+  EXPECT_EQ(t.levels[1].stored[4], 208);
+  EXPECT_TRUE(t.complete);
+  EXPECT_EQ(t.last_level, 2);
+}
+
+// textureQueryLod's LOD is llvmpipe's 0.5 * fastlog2(ρ²): exact at powers of two, linear between.
+TEST(TextureLod, FastLog2IsExactAtPowersOfTwoAndLinearBetween) {
+  texture::Texture t;
+  std::vector<float> rgba(64 * 64 * 4, 0.5f);
+  t.levels.push_back(texture::make_level(texture::TexelFormat::kRgba32F, 64, 64, rgba.data()));
+  texture::generate_mipmaps(t);
+  t.sampler.min_filter = texture::Filter::LinearMipmapLinear;
+  t.finalize();
+  auto lod = [&](float step) {
+    texture::LodInput in;
+    in.from = texture::LodInput::From::Derivatives;
+    in.dsdx = step / 64.0f;
+    in.dtdy = step / 64.0f;
+    float out[2];
+    texture::query_lod(t, in, out);
+    return out[1];
+  };
+  EXPECT_EQ(lod(4.0f), 2.0f);
+  EXPECT_EQ(lod(1.5f), 0.5625f);  // log2(1.5) is 0.585
+  EXPECT_EQ(lod(0.0f), -63.5f);
+}
+
+}  // namespace
+}  // namespace tessref
