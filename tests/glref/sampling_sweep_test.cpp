@@ -34,12 +34,13 @@ const char* const kFunctions[] = {"texture",      "texture+bias",      "textureL
 
 struct Outcome {
   std::size_t lookups = 0, identical = 0;
+  std::size_t beyond = 0;       // lookups with a channel further than the case's tolerance
   float max_difference = 0.0f;  // over channels that differ (NaN against a number: infinity)
   std::string first;            // the first difference, for the failure message
 };
 
 // Draws both with `sets` (keys under draws.0.shaders) and compares draw buffer 0 bit for bit.
-Outcome compare(GlContext& ctx, const std::vector<std::string>& sets) {
+Outcome compare(GlContext& ctx, const std::vector<std::string>& sets, float tolerance) {
   std::vector<std::string> full;
   for (const std::string& s : sets) full.push_back("draws.0.shaders." + s);
   const Scene scene = load_scene(kScene, full);
@@ -51,13 +52,14 @@ Outcome compare(GlContext& ctx, const std::vector<std::string>& sets) {
   Outcome o;
   for (std::size_t i = 0; i < gl.color.size(); ++i) {
     ++o.lookups;
-    bool same = true;
+    bool same = true, beyond = false;
     for (int c = 0; c < 4; ++c) {
       const float a = ours.framebuffer.color[i][c], b = gl.color[i][c];
       if (std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b)) continue;
       same = false;
       const float d = std::isnan(a) != std::isnan(b) ? INFINITY : std::fabs(a - b);
       o.max_difference = std::max(o.max_difference, d);
+      beyond = beyond || !(d <= tolerance);
       if (o.first.empty()) {
         char buf[256];
         std::snprintf(buf, sizeof buf, "pixel (%zu, %zu) channel %d: tessref %.9g (0x%08x), llvmpipe %.9g (0x%08x)",
@@ -67,6 +69,7 @@ Outcome compare(GlContext& ctx, const std::vector<std::string>& sets) {
       }
     }
     o.identical += same;
+    o.beyond += beyond;
   }
   return o;
 }
@@ -191,16 +194,15 @@ TEST(SamplingSweepVsLlvmpipe, EveryLookupMatchesBitForBit) {
   std::size_t lookups = 0, identical = 0, cases_exact = 0;
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const Case& c = cases[k];
-    const Outcome o = compare(*ctx, c.sets);
+    const Outcome o = compare(*ctx, c.sets, c.tolerance);
     lookups += o.lookups;
     identical += o.identical;
     cases_exact += o.identical == o.lookups;
     if (o.identical != o.lookups)
       std::printf("[ figures  ] %s: %zu of %zu identical, largest difference %g; first: %s\n", joined(c.sets).c_str(),
                   o.identical, o.lookups, double(o.max_difference), o.first.c_str());
-    if (c.tolerance > 0.0f) EXPECT_LE(o.max_difference, c.tolerance) << joined(c.sets) << "\n" << o.first;
-    else if (c.max_differing > 0.0) EXPECT_LE(double(o.lookups - o.identical), c.max_differing * double(o.lookups)) << joined(c.sets);
-    else EXPECT_EQ(o.identical, o.lookups) << joined(c.sets) << "\n" << o.first;
+    // Every lookup within the tolerance (0: identical), but for the stated share.
+    EXPECT_LE(double(o.beyond), c.max_differing * double(o.lookups)) << joined(c.sets) << "\n" << o.first;
     if (full && (k + 1) % 100 == 0) std::printf("[ progress ] %zu of %zu cases\n", k + 1, cases.size());
   }
   std::printf("[ figures  ] sampling sweep (%s): %zu cases, %zu lookups, %zu identical (%zu cases bit-exact)\n",
