@@ -547,4 +547,22 @@ Module read_module(std::span<const std::uint32_t> words, const StorageBufferSize
   return m;
 }
 
+std::string sampler_glsl_name(const Module& m, const Type& t) {
+  std::string prefix;
+  if (m.type(t.image_sampled_type).scalar == Scalar::I32) prefix = "i";
+  if (m.type(t.image_sampled_type).scalar == Scalar::U32) prefix = "u";
+  std::string dim;
+  switch (t.image_dim) {
+    case spv::Dim1D: dim = "1D"; break;
+    case spv::Dim2D: dim = "2D"; break;
+    case spv::Dim3D: dim = "3D"; break;
+    case spv::DimCube: dim = "Cube"; break;
+    case spv::DimRect: dim = "2DRect"; break;
+    case spv::DimBuffer: dim = "Buffer"; break;
+    default: dim = "(dimension " + std::to_string(t.image_dim) + ")"; break;
+  }
+  return prefix + "sampler" + dim + (t.image_ms ? "MS" : "") + (t.image_arrayed ? "Array" : "") +
+         (t.image_depth ? "Shadow" : "");
+}
+
 }  // namespace tessref::shader

@@ -139,4 +139,8 @@ using StorageBufferSizes = std::map<std::uint32_t, std::size_t>;
 // and for a variable larger than kMaxValueWords, naming it.
 Module read_module(std::span<const std::uint32_t> words, const StorageBufferSizes& storage = {});
 
+// A sampler or image type's GLSL name: "sampler2D", "isampler3D", "samplerCubeShadow",
+// "sampler2DMSArray", ...
+std::string sampler_glsl_name(const Module& m, const Type& t);
+
 }  // namespace tessref::shader

@@ -223,9 +223,11 @@ void filter_float(const Level& level, const Axes& axes, const std::array<float, 
 
 std::array<float, 4> border_color(const Texture& t) {
   std::array<float, 4> b = t.sampler.border;
-  const ChannelType type = info(t.format).type;
-  if (type == ChannelType::kUnorm8 || type == ChannelType::kSrgb8)
+  const TexelFormatInfo& f = info(t.format);
+  if (f.type == ChannelType::kUnorm8 || f.type == ChannelType::kSrgb8)
     for (float& c : b) c = std::min(std::max(c, 0.0f), 1.0f);
+  // Read through the format, as a texel is: channels it lacks are 0 (green, blue) and 1 (alpha).
+  for (int c = f.channels; c < 4; ++c) b[std::size_t(c)] = c == 3 ? 1.0f : 0.0f;
   return b;
 }
 

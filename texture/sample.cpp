@@ -224,7 +224,8 @@ void sample(const Texture& t, float s, float tc, const LodInput& lod, int offset
 void fetch(const Texture& t, int i, int j, int lod, float out[4]) {
   if (!t.complete) return incomplete(out);
   const std::int64_t level = std::int64_t(t.base_level) + lod;
-  float texel[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  // Outside: zero in each channel the format has; the others read 0 (green, blue) and 1 (alpha).
+  float texel[4] = {0.0f, 0.0f, 0.0f, info(t.format).channels < 4 ? 1.0f : 0.0f};
   if (level >= t.base_level && level <= t.last_level) {
     const Level& l = t.levels[std::size_t(level)];
     if (i >= 0 && j >= 0 && i < l.width && j < l.height)

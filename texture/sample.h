@@ -39,8 +39,9 @@ void sample(const Texture& t, float s, float tc, const LodInput& lod, int offset
 // GL_NEAREST are filtered by rounded linear weights (texture/filter.h, NearestByWeights).
 bool linear_in_vector(const Texture& t, const LodInput& lod);
 
-// texelFetch(): texel (i, j) of level base_level + lod; (0, 0, 0, 0) outside the level or for a
-// level outside base_level .. last_level (GL 4.6 11.1.3.2 leaves it undefined).
+// texelFetch(): texel (i, j) of level base_level + lod; zero outside the level or for a level
+// outside base_level .. last_level (GL 4.6 11.1.3.2 leaves it undefined): (0, 0, 0, 0), with alpha
+// 1 for formats without alpha.
 void fetch(const Texture& t, int i, int j, int lod, float out[4]);
 
 // textureSize(): level base_level + lod's width and height, (0, 0) for a level outside the

@@ -27,7 +27,6 @@ struct TexelFormatInfo {
   ChannelType type;
   int bytes_per_channel() const { return type == ChannelType::kFloat32 ? 4 : type == ChannelType::kFloat16 ? 2 : 1; }
   int bytes_per_texel() const { return channels * bytes_per_channel(); }
-  bool eight_bit() const { return type == ChannelType::kUnorm8 || type == ChannelType::kSrgb8; }
 };
 
 const TexelFormatInfo& info(TexelFormat f);

@@ -17,17 +17,6 @@ const char* gl_name(Filter f) {
   return "?";
 }
 
-const char* gl_name(Wrap w) {
-  switch (w) {
-    case Wrap::Repeat: return "GL_REPEAT";
-    case Wrap::MirroredRepeat: return "GL_MIRRORED_REPEAT";
-    case Wrap::ClampToEdge: return "GL_CLAMP_TO_EDGE";
-    case Wrap::ClampToBorder: return "GL_CLAMP_TO_BORDER";
-    case Wrap::MirrorClampToEdge: return "GL_MIRROR_CLAMP_TO_EDGE";
-  }
-  return "?";
-}
-
 Level make_level(TexelFormat f, int width, int height, const float* rgba) {
   Level l;
   l.width = width;

@@ -22,7 +22,6 @@ enum class Wrap { Repeat, MirroredRepeat, ClampToEdge, ClampToBorder, MirrorClam
 enum class Swizzle : std::uint8_t { Red, Green, Blue, Alpha, Zero, One };
 
 const char* gl_name(Filter f);
-const char* gl_name(Wrap w);
 inline bool uses_mipmaps(Filter f) { return f != Filter::Nearest && f != Filter::Linear; }
 
 // Sampler state (a sampler object's, or the texture's own when no sampler object is bound),

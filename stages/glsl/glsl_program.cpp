@@ -120,23 +120,6 @@ struct Shape {
   std::string sampler_name;  // "sampler2D", "usampler3D", "samplerCube", ...
 };
 
-// A sampled image type's GLSL name.
-std::string sampler_glsl_name(const shader::Module& m, const shader::Type& image) {
-  const Scalar s = m.type(image.image_sampled_type).scalar;
-  const std::string prefix = s == Scalar::I32 ? "i" : s == Scalar::U32 ? "u" : "";
-  std::string dim;
-  switch (image.image_dim) {
-    case spv::Dim1D: dim = "1D"; break;
-    case spv::Dim2D: dim = "2D"; break;
-    case spv::Dim3D: dim = "3D"; break;
-    case spv::DimCube: dim = "Cube"; break;
-    case spv::DimRect: dim = "2DRect"; break;
-    case spv::DimBuffer: dim = "Buffer"; break;
-    default: dim = "?"; break;
-  }
-  return prefix + "sampler" + dim + (image.image_arrayed ? "Array" : "");
-}
-
 Shape shape_of(const shader::Module& m, std::uint32_t type) {
   const shader::Type& t = m.type(type);
   Shape s;
