@@ -1,8 +1,5 @@
 #include "glref/gl_textures.h"
 
-#include <algorithm>
-#include <bit>
-
 #include <epoxy/gl.h>
 
 #include "glref/gl_error.h"
@@ -89,7 +86,7 @@ GlTextures::GlTextures(const std::string& scene_source, const ShaderSettings& sh
     const GlFormat f = gl_format(tex.format);
     const texture::Level& level0 = tex.levels[0];
     // glTexStorage2D: the levels given, or every level down to 1 x 1 for glGenerateMipmap.
-    const int all = int(std::bit_width(unsigned(std::max(level0.width, level0.height))));
+    const int all = texture::last_mip_level(0, level0.width, level0.height) + 1;
     const int levels = t.generate_mipmaps ? all : int(t.levels.size());
     glBindTexture(GL_TEXTURE_2D, ids_[k]);
     glTexStorage2D(GL_TEXTURE_2D, levels, f.internal, level0.width, level0.height);

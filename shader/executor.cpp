@@ -383,16 +383,18 @@ void Runner::texture(const XIns& x) {
     if (inv.has_sampling_vectors_) return inv.sampling_vector_[l];
     return p.fragment ? std::uint32_t(l / 4) : std::uint32_t(l);
   };
+  texture::LodInput lods[L];
+  for (int l = 0; l < n; ++l) lods[l] = lod_input(l);
   bool linear_lane[L] = {}, vector_linear[L] = {};
   if (op.kind == Kind::Sample) {
-    for (int l = 0; l < n; ++l) linear_lane[l] = texture::linear_in_vector(tex(l), lod_input(l));
+    for (int l = 0; l < n; ++l) linear_lane[l] = texture::linear_in_vector(tex(l), lods[l]);
     for (int l = 0; l < n; ++l)  // a vector's lanes are adjacent: at most 8
       for (int k = std::max(0, l - 7); k < std::min(n, l + 8) && !vector_linear[l]; ++k)
         vector_linear[l] = linear_lane[k] && vector_of(k) == vector_of(l);
   }
   for (int l = 0; l < n; ++l) {
     if (!mask[l]) continue;
-    const texture::LodInput in = lod_input(l);
+    const texture::LodInput& in = lods[l];
     if (op.kind == Kind::QueryLod) {
       float lod[2];
       texture::query_lod(tex(l), in, lod);
@@ -1129,6 +1131,12 @@ bool Executable::reads_quads() const {
       if (t.implicit_lod || t.kind == TexOp::Kind::QueryLod) return true;
     }
   }
+  return false;
+}
+
+bool Executable::samples_textures() const {
+  for (const XIns& x : program_->code)
+    if (x.op == XOp::Texture && program_->textures[x.aux].kind == TexOp::Kind::Sample) return true;
   return false;
 }
 

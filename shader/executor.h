@@ -148,6 +148,9 @@ class Executable {
   bool may_discard() const;
   // Whether the entry point takes a derivative (dFdx, dFdy, fwidth: other lanes of its quad).
   bool reads_quads() const;
+  // Whether the entry point filters textures (OpImageSample*): only then do the lanes a driver
+  // samples together matter (Invocations::set_sampling_vectors).
+  bool samples_textures() const;
   // This thread's Invocations of this executable, made on first use and kept for the thread's
   // life (stage programs are shared by the worker threads; each thread runs its own batches).
   Invocations& local() const;

@@ -203,7 +203,7 @@ void filter_float(const Level& level, const Axes& axes, const std::array<float, 
   if (filter == FloatFilter::Nearest) {
     const i32 i = nearest_index(s, w, offset_s, axes.wrap[0], axes.pot[0]);
     const i32 j = nearest_index(t, h, offset_t, axes.wrap[1], axes.pot[1]);
-    texelf(level, border, i < 0 || j < 0 ? -1 : i, j, out);
+    texelf(level, border, i, j, out);
     return;
   }
   LinearIndices x = linear_indices(s, w, offset_s, axes.wrap[0], axes.pot[0]);
@@ -213,10 +213,10 @@ void filter_float(const Level& level, const Axes& axes, const std::array<float, 
     y.weight = y.weight > 0.5f ? 1.0f : 0.0f;
   }
   float t00[4], t10[4], t01[4], t11[4];
-  texelf(level, border, y.i0 < 0 ? -1 : x.i0, y.i0, t00);
-  texelf(level, border, y.i0 < 0 ? -1 : x.i1, y.i0, t10);
-  texelf(level, border, y.i1 < 0 ? -1 : x.i0, y.i1, t01);
-  texelf(level, border, y.i1 < 0 ? -1 : x.i1, y.i1, t11);
+  texelf(level, border, x.i0, y.i0, t00);
+  texelf(level, border, x.i1, y.i0, t10);
+  texelf(level, border, x.i0, y.i1, t01);
+  texelf(level, border, x.i1, y.i1, t11);
   for (int c = 0; c < 4; ++c)
     out[c] = lerp(y.weight, lerp(x.weight, t00[c], t10[c]), lerp(x.weight, t01[c], t11[c]));
 }

@@ -1,7 +1,6 @@
 #include "texture/mipmap.h"
 
 #include <algorithm>
-#include <bit>
 #include <vector>
 
 #include "common/fixed_point.h"
@@ -47,7 +46,7 @@ void generate_mipmaps(Texture& t) {
   if (t.base_level < 0 || t.base_level >= int(t.levels.size())) return t.finalize();
   const Level& base = t.levels[std::size_t(t.base_level)];
   if (base.width <= 0 || base.height <= 0) return t.finalize();
-  const int p = t.base_level + int(std::bit_width(unsigned(std::max(base.width, base.height)))) - 1;
+  const int p = last_mip_level(t.base_level, base.width, base.height);
   const int q = std::min(p, t.max_level);
   if (int(t.levels.size()) < q + 1) t.levels.resize(std::size_t(q) + 1);
   for (int k = t.base_level + 1; k <= q; ++k) {

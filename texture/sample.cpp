@@ -28,6 +28,12 @@ bool linear_image(Filter f) {
   return f == Filter::Linear || f == Filter::LinearMipmapNearest || f == Filter::LinearMipmapLinear;
 }
 
+// Whether the sampler computes a LOD at all: for mipmaps, or to choose between minification and
+// magnification filters that differ.
+bool needs_lod(const SamplerState& s, Mip mip) {
+  return mip != Mip::None || linear_image(s.min_filter) != linear_image(s.mag_filter);
+}
+
 // The levels a lookup reads and how: what llvmpipe's lp_build_lod_selector and its mip level
 // functions compute.
 struct LevelChoice {
@@ -117,12 +123,11 @@ LevelChoice choose_levels(const Texture& t, const LodInput& in) {
   const bool min_linear = linear_image(s.min_filter), mag_linear = linear_image(s.mag_filter);
   LevelChoice c;
   c.level0 = c.level1 = t.base_level;
-  const bool needs_lod = mip != Mip::None || min_linear != mag_linear;
-  if (!needs_lod) {
+  if (!needs_lod(s, mip)) {
     c.linear = min_linear;
     return c;
   }
-  const LodValue v = compute_lod(t, in, mip, gallium_lod(s, needs_lod), false);
+  const LodValue v = compute_lod(t, in, mip, gallium_lod(s, true), false);
   const bool positive = v.shortcut ? v.positive : v.lod > 0.0f;  // GL 4.6 8.15 with c = 0
   c.linear = positive ? min_linear : mag_linear;
   if (!positive || mip == Mip::None) return c;
@@ -254,8 +259,7 @@ void query_lod(const Texture& t, const LodInput& in, float out[2]) {
     return;
   }
   const Mip mip = mip_mode(t.sampler.min_filter);
-  const bool needs_lod = mip != Mip::None || linear_image(t.sampler.min_filter) != linear_image(t.sampler.mag_filter);
-  const LodValue v = compute_lod(t, in, mip, gallium_lod(t.sampler, needs_lod), true);
+  const LodValue v = compute_lod(t, in, mip, gallium_lod(t.sampler, needs_lod(t.sampler, mip)), true);
   float level = 0.0f;
   const float top = float(t.last_level - t.base_level);
   if (mip == Mip::Nearest) level = min_ps(max_ps(std::nearbyint(v.lod), 0.0f), top);

@@ -17,6 +17,10 @@ const char* gl_name(Filter f) {
   return "?";
 }
 
+int last_mip_level(int base, int w, int h) {
+  return base + int(std::bit_width(unsigned(std::max(w, h)))) - 1;
+}
+
 Level make_level(TexelFormat f, int width, int height, const float* rgba) {
   Level l;
   l.width = width;
@@ -40,7 +44,7 @@ void Texture::finalize() {
     return;
   }
   const Level& base = levels[std::size_t(base_level)];
-  const int p = base_level + int(std::bit_width(unsigned(std::max(base.width, base.height)))) - 1;
+  const int p = last_mip_level(base_level, base.width, base.height);
   if (!uses_mipmaps(sampler.min_filter)) {
     // Complete with the base level alone; texelFetch, textureSize and textureQueryLevels still
     // see the levels the storage has, up to max_level (as Mesa's sampler view does).

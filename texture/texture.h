@@ -22,6 +22,8 @@ enum class Wrap { Repeat, MirroredRepeat, ClampToEdge, ClampToBorder, MirrorClam
 enum class Swizzle : std::uint8_t { Red, Green, Blue, Alpha, Zero, One };
 
 const char* gl_name(Filter f);
+// p of GL 4.6 8.17: the last level of a full mip chain whose level `base` is w x h.
+int last_mip_level(int base, int w, int h);
 inline bool uses_mipmaps(Filter f) { return f != Filter::Nearest && f != Filter::Linear; }
 
 // Sampler state (a sampler object's, or the texture's own when no sampler object is bound),

@@ -291,10 +291,11 @@ std::uint32_t sampling_vector(const FragmentBatch& batch, int lane) {
 void GlslFragment::shade_batch(FragmentBatch& batch) const {
   // Whole quads per run: derivatives difference the lanes of a quad. A run does not end between
   // the two quads of one sampling vector, so that no lookup depends on batch_lanes.
-  const int step = std::max(8, std::clamp(sp_.exe->limits().batch_lanes, 1, shader::kMaxLanes) & ~3);
+  const int step = std::max(samples_textures_ ? 8 : 4, std::clamp(sp_.exe->limits().batch_lanes, 1, shader::kMaxLanes) & ~3);
   for (int first = 0; first < batch.lanes();) {
     int n = std::min(step, batch.lanes() - first);
-    if (first + n < batch.lanes() && sampling_vector(batch, first + n - 4) == sampling_vector(batch, first + n)) n -= 4;
+    if (samples_textures_ && first + n < batch.lanes() && sampling_vector(batch, first + n - 4) == sampling_vector(batch, first + n))
+      n -= 4;
     shade_lanes(batch, first, n);
     first += n;
   }
@@ -303,9 +304,11 @@ void GlslFragment::shade_batch(FragmentBatch& batch) const {
 void GlslFragment::shade_lanes(FragmentBatch& batch, int first, int n) const {
   Invocations& inv = sp_.prepare();
   inv.begin(n);
-  std::uint32_t vectors[shader::kMaxLanes];
-  for (int l = 0; l < n; ++l) vectors[l] = sampling_vector(batch, first + l);
-  inv.set_sampling_vectors(vectors);
+  if (samples_textures_) {
+    std::uint32_t vectors[shader::kMaxLanes];
+    for (int l = 0; l < n; ++l) vectors[l] = sampling_vector(batch, first + l);
+    inv.set_sampling_vectors(vectors);
+  }
   for (const IoVariable& v : sp_.io.inputs) {
     switch (v.kind) {
       case IoKind::FragCoord:
@@ -369,7 +372,8 @@ void GlslFragment::shade_lanes(FragmentBatch& batch, int first, int n) const {
 }
 
 GlslFragment::GlslFragment(const StageProgram& sp, int varyings, int primitive_id_varying)
-    : sp_(sp), varyings_(varyings), primitive_id_varying_(primitive_id_varying) {
+    : sp_(sp), varyings_(varyings), primitive_id_varying_(primitive_id_varying),
+      samples_textures_(sp.exe->samples_textures()) {
   for (const IoVariable& v : sp_.io.outputs)
     if (v.kind == IoKind::User)
       for (const IoWord& w : v.words)

@@ -78,6 +78,7 @@ class GlslFragment final : public FragmentProgram {
   const StageProgram& sp_;
   int varyings_;
   int primitive_id_varying_;
+  bool samples_textures_;  // the lanes llvmpipe samples together then matter (shade_batch)
   int output_locations_ = 0;  // 1 + the highest output location the program writes (at most 8)
 };
 
