@@ -25,6 +25,7 @@
 namespace {
 
 using namespace tessref::shader;
+namespace texture = tessref::texture;
 
 // The value bytes as 32-bit words, cycled (zeros when there are none).
 class Words {
