@@ -95,6 +95,12 @@ inline std::uint8_t unorm8_from_float(float c) {
   return static_cast<std::uint8_t>(std::nearbyint(clamped * 255.0f));
 }
 inline float unorm8_to_float(std::uint8_t k) { return float(k) / 255.0f; }
+// The same for a b-bit channel (b <= 24, so the product is exact in double): the nearest of the
+// 2^b steps, ties to even.
+inline std::uint32_t unorm_from_float(float c, int bits) {
+  const double clamped = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0;
+  return static_cast<std::uint32_t>(std::nearbyint(clamped * double((1u << bits) - 1u)));
+}
 
 // GL 4.6 section 17.3.6.1: with a fixed-point colour buffer, blending works on values in [0, 1];
 // llvmpipe blends 8-bit channels in 8-bit arithmetic: a * b / 255 as (p + (p >> 8) + 128) >> 8
@@ -146,6 +152,11 @@ inline float half_round_toward_zero(float f) {
 // normalized channels in 8-bit fixed point: weights of 8 bits, each interpolation rounded.
 
 inline float unorm8_texel_to_float(std::uint8_t k) { return float(k) * (1.0f / 255.0f); }
+// Channels of up to 24 bits alike (lp_build_unsigned_norm_to_float: a b-bit value fits a float's
+// 24-bit significand, so it is converted and multiplied by the float nearest 1 / (2^b - 1)).
+inline float unorm_texel_to_float(std::uint32_t k, int bits) {
+  return float(k) * static_cast<float>(1.0 / double((1u << bits) - 1u));
+}
 
 // v0 + (v1 - v0) * w / 256, rounded (ties up), for channels v0, v1 and a weight w in 0..255
 // (lp_build_lerp with pre-scaled 8-bit weights).

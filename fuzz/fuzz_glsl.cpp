@@ -100,13 +100,15 @@ void run(const std::vector<std::uint32_t>& spirv, Stage stage, Words& words) {
     std::vector<float> rgba;
     for (int i = 0; i < 4 * width * height; ++i) rgba.push_back(float(words.next() % 256) / 255.0f);
     const std::uint32_t mode = words.next();
-    t.format = static_cast<texture::TexelFormat>((mode >> 5) % 12);
+    t.format = static_cast<texture::TexelFormat>((mode >> 5) % 16);
     t.levels.push_back(texture::make_level(t.format, width, height, rgba.data()));
     t.sampler.min_filter = static_cast<texture::Filter>((mode >> 9) % 6);
     t.sampler.mag_filter = static_cast<texture::Filter>(mode & 1);
     t.sampler.wrap_s = static_cast<texture::Wrap>((mode >> 1) % 5);
     t.sampler.wrap_t = static_cast<texture::Wrap>((mode >> 12) % 5);
     t.sampler.lod_bias = float(std::int32_t(words.next())) / 65536.0f;
+    t.sampler.compare = (mode & 0x10000) != 0;
+    t.sampler.compare_func = static_cast<texture::CompareFunc>((mode >> 17) % 8);
     if (mode & 0x8000) texture::generate_mipmaps(t);
     else t.finalize();
   }

@@ -70,6 +70,11 @@ GlFormat gl_format(texture::TexelFormat f) {
     case TF::kR8: return {GL_R8, format, type};
     case TF::kSrgb8Alpha8: return {GL_SRGB8_ALPHA8, format, type};
     case TF::kSrgb8: return {GL_SRGB8, format, type};
+    // The stored words as tessref wrote them (texture/texel_format.h): no conversion on upload.
+    case TF::kDepth16: return {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT};
+    case TF::kDepth24: return {GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT};
+    case TF::kDepth32F: return {GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT};
+    case TF::kDepth24Stencil8: return {GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8};
   }
   return {GL_RGBA32F, GL_RGBA, GL_FLOAT};
 }
@@ -111,6 +116,9 @@ GlTextures::GlTextures(const std::string& scene_source, const ShaderSettings& sh
     const GLint swizzle[4] = {gl_swizzle(tex.swizzle[0]), gl_swizzle(tex.swizzle[1]), gl_swizzle(tex.swizzle[2]),
                               gl_swizzle(tex.swizzle[3])};
     glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, s.compare ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
+    static constexpr GLint kFuncs[] = {GL_NEVER, GL_LESS, GL_EQUAL, GL_LEQUAL, GL_GREATER, GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS};
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, kFuncs[int(s.compare_func)]);
   }
   glBindTexture(GL_TEXTURE_2D, 0);
   check_gl("GlTextures: uploading shaders.textures");

@@ -169,10 +169,23 @@ void bind_textures(const Scene& scene, const ShaderSettings& shaders, glsl::Glsl
     if (!shape || shape->glsl_name.find("sampler") == std::string::npos)
       throw InputError(key + ": the program has no active sampler2D uniform of that name" +
                        (shape ? " (it is a " + shape->glsl_name + ")" : std::string()));
-    if (shape->glsl_name != "sampler2D")
+    const bool shadow = shape->glsl_name == "sampler2DShadow";
+    if (shape->glsl_name != "sampler2D" && !shadow)
       throw InputError(key + ": the uniform is a " + shape->glsl_name + ", but textures are 2D images (GL_TEXTURE_2D); "
                        "GL draws nothing from a sampler whose unit holds a texture of another target");
     auto tex = std::make_unique<texture::Texture>(load_texture(t, key));
+    // GLSL 4.60 8.9 and GL 4.6 8.23.1 leave these lookups undefined: refused, not guessed.
+    const texture::TexelFormatInfo& format = texture::info(tex->format);
+    if (shadow && !format.depth)
+      throw InputError(key + ".internalformat: the uniform is a sampler2DShadow, which needs a depth format "
+                       "(GL_DEPTH_COMPONENT16, 24, 32F or GL_DEPTH24_STENCIL8), not " + std::string(format.gl_name) +
+                       " (GL leaves the result undefined)");
+    if (shadow && !tex->sampler.compare)
+      throw InputError(key + ".compare_mode: the uniform is a sampler2DShadow, so give \"compare_ref_to_texture\" "
+                       "(with GL_NONE GL leaves a shadow lookup's result undefined)");
+    if (!shadow && tex->sampler.compare)
+      throw InputError(key + ".compare_mode: the uniform is a sampler2D, which GL leaves undefined with "
+                       "GL_COMPARE_REF_TO_TEXTURE: use a sampler2DShadow, or \"none\"");
     // GL 4.6 11.1.3.5: an incomplete texture reads (0, 0, 0, 1); the draw goes on, as on a driver.
     if (!tex->complete)
       out.warnings.push_back(key + ": the texture is incomplete, so it reads (0, 0, 0, 1): " + tex->incomplete_reason);

@@ -25,6 +25,15 @@ constexpr std::array<std::pair<const char*, Wrap>, 5> kWraps{{
     {"clamp_to_border", Wrap::ClampToBorder},
     {"mirror_clamp_to_edge", Wrap::MirrorClampToEdge},
 }};
+constexpr std::array<std::pair<const char*, bool>, 2> kCompareModes{{
+    {"none", false}, {"compare_ref_to_texture", true},
+}};
+constexpr std::array<std::pair<const char*, texture::CompareFunc>, 8> kCompareFuncs{{
+    {"never", texture::CompareFunc::Never}, {"less", texture::CompareFunc::Less},
+    {"equal", texture::CompareFunc::Equal}, {"lequal", texture::CompareFunc::Lequal},
+    {"greater", texture::CompareFunc::Greater}, {"notequal", texture::CompareFunc::Notequal},
+    {"gequal", texture::CompareFunc::Gequal}, {"always", texture::CompareFunc::Always},
+}};
 constexpr std::array<std::pair<const char*, Swizzle>, 6> kSwizzles{{
     {"red", Swizzle::Red}, {"green", Swizzle::Green}, {"blue", Swizzle::Blue},
     {"alpha", Swizzle::Alpha}, {"zero", Swizzle::Zero}, {"one", Swizzle::One},
@@ -88,6 +97,10 @@ TextureSetting read_texture_setting(const std::string& name, const nlohmann::jso
     t.generate_mipmaps = o.boolean("generate_mipmap");
     if (t.generate_mipmaps && t.levels.size() > 1)
       o.fail("generate_mipmap", "glGenerateMipmap computes levels 1 and up from level 0: give levels or generate_mipmap, not both");
+    // GL 4.6 8.14.4: INVALID_OPERATION unless the format is color-renderable and filterable.
+    if (t.generate_mipmaps && t.format && texture::info(*t.format).depth)
+      o.fail("generate_mipmap", std::string("glGenerateMipmap refuses a depth format (") + texture::info(*t.format).gl_name +
+                                    " is not color-renderable, GL 4.6 8.14.4): give its levels");
   }
   texture::SamplerState& s = t.sampler_state;
   // filter and wrap set both filters and both wraps; the specific keys override them.
@@ -117,6 +130,11 @@ TextureSetting read_texture_setting(const std::string& name, const nlohmann::jso
       if (!found) o.fail("swizzle." + std::to_string(c), "expected one of " + names(kSwizzles) + ", got " + describe_json(sw[c]));
     }
   }
+  if (o.has("compare_mode")) s.compare = choice(o, "compare_mode", kCompareModes);
+  if (o.has("compare_func")) s.compare_func = choice(o, "compare_func", kCompareFuncs);
+  if (s.compare && o.has("swizzle"))
+    o.fail("swizzle", "tessref does not swizzle a depth comparison's result (GL_TEXTURE_COMPARE_MODE is "
+                      "GL_COMPARE_REF_TO_TEXTURE): leave the swizzle out");
   o.finish();
   return t;
 }

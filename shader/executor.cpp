@@ -333,16 +333,41 @@ void Runner::texture(const XIns& x) {
     }
     return;
   }
-  // Sample and QueryLod: the coordinates, projected for the Proj forms.
-  float s[L], t[L];
+  // Sample, Gather and QueryLod: the coordinates and reference depth, projected for the Proj forms.
+  float s[L], t[L], dref[L];
   for (int l = 0; l < n; ++l) {
     s[l] = frow(op.coord, 0, l);
     t[l] = frow(op.coord, 1, l);
+    dref[l] = op.dref == kNone ? 0.0f : frow(op.dref, 0, l);
     if (op.proj) {  // times 1/q, as Mesa lowers the projection (nir_lower_tex)
       const float inv_q = 1.0f / frow(op.coord, op.coord_comps - 1, l);
       s[l] = s[l] * inv_q;
       t[l] = t[l] * inv_q;
+      dref[l] = dref[l] * inv_q;
     }
+  }
+  const bool shadow = op.dref != kNone;
+  if (op.kind == Kind::Gather) {
+    for (int l = 0; l < n; ++l) {
+      if (!mask[l]) continue;
+      const int component = op.component == kNone ? 0 : irow(op.component, 0, l) & 3;
+      float texel[4];
+      if (op.offsets != kNone) {
+        // textureGatherOffsets: texel i0 j0 (the fourth) of each offset's footprint, as Mesa
+        // lowers it (nir_lower_tex's tg4 offsets).
+        for (int k = 0; k < 4; ++k) {
+          float one[4];
+          texture::gather(tex(l), s[l], t[l], irow(op.offsets, std::uint32_t(2 * k), l),
+                          irow(op.offsets, std::uint32_t(2 * k + 1), l), component, shadow ? &dref[l] : nullptr, one);
+          texel[k] = one[3];
+        }
+      } else {
+        const int ox = op.offset == kNone ? 0 : irow(op.offset, 0, l), oy = op.offset == kNone ? 0 : irow(op.offset, 1, l);
+        texture::gather(tex(l), s[l], t[l], ox, oy, component, shadow ? &dref[l] : nullptr, texel);
+      }
+      for (std::uint32_t c = 0; c < x.n; ++c) row<float>(x.dst, c)[l] = texel[c];
+    }
+    return;
   }
   // Each lane's LOD input: the explicit LOD or gradients; for an implicit LOD in a fragment shader
   // the quad's derivatives, from its top-left pixel (lane 4q, whose right and upper neighbours
@@ -403,7 +428,7 @@ void Runner::texture(const XIns& x) {
     }
     float texel[4];
     const int ox = op.offset == kNone ? 0 : irow(op.offset, 0, l), oy = op.offset == kNone ? 0 : irow(op.offset, 1, l);
-    texture::sample(tex(l), s[l], t[l], in, ox, oy, texel, vector_linear[l]);
+    texture::sample(tex(l), s[l], t[l], in, ox, oy, shadow ? &dref[l] : nullptr, texel, vector_linear[l]);
     for (std::uint32_t c = 0; c < x.n; ++c) row<float>(x.dst, c)[l] = texel[c];
   }
 }

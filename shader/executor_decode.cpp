@@ -253,12 +253,14 @@ struct Decoder {
 
   void emit(XIns x) { p.code.push_back(x); }
 
-  // OpImageSample*, OpImageFetch and OpImageQuery* on a sampler2D: one TexOp each.
+  // OpImageSample*, OpImage*Gather, OpImageFetch and OpImageQuery* on a sampler2D or
+  // sampler2DShadow: one TexOp each.
   void texture(const Instruction& ins, const std::vector<std::uint32_t>& o) {
     const spv::Op op = spv::Op(ins.opcode);
     const Type& image = m.type(value_type.at(o.at(0)));
     const std::string name = sampler_glsl_name(m, image);
-    if (name != "sampler2D") unsupported(m, ins, "a " + name + " (tessref samples sampler2D only)");
+    if (name != "sampler2D" && name != "sampler2DShadow")
+      unsupported(m, ins, (name[0] == 'i' ? "an " : "a ") + name + " (tessref samples sampler2D and sampler2DShadow only)");
     TexOp t;
     t.image = value(ins, o[0]);
     XIns x = base(ins, XOp::Texture);
@@ -274,16 +276,28 @@ struct Decoder {
         t.coord_comps = comps_of(o[1]);
         break;
       default: {
-        t.kind = op == spv::OpImageFetch ? TexOp::Kind::Fetch : TexOp::Kind::Sample;
-        t.proj = op == spv::OpImageSampleProjImplicitLod || op == spv::OpImageSampleProjExplicitLod;
+        const bool gather = op == spv::OpImageGather || op == spv::OpImageDrefGather;
+        t.kind = op == spv::OpImageFetch ? TexOp::Kind::Fetch : gather ? TexOp::Kind::Gather : TexOp::Kind::Sample;
+        t.proj = op == spv::OpImageSampleProjImplicitLod || op == spv::OpImageSampleProjExplicitLod ||
+                 op == spv::OpImageSampleProjDrefImplicitLod || op == spv::OpImageSampleProjDrefExplicitLod;
         t.coord = value(ins, o.at(1));
         t.coord_comps = comps_of(o[1]);
-        const std::uint32_t mask = o.size() > 2 ? o[2] : 0u;
+        std::size_t at = 2;  // the image operands' mask, after Dref or the gather component
+        switch (op) {
+          case spv::OpImageSampleDrefImplicitLod: case spv::OpImageSampleDrefExplicitLod:
+          case spv::OpImageSampleProjDrefImplicitLod: case spv::OpImageSampleProjDrefExplicitLod:
+          case spv::OpImageDrefGather:
+            t.dref = value(ins, o.at(at++));
+            break;
+          case spv::OpImageGather: t.component = value(ins, o.at(at++)); break;
+          default: break;
+        }
+        const std::uint32_t mask = o.size() > at ? o[at] : 0u;
         const std::uint32_t known = std::uint32_t(spv::ImageOperandsBiasMask) | spv::ImageOperandsLodMask |
                                     spv::ImageOperandsGradMask | spv::ImageOperandsConstOffsetMask |
-                                    spv::ImageOperandsOffsetMask;
+                                    spv::ImageOperandsOffsetMask | spv::ImageOperandsConstOffsetsMask;
         if (mask & ~known) unsupported(m, ins, "image operands other than bias, lod, gradients and offsets");
-        std::size_t k = 3;  // operands follow the mask in the order of its bits
+        std::size_t k = at + 1;  // operands follow the mask in the order of its bits
         auto next = [&] { return value(ins, o.at(k++)); };
         if (mask & spv::ImageOperandsBiasMask) t.bias = next();
         if (mask & spv::ImageOperandsLodMask) t.lod = next();
@@ -293,6 +307,7 @@ struct Decoder {
         }
         if (mask & spv::ImageOperandsConstOffsetMask) t.offset = next();
         if (mask & spv::ImageOperandsOffsetMask) t.offset = next();
+        if (mask & spv::ImageOperandsConstOffsetsMask) t.offsets = next();
         t.implicit_lod = t.kind == TexOp::Kind::Sample && t.lod == kNone && t.grad_x == kNone;
       }
     }
@@ -691,6 +706,9 @@ struct Decoder {
       }
       case spv::OpImageSampleImplicitLod: case spv::OpImageSampleExplicitLod:
       case spv::OpImageSampleProjImplicitLod: case spv::OpImageSampleProjExplicitLod:
+      case spv::OpImageSampleDrefImplicitLod: case spv::OpImageSampleDrefExplicitLod:
+      case spv::OpImageSampleProjDrefImplicitLod: case spv::OpImageSampleProjDrefExplicitLod:
+      case spv::OpImageGather: case spv::OpImageDrefGather:
       case spv::OpImageFetch: case spv::OpImageQuerySizeLod: case spv::OpImageQuerySize:
       case spv::OpImageQueryLevels: case spv::OpImageQueryLod:
         texture(ins, o);

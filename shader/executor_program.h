@@ -51,7 +51,7 @@ struct XIns {
 // A texture instruction (OpImageSample*, OpImageFetch, OpImageQuery*): its operands' rows, kNone
 // where absent. Constant operands (ConstOffset) are rows like any other.
 struct TexOp {
-  enum class Kind : std::uint8_t { Sample, Fetch, QuerySize, QueryLevels, QueryLod };
+  enum class Kind : std::uint8_t { Sample, Gather, Fetch, QuerySize, QueryLevels, QueryLod };
   Kind kind = Kind::Sample;
   std::uint32_t image = kNone;  // the sampler's texture unit (one U32 row)
   std::uint32_t coord = kNone;  // float coordinates (Fetch: integer texel indices)
@@ -61,6 +61,9 @@ struct TexOp {
   // fragment shader, and is 0 in other stages (GLSL 4.60 8.9).
   bool implicit_lod = false;
   std::uint32_t bias = kNone, lod = kNone, grad_x = kNone, grad_y = kNone, offset = kNone;
+  std::uint32_t dref = kNone;       // a shadow lookup's reference depth (divided by q for Proj)
+  std::uint32_t component = kNone;  // Gather without a comparison: which component (an int)
+  std::uint32_t offsets = kNone;    // textureGatherOffsets: four ivec2 constants, eight rows
 };
 
 // dst word w := src row's word sw, `words` rows in a row. doubles: index into

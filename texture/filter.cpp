@@ -125,6 +125,41 @@ LinearIndices linear_indices(float s, i32 w, i32 off, Wrap wrap, bool pot) {
   return r;
 }
 
+// textureGather's two texel indices along one axis (-1 for the border): GL_LINEAR's, but where
+// llvmpipe's linear selection relies on the weight (a pair swapped in a mirrored section, or
+// indices 0 and 1 with weight 0 next to an edge), its gather path takes the texels GL names
+// (lp_build_sample_wrap_linear with is_gather).
+std::array<i32, 2> gather_indices(float s, i32 w, i32 off, Wrap wrap, bool pot) {
+  const float wf = float(w);
+  // Ones' complement for negative indices: mirror(-x) = x - 1.
+  auto mirrored = [w](i32 i) { return std::min(i < 0 ? ~i : i, w - 1); };
+  switch (wrap) {
+    case Wrap::ClampToEdge: {
+      float c = s * wf;
+      if (off) c = c + float(off);
+      c = max_ps(min_ps(c, wf), 0.0f);  // NaN: w
+      return {fptosi(c - 0.5f), std::min(fptosi(c + 0.5f), w - 1)};
+    }
+    case Wrap::MirroredRepeat: {
+      if (off) s = s + float(off) / wf;
+      const float h = s * 0.5f;
+      const float f = h - std::nearbyint(h);
+      const i32 i0 = ifloor((f + f) * wf - 0.5f);  // the mirror's sign kept: negative in odd sections
+      return {mirrored(i0), mirrored(add(i0, 1))};
+    }
+    case Wrap::MirrorClampToEdge: {
+      float c = s * wf;
+      if (off) c = c + float(off);
+      const i32 i0 = ifloor(c - 0.5f);
+      return {mirrored(i0), mirrored(add(i0, 1))};
+    }
+    default: {
+      const LinearIndices r = linear_indices(s, w, off, wrap, pot);
+      return {r.i0, r.i1};
+    }
+  }
+}
+
 // GL_LINEAR in 8-bit fixed point: the coordinate in 1/256 texels, rounded (ties to even), less
 // half a texel; its integer part and 8-bit weight (lp_build_sample_image_linear, AoS).
 struct LinearIndices8 {
@@ -197,13 +232,29 @@ void filter_unorm8(TexelFormat format, const Level& level, const Axes& axes, boo
                                 fixed::unorm8_lerp(x.weight, t01[c], t11[c]));
 }
 
+bool passes(const DepthCompare& c, float depth) {
+  const float r = c.ref;
+  switch (c.func) {
+    case CompareFunc::Never: return false;
+    case CompareFunc::Less: return r < depth;
+    case CompareFunc::Equal: return r == depth;
+    case CompareFunc::Lequal: return r <= depth;
+    case CompareFunc::Greater: return r > depth;
+    case CompareFunc::Notequal: return !(r == depth);
+    case CompareFunc::Gequal: return r >= depth;
+    case CompareFunc::Always: return true;
+  }
+  return false;
+}
+
 void filter_float(const Level& level, const Axes& axes, const std::array<float, 4>& border, FloatFilter filter,
-                  float s, float t, int offset_s, int offset_t, float out[4]) {
+                  float s, float t, int offset_s, int offset_t, const DepthCompare* compare, float out[4]) {
   const i32 w = level.width, h = level.height;
   if (filter == FloatFilter::Nearest) {
     const i32 i = nearest_index(s, w, offset_s, axes.wrap[0], axes.pot[0]);
     const i32 j = nearest_index(t, h, offset_t, axes.wrap[1], axes.pot[1]);
     texelf(level, border, i, j, out);
+    if (compare) out[0] = out[1] = out[2] = out[3] = passes(*compare, out[0]) ? 1.0f : 0.0f;
     return;
   }
   LinearIndices x = linear_indices(s, w, offset_s, axes.wrap[0], axes.pot[0]);
@@ -217,14 +268,35 @@ void filter_float(const Level& level, const Axes& axes, const std::array<float, 
   texelf(level, border, x.i1, y.i0, t10);
   texelf(level, border, x.i0, y.i1, t01);
   texelf(level, border, x.i1, y.i1, t11);
+  if (compare) {
+    // lp_build_masklerp: the weights selected by the tests and added.
+    const float wx1 = 1.0f - x.weight;
+    auto row = [&](const float* a, const float* b) {
+      return (passes(*compare, b[0]) ? x.weight : 0.0f) + (passes(*compare, a[0]) ? wx1 : 0.0f);
+    };
+    out[0] = out[1] = out[2] = out[3] = lerp(y.weight, row(t00, t10), row(t01, t11));
+    return;
+  }
   for (int c = 0; c < 4; ++c)
     out[c] = lerp(y.weight, lerp(x.weight, t00[c], t10[c]), lerp(x.weight, t01[c], t11[c]));
+}
+
+void gather_float(const Level& level, const Axes& axes, const std::array<float, 4>& border, float s, float t,
+                  int offset_s, int offset_t, int channel, const DepthCompare* compare, float out[4]) {
+  const std::array<i32, 2> x = gather_indices(s, level.width, offset_s, axes.wrap[0], axes.pot[0]);
+  const std::array<i32, 2> y = gather_indices(t, level.height, offset_t, axes.wrap[1], axes.pot[1]);
+  const i32 corners[4][2] = {{x[0], y[1]}, {x[1], y[1]}, {x[1], y[0]}, {x[0], y[0]}};
+  for (int k = 0; k < 4; ++k) {
+    float texel[4];
+    texelf(level, border, corners[k][0], corners[k][1], texel);
+    out[k] = compare ? (passes(*compare, texel[0]) ? 1.0f : 0.0f) : texel[channel];
+  }
 }
 
 std::array<float, 4> border_color(const Texture& t) {
   std::array<float, 4> b = t.sampler.border;
   const TexelFormatInfo& f = info(t.format);
-  if (f.type == ChannelType::kUnorm8 || f.type == ChannelType::kSrgb8)
+  if (f.normalized())
     for (float& c : b) c = std::min(std::max(c, 0.0f), 1.0f);
   // Read through the format, as a texel is: channels it lacks are 0 (green, blue) and 1 (alpha).
   for (int c = f.channels; c < 4; ++c) b[std::size_t(c)] = c == 3 ? 1.0f : 0.0f;

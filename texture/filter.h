@@ -28,9 +28,25 @@ void filter_unorm8(TexelFormat format, const Level& level, const Axes& axes, boo
 // t0 + (t1 - t0) for t1, which can differ from t1 in the last bit.
 enum class FloatFilter { Nearest, Linear, NearestByWeights };
 
-// Every other format and wrap, in float: the texels as decoded, border texels as `border`.
+// A depth comparison (GL 4.6 8.23.1): each texel's depth D_t tested as "ref FUNC D_t" gives 1 or
+// 0, and those are filtered instead of the texels (llvmpipe: ordered comparisons, but NOTEQUAL
+// unordered, so a NaN passes NOTEQUAL alone).
+struct DepthCompare {
+  CompareFunc func;
+  float ref;
+};
+bool passes(const DepthCompare& c, float depth);
+
+// Every other format and wrap, in float: the texels as decoded, border texels as `border`. With a
+// comparison, every channel of the result is the filtered 1s and 0s: for GL_LINEAR, per row
+// (w where the second passes) + (1 - w where the first does), then the rows interpolated.
 void filter_float(const Level& level, const Axes& axes, const std::array<float, 4>& border, FloatFilter filter,
-                  float s, float t, int offset_s, int offset_t, float out[4]);
+                  float s, float t, int offset_s, int offset_t, const DepthCompare* compare, float out[4]);
+
+// textureGather (GL 4.6 8.14.2): GL_LINEAR's four texels at (s, t), in the order (i0, j1),
+// (i1, j1), (i1, j0), (i0, j0): channel `channel` of each, or with a comparison its 1 or 0.
+void gather_float(const Level& level, const Axes& axes, const std::array<float, 4>& border, float s, float t,
+                  int offset_s, int offset_t, int channel, const DepthCompare* compare, float out[4]);
 
 // GL_TEXTURE_BORDER_COLOR as the sampler uses it: clamped to [0, 1] for normalized formats.
 std::array<float, 4> border_color(const Texture& t);

@@ -31,7 +31,7 @@ Level downsample(TexelFormat format, const Level& src, int w, int h) {
         for (int c = 0; c < 4; ++c) out[c] = fixed::unorm8_to_float(texel[c]);  // exact k / 255: encodes to k
         continue;
       }
-      filter_float(src, clamp, no_border, FloatFilter::Linear, s, t, 0, 0, out);
+      filter_float(src, clamp, no_border, FloatFilter::Linear, s, t, 0, 0, nullptr, out);
       for (int c = 0; c < 4; ++c) {
         if (type == ChannelType::kFloat16) out[c] = fixed::half_round_toward_zero(out[c]);
         if (type == ChannelType::kSrgb8 && c < 3) out[c] = fixed::unorm8_to_float(srgb_encode(out[c]));

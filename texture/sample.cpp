@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 
 #include "common/fixed_point.h"
 #include "texture/filter.h"
@@ -182,6 +183,21 @@ void incomplete(float out[4]) {
   out[3] = 1.0f;
 }
 
+// The comparison of a shadow lookup; D_ref clamped to [0, 1] for fixed-point depth formats (GL
+// 4.6 8.23.1), as min(max(D_ref, 0), 1) with x86's min and max (NaN: 0).
+std::optional<DepthCompare> depth_compare(const Texture& t, const float* dref) {
+  if (!dref || !t.sampler.compare) return std::nullopt;
+  const float ref = info(t.format).normalized() ? min_ps(max_ps(*dref, 0.0f), 1.0f) : *dref;
+  return DepthCompare{t.sampler.compare_func, ref};
+}
+
+// The wraps, and whether level 0's sides are powers of two.
+Axes axes_of(const Texture& t) {
+  const Level& level_zero = t.levels[0];
+  return {{t.sampler.wrap_s, t.sampler.wrap_t},
+          {std::has_single_bit(unsigned(level_zero.width)), std::has_single_bit(unsigned(level_zero.height))}};
+}
+
 }  // namespace
 
 bool linear_in_vector(const Texture& t, const LodInput& lod) {
@@ -190,14 +206,14 @@ bool linear_in_vector(const Texture& t, const LodInput& lod) {
   return choose_levels(t, lod).linear;
 }
 
-void sample(const Texture& t, float s, float tc, const LodInput& lod, int offset_s, int offset_t, float out[4],
-            bool vector_linear) {
+void sample(const Texture& t, float s, float tc, const LodInput& lod, int offset_s, int offset_t, const float* dref,
+            float out[4], bool vector_linear) {
   if (!t.complete) return incomplete(out);
   const LevelChoice c = choose_levels(t, lod);
   const Level& l0 = t.levels[std::size_t(c.level0)];
-  const Level& level_zero = t.levels[0];
-  const Axes axes{{t.sampler.wrap_s, t.sampler.wrap_t},
-                  {std::has_single_bit(unsigned(level_zero.width)), std::has_single_bit(unsigned(level_zero.height))}};
+  const Axes axes = axes_of(t);
+  const std::optional<DepthCompare> compare = depth_compare(t, dref);
+  const DepthCompare* cmp = compare ? &*compare : nullptr;
   float texel[4];
   if (fixed_point_path(t, lod)) {
     std::uint8_t r0[4];
@@ -216,14 +232,38 @@ void sample(const Texture& t, float s, float tc, const LodInput& lod, int offset
                                : vector_linear && linear_image(t.sampler.min_filter) != linear_image(t.sampler.mag_filter)
                                    ? FloatFilter::NearestByWeights
                                    : FloatFilter::Nearest;
-    filter_float(l0, axes, border, filter, s, tc, offset_s, offset_t, texel);
+    filter_float(l0, axes, border, filter, s, tc, offset_s, offset_t, cmp, texel);
     if (c.fpart > 0.0f) {
       float t1[4];
-      filter_float(t.levels[std::size_t(c.level1)], axes, border, filter, s, tc, offset_s, offset_t, t1);
+      filter_float(t.levels[std::size_t(c.level1)], axes, border, filter, s, tc, offset_s, offset_t, cmp, t1);
       for (int k = 0; k < 4; ++k) texel[k] = lerp(c.fpart, texel[k], t1[k]);
     }
   }
+  if (cmp) {  // the swizzle is refused with a comparison (scene/texture_schema.cpp)
+    for (int k = 0; k < 4; ++k) out[k] = texel[k];
+    return;
+  }
   apply_swizzle(t, texel, out);
+}
+
+void gather(const Texture& t, float s, float tc, int offset_s, int offset_t, int component, const float* dref,
+            float out[4]) {
+  const Swizzle sw = t.swizzle[std::size_t(component & 3)];
+  if (!t.complete) {  // the four texels of the 1 x 1 (0, 0, 0, 1) texture
+    float texel[4], swizzled[4];
+    incomplete(texel);
+    apply_swizzle(t, texel, swizzled);
+    out[0] = out[1] = out[2] = out[3] = swizzled[component & 3];
+    return;
+  }
+  const std::optional<DepthCompare> compare = depth_compare(t, dref);
+  if (!compare && (sw == Swizzle::Zero || sw == Swizzle::One)) {
+    out[0] = out[1] = out[2] = out[3] = sw == Swizzle::One ? 1.0f : 0.0f;
+    return;
+  }
+  // GL_LINEAR's footprint on the base level whatever the filters (llvmpipe: linear, no mipmap).
+  gather_float(t.levels[std::size_t(t.base_level)], axes_of(t), border_color(t), s, tc, offset_s, offset_t,
+               int(sw), compare ? &*compare : nullptr, out);
 }
 
 void fetch(const Texture& t, int i, int j, int lod, float out[4]) {

@@ -27,11 +27,19 @@ struct LodInput {
 };
 
 // texture(), textureLod(), textureGrad(), the Offset and Proj forms (s and t already divided):
-// the filtered, swizzled texel. `vector_linear`: whether another invocation sampled together with
+// the filtered, swizzled texel. `dref`: a shadow sampler's reference depth (already divided for
+// Proj forms), compared when the texture's compare mode is on; every channel of the result is
+// then the filtered comparisons. `vector_linear`: whether another invocation sampled together with
 // this one (llvmpipe runs a vector of them at once) is filtered with GL_LINEAR, which changes how
 // llvmpipe filters the others with GL_NEAREST (see linear_in_vector).
-void sample(const Texture& t, float s, float tc, const LodInput& lod, int offset_s, int offset_t, float out[4],
-            bool vector_linear = false);
+void sample(const Texture& t, float s, float tc, const LodInput& lod, int offset_s, int offset_t, const float* dref,
+            float out[4], bool vector_linear = false);
+
+// textureGather() and textureGatherOffset(): the four texels GL_LINEAR would read on the base
+// level (i0 j1, i1 j1, i1 j0, i0 j0), component `component` (0..3) through the swizzle; with
+// `dref` (the shadow forms), each texel's comparison as 1 or 0.
+void gather(const Texture& t, float s, float tc, int offset_s, int offset_t, int component, const float* dref,
+            float out[4]);
 
 // Whether this lookup counts as GL_LINEAR for the invocations sampled with it: true when the
 // texture's minification and magnification filters differ, it is filtered in float and this

@@ -16,7 +16,7 @@ struct Named {
   TexelFormatInfo info;
 };
 
-constexpr std::array<Named, 12> kFormats{{
+constexpr std::array<Named, 16> kFormats{{
     {TexelFormat::kRgba32F, {"GL_RGBA32F", 4, ChannelType::kFloat32}},
     {TexelFormat::kRg32F, {"GL_RG32F", 2, ChannelType::kFloat32}},
     {TexelFormat::kR32F, {"GL_R32F", 1, ChannelType::kFloat32}},
@@ -29,6 +29,10 @@ constexpr std::array<Named, 12> kFormats{{
     {TexelFormat::kR8, {"GL_R8", 1, ChannelType::kUnorm8}},
     {TexelFormat::kSrgb8Alpha8, {"GL_SRGB8_ALPHA8", 4, ChannelType::kSrgb8}},
     {TexelFormat::kSrgb8, {"GL_SRGB8", 3, ChannelType::kSrgb8}},
+    {TexelFormat::kDepth16, {"GL_DEPTH_COMPONENT16", 1, ChannelType::kUnorm16, true}},
+    {TexelFormat::kDepth24, {"GL_DEPTH_COMPONENT24", 1, ChannelType::kUnorm24, true}},
+    {TexelFormat::kDepth32F, {"GL_DEPTH_COMPONENT32F", 1, ChannelType::kFloat32, true}},
+    {TexelFormat::kDepth24Stencil8, {"GL_DEPTH24_STENCIL8", 1, ChannelType::kUnorm24, true}},
 }};
 
 // An sRGB channel as the sampler decodes it. GL 4.6 equation 8.17 is exact; llvmpipe
@@ -84,6 +88,19 @@ std::vector<std::uint8_t> encode_texels(TexelFormat f, const float* rgba, std::s
         }
         case ChannelType::kUnorm8:
         case ChannelType::kSrgb8: *dst++ = fixed::unorm8_from_float(v); break;
+        case ChannelType::kUnorm16: {
+          const auto k = std::uint16_t(fixed::unorm_from_float(v, 16));
+          std::memcpy(dst, &k, 2);
+          dst += 2;
+          break;
+        }
+        case ChannelType::kUnorm24: {
+          const std::uint32_t k = fixed::unorm_from_float(v, 24);
+          const std::uint32_t word = (k << 8) | (f == TexelFormat::kDepth24 ? k >> 16 : 0u);
+          std::memcpy(dst, &word, 4);
+          dst += 4;
+          break;
+        }
       }
     }
   return out;
@@ -114,6 +131,20 @@ std::vector<float> decode_texels(TexelFormat f, const std::vector<std::uint8_t>&
           dst[c] = c == 3 ? fixed::unorm8_texel_to_float(*src) : srgb8_texel_to_float(*src);
           ++src;
           break;
+        case ChannelType::kUnorm16: {
+          std::uint16_t k;
+          std::memcpy(&k, src, 2);
+          dst[c] = fixed::unorm_texel_to_float(k, 16);
+          src += 2;
+          break;
+        }
+        case ChannelType::kUnorm24: {
+          std::uint32_t word;
+          std::memcpy(&word, src, 4);
+          dst[c] = fixed::unorm_texel_to_float(word >> 8, 24);
+          src += 4;
+          break;
+        }
       }
     }
   }

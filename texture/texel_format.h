@@ -17,16 +17,29 @@ enum class TexelFormat {
   kRgba16F, kRg16F, kR16F,
   kRgba8, kRgb8, kRg8, kR8,
   kSrgb8Alpha8, kSrgb8,
+  kDepth16, kDepth24, kDepth32F, kDepth24Stencil8,
 };
 
-enum class ChannelType { kFloat32, kFloat16, kUnorm8, kSrgb8 };
+// kUnorm24: a 24-bit depth in the top bits of a 32-bit word, as GL_UNSIGNED_INT (DEPTH_COMPONENT24:
+// the low byte repeats the top bits, so any conversion to 24 bits gives the same value) and
+// GL_UNSIGNED_INT_24_8 (DEPTH24_STENCIL8: the low byte is the stencil index, 0) give it.
+enum class ChannelType { kFloat32, kFloat16, kUnorm8, kSrgb8, kUnorm16, kUnorm24 };
 
 struct TexelFormatInfo {
   const char* gl_name;  // "GL_RGBA8"
-  int channels;         // 1..4 (R, RG, RGB, RGBA)
+  int channels;         // 1..4 (R, RG, RGB, RGBA); 1 for depth
   ChannelType type;
-  int bytes_per_channel() const { return type == ChannelType::kFloat32 ? 4 : type == ChannelType::kFloat16 ? 2 : 1; }
+  bool depth = false;   // DEPTH_COMPONENT or DEPTH_STENCIL base format: sampled as (d, 0, 0, 1)
+  int bytes_per_channel() const {
+    switch (type) {
+      case ChannelType::kFloat32: case ChannelType::kUnorm24: return 4;
+      case ChannelType::kFloat16: case ChannelType::kUnorm16: return 2;
+      default: return 1;
+    }
+  }
   int bytes_per_texel() const { return channels * bytes_per_channel(); }
+  // Unsigned normalized channels: their border colour is clamped to [0, 1].
+  bool normalized() const { return type != ChannelType::kFloat32 && type != ChannelType::kFloat16; }
 };
 
 const TexelFormatInfo& info(TexelFormat f);
@@ -36,12 +49,14 @@ std::string texel_format_names();  // "GL_RGBA32F, GL_RG32F, ...", for messages
 // Stores `texels` RGBA floats (4 per texel) in format f: 32-bit float channels unchanged, 16-bit
 // ones rounded to the nearest half (ties to even; beyond 65504: infinity), 8-bit normalized ones
 // clamped to [0, 1] and rounded to the nearest k / 255 (sRGB formats: the value is taken as
-// already encoded, as an 8-bit image file holds it). Channels the format lacks are dropped.
+// already encoded, as an 8-bit image file holds it), 16- and 24-bit depths likewise to the
+// nearest k / (2^b - 1) (GL 4.6 8.4.4.2 clamps fixed-point depth to [0, 1]; a float depth is kept
+// as it is, as Mesa keeps it). Channels the format lacks are dropped.
 std::vector<std::uint8_t> encode_texels(TexelFormat f, const float* rgba, std::size_t texels);
 
 // What the sampler reads from stored texels (GL 4.6 15.2.1 and 8.24): each channel converted to
-// float (8-bit channels as llvmpipe converts them: common/fixed_point.h; sRGB ones decoded before
-// filtering), missing green and blue 0, missing alpha 1. Four floats per texel.
+// float (normalized channels as llvmpipe converts them: common/fixed_point.h; sRGB ones decoded
+// before filtering), missing green and blue 0, missing alpha 1. Four floats per texel.
 std::vector<float> decode_texels(TexelFormat f, const std::vector<std::uint8_t>& bytes);
 
 }  // namespace tessref::texture

@@ -17,6 +17,20 @@ const char* gl_name(Filter f) {
   return "?";
 }
 
+const char* gl_name(CompareFunc f) {
+  switch (f) {
+    case CompareFunc::Never: return "GL_NEVER";
+    case CompareFunc::Less: return "GL_LESS";
+    case CompareFunc::Equal: return "GL_EQUAL";
+    case CompareFunc::Lequal: return "GL_LEQUAL";
+    case CompareFunc::Greater: return "GL_GREATER";
+    case CompareFunc::Notequal: return "GL_NOTEQUAL";
+    case CompareFunc::Gequal: return "GL_GEQUAL";
+    case CompareFunc::Always: return "GL_ALWAYS";
+  }
+  return "?";
+}
+
 int last_mip_level(int base, int w, int h) {
   return base + int(std::bit_width(unsigned(std::max(w, h)))) - 1;
 }

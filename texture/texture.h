@@ -18,10 +18,13 @@ enum class Filter {
 };
 // GL_TEXTURE_WRAP_S / _T / _R.
 enum class Wrap { Repeat, MirroredRepeat, ClampToEdge, ClampToBorder, MirrorClampToEdge };
+// GL_TEXTURE_COMPARE_FUNC: the test "D_ref FUNC D_texel" of GL 4.6 table 8.21.
+enum class CompareFunc { Never, Less, Equal, Lequal, Greater, Notequal, Gequal, Always };
 // GL_TEXTURE_SWIZZLE_R/G/B/A: which component (or constant) each result component reads.
 enum class Swizzle : std::uint8_t { Red, Green, Blue, Alpha, Zero, One };
 
 const char* gl_name(Filter f);
+const char* gl_name(CompareFunc f);
 // p of GL 4.6 8.17: the last level of a full mip chain whose level `base` is w x h.
 int last_mip_level(int base, int w, int h);
 inline bool uses_mipmaps(Filter f) { return f != Filter::Nearest && f != Filter::Linear; }
@@ -35,6 +38,8 @@ struct SamplerState {
   std::array<float, 4> border{0.0f, 0.0f, 0.0f, 0.0f};  // GL_TEXTURE_BORDER_COLOR
   float min_lod = -1000.0f, max_lod = 1000.0f;           // GL_TEXTURE_MIN_LOD / MAX_LOD
   float lod_bias = 0.0f;                                 // GL_TEXTURE_LOD_BIAS
+  bool compare = false;                   // GL_TEXTURE_COMPARE_MODE COMPARE_REF_TO_TEXTURE (else NONE)
+  CompareFunc compare_func = CompareFunc::Lequal;  // GL_TEXTURE_COMPARE_FUNC
 };
 
 // One mip level: width x height texels, row 0 at the bottom (GL). `stored` holds them in the

@@ -7,7 +7,7 @@
 // llvmpipe's, the differences are counted against a stated bound.
 //
 // TESSREF_SAMPLING_SWEEP=full runs every format x minification x magnification filter x wrap
-// x lookup (scripts/sampling-sweep.sh): 4,416 cases, 72.4 million lookups.
+// x lookup, and every depth format x filter x wrap x shadow lookup (scripts/sampling-sweep.sh).
 #include <bit>
 #include <cmath>
 #include <cstdio>
@@ -28,9 +28,6 @@ namespace {
 
 const std::string kScene = std::string(TESSREF_SOURCE_DIR) + "/tests/data/draws/sampling_sweep.json";
 
-const char* const kFunctions[] = {"texture",      "texture+bias",      "textureLod", "textureGrad",
-                                  "textureOffset", "textureLodOffset", "texelFetch", "textureQueryLod",
-                                  "textureProj",  "textureSize+QueryLevels"};
 
 struct Outcome {
   std::size_t lookups = 0, identical = 0;
@@ -122,10 +119,27 @@ Case make_case(const std::string& file, const std::string& format, const std::st
   const bool unorm8 = format == "GL_RGBA8" || format == "GL_RGB8" || format == "GL_RG8" || format == "GL_R8";
   const bool fixed_point = unorm8 && (wrap == "repeat" || wrap == "clamp_to_edge");
   const bool one_lod_a_quad = fn == 0 || fn == 4 || fn == 8;  // implicit LOD without bias
-  const bool filters = fn != 6 && fn != 7 && fn != 9;
+  const bool filters = fn <= 5 || fn == 8;  // not texelFetch, the queries or textureGather
   if (filters && linear_image(min) != linear_image(mag) && !(fixed_point && one_lod_a_quad)) c.max_differing = 0.005;
   return c;
 }
+
+// A shadow lookup (lookup_shadow.frag, function fn) on depth_64x64.exr stored in a depth format,
+// compared by `func`. Depth formats have no glGenerateMipmap, so the filters are mipmap-free.
+Case shadow_case(const std::string& format, const std::string& min, const std::string& mag, const std::string& wrap,
+                 const std::string& func, int fn, const std::vector<std::string>& extra = {}) {
+  Case c{with(texture("depth_64x64.exr", format, min, mag, wrap),
+              {"textures.u_tex.generate_mipmap=false", "fragment=\"sampling/lookup_shadow.frag\"",
+               "textures.u_tex.compare_mode=\"compare_ref_to_texture\"", "textures.u_tex.compare_func=\"" + func + "\"",
+               function(fn)})};
+  c.sets = with(c.sets, extra);
+  if (fn <= 5 && linear_image(min) != linear_image(mag)) c.max_differing = 0.005;  // as make_case says
+  return c;
+}
+
+const char* const kDepthFormats[] = {"GL_DEPTH_COMPONENT16", "GL_DEPTH_COMPONENT24", "GL_DEPTH_COMPONENT32F",
+                                     "GL_DEPTH24_STENCIL8"};
+const char* const kCompareFuncs[] = {"lequal", "gequal", "less", "greater", "equal", "notequal", "always", "never"};
 
 // The suite's cases: each lookup function on the fixed-point path (RGBA8, repeat) and on the
 // float path (RGBA32F, mirrored repeat); every wrap and filter on both; a size that is not a
@@ -160,6 +174,27 @@ std::vector<Case> suite_cases() {
   cases.push_back(state(0, {"textures.u_tex.min_lod=2", "textures.u_tex.max_lod=2"}));
   cases.push_back(state(1, {"textures.u_tex.swizzle=[\"blue\", \"zero\", \"red\", \"one\"]",
                             "textures.u_tex.border_color=[0.25, 1.5, -1, 0.5]"}));
+  // textureGather, with offsets, on both paths, a size that is not a power of two, the border and
+  // a swizzle (the component is taken through it).
+  for (int f : {10, 11, 12}) {
+    cases.push_back(make_case("noise_24x10.png", "GL_RGBA8", "linear_mipmap_linear", "linear", "repeat", f));
+    cases.push_back(make_case("noise_64x64.exr", "GL_RGBA32F", "nearest", "nearest", "clamp_to_border", f,
+                              {"textures.u_tex.border_color=[0.25, 1.5, -1, 0.5]"}));
+  }
+  cases.push_back(make_case("noise_64x64.png", "GL_SRGB8_ALPHA8", "linear", "linear", "mirrored_repeat", 10,
+                            {"textures.u_tex.swizzle=[\"alpha\", \"zero\", \"one\", \"red\"]"}));
+  // Depth formats read as (d, 0, 0, 1) by a sampler2D.
+  for (const char* format : kDepthFormats)
+    cases.push_back(make_case("depth_64x64.exr", format, "linear", "nearest", "clamp_to_border", 2,
+                              {"textures.u_tex.generate_mipmap=false", "textures.u_tex.border_color=[0.75, 0, 0, 0]"}));
+  // Shadow lookups: each function, each comparison, each depth format, both filters.
+  for (int fn = 0; fn <= 9; ++fn) cases.push_back(shadow_case("GL_DEPTH_COMPONENT24", "linear", "linear", "repeat", "lequal", fn));
+  for (const char* func : kCompareFuncs) cases.push_back(shadow_case("GL_DEPTH_COMPONENT32F", "linear", "linear", "clamp_to_edge", func, 0));
+  for (const char* format : kDepthFormats) {
+    cases.push_back(shadow_case(format, "nearest", "linear", "clamp_to_border", "greater", 2,
+                                {"textures.u_tex.border_color=[0.5, 0, 0, 0]"}));
+    cases.push_back(shadow_case(format, "linear", "nearest", "mirrored_repeat", "equal", 6));
+  }
   return cases;
 }
 
@@ -179,10 +214,21 @@ std::vector<Case> full_cases() {
                             "nearest_mipmap_linear", "linear_mipmap_linear"})
       for (const char* mag : {"nearest", "linear"})
         for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge", "clamp_to_border", "mirror_clamp_to_edge"})
-          for (int fn = 0; fn < 10; ++fn) {
+          for (int fn = 0; fn < 13; ++fn) {
             if (fn == 9 && std::string(wrap) != "repeat") continue;  // sizes do not depend on the wrap
+            // textureGather reads GL_LINEAR's footprint whatever the filters: two pairs of them.
+            if (fn >= 10 && !(std::string(min) == "nearest" && std::string(mag) == "nearest") &&
+                !(std::string(min) == "linear_mipmap_linear" && std::string(mag) == "linear"))
+              continue;
             cases.push_back(make_case(f.file, f.name, min, mag, wrap, fn));
           }
+  for (const char* format : kDepthFormats)
+    for (const char* min : {"nearest", "linear"})
+      for (const char* mag : {"nearest", "linear"})
+        for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge", "clamp_to_border", "mirror_clamp_to_edge"}) {
+          for (int fn = 0; fn <= 8; ++fn) cases.push_back(shadow_case(format, min, mag, wrap, "lequal", fn));
+          for (const char* func : kCompareFuncs) cases.push_back(shadow_case(format, min, mag, wrap, func, 6));
+        }
   return cases;
 }
 

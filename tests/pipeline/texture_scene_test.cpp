@@ -1,6 +1,7 @@
 // Textures in scenes (docs/textures.md) on tessref alone: bad texture descriptions are errors that
 // name the key, an incomplete texture is GL's (0, 0, 0, 1) with a warning, and lookups do not
 // depend on the thread count or the executor's batch size.
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -79,6 +80,75 @@ TEST(TextureScene, BadTexturesAreErrorsNamingTheKey) {
             std::string::npos) << both;
   const std::string neither = edited_error("");
   EXPECT_NE(neither.find("draws.0.shaders.textures.u_tex.path: give either path (level 0) or levels"), std::string::npos) << neither;
+}
+
+// Shadow samplers and depth formats: the mismatches GL leaves undefined are refused, naming the
+// key; GL's own refusal (glGenerateMipmap of a depth format) too.
+TEST(TextureScene, ShadowSamplerAndDepthFormatMismatchesAreErrorsNamingTheKey) {
+  const std::vector<std::string> shadow = {"fragment=\"sampling/lookup_shadow.frag\"", "textures.u_tex.generate_mipmap=false",
+                                           "textures.u_tex.min_filter=\"linear\""};
+  auto with = [](std::vector<std::string> a, const std::vector<std::string>& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+  };
+  const std::string colour = error_of(with(shadow, {"textures.u_tex.compare_mode=\"compare_ref_to_texture\""}));
+  EXPECT_NE(colour.find("draws.0.shaders.textures.u_tex.internalformat: the uniform is a sampler2DShadow, which needs a depth "
+                        "format (GL_DEPTH_COMPONENT16, 24, 32F or GL_DEPTH24_STENCIL8), not GL_RGBA8"),
+            std::string::npos) << colour;
+  const std::vector<std::string> depth = {"textures.u_tex.path=\"sampling/depth_64x64.exr\"",
+                                          "textures.u_tex.internalformat=\"GL_DEPTH_COMPONENT24\""};
+  const std::string no_compare = error_of(with(shadow, depth));
+  EXPECT_NE(no_compare.find("draws.0.shaders.textures.u_tex.compare_mode: the uniform is a sampler2DShadow, so give "
+                            "\"compare_ref_to_texture\""),
+            std::string::npos) << no_compare;
+  const std::string plain = error_of(with(with(depth, {"textures.u_tex.generate_mipmap=false"}),
+                                          {"textures.u_tex.compare_mode=\"compare_ref_to_texture\""}));
+  EXPECT_NE(plain.find("draws.0.shaders.textures.u_tex.compare_mode: the uniform is a sampler2D, which GL leaves undefined "
+                       "with GL_COMPARE_REF_TO_TEXTURE"),
+            std::string::npos) << plain;
+  const std::string generate = error_of(depth);  // the sweep scene generates mipmaps
+  EXPECT_NE(generate.find("draws.0.shaders.textures.u_tex.generate_mipmap: glGenerateMipmap refuses a depth format "
+                          "(GL_DEPTH_COMPONENT24 is not color-renderable"),
+            std::string::npos) << generate;
+  const std::string swizzle = error_of(with(with(shadow, depth), {"textures.u_tex.compare_mode=\"compare_ref_to_texture\"",
+                                                                  "textures.u_tex.swizzle=[\"red\", \"red\", \"red\", \"one\"]"}));
+  EXPECT_NE(swizzle.find("draws.0.shaders.textures.u_tex.swizzle: tessref does not swizzle a depth comparison's result"),
+            std::string::npos) << swizzle;
+  const std::string func = error_of(with(with(shadow, depth), {"textures.u_tex.compare_mode=\"compare_ref_to_texture\"",
+                                                               "textures.u_tex.compare_func=\"lessequal\""}));
+  EXPECT_NE(func.find("draws.0.shaders.textures.u_tex.compare_func: expected one of never, less, equal, lequal"),
+            std::string::npos) << func;
+  // The same keys right: it draws, and every lookup is a comparison's 0 or 1 or a filtered mix.
+  EXPECT_EQ(error_of(with(with(shadow, depth), {"textures.u_tex.compare_mode=\"compare_ref_to_texture\""})), "no error");
+}
+
+// Depth texels read as llvmpipe converts them: k times the float nearest 1 / (2^b - 1); a float
+// depth as stored; D24S8's stencil byte ignored.
+TEST(TextureFormat, DepthTexelsReadAsKTimesTheReciprocalOfTheirSteps) {
+  const float depths[4] = {0.0f, 1.0f / 3.0f, 0.5f, 1.0f};
+  for (const texture::TexelFormat f : {texture::TexelFormat::kDepth16, texture::TexelFormat::kDepth24,
+                                       texture::TexelFormat::kDepth32F, texture::TexelFormat::kDepth24Stencil8}) {
+    SCOPED_TRACE(texture::info(f).gl_name);
+    float rgba[16] = {};
+    for (int i = 0; i < 4; ++i) rgba[4 * i] = depths[i];
+    const texture::Level level = texture::make_level(f, 4, 1, rgba);
+    const int bits = f == texture::TexelFormat::kDepth16 ? 16 : 24;
+    for (int i = 0; i < 4; ++i) {
+      const float* t = &level.texels[std::size_t(4 * i)];
+      if (f == texture::TexelFormat::kDepth32F) {
+        EXPECT_EQ(t[0], depths[i]);
+      } else {
+        const double k = std::nearbyint(double(depths[i]) * double((1u << bits) - 1u));
+        EXPECT_EQ(t[0], float(k) * float(1.0 / double((1u << bits) - 1u)));
+      }
+      EXPECT_EQ(t[1], 0.0f);
+      EXPECT_EQ(t[2], 0.0f);
+      EXPECT_EQ(t[3], 1.0f);
+    }
+  }
+  // 1/3 in 16 bits is 21845: 21845 * fl(1/65535), which is not the float nearest 1/3.
+  float third[4] = {1.0f / 3.0f, 0, 0, 0};
+  EXPECT_EQ(texture::make_level(texture::TexelFormat::kDepth16, 1, 1, third).texels[0], 21845.0f * float(1.0 / 65535.0));
 }
 
 TEST(TextureScene, IncompleteTextureReadsZeroZeroZeroOneWithAWarning) {

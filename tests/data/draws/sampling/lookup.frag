@@ -59,6 +59,17 @@ void main() {
     }
     case 7: result = vec4(textureQueryLod(u_tex, uv), 0.0, 0.0); break;
     case 8: result = textureProj(u_tex, vec3(uv * step, step)); break;
+    case 10:  // textureGather's component is a constant expression
+      if (pick == 0) result = textureGather(u_tex, uv);
+      else if (pick == 1) result = textureGather(u_tex, uv, 1);
+      else if (pick == 2) result = textureGather(u_tex, uv, 2);
+      else result = textureGather(u_tex, uv, 3);
+      break;
+    case 11:
+      if (pick < 2) result = textureGatherOffset(u_tex, uv, ivec2(-3, 2), 0);
+      else result = textureGatherOffset(u_tex, uv, ivec2(7, -8), 3);
+      break;
+    case 12: result = textureGatherOffsets(u_tex, uv, ivec2[4](ivec2(0, 0), ivec2(-2, 1), ivec2(5, -3), ivec2(-8, 7)), 1); break;
     default: result = vec4(vec2(textureSize(u_tex, u_size_lod)), float(textureQueryLevels(u_tex)), 0.0); break;
   }
 }

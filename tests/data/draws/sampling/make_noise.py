@@ -20,3 +20,10 @@ png(d + '/noise_64x64.png', 64, 64, 4, noise(1))
 png(d + '/noise_24x10.png', 24, 10, 4, noise(2))
 png(d + '/noise_64x64_rgb.png', 64, 64, 3, noise(3))
 png(d + '/noise_64x64_gray.png', 64, 64, 1, noise(4))
+# depth_64x64.exr: depths k / 64 (k in 0..64, exact in every depth format's float reading only at
+# 0 and 1, exact in float everywhere), written as a gray PFM (bottom row first):
+#   oiiotool depth_64x64.pfm -d float --compression zip -o depth_64x64.exr
+def pfm(path, w, h, value):
+    rows = b''.join(struct.pack('<%df' % w, *[value(x, y) for x in range(w)]) for y in range(h))
+    open(path, 'wb').write(b'Pf\n%d %d\n-1.0\n' % (w, h) + rows)
+pfm(d + '/depth_64x64.pfm', 64, 64, lambda x, y: (h(x * 7 + y * 131 + 5) % 65) / 64.0)
