@@ -26,8 +26,10 @@ struct DrawsOutcome {
   DrawStats stats;
 };
 
-DrawsOutcome compare_draws(GlContext& ctx, const std::string& file, const std::vector<std::string>& sets = {}) {
-  const Scene scene = load_scene(std::string(TESSREF_SOURCE_DIR) + "/tests/data/draws/" + file, sets);
+// `path` from the source folder; `file`, its name in messages and written images.
+DrawsOutcome compare_scene(GlContext& ctx, const std::string& path, const std::string& file,
+                           const std::vector<std::string>& sets = {}) {
+  const Scene scene = load_scene(std::string(TESSREF_SOURCE_DIR) + "/" + path, sets);
   std::vector<std::string> warnings;
   const Mesh mesh = build_mesh(scene.mesh, warnings);
   const RenderResult ours = render_scene(scene, mesh, Parallel());
@@ -44,6 +46,10 @@ DrawsOutcome compare_draws(GlContext& ctx, const std::string& file, const std::v
     std::printf("[ figures  ] wrote %s_{diff,tessref,gl}.png\n", base.c_str());
   }
   return out;
+}
+
+DrawsOutcome compare_draws(GlContext& ctx, const std::string& file, const std::vector<std::string>& sets = {}) {
+  return compare_scene(ctx, "tests/data/draws/" + file, file, sets);
 }
 
 // At most `coverage` pixels covered in one image only, and every other pixel within 1/255.
@@ -132,6 +138,39 @@ TEST(DrawsVsLlvmpipe, TerrainFromAHeightMapSampledInTheTes) {
   EXPECT_EQ(o.stats.tess.patches_in, 4u);
   EXPECT_GT(o.stats.raster.fragments_shaded, 20000u);
   expect_matches(o);
+}
+
+// scenes/terrain.json: distance-tessellated quad patches displaced by a mip-mapped GL_R16F height
+// map (textureLod between levels 1 and 2 in the TES), coloured from a mip-mapped GL_RGB8 texture
+// with implicit LOD, shadowed through a GL_DEPTH_COMPONENT24 map with a sampler2DShadow
+// (GL_LEQUAL, GL_LINEAR). Identical coverage; one pixel of 196,608 beyond 1/255 (10/255 in blue,
+// (426, 153) from the bottom): the evaluation shader's positions differ from llvmpipe's by up to
+// 1024 float ulps (its normalize and mix are not tessref's to the bit), so a fragment on a
+// shadow's edge can compare the other way. 61 pixels differ at all.
+TEST(DrawsVsLlvmpipe, TerrainWithMipmapsAndAShadowMap) {
+  TESSREF_REQUIRE_GL(ctx);
+  const DrawsOutcome o = compare_scene(*ctx, "scenes/terrain.json", "terrain_scene.json");
+  EXPECT_EQ(o.stats.tess.patches_in, 16u);
+  EXPECT_GT(o.stats.raster.fragments_shaded, 100000u);
+  EXPECT_EQ(o.within1.coverage_mismatch, 0u) << o.within1.summary();
+  EXPECT_LE(o.within1.pixels - o.within1.within_tolerance, 4u) << o.within1.summary();
+}
+
+// The terrain's shadow map is what tessref draws from scenes/terrain_light.json, bit for bit (the
+// command that wrote it is in that scene's description).
+TEST(DrawsVsLlvmpipe, TerrainShadowMapIsTheLightPassDepth) {
+  const Scene scene = load_scene(std::string(TESSREF_SOURCE_DIR) + "/scenes/terrain_light.json");
+  std::vector<std::string> warnings;
+  const RenderResult light = render_scene(scene, build_mesh(scene.mesh, warnings), Parallel());
+  const FloatImage stored = read_float_image(std::string(TESSREF_SOURCE_DIR) + "/scenes/terrain/shadow_depth.exr");
+  ASSERT_EQ(stored.width, light.framebuffer.width);
+  ASSERT_EQ(stored.height, light.framebuffer.height);
+  std::size_t differ = 0;
+  for (int y = 0; y < stored.height; ++y)
+    for (int x = 0; x < stored.width; ++x)  // the file's top row first, the framebuffer's bottom row
+      differ += stored.pixels[std::size_t((stored.height - 1 - y) * stored.width + x) * std::size_t(stored.channels)] !=
+                light.framebuffer.depth[std::size_t(y * light.framebuffer.width + x)];
+  EXPECT_EQ(differ, 0u);
 }
 
 // Fixed-function state: culling with clockwise front faces, blending (separate alpha factors, a
