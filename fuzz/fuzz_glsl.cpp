@@ -100,7 +100,7 @@ void run(const std::vector<std::uint32_t>& spirv, Stage stage, Words& words) {
     std::vector<float> rgba;
     for (int i = 0; i < 4 * width * height; ++i) rgba.push_back(float(words.next() % 256) / 255.0f);
     const std::uint32_t mode = words.next();
-    t.format = static_cast<texture::TexelFormat>((mode >> 5) % 16);
+    t.format = static_cast<texture::TexelFormat>((mode >> 5) % 30);
     t.levels.push_back(texture::make_level(t.format, width, height, rgba.data()));
     t.sampler.min_filter = static_cast<texture::Filter>((mode >> 9) % 6);
     t.sampler.mag_filter = static_cast<texture::Filter>(mode & 1);

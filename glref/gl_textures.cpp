@@ -56,7 +56,15 @@ GlFormat gl_format(texture::TexelFormat f) {
   const texture::TexelFormatInfo& fi = texture::info(f);
   static constexpr GLenum kByChannels[4] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
   const GLenum format = kByChannels[fi.channels - 1];
-  const GLenum type = fi.type == ChannelType::kFloat32 ? GL_FLOAT : fi.type == ChannelType::kFloat16 ? GL_HALF_FLOAT : GL_UNSIGNED_BYTE;
+  GLenum type = GL_UNSIGNED_BYTE;
+  switch (fi.type) {
+    case ChannelType::kFloat32: type = GL_FLOAT; break;
+    case ChannelType::kFloat16: type = GL_HALF_FLOAT; break;
+    case ChannelType::kUnorm16: type = GL_UNSIGNED_SHORT; break;
+    case ChannelType::kSnorm16: type = GL_SHORT; break;
+    case ChannelType::kSnorm8: type = GL_BYTE; break;
+    default: break;
+  }
   switch (f) {
     case TF::kRgba32F: return {GL_RGBA32F, format, type};
     case TF::kRg32F: return {GL_RG32F, format, type};
@@ -70,6 +78,20 @@ GlFormat gl_format(texture::TexelFormat f) {
     case TF::kR8: return {GL_R8, format, type};
     case TF::kSrgb8Alpha8: return {GL_SRGB8_ALPHA8, format, type};
     case TF::kSrgb8: return {GL_SRGB8, format, type};
+    case TF::kRgba16: return {GL_RGBA16, format, type};
+    case TF::kRgb16: return {GL_RGB16, format, type};
+    case TF::kRg16: return {GL_RG16, format, type};
+    case TF::kR16: return {GL_R16, format, type};
+    case TF::kRgba16Snorm: return {GL_RGBA16_SNORM, format, type};
+    case TF::kRgb16Snorm: return {GL_RGB16_SNORM, format, type};
+    case TF::kRg16Snorm: return {GL_RG16_SNORM, format, type};
+    case TF::kR16Snorm: return {GL_R16_SNORM, format, type};
+    case TF::kRgba8Snorm: return {GL_RGBA8_SNORM, format, type};
+    case TF::kRgb8Snorm: return {GL_RGB8_SNORM, format, type};
+    case TF::kRg8Snorm: return {GL_RG8_SNORM, format, type};
+    case TF::kR8Snorm: return {GL_R8_SNORM, format, type};
+    case TF::kR11fG11fB10f: return {GL_R11F_G11F_B10F, GL_RGB, GL_UNSIGNED_INT_10F_11F_11F_REV};
+    case TF::kRgb9E5: return {GL_RGB9_E5, GL_RGB, GL_UNSIGNED_INT_5_9_9_9_REV};
     // The stored words as tessref wrote them (texture/texel_format.h): no conversion on upload.
     case TF::kDepth16: return {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT};
     case TF::kDepth24: return {GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT};

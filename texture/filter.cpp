@@ -296,8 +296,17 @@ void gather_float(const Level& level, const Axes& axes, const std::array<float, 
 std::array<float, 4> border_color(const Texture& t) {
   std::array<float, 4> b = t.sampler.border;
   const TexelFormatInfo& f = info(t.format);
-  if (f.normalized())
-    for (float& c : b) c = std::min(std::max(c, 0.0f), 1.0f);
+  // Clamped to the format's range (lp_build_clamp_border_color: x86's max then min, NaN to the
+  // bound).
+  float lo = -INFINITY, hi = INFINITY;
+  if (f.unsigned_normalized()) lo = 0.0f, hi = 1.0f;
+  if (f.signed_normalized()) lo = -1.0f, hi = 1.0f;
+  if (f.type == ChannelType::kUfloat11_11_10) lo = 0.0f;
+  if (f.type == ChannelType::kRgb9E5) lo = 0.0f, hi = kMaxRgb9E5;
+  for (float& c : b) {
+    if (lo != -INFINITY) c = max_ps(c, lo);
+    if (hi != INFINITY) c = min_ps(c, hi);
+  }
   // Read through the format, as a texel is: channels it lacks are 0 (green, blue) and 1 (alpha).
   for (int c = f.channels; c < 4; ++c) b[std::size_t(c)] = c == 3 ? 1.0f : 0.0f;
   return b;

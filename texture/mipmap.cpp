@@ -1,6 +1,9 @@
 #include "texture/mipmap.h"
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "common/fixed_point.h"
@@ -13,9 +16,42 @@ namespace {
 // Level k + 1 from level k as Mesa makes it on llvmpipe (util_gen_mipmap): a blit of level k into
 // level k + 1 that samples level k with GL_LINEAR and GL_CLAMP_TO_EDGE at each new texel's
 // centre, through the same sampler as any lookup (8-bit fixed point for 8-bit normalized formats,
-// float otherwise), then stores the result as a render target of the format would: rounded to
-// 8 bits, sRGB-encoded, or a half rounded toward zero (common/fixed_point.h). For an even size
+// float otherwise), then stores the result as llvmpipe's render target of the format stores it
+// (render_target_value). For an even size
 // that is the mean of a 2 x 2 block; an odd size weighs two texels at the centre, not three.
+// The value llvmpipe stores for x in a render target channel of this type, as a float that the
+// format encodes exactly: 8 bits rounded, sRGB encoded, a half rounded toward zero
+// (common/fixed_point.h); 16 bits as lp_build_clamped_float_to_unsigned_norm does it (x times the
+// float nearest 65535/65536, plus 128: the low 16 bits of the sum's significand, rounded to
+// nearest even); signed normalized as round(min(x, 1) * (2^(b-1) - 1)) in float; the 11- and
+// 10-bit floats truncated (lp_build_float_to_smallfloat rounds toward zero). GL_RGB9_E5 is not a
+// render target: Mesa generates its levels on the CPU with GL's shared-exponent equations, which
+// the format's own encoding is.
+float render_target_value(ChannelType type, int channel, float x) {
+  switch (type) {
+    case ChannelType::kFloat16: return fixed::half_round_toward_zero(x);
+    case ChannelType::kSrgb8: return channel < 3 ? fixed::unorm8_to_float(srgb_encode(x)) : x;
+    case ChannelType::kUnorm16: {
+      const float sum = x * static_cast<float>(65535.0 / 65536.0) + 128.0f;
+      return float(std::bit_cast<std::uint32_t>(sum) & 0xffffu) / 65535.0f;
+    }
+    case ChannelType::kSnorm8: case ChannelType::kSnorm16: {
+      const float scale = type == ChannelType::kSnorm8 ? 127.0f : 32767.0f;
+      const float k = std::clamp(std::nearbyint((x < 1.0f ? x : 1.0f) * scale), -scale - 1.0f, scale);
+      return k / scale;
+    }
+    case ChannelType::kUfloat11_11_10: {
+      if (!(x > 0.0f) || std::isinf(x)) return x > 0.0f ? x : 0.0f;
+      const int m = channel < 2 ? 6 : 5;
+      int e = 0;
+      std::frexp(double(x), &e);
+      const int exponent = std::max(e - 1, -14);  // denormals: the exponent of 2^-14
+      return float(std::ldexp(std::floor(std::ldexp(double(x), m - exponent)), exponent - m));
+    }
+    default: return x;
+  }
+}
+
 Level downsample(TexelFormat format, const Level& src, int w, int h) {
   const Axes clamp{{Wrap::ClampToEdge, Wrap::ClampToEdge}, {false, false}};
   const std::array<float, 4> no_border{};
@@ -32,10 +68,7 @@ Level downsample(TexelFormat format, const Level& src, int w, int h) {
         continue;
       }
       filter_float(src, clamp, no_border, FloatFilter::Linear, s, t, 0, 0, nullptr, out);
-      for (int c = 0; c < 4; ++c) {
-        if (type == ChannelType::kFloat16) out[c] = fixed::half_round_toward_zero(out[c]);
-        if (type == ChannelType::kSrgb8 && c < 3) out[c] = fixed::unorm8_to_float(srgb_encode(out[c]));
-      }
+      for (int c = 0; c < 4; ++c) out[c] = render_target_value(type, c, out[c]);
     }
   return make_level(format, w, h, rgba.data());
 }

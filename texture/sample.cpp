@@ -187,7 +187,7 @@ void incomplete(float out[4]) {
 // 4.6 8.23.1), as min(max(D_ref, 0), 1) with x86's min and max (NaN: 0).
 std::optional<DepthCompare> depth_compare(const Texture& t, const float* dref) {
   if (!dref || !t.sampler.compare) return std::nullopt;
-  const float ref = info(t.format).normalized() ? min_ps(max_ps(*dref, 0.0f), 1.0f) : *dref;
+  const float ref = info(t.format).unsigned_normalized() ? min_ps(max_ps(*dref, 0.0f), 1.0f) : *dref;
   return DepthCompare{t.sampler.compare_func, ref};
 }
 

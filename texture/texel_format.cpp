@@ -1,5 +1,6 @@
 #include "texture/texel_format.h"
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -16,7 +17,7 @@ struct Named {
   TexelFormatInfo info;
 };
 
-constexpr std::array<Named, 16> kFormats{{
+constexpr Named kFormats[] = {
     {TexelFormat::kRgba32F, {"GL_RGBA32F", 4, ChannelType::kFloat32}},
     {TexelFormat::kRg32F, {"GL_RG32F", 2, ChannelType::kFloat32}},
     {TexelFormat::kR32F, {"GL_R32F", 1, ChannelType::kFloat32}},
@@ -33,7 +34,22 @@ constexpr std::array<Named, 16> kFormats{{
     {TexelFormat::kDepth24, {"GL_DEPTH_COMPONENT24", 1, ChannelType::kUnorm24, true}},
     {TexelFormat::kDepth32F, {"GL_DEPTH_COMPONENT32F", 1, ChannelType::kFloat32, true}},
     {TexelFormat::kDepth24Stencil8, {"GL_DEPTH24_STENCIL8", 1, ChannelType::kUnorm24, true}},
-}};
+    {TexelFormat::kRgba16, {"GL_RGBA16", 4, ChannelType::kUnorm16}},
+    {TexelFormat::kRgb16, {"GL_RGB16", 3, ChannelType::kUnorm16}},
+    {TexelFormat::kRg16, {"GL_RG16", 2, ChannelType::kUnorm16}},
+    {TexelFormat::kR16, {"GL_R16", 1, ChannelType::kUnorm16}},
+    {TexelFormat::kRgba16Snorm, {"GL_RGBA16_SNORM", 4, ChannelType::kSnorm16}},
+    {TexelFormat::kRgb16Snorm, {"GL_RGB16_SNORM", 3, ChannelType::kSnorm16}},
+    {TexelFormat::kRg16Snorm, {"GL_RG16_SNORM", 2, ChannelType::kSnorm16}},
+    {TexelFormat::kR16Snorm, {"GL_R16_SNORM", 1, ChannelType::kSnorm16}},
+    {TexelFormat::kRgba8Snorm, {"GL_RGBA8_SNORM", 4, ChannelType::kSnorm8}},
+    {TexelFormat::kRgb8Snorm, {"GL_RGB8_SNORM", 3, ChannelType::kSnorm8}},
+    {TexelFormat::kRg8Snorm, {"GL_RG8_SNORM", 2, ChannelType::kSnorm8}},
+    {TexelFormat::kR8Snorm, {"GL_R8_SNORM", 1, ChannelType::kSnorm8}},
+    {TexelFormat::kR11fG11fB10f, {"GL_R11F_G11F_B10F", 3, ChannelType::kUfloat11_11_10}},
+    {TexelFormat::kRgb9E5, {"GL_RGB9_E5", 3, ChannelType::kRgb9E5}},
+};
+static_assert(std::size(kFormats) == std::size_t(TexelFormat::kRgb9E5) + 1, "one entry per TexelFormat");
 
 // An sRGB channel as the sampler decodes it. GL 4.6 equation 8.17 is exact; llvmpipe
 // (lp_build_srgb_to_linear) evaluates a linear segment up to k = 15 and a cubic above it, whose
@@ -49,6 +65,64 @@ float srgb8_texel_to_float(std::uint8_t k) {
   const float x2 = x * x;
   const float even = std::fma(x2, c2, c0), odd = std::fma(x2, c3, c1);
   return std::fma(odd, x, even);
+}
+
+
+// A channel of b bits, signed normalized: clamp to [-1, 1] (NaN to 0), round c * (2^(b-1) - 1).
+std::int32_t snorm_from_float(float c, int bits) {
+  const double clamped = c > -1.0f ? (c < 1.0f ? double(c) : 1.0) : (c <= -1.0f ? -1.0 : 0.0);
+  return std::int32_t(std::nearbyint(clamped * double((1 << (bits - 1)) - 1)));
+}
+// llvmpipe's reading: k times the float nearest 1 / (2^(b-1) - 1), at least -1.
+float snorm_texel_to_float(std::int32_t k, int bits) {
+  const float x = float(k) * static_cast<float>(1.0 / double((1 << (bits - 1)) - 1));
+  return x > -1.0f ? x : -1.0f;
+}
+
+// An unsigned float of 5 exponent bits (bias 15) and m mantissa bits (GL 4.6 2.3.4.3 and 2.3.4.4:
+// 11- and 10-bit): the nearest, ties to even; negative and -0: 0; beyond the largest finite: the
+// largest; NaN and infinity kept.
+std::uint32_t ufloat_from_float(float v, int m) {
+  if (std::isnan(v)) return (31u << m) | 1u;
+  if (!(v > 0.0f)) return 0u;
+  if (std::isinf(v)) return 31u << m;
+  const std::uint32_t largest = (30u << m) | ((1u << m) - 1u);
+  int e = 0;
+  std::frexp(double(v), &e);  // v = f * 2^e, f in [0.5, 1)
+  const int biased = e - 1 + 15;
+  if (biased <= 0)  // a denormal: M / 2^m * 2^-14 (M = 2^m rounds up into exponent 1 exactly)
+    return std::uint32_t(std::nearbyint(std::ldexp(double(v), 14 + m)));
+  const auto scaled = std::uint32_t(std::nearbyint(std::ldexp(double(v), m - (biased - 15))));  // 2^m .. 2^(m+1)
+  return std::min((std::uint32_t(biased) << m) + (scaled - (1u << m)), largest);  // a carry raises the exponent
+}
+float ufloat_to_float(std::uint32_t bits, int m) {
+  const std::uint32_t e = bits >> m, mant = bits & ((1u << m) - 1u);
+  if (e == 31) return mant ? NAN : INFINITY;
+  if (e == 0) return float(std::ldexp(double(mant), -14 - m));
+  return float(std::ldexp(double((1u << m) + mant), int(e) - 15 - m));
+}
+
+// GL 4.6 8.5.2: three channels sharing a 5-bit exponent (bias 15) with 9-bit mantissas, packed as
+// GL_UNSIGNED_INT_5_9_9_9_REV (red in the low bits, the exponent in the top five).
+std::uint32_t rgb9e5_from_float(const float* rgb) {
+  double c[3];
+  for (int k = 0; k < 3; ++k) c[k] = rgb[k] > 0.0f ? std::min(double(rgb[k]), double(kMaxRgb9E5)) : 0.0;  // NaN: 0
+  const double maxc = std::max({c[0], c[1], c[2]});
+  int floor_log2 = -16;  // max(-B - 1, floor(log2(maxc))): -16 also for maxc = 0
+  if (maxc > 0.0) {
+    int e = 0;
+    std::frexp(maxc, &e);
+    floor_log2 = std::max(-16, e - 1);
+  }
+  int exp_shared = floor_log2 + 1 + 15;
+  if (std::floor(maxc / std::ldexp(1.0, exp_shared - 15 - 9) + 0.5) == 512.0) ++exp_shared;
+  std::uint32_t word = std::uint32_t(exp_shared) << 27;
+  for (int k = 0; k < 3; ++k)
+    word |= std::uint32_t(std::floor(c[k] / std::ldexp(1.0, exp_shared - 15 - 9) + 0.5)) << (9 * k);
+  return word;
+}
+float rgb9e5_channel(std::uint32_t word, int k) {
+  return float(std::ldexp(double((word >> (9 * k)) & 511u), int(word >> 27) - 15 - 9));
 }
 
 }  // namespace
@@ -75,6 +149,17 @@ std::vector<std::uint8_t> encode_texels(TexelFormat f, const float* rgba, std::s
   const TexelFormatInfo& fi = info(f);
   std::vector<std::uint8_t> out(texels * std::size_t(fi.bytes_per_texel()));
   std::uint8_t* dst = out.data();
+  if (fi.packed()) {
+    for (std::size_t t = 0; t < texels; ++t) {
+      const float* v = rgba + t * 4;
+      const std::uint32_t word = fi.type == ChannelType::kRgb9E5
+                                     ? rgb9e5_from_float(v)
+                                     : ufloat_from_float(v[0], 6) | ufloat_from_float(v[1], 6) << 11 |
+                                           ufloat_from_float(v[2], 5) << 22;
+      std::memcpy(dst + t * 4, &word, 4);
+    }
+    return out;
+  }
   for (std::size_t t = 0; t < texels; ++t)
     for (int c = 0; c < fi.channels; ++c) {
       const float v = rgba[t * 4 + std::size_t(c)];
@@ -94,6 +179,14 @@ std::vector<std::uint8_t> encode_texels(TexelFormat f, const float* rgba, std::s
           dst += 2;
           break;
         }
+        case ChannelType::kSnorm8: *dst++ = std::uint8_t(std::int8_t(snorm_from_float(v, 8))); break;
+        case ChannelType::kSnorm16: {
+          const auto k = std::int16_t(snorm_from_float(v, 16));
+          std::memcpy(dst, &k, 2);
+          dst += 2;
+          break;
+        }
+        case ChannelType::kUfloat11_11_10: case ChannelType::kRgb9E5: break;  // packed: above
         case ChannelType::kUnorm24: {
           const std::uint32_t k = fixed::unorm_from_float(v, 24);
           const std::uint32_t word = (k << 8) | (f == TexelFormat::kDepth24 ? k >> 16 : 0u);
@@ -115,6 +208,15 @@ std::vector<float> decode_texels(TexelFormat f, const std::vector<std::uint8_t>&
     float* dst = out.data() + t * 4;
     dst[0] = dst[1] = dst[2] = 0.0f;
     dst[3] = 1.0f;
+    if (fi.packed()) {
+      std::uint32_t word;
+      std::memcpy(&word, src, 4);
+      src += 4;
+      for (int c = 0; c < 3; ++c)
+        dst[c] = fi.type == ChannelType::kRgb9E5 ? rgb9e5_channel(word, c)
+                                                 : ufloat_to_float((word >> (11 * c)) & (c < 2 ? 0x7ffu : 0x3ffu), c < 2 ? 6 : 5);
+      continue;
+    }
     for (int c = 0; c < fi.channels; ++c) {
       switch (fi.type) {
         case ChannelType::kFloat32: std::memcpy(&dst[c], src, 4); src += 4; break;
@@ -138,6 +240,15 @@ std::vector<float> decode_texels(TexelFormat f, const std::vector<std::uint8_t>&
           src += 2;
           break;
         }
+        case ChannelType::kSnorm8: dst[c] = snorm_texel_to_float(std::int8_t(*src++), 8); break;
+        case ChannelType::kSnorm16: {
+          std::int16_t k;
+          std::memcpy(&k, src, 2);
+          dst[c] = snorm_texel_to_float(k, 16);
+          src += 2;
+          break;
+        }
+        case ChannelType::kUfloat11_11_10: case ChannelType::kRgb9E5: break;  // packed: above
         case ChannelType::kUnorm24: {
           std::uint32_t word;
           std::memcpy(&word, src, 4);

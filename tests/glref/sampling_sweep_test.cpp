@@ -183,6 +183,17 @@ std::vector<Case> suite_cases() {
   }
   cases.push_back(make_case("noise_64x64.png", "GL_SRGB8_ALPHA8", "linear", "linear", "mirrored_repeat", 10,
                             {"textures.u_tex.swizzle=[\"alpha\", \"zero\", \"one\", \"red\"]"}));
+  // 16-bit, signed normalized and packed float formats: their generated levels (llvmpipe's render
+  // target conversions), implicit LOD and gradients, and a border colour beyond each range.
+  for (const auto& [file, format] : std::vector<std::pair<std::string, std::string>>{
+           {"noise_64x64.png", "GL_RGBA16"},        {"noise_64x64_rgb.png", "GL_RGB16"},
+           {"noise_64x64_gray.png", "GL_R16"},      {"noise_64x64_signed.exr", "GL_RGBA16_SNORM"},
+           {"noise_64x64_signed.exr", "GL_RGBA8_SNORM"}, {"noise_64x64_hdr.exr", "GL_R11F_G11F_B10F"},
+           {"noise_64x64_hdr.exr", "GL_RGB9_E5"}}) {
+    cases.push_back(make_case(file, format, "linear_mipmap_linear", "linear", "repeat", 0));
+    cases.push_back(make_case(file, format, "nearest_mipmap_linear", "linear", "clamp_to_border", 3,
+                              {"textures.u_tex.border_color=[-2, 0.5, 70000, 1.5]"}));
+  }
   // Depth formats read as (d, 0, 0, 1) by a sampler2D.
   for (const char* format : kDepthFormats)
     cases.push_back(make_case("depth_64x64.exr", format, "linear", "nearest", "clamp_to_border", 2,
@@ -207,7 +218,10 @@ std::vector<Case> full_cases() {
   const Format formats[] = {{"noise_64x64.png", "GL_RGBA8"},         {"noise_24x10.png", "GL_RGBA8"},
                             {"noise_64x64.exr", "GL_RGBA32F"},       {"noise_64x64.exr", "GL_RGBA16F"},
                             {"noise_64x64.png", "GL_SRGB8_ALPHA8"},  {"noise_64x64_gray.png", "GL_R8"},
-                            {"noise_64x64_rgb.png", "GL_RGB8"},      {"noise_24x10.png", "GL_RGBA32F"}};
+                            {"noise_64x64_rgb.png", "GL_RGB8"},      {"noise_24x10.png", "GL_RGBA32F"},
+                            {"noise_64x64.png", "GL_RGBA16"},        {"noise_64x64_signed.exr", "GL_RGBA16_SNORM"},
+                            {"noise_64x64_signed.exr", "GL_RGBA8_SNORM"}, {"noise_64x64_hdr.exr", "GL_R11F_G11F_B10F"},
+                            {"noise_64x64_hdr.exr", "GL_RGB9_E5"}};
   std::vector<Case> cases;
   for (const Format& f : formats)
     for (const char* min : {"nearest", "linear", "nearest_mipmap_nearest", "linear_mipmap_nearest",

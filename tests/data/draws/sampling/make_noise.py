@@ -1,5 +1,7 @@
 # Writes the sampling sweep's noise images (8-bit PNG, deterministic): python3 make_noise.py DIR.
 # noise_64x64.exr is noise_64x64.png times 6.1 less 3, as float: oiiotool noise_64x64.png --mulc 6.1 --subc 3 -d float --compression zip -o noise_64x64.exr
+# noise_64x64_signed.exr (for the signed normalized formats): oiiotool noise_64x64.png --mulc 2 --subc 1 -d float --compression zip -o noise_64x64_signed.exr
+# noise_64x64_hdr.exr (for the packed float formats): oiiotool noise_64x64_rgb.png --mulc 40 -d float --compression zip -o noise_64x64_hdr.exr
 import struct, zlib, sys
 def png(path, w, h, channels, pixel):
     raw = b''
