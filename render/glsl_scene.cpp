@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstring>
+#include <iterator>
 #include <fstream>
 #include <mutex>
 #include <optional>
@@ -378,6 +380,41 @@ std::vector<float> rgba_rows(const FloatImage& image, bool gray_to_rgb) {
 
 }  // namespace
 
+namespace {
+
+// Level k of a texture whose level 0 is w x h, from a file of raw texel bytes in format f.
+texture::Level read_raw_level(const std::filesystem::path& file, texture::TexelFormat f, int w, int h, int k,
+                              const std::string& at) {
+  const texture::TexelFormatInfo& fi = texture::info(f);
+  if (k > 0 && std::max(w, h) >> k == 0)
+    throw InputError(at + ": a " + std::to_string(w) + "x" + std::to_string(h) + " texture has no level " + std::to_string(k));
+  texture::Level level;
+  level.width = std::max(1, w >> k);
+  level.height = std::max(1, h >> k);
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(at + ": cannot open " + file.string());
+  level.stored.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  const std::size_t want = std::size_t(level.width) * std::size_t(level.height) * std::size_t(fi.bytes_per_texel());
+  if (level.stored.size() != want)
+    throw InputError(at + ": " + file.string() + " has " + std::to_string(level.stored.size()) + " bytes, and level " +
+                     std::to_string(k) + " of " + fi.gl_name + " is " + std::to_string(level.width) + "x" +
+                     std::to_string(level.height) + " texels of " + std::to_string(fi.bytes_per_texel()) + " bytes: " +
+                     std::to_string(want) + " (raw_size)");
+  // GL_DEPTH_COMPONENT24 words as GL_UNSIGNED_INT: the top 24 bits are the depth; the low byte is
+  // made to repeat them, so the driver's conversion cannot round differently.
+  if (f == texture::TexelFormat::kDepth24)
+    for (std::size_t i = 0; i + 4 <= level.stored.size(); i += 4) {
+      std::uint32_t word;
+      std::memcpy(&word, &level.stored[i], 4);
+      word = (word & 0xffffff00u) | (word >> 24);
+      std::memcpy(&level.stored[i], &word, 4);
+    }
+  level.texels = texture::decode_texels(f, level.stored);
+  return level;
+}
+
+}  // namespace
+
 texture::Texture load_texture(const TextureSetting& t, const std::string& key) {
   texture::Texture tex;
   tex.format = t.format.value_or(texture::TexelFormat::kRgba32F);
@@ -385,6 +422,10 @@ texture::Texture load_texture(const TextureSetting& t, const std::string& key) {
   int width0 = 0, height0 = 0;
   for (std::size_t k = 0; k < t.levels.size(); ++k) {
     const std::string at = t.levels.size() > 1 ? key + ".levels." + std::to_string(k) : key;
+    if (t.raw_size) {
+      tex.levels.push_back(read_raw_level(t.levels[k], tex.format, (*t.raw_size)[0], (*t.raw_size)[1], int(k), at));
+      continue;
+    }
     FloatImage image;
     try {
       image = read_float_image(t.levels[k]);

@@ -96,6 +96,9 @@ struct TextureSetting {
   // GL_RGBA32F from any image when absent (the image's gray expanded to RGB); else the file's
   // channels must be the format's.
   std::optional<texture::TexelFormat> format;
+  // raw_size: the files are the format's bytes as glTexSubImage2D takes them (GL_UNPACK_ALIGNMENT
+  // 1, the bottom row first), level 0 this many texels wide and high; else image files.
+  std::optional<std::array<int, 2>> raw_size;
   bool generate_mipmaps = false;  // glGenerateMipmap after level 0 is given
   // The file's levels are all the texture has unless generate_mipmaps: its storage then has
   // every level down to 1 x 1.

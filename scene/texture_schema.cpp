@@ -93,6 +93,17 @@ TextureSetting read_texture_setting(const std::string& name, const nlohmann::jso
     t.format = texture::parse_texel_format(f);
     if (!t.format) o.fail("internalformat", "expected one of " + texture::texel_format_names() + ", got \"" + f + "\"");
   }
+  if (o.has("raw_size")) {
+    o.describe("raw_size", "[width, height]: the files are raw texel bytes of internalformat, level 0 this size");
+    const nlohmann::json& size = o.value("raw_size");
+    if (!size.is_array() || size.size() != 2 || !size[0].is_number_integer() || !size[1].is_number_integer() ||
+        size[0].get<long long>() < 1 || size[1].get<long long>() < 1 || size[0].get<long long>() > 16384 ||
+        size[1].get<long long>() > 16384)
+      o.fail("raw_size", "expected [width, height], whole numbers from 1 to 16384 (GL_MAX_TEXTURE_SIZE), got " +
+                             describe_json(size));
+    if (!t.format) o.fail("raw_size", "raw texel bytes need the internalformat that lays them out");
+    t.raw_size = std::array<int, 2>{size[0].get<int>(), size[1].get<int>()};
+  }
   if (o.has("generate_mipmap")) {
     t.generate_mipmaps = o.boolean("generate_mipmap");
     if (t.generate_mipmaps && t.levels.size() > 1)

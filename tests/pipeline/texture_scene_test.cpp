@@ -13,6 +13,7 @@
 
 #include "common/error.h"
 #include "mesh/mesh_source.h"
+#include "render/glsl_scene.h"
 #include "render/render.h"
 #include "scene/scene_loader.h"
 #include "texture/mipmap.h"
@@ -149,6 +150,30 @@ TEST(TextureFormat, DepthTexelsReadAsKTimesTheReciprocalOfTheirSteps) {
   // 1/3 in 16 bits is 21845: 21845 * fl(1/65535), which is not the float nearest 1/3.
   float third[4] = {1.0f / 3.0f, 0, 0, 0};
   EXPECT_EQ(texture::make_level(texture::TexelFormat::kDepth16, 1, 1, third).texels[0], 21845.0f * float(1.0 / 65535.0));
+}
+
+// Raw texel bytes (raw_size): the PNG's texels written as GL_RGBA8 bytes, bottom row first, draw
+// the same image as the PNG; a file of the wrong size is an error naming the key and the sizes.
+TEST(TextureScene, RawTexelBytesDrawAsTheImageTheyCameFrom) {
+  const Scene scene = load_scene(kSweep);
+  std::vector<std::string> warnings;
+  const texture::Texture from_png = load_texture(scene.draws[0].shaders->textures[0], "png");
+  const std::filesystem::path raw = std::filesystem::temp_directory_path() / "tessref_raw_rgba8.bin";
+  {
+    std::ofstream out(raw, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(from_png.levels[0].stored.data()), std::streamsize(from_png.levels[0].stored.size()));
+  }
+  const std::vector<std::string> sets = {"textures.u_tex.path=\"" + raw.string() + "\"", "textures.u_tex.raw_size=[64, 64]"};
+  const RenderResult a = render_sweep({}), b = render_sweep(sets);
+  EXPECT_EQ(a.framebuffer.color, b.framebuffer.color);
+  const std::string wrong = error_of({"textures.u_tex.path=\"" + raw.string() + "\"", "textures.u_tex.raw_size=[64, 32]"});
+  EXPECT_NE(wrong.find("draws.0.shaders.textures.u_tex: " + raw.string() + " has 16384 bytes, and level 0 of GL_RGBA8 is "
+                       "64x32 texels of 4 bytes: 8192 (raw_size)"),
+            std::string::npos) << wrong;
+  const std::string zero = error_of({"textures.u_tex.raw_size=[0, 64]"});
+  EXPECT_NE(zero.find("draws.0.shaders.textures.u_tex.raw_size: expected [width, height], whole numbers from 1 to 16384"),
+            std::string::npos) << zero;
+  std::filesystem::remove(raw);
 }
 
 TEST(TextureScene, IncompleteTextureReadsZeroZeroZeroOneWithAWarning) {
