@@ -101,10 +101,27 @@ GlFormat gl_format(texture::TexelFormat f) {
   return {GL_RGBA32F, GL_RGBA, GL_FLOAT};
 }
 
+// glTexParameter or glSamplerParameter of every sampler state value, through `i`, `f` and `border`.
+template <class SetI, class SetF, class SetBorder>
+void set_sampler_state(const texture::SamplerState& s, SetI i, SetF f, SetBorder border) {
+  i(GL_TEXTURE_MIN_FILTER, gl_filter(s.min_filter));
+  i(GL_TEXTURE_MAG_FILTER, gl_filter(s.mag_filter));
+  i(GL_TEXTURE_WRAP_S, gl_wrap(s.wrap_s));
+  i(GL_TEXTURE_WRAP_T, gl_wrap(s.wrap_t));
+  border(s.border.data());
+  f(GL_TEXTURE_MIN_LOD, s.min_lod);
+  f(GL_TEXTURE_MAX_LOD, s.max_lod);
+  f(GL_TEXTURE_LOD_BIAS, s.lod_bias);
+  i(GL_TEXTURE_COMPARE_MODE, s.compare ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
+  static constexpr GLint kFuncs[] = {GL_NEVER, GL_LESS, GL_EQUAL, GL_LEQUAL, GL_GREATER, GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS};
+  i(GL_TEXTURE_COMPARE_FUNC, kFuncs[int(s.compare_func)]);
+}
+
 }  // namespace
 
 GlTextures::GlTextures(const std::string& scene_source, const ShaderSettings& shaders) : shaders_(shaders) {
   ids_.resize(shaders.textures.size());
+  samplers_.assign(shaders.textures.size(), 0u);
   if (ids_.empty()) return;
   glGenTextures(GLsizei(ids_.size()), ids_.data());
   for (std::size_t k = 0; k < ids_.size(); ++k) {
@@ -126,21 +143,21 @@ GlTextures::GlTextures(const std::string& scene_source, const ShaderSettings& sh
     if (t.generate_mipmaps) glGenerateMipmap(GL_TEXTURE_2D);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, tex.base_level);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, tex.max_level);
-    const texture::SamplerState& s = tex.sampler;
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, gl_filter(s.min_filter));
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, gl_filter(s.mag_filter));
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, gl_wrap(s.wrap_s));
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, gl_wrap(s.wrap_t));
-    glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, s.border.data());
-    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD, s.min_lod);
-    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LOD, s.max_lod);
-    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, s.lod_bias);
+    // The texture's own sampler state; a sampler object's, when the scene binds one, overrides it.
+    set_sampler_state(t.sampler_state, [](GLenum p, GLint v) { glTexParameteri(GL_TEXTURE_2D, p, v); },
+                      [](GLenum p, GLfloat v) { glTexParameterf(GL_TEXTURE_2D, p, v); },
+                      [](const GLfloat* c) { glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, c); });
     const GLint swizzle[4] = {gl_swizzle(tex.swizzle[0]), gl_swizzle(tex.swizzle[1]), gl_swizzle(tex.swizzle[2]),
                               gl_swizzle(tex.swizzle[3])};
     glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, s.compare ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
-    static constexpr GLint kFuncs[] = {GL_NEVER, GL_LESS, GL_EQUAL, GL_LEQUAL, GL_GREATER, GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS};
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, kFuncs[int(s.compare_func)]);
+    if (t.sampler_object) {
+      GLuint sampler = 0;
+      glGenSamplers(1, &sampler);
+      samplers_[k] = sampler;
+      set_sampler_state(*t.sampler_object, [sampler](GLenum p, GLint v) { glSamplerParameteri(sampler, p, v); },
+                        [sampler](GLenum p, GLfloat v) { glSamplerParameterf(sampler, p, v); },
+                        [sampler](const GLfloat* c) { glSamplerParameterfv(sampler, GL_TEXTURE_BORDER_COLOR, c); });
+    }
   }
   glBindTexture(GL_TEXTURE_2D, 0);
   check_gl("GlTextures: uploading shaders.textures");
@@ -148,6 +165,8 @@ GlTextures::GlTextures(const std::string& scene_source, const ShaderSettings& sh
 
 GlTextures::~GlTextures() {
   if (!ids_.empty()) glDeleteTextures(GLsizei(ids_.size()), ids_.data());
+  for (unsigned sampler : samplers_)
+    if (sampler) glDeleteSamplers(1, &sampler);
 }
 
 void GlTextures::set_samplers(unsigned program) const {
@@ -162,6 +181,7 @@ void GlTextures::bind() const {
   for (std::size_t k = 0; k < ids_.size(); ++k) {
     glActiveTexture(GLenum(GL_TEXTURE0 + k));
     glBindTexture(GL_TEXTURE_2D, ids_[k]);
+    glBindSampler(GLuint(k), samplers_[k]);
   }
   glActiveTexture(GL_TEXTURE0);
 }

@@ -20,12 +20,13 @@ class GlTextures {
 
   // Sets the program's sampler uniforms to their units (after linking, the program in use).
   void set_samplers(unsigned program) const;
-  // Binds every texture to its unit, before a draw.
+  // Binds every texture (and sampler object) to its unit, before a draw.
   void bind() const;
 
  private:
   const ShaderSettings& shaders_;
   std::vector<unsigned> ids_;
+  std::vector<unsigned> samplers_;  // a sampler object per unit, 0 for none
 };
 
 }  // namespace tessref::glref

@@ -458,7 +458,7 @@ texture::Texture load_texture(const TextureSetting& t, const std::string& key) {
   }
   // glGenerateMipmap right after level 0 is uploaded, before any glTexParameter: every level.
   if (t.generate_mipmaps) texture::generate_mipmaps(tex);
-  tex.sampler = t.sampler_state;
+  tex.sampler = t.sampler_object.value_or(t.sampler_state);
   tex.base_level = t.base_level;
   tex.max_level = t.max_level;
   tex.swizzle = t.swizzle;

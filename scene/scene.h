@@ -103,6 +103,8 @@ struct TextureSetting {
   // The file's levels are all the texture has unless generate_mipmaps: its storage then has
   // every level down to 1 x 1.
   texture::SamplerState sampler_state{texture::Filter::Linear, texture::Filter::Linear};
+  // A sampler object bound to the unit (glBindSampler): its state replaces sampler_state.
+  std::optional<texture::SamplerState> sampler_object;
   int base_level = 0, max_level = 1000;
   std::array<texture::Swizzle, 4> swizzle{texture::Swizzle::Red, texture::Swizzle::Green, texture::Swizzle::Blue,
                                           texture::Swizzle::Alpha};

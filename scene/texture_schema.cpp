@@ -57,6 +57,26 @@ Enum choice(JsonObject& o, const std::string& key, const std::array<std::pair<co
   o.fail(key, "expected one of " + names(table, count) + ", got \"" + s + "\"");
 }
 
+// The sampler state keys of a texture, or of a sampler object (glSamplerParameter).
+void read_sampler_state(JsonObject& o, texture::SamplerState& s) {
+  // filter and wrap set both filters and both wraps; the specific keys override them.
+  if (o.has("filter")) s.min_filter = s.mag_filter = choice(o, "filter", kFilters, 2);
+  if (o.has("min_filter")) s.min_filter = choice(o, "min_filter", kFilters);
+  if (o.has("mag_filter")) s.mag_filter = choice(o, "mag_filter", kFilters, 2);
+  if (o.has("wrap")) s.wrap_s = s.wrap_t = choice(o, "wrap", kWraps);
+  if (o.has("wrap_s")) s.wrap_s = choice(o, "wrap_s", kWraps);
+  if (o.has("wrap_t")) s.wrap_t = choice(o, "wrap_t", kWraps);
+  if (o.has("border_color")) {
+    const glm::vec4 b = o.rgba("border_color");
+    s.border = {b.r, b.g, b.b, b.a};
+  }
+  if (o.has("min_lod")) s.min_lod = o.number("min_lod");
+  if (o.has("max_lod")) s.max_lod = o.number("max_lod");
+  if (o.has("lod_bias")) s.lod_bias = o.number("lod_bias");
+  if (o.has("compare_mode")) s.compare = choice(o, "compare_mode", kCompareModes);
+  if (o.has("compare_func")) s.compare_func = choice(o, "compare_func", kCompareFuncs);
+}
+
 }  // namespace
 
 TextureSetting read_texture_setting(const std::string& name, const nlohmann::json& value, const std::string& path,
@@ -113,21 +133,17 @@ TextureSetting read_texture_setting(const std::string& name, const nlohmann::jso
       o.fail("generate_mipmap", std::string("glGenerateMipmap refuses a depth format (") + texture::info(*t.format).gl_name +
                                     " is not color-renderable, GL 4.6 8.14.4): give its levels");
   }
-  texture::SamplerState& s = t.sampler_state;
-  // filter and wrap set both filters and both wraps; the specific keys override them.
-  if (o.has("filter")) s.min_filter = s.mag_filter = choice(o, "filter", kFilters, 2);
-  if (o.has("min_filter")) s.min_filter = choice(o, "min_filter", kFilters);
-  if (o.has("mag_filter")) s.mag_filter = choice(o, "mag_filter", kFilters, 2);
-  if (o.has("wrap")) s.wrap_s = s.wrap_t = choice(o, "wrap", kWraps);
-  if (o.has("wrap_s")) s.wrap_s = choice(o, "wrap_s", kWraps);
-  if (o.has("wrap_t")) s.wrap_t = choice(o, "wrap_t", kWraps);
-  if (o.has("border_color")) {
-    const glm::vec4 b = o.rgba("border_color");
-    s.border = {b.r, b.g, b.b, b.a};
+  read_sampler_state(o, t.sampler_state);
+  if (o.has("sampler")) {
+    // glBindSampler: a sampler object's state replaces the texture's, from GL's initial values.
+    o.describe("sampler", "a sampler object bound to the texture's unit (glBindSampler): its own filter, wrap, "
+                          "border_color, LOD and compare keys, from GL's initial values, override the texture's");
+    JsonObject so(o.value("sampler"), path + ".sampler", source);
+    texture::SamplerState state;  // GL's initial sampler object state
+    read_sampler_state(so, state);
+    so.finish();
+    t.sampler_object = state;
   }
-  if (o.has("min_lod")) s.min_lod = o.number("min_lod");
-  if (o.has("max_lod")) s.max_lod = o.number("max_lod");
-  if (o.has("lod_bias")) s.lod_bias = o.number("lod_bias");
   if (o.has("base_level")) t.base_level = o.integer("base_level", 0, 1000);
   if (o.has("max_level")) t.max_level = o.integer("max_level", 0, 1000);
   if (o.has("swizzle")) {
@@ -141,9 +157,8 @@ TextureSetting read_texture_setting(const std::string& name, const nlohmann::jso
       if (!found) o.fail("swizzle." + std::to_string(c), "expected one of " + names(kSwizzles) + ", got " + describe_json(sw[c]));
     }
   }
-  if (o.has("compare_mode")) s.compare = choice(o, "compare_mode", kCompareModes);
-  if (o.has("compare_func")) s.compare_func = choice(o, "compare_func", kCompareFuncs);
-  if (s.compare && o.has("swizzle"))
+  const bool compare = t.sampler_object ? t.sampler_object->compare : t.sampler_state.compare;
+  if (compare && o.has("swizzle"))
     o.fail("swizzle", "tessref does not swizzle a depth comparison's result (GL_TEXTURE_COMPARE_MODE is "
                       "GL_COMPARE_REF_TO_TEXTURE): leave the swizzle out");
   o.finish();

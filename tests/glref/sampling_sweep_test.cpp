@@ -174,6 +174,10 @@ std::vector<Case> suite_cases() {
   cases.push_back(state(0, {"textures.u_tex.min_lod=2", "textures.u_tex.max_lod=2"}));
   cases.push_back(state(1, {"textures.u_tex.swizzle=[\"blue\", \"zero\", \"red\", \"one\"]",
                             "textures.u_tex.border_color=[0.25, 1.5, -1, 0.5]"}));
+  // A sampler object (glBindSampler) overriding the texture's state, from GL's initial values.
+  cases.push_back(make_case("noise_64x64.png", "GL_RGBA8", "nearest", "nearest", "repeat", 1,
+                            {"textures.u_tex.sampler={\"min_filter\": \"linear_mipmap_nearest\", \"wrap_s\": "
+                             "\"mirrored_repeat\", \"lod_bias\": 0.5}"}));
   // textureGather, with offsets, on both paths, a size that is not a power of two, the border and
   // a swizzle (the component is taken through it).
   for (int f : {10, 11, 12}) {
