@@ -439,8 +439,7 @@ texture::Texture load_texture(const TextureSetting& t, const std::string& key) {
     if (k == 0) {
       width0 = image.width;
       height0 = image.height;
-      // GL_MAX_TEXTURE_SIZE on llvmpipe; the sampler's fixed-point coordinates need it.
-      constexpr int kMaxTextureSize = 16384;
+      using texture::kMaxTextureSize;
       if (width0 > kMaxTextureSize || height0 > kMaxTextureSize)
         throw InputError(at + ": " + t.levels[k].string() + " is " + std::to_string(width0) + "x" + std::to_string(height0) +
                          ", more than GL_MAX_TEXTURE_SIZE (" + std::to_string(kMaxTextureSize) + ")");

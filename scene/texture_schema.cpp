@@ -116,11 +116,12 @@ TextureSetting read_texture_setting(const std::string& name, const nlohmann::jso
   if (o.has("raw_size")) {
     o.describe("raw_size", "[width, height]: the files are raw texel bytes of internalformat, level 0 this size");
     const nlohmann::json& size = o.value("raw_size");
-    if (!size.is_array() || size.size() != 2 || !size[0].is_number_integer() || !size[1].is_number_integer() ||
-        size[0].get<long long>() < 1 || size[1].get<long long>() < 1 || size[0].get<long long>() > 16384 ||
-        size[1].get<long long>() > 16384)
-      o.fail("raw_size", "expected [width, height], whole numbers from 1 to 16384 (GL_MAX_TEXTURE_SIZE), got " +
-                             describe_json(size));
+    auto side = [](const nlohmann::json& v) {
+      return v.is_number_integer() && v.get<long long>() >= 1 && v.get<long long>() <= texture::kMaxTextureSize;
+    };
+    if (!size.is_array() || size.size() != 2 || !side(size[0]) || !side(size[1]))
+      o.fail("raw_size", "expected [width, height], whole numbers from 1 to " + std::to_string(texture::kMaxTextureSize) +
+                             " (GL_MAX_TEXTURE_SIZE), got " + describe_json(size));
     if (!t.format) o.fail("raw_size", "raw texel bytes need the internalformat that lays them out");
     t.raw_size = std::array<int, 2>{size[0].get<int>(), size[1].get<int>()};
   }

@@ -307,6 +307,8 @@ void Runner::texture(const XIns& x) {
   };
   auto irow = [&](std::uint32_t r, std::uint32_t c, int l) { return std::int32_t(row<std::uint32_t>(r, c)[l]); };
   auto frow = [&](std::uint32_t r, std::uint32_t c, int l) { return row<float>(r, c)[l]; };
+  // textureOffset's (or texelFetchOffset's) component c: 0 without one.
+  auto offset = [&](std::uint32_t c, int l) { return op.offset == kNone ? 0 : irow(op.offset, c, l); };
 
   if (op.kind == Kind::QuerySize || op.kind == Kind::QueryLevels) {
     for (int l = 0; l < n; ++l) {
@@ -323,9 +325,8 @@ void Runner::texture(const XIns& x) {
     for (int l = 0; l < n; ++l) {
       if (!mask[l]) continue;
       float texel[4];
-      const int ox = op.offset == kNone ? 0 : irow(op.offset, 0, l), oy = op.offset == kNone ? 0 : irow(op.offset, 1, l);
       // The offset is added in 64 bits by fetch's bounds check: no overflow at INT_MAX.
-      const std::int64_t i = std::int64_t(irow(op.coord, 0, l)) + ox, j = std::int64_t(irow(op.coord, 1, l)) + oy;
+      const std::int64_t i = std::int64_t(irow(op.coord, 0, l)) + offset(0, l), j = std::int64_t(irow(op.coord, 1, l)) + offset(1, l);
       const bool inside = i >= 0 && j >= 0 && i <= 0x7fffffff && j <= 0x7fffffff;
       // Outside int's range: a texel no level has.
       texture::fetch(tex(l), inside ? int(i) : -1, inside ? int(j) : -1, op.lod == kNone ? 0 : irow(op.lod, 0, l), texel);
@@ -362,8 +363,7 @@ void Runner::texture(const XIns& x) {
           texel[k] = one[3];
         }
       } else {
-        const int ox = op.offset == kNone ? 0 : irow(op.offset, 0, l), oy = op.offset == kNone ? 0 : irow(op.offset, 1, l);
-        texture::gather(tex(l), s[l], t[l], ox, oy, component, shadow ? &dref[l] : nullptr, texel);
+        texture::gather(tex(l), s[l], t[l], offset(0, l), offset(1, l), component, shadow ? &dref[l] : nullptr, texel);
       }
       for (std::uint32_t c = 0; c < x.n; ++c) row<float>(x.dst, c)[l] = texel[c];
     }
@@ -427,8 +427,7 @@ void Runner::texture(const XIns& x) {
       continue;
     }
     float texel[4];
-    const int ox = op.offset == kNone ? 0 : irow(op.offset, 0, l), oy = op.offset == kNone ? 0 : irow(op.offset, 1, l);
-    texture::sample(tex(l), s[l], t[l], in, ox, oy, shadow ? &dref[l] : nullptr, texel, vector_linear[l]);
+    texture::sample(tex(l), s[l], t[l], in, offset(0, l), offset(1, l), shadow ? &dref[l] : nullptr, texel, vector_linear[l]);
     for (std::uint32_t c = 0; c < x.n; ++c) row<float>(x.dst, c)[l] = texel[c];
   }
 }

@@ -13,12 +13,6 @@
 namespace tessref::texture {
 namespace {
 
-// Level k + 1 from level k as Mesa makes it on llvmpipe (util_gen_mipmap): a blit of level k into
-// level k + 1 that samples level k with GL_LINEAR and GL_CLAMP_TO_EDGE at each new texel's
-// centre, through the same sampler as any lookup (8-bit fixed point for 8-bit normalized formats,
-// float otherwise), then stores the result as llvmpipe's render target of the format stores it
-// (render_target_value). For an even size
-// that is the mean of a 2 x 2 block; an odd size weighs two texels at the centre, not three.
 // The value llvmpipe stores for x in a render target channel of this type, as a float that the
 // format encodes exactly: 8 bits rounded, sRGB encoded, a half rounded toward zero
 // (common/fixed_point.h); 16 bits as lp_build_clamped_float_to_unsigned_norm does it (x times the
@@ -52,6 +46,12 @@ float render_target_value(ChannelType type, int channel, float x) {
   }
 }
 
+// Level k + 1 from level k as Mesa makes it on llvmpipe (util_gen_mipmap): a blit of level k into
+// level k + 1 that samples level k with GL_LINEAR and GL_CLAMP_TO_EDGE at each new texel's
+// centre, through the same sampler as any lookup (8-bit fixed point for 8-bit normalized formats,
+// float otherwise), then stores the result as llvmpipe's render target of the format stores it
+// (render_target_value). For an even size that is the mean of a 2 x 2 block; an odd size weighs
+// two texels at the centre, not three.
 Level downsample(TexelFormat format, const Level& src, int w, int h) {
   const Axes clamp{{Wrap::ClampToEdge, Wrap::ClampToEdge}, {false, false}};
   const std::array<float, 4> no_border{};

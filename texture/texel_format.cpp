@@ -67,10 +67,9 @@ float srgb8_texel_to_float(std::uint8_t k) {
   return std::fma(odd, x, even);
 }
 
-
 // A channel of b bits, signed normalized: clamp to [-1, 1] (NaN to 0), round c * (2^(b-1) - 1).
 std::int32_t snorm_from_float(float c, int bits) {
-  const double clamped = c > -1.0f ? (c < 1.0f ? double(c) : 1.0) : (c <= -1.0f ? -1.0 : 0.0);
+  const double clamped = std::isnan(c) ? 0.0 : std::clamp(double(c), -1.0, 1.0);
   return std::int32_t(std::nearbyint(clamped * double((1 << (bits - 1)) - 1)));
 }
 // llvmpipe's reading: k times the float nearest 1 / (2^(b-1) - 1), at least -1.

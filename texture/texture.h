@@ -23,6 +23,9 @@ enum class CompareFunc { Never, Less, Equal, Lequal, Greater, Notequal, Gequal, 
 // GL_TEXTURE_SWIZZLE_R/G/B/A: which component (or constant) each result component reads.
 enum class Swizzle : std::uint8_t { Red, Green, Blue, Alpha, Zero, One };
 
+// GL_MAX_TEXTURE_SIZE on llvmpipe; the sampler's fixed-point coordinates rely on it.
+inline constexpr int kMaxTextureSize = 16384;
+
 const char* gl_name(Filter f);
 const char* gl_name(CompareFunc f);
 // p of GL 4.6 8.17: the last level of a full mip chain whose level `base` is w x h.
