@@ -47,6 +47,14 @@ GLint gl_swizzle(texture::Swizzle s) {
   return GL_RED;
 }
 
+// One callable of several lambdas, chosen by argument type.
+template <class... F>
+struct Overloads : F... {
+  using F::operator()...;
+};
+template <class... F>
+Overloads(F...) -> Overloads<F...>;
+
 struct GlFormat {
   GLenum internal, format, type;
 };
@@ -55,14 +63,17 @@ GlFormat gl_format(texture::TexelFormat f) {
   using TF = texture::TexelFormat;
   const texture::TexelFormatInfo& fi = texture::info(f);
   static constexpr GLenum kByChannels[4] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
-  const GLenum format = kByChannels[fi.channels - 1];
+  static constexpr GLenum kIntegerByChannels[4] = {GL_RED_INTEGER, GL_RG_INTEGER, GL_RGB_INTEGER, GL_RGBA_INTEGER};
+  const GLenum format = (fi.integer() ? kIntegerByChannels : kByChannels)[fi.channels - 1];
   GLenum type = GL_UNSIGNED_BYTE;
   switch (fi.type) {
     case ChannelType::kFloat32: type = GL_FLOAT; break;
     case ChannelType::kFloat16: type = GL_HALF_FLOAT; break;
-    case ChannelType::kUnorm16: type = GL_UNSIGNED_SHORT; break;
-    case ChannelType::kSnorm16: type = GL_SHORT; break;
-    case ChannelType::kSnorm8: type = GL_BYTE; break;
+    case ChannelType::kUnorm16: case ChannelType::kUint16: type = GL_UNSIGNED_SHORT; break;
+    case ChannelType::kSnorm16: case ChannelType::kSint16: type = GL_SHORT; break;
+    case ChannelType::kSnorm8: case ChannelType::kSint8: type = GL_BYTE; break;
+    case ChannelType::kSint32: type = GL_INT; break;
+    case ChannelType::kUint32: type = GL_UNSIGNED_INT; break;
     default: break;
   }
   switch (f) {
@@ -92,6 +103,31 @@ GlFormat gl_format(texture::TexelFormat f) {
     case TF::kR8Snorm: return {GL_R8_SNORM, format, type};
     case TF::kR11fG11fB10f: return {GL_R11F_G11F_B10F, GL_RGB, GL_UNSIGNED_INT_10F_11F_11F_REV};
     case TF::kRgb9E5: return {GL_RGB9_E5, GL_RGB, GL_UNSIGNED_INT_5_9_9_9_REV};
+    case TF::kRgba8I: return {GL_RGBA8I, format, type};
+    case TF::kRgb8I: return {GL_RGB8I, format, type};
+    case TF::kRg8I: return {GL_RG8I, format, type};
+    case TF::kR8I: return {GL_R8I, format, type};
+    case TF::kRgba8Ui: return {GL_RGBA8UI, format, type};
+    case TF::kRgb8Ui: return {GL_RGB8UI, format, type};
+    case TF::kRg8Ui: return {GL_RG8UI, format, type};
+    case TF::kR8Ui: return {GL_R8UI, format, type};
+    case TF::kRgba16I: return {GL_RGBA16I, format, type};
+    case TF::kRgb16I: return {GL_RGB16I, format, type};
+    case TF::kRg16I: return {GL_RG16I, format, type};
+    case TF::kR16I: return {GL_R16I, format, type};
+    case TF::kRgba16Ui: return {GL_RGBA16UI, format, type};
+    case TF::kRgb16Ui: return {GL_RGB16UI, format, type};
+    case TF::kRg16Ui: return {GL_RG16UI, format, type};
+    case TF::kR16Ui: return {GL_R16UI, format, type};
+    case TF::kRgba32I: return {GL_RGBA32I, format, type};
+    case TF::kRgb32I: return {GL_RGB32I, format, type};
+    case TF::kRg32I: return {GL_RG32I, format, type};
+    case TF::kR32I: return {GL_R32I, format, type};
+    case TF::kRgba32Ui: return {GL_RGBA32UI, format, type};
+    case TF::kRgb32Ui: return {GL_RGB32UI, format, type};
+    case TF::kRg32Ui: return {GL_RG32UI, format, type};
+    case TF::kR32Ui: return {GL_R32UI, format, type};
+    case TF::kRgb10A2Ui: return {GL_RGB10_A2UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT_2_10_10_10_REV};
     // The stored words as tessref wrote them (texture/texel_format.h): no conversion on upload.
     case TF::kDepth16: return {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT};
     case TF::kDepth24: return {GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT};
@@ -101,14 +137,25 @@ GlFormat gl_format(texture::TexelFormat f) {
   return {GL_RGBA32F, GL_RGBA, GL_FLOAT};
 }
 
-// glTexParameter or glSamplerParameter of every sampler state value, through `i`, `f` and `border`.
+// glTexParameter or glSamplerParameter of every sampler state value, through `i`, `f` and
+// `border` (the parameter's fv, Iiv or Iuiv form, as GLfloat*, GLint* or GLuint*): the border
+// colour as integers for an integer format.
 template <class SetI, class SetF, class SetBorder>
-void set_sampler_state(const texture::SamplerState& s, SetI i, SetF f, SetBorder border) {
+void set_sampler_state(const texture::SamplerState& s, texture::TexelFormat format, SetI i, SetF f, SetBorder border) {
   i(GL_TEXTURE_MIN_FILTER, gl_filter(s.min_filter));
   i(GL_TEXTURE_MAG_FILTER, gl_filter(s.mag_filter));
   i(GL_TEXTURE_WRAP_S, gl_wrap(s.wrap_s));
   i(GL_TEXTURE_WRAP_T, gl_wrap(s.wrap_t));
-  border(s.border.data());
+  const texture::TexelFormatInfo& fi = texture::info(format);
+  GLint ints[4];
+  GLuint uints[4];
+  for (int c = 0; c < 4; ++c) {
+    ints[c] = GLint(s.border_integer[std::size_t(c)]);
+    uints[c] = GLuint(s.border_integer[std::size_t(c)]);
+  }
+  if (fi.signed_integer()) border(ints);
+  else if (fi.unsigned_integer()) border(uints);
+  else border(s.border.data());
   f(GL_TEXTURE_MIN_LOD, s.min_lod);
   f(GL_TEXTURE_MAX_LOD, s.max_lod);
   f(GL_TEXTURE_LOD_BIAS, s.lod_bias);
@@ -144,9 +191,11 @@ GlTextures::GlTextures(const std::string& scene_source, const ShaderSettings& sh
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, tex.base_level);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, tex.max_level);
     // The texture's own sampler state; a sampler object's, when the scene binds one, overrides it.
-    set_sampler_state(t.sampler_state, [](GLenum p, GLint v) { glTexParameteri(GL_TEXTURE_2D, p, v); },
+    set_sampler_state(t.sampler_state, tex.format, [](GLenum p, GLint v) { glTexParameteri(GL_TEXTURE_2D, p, v); },
                       [](GLenum p, GLfloat v) { glTexParameterf(GL_TEXTURE_2D, p, v); },
-                      [](const GLfloat* c) { glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, c); });
+                      Overloads{[](const GLfloat* c) { glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, c); },
+                                [](const GLint* c) { glTexParameterIiv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, c); },
+                                [](const GLuint* c) { glTexParameterIuiv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, c); }});
     const GLint swizzle[4] = {gl_swizzle(tex.swizzle[0]), gl_swizzle(tex.swizzle[1]), gl_swizzle(tex.swizzle[2]),
                               gl_swizzle(tex.swizzle[3])};
     glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
@@ -154,9 +203,11 @@ GlTextures::GlTextures(const std::string& scene_source, const ShaderSettings& sh
       GLuint sampler = 0;
       glGenSamplers(1, &sampler);
       samplers_[k] = sampler;
-      set_sampler_state(*t.sampler_object, [sampler](GLenum p, GLint v) { glSamplerParameteri(sampler, p, v); },
+      set_sampler_state(*t.sampler_object, tex.format, [sampler](GLenum p, GLint v) { glSamplerParameteri(sampler, p, v); },
                         [sampler](GLenum p, GLfloat v) { glSamplerParameterf(sampler, p, v); },
-                        [sampler](const GLfloat* c) { glSamplerParameterfv(sampler, GL_TEXTURE_BORDER_COLOR, c); });
+                        Overloads{[sampler](const GLfloat* c) { glSamplerParameterfv(sampler, GL_TEXTURE_BORDER_COLOR, c); },
+                                  [sampler](const GLint* c) { glSamplerParameterIiv(sampler, GL_TEXTURE_BORDER_COLOR, c); },
+                                  [sampler](const GLuint* c) { glSamplerParameterIuiv(sampler, GL_TEXTURE_BORDER_COLOR, c); }});
     }
   }
   glBindTexture(GL_TEXTURE_2D, 0);

@@ -178,8 +178,20 @@ const char* channel_names(const char* path, const char** names) {
   });
 }
 
+const char* stored_format(const char* path, int* bits, int* is_float) {
+  return guarded(path, [&]() -> const char* {
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) return fail(std::string(path) + ": cannot read image: " + OIIO::geterror());
+    const OIIO::TypeDesc f = in->spec().format;
+    *bits = int(f.basesize() * 8);
+    *is_float = f.is_floating_point() ? 1 : 0;
+    in->close();
+    return nullptr;
+  });
+}
+
 const tessref_image_io_api kApi = {TESSREF_IMAGE_IO_ABI_VERSION, sizeof(tessref_image_io_api),
-                                   probe, writable_extensions, write, diff, read, channel_names};
+                                   probe, writable_extensions, write, diff, read, channel_names, stored_format};
 
 }  // namespace
 

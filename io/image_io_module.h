@@ -10,7 +10,7 @@
 // below. Nothing but plain C types crosses the boundary, and no exception does.
 #include <stdint.h>
 
-#define TESSREF_IMAGE_IO_ABI_VERSION 3u
+#define TESSREF_IMAGE_IO_ABI_VERSION 4u
 #define TESSREF_IMAGE_IO_ENTRY "tessref_image_io_api_v1"
 #define TESSREF_IMAGE_IO_MODULE_NAME "libtessref_image_io.so"
 
@@ -59,6 +59,9 @@ struct tessref_image_io_api {
   // for OpenEXR is not the order written), '\n'-separated, in *names (valid until the next call
   // on the same thread).
   const char* (*channel_names)(const char* path, const char** names);
+  // How the first subimage stores its values: *is_float 1 for floating point, else unsigned
+  // integers of *bits bits (8, 16, 32) that read() scales to [0, 1].
+  const char* (*stored_format)(const char* path, int* bits, int* is_float);
 };
 
 typedef const tessref_image_io_api* (*tessref_image_io_entry_fn)(void);

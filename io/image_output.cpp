@@ -350,6 +350,9 @@ FloatImage read_float_image(const std::filesystem::path& path) {
   img.width = target.width;
   img.height = target.height;
   img.channels = target.channels;
+  int is_float = 1;
+  check(image_io().stored_format(path.string().c_str(), &img.stored_bits, &is_float));
+  img.stored_float = is_float != 0;
   return img;
 }
 

@@ -60,6 +60,9 @@ void write_float_channels(const std::filesystem::path& path, int width, int heig
 struct FloatImage {
   int width = 0, height = 0, channels = 0;
   std::vector<float> pixels;
+  // How the file stores them: floats, or unsigned integers of stored_bits bits read as k / (2^b - 1).
+  bool stored_float = true;
+  int stored_bits = 32;
 };
 FloatImage read_float_image(const std::filesystem::path& path);  // InputError if unreadable
 // The channel names of an image file in the order read_float_image delivers the channels.

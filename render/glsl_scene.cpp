@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <iterator>
 #include <fstream>
@@ -161,23 +163,36 @@ void set_user_uniforms(const Scene& scene, const ShaderSettings& shaders, glsl::
   }
 }
 
+// "an isampler2D", "a usampler2D", "a sampler2D": a GLSL type named in a sentence.
+std::string with_article(const std::string& type) { return (type[0] == 'i' ? "an " : "a ") + type; }
+
 // shaders.textures: each image on its own texture unit (its index), the sampler uniform set to
 // that unit.
+
 void bind_textures(const Scene& scene, const ShaderSettings& shaders, glsl::GlslProgram& program, SceneProgram& out) {
   std::uint32_t unit = 0;
   for (const TextureSetting& t : shaders.textures) {
     const std::string key = scene.source + ": " + shaders.key + ".textures." + t.sampler;
     const auto shape = program.uniform_shape(t.sampler);
     if (!shape || shape->glsl_name.find("sampler") == std::string::npos)
-      throw InputError(key + ": the program has no active sampler2D uniform of that name" +
+      throw InputError(key + ": the program has no active sampler uniform of that name" +
                        (shape ? " (it is a " + shape->glsl_name + ")" : std::string()));
-    const bool shadow = shape->glsl_name == "sampler2DShadow";
-    if (shape->glsl_name != "sampler2D" && !shadow)
-      throw InputError(key + ": the uniform is a " + shape->glsl_name + ", but textures are 2D images (GL_TEXTURE_2D); "
+    const std::string& type = shape->glsl_name;
+    const bool shadow = type == "sampler2DShadow";
+    if (type != "sampler2D" && type != "isampler2D" && type != "usampler2D" && !shadow)
+      throw InputError(key + ": the uniform is " + with_article(type) + ", but textures are 2D images (GL_TEXTURE_2D); "
                        "GL draws nothing from a sampler whose unit holds a texture of another target");
     auto tex = std::make_unique<texture::Texture>(load_texture(t, key));
     // GLSL 4.60 8.9 and GL 4.6 8.23.1 leave these lookups undefined: refused, not guessed.
     const texture::TexelFormatInfo& format = texture::info(tex->format);
+    const char* wanted = format.signed_integer() ? "isampler2D" : format.unsigned_integer() ? "usampler2D" : nullptr;
+    if (wanted && type != wanted)
+      throw InputError(key + ".internalformat: " + format.gl_name + " is an integer format, read by " + with_article(wanted) +
+                       ", and the uniform is " + with_article(type) + " (GL leaves the result undefined)");
+    if (!wanted && type[0] != 's')
+      throw InputError(key + ".internalformat: the uniform is " + with_article(type) + ", which reads " +
+                       (type[0] == 'i' ? "signed" : "unsigned") + " integer formats (GL_R8I .. GL_RGBA32" +
+                       (type[0] == 'i' ? "I" : "UI") + "), not " + format.gl_name + " (GL leaves the result undefined)");
     if (shadow && !format.depth)
       throw InputError(key + ".internalformat: the uniform is a sampler2DShadow, which needs a depth format "
                        "(GL_DEPTH_COMPONENT16, 24, 32F or GL_DEPTH24_STENCIL8), not " + std::string(format.gl_name) +
@@ -378,6 +393,39 @@ std::vector<float> rgba_rows(const FloatImage& image, bool gray_to_rgb) {
   return out;
 }
 
+// An integer format's texels from an image file (GL uploads them as integers, GL 4.6 8.4.4.2):
+// an 8- or 16-bit file's stored integers k (read as k / (2^b - 1)), a float file's values, which
+// must be whole numbers; each within the format's range.
+std::vector<std::int64_t> integer_texels(const FloatImage& image, const std::vector<float>& rgba,
+                                         const texture::TexelFormatInfo& format, const std::filesystem::path& file,
+                                         const std::string& at) {
+  const double scale = image.stored_float ? 1.0 : std::ldexp(1.0, image.stored_bits) - 1.0;
+  std::vector<std::int64_t> out(rgba.size());
+  for (std::size_t k = 0; k < rgba.size(); ++k) {
+    const double v = double(rgba[k]) * scale;
+    const int c = int(k % 4);
+    if (c >= format.channels) {  // not stored: alpha 1 and 0 for the others, as decoded
+      out[k] = c == 3 ? 1 : 0;
+      continue;
+    }
+    const double whole = std::nearbyint(v);
+    if (!(std::fabs(v - whole) <= (image.stored_float ? 0.0 : 1e-3)) || whole < double(format.integer_min(c)) ||
+        whole > double(format.integer_max(c))) {
+      const std::size_t texel = k / 4;
+      const std::size_t x = texel % std::size_t(image.width), y = std::size_t(image.height) - 1 - texel / std::size_t(image.width);
+      char value[64];
+      std::snprintf(value, sizeof value, "%.9g", v);
+      throw InputError(at + ": " + file.string() + " pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                       ") channel " + std::to_string(c) + " is " + value + ", and " + format.gl_name +
+                       " holds whole numbers from " + std::to_string(format.integer_min(c)) + " to " +
+                       std::to_string(format.integer_max(c)) + " (internalformat; give a float file of whole "
+                       "numbers, an 8/16-bit file's integers, or raw bytes with raw_size)");
+    }
+    out[k] = std::int64_t(whole);
+  }
+  return out;
+}
+
 }  // namespace
 
 namespace {
@@ -453,7 +501,11 @@ texture::Texture load_texture(const TextureSetting& t, const std::string& key) {
                        (std::max(width0, height0) >> k == 0 ? std::string("past its last level")
                                                             : std::to_string(w) + "x" + std::to_string(h)));
     const std::vector<float> rgba = rgba_rows(image, !t.format);
-    tex.levels.push_back(texture::make_level(tex.format, image.width, image.height, rgba.data()));
+    if (format.integer())
+      tex.levels.push_back(texture::make_integer_level(tex.format, image.width, image.height,
+                                                       integer_texels(image, rgba, format, t.levels[k], at).data()));
+    else
+      tex.levels.push_back(texture::make_level(tex.format, image.width, image.height, rgba.data()));
   }
   // glGenerateMipmap right after level 0 is uploaded, before any glTexParameter: every level.
   if (t.generate_mipmaps) texture::generate_mipmaps(tex);

@@ -1,6 +1,8 @@
 #include "scene/texture_schema.h"
 
 #include <array>
+#include <cmath>
+#include <cstdint>
 #include <utility>
 
 namespace tessref {
@@ -58,7 +60,7 @@ Enum choice(JsonObject& o, const std::string& key, const std::array<std::pair<co
 }
 
 // The sampler state keys of a texture, or of a sampler object (glSamplerParameter).
-void read_sampler_state(JsonObject& o, texture::SamplerState& s) {
+void read_sampler_state(JsonObject& o, texture::SamplerState& s, const texture::TexelFormatInfo& format) {
   // filter and wrap set both filters and both wraps; the specific keys override them.
   if (o.has("filter")) s.min_filter = s.mag_filter = choice(o, "filter", kFilters, 2);
   if (o.has("min_filter")) s.min_filter = choice(o, "min_filter", kFilters);
@@ -66,7 +68,25 @@ void read_sampler_state(JsonObject& o, texture::SamplerState& s) {
   if (o.has("wrap")) s.wrap_s = s.wrap_t = choice(o, "wrap", kWraps);
   if (o.has("wrap_s")) s.wrap_s = choice(o, "wrap_s", kWraps);
   if (o.has("wrap_t")) s.wrap_t = choice(o, "wrap_t", kWraps);
-  if (o.has("border_color")) {
+  if (o.has("border_color") && format.integer()) {
+    // glTexParameterIiv (signed formats) or glTexParameterIuiv (unsigned ones).
+    const bool is_signed = format.signed_integer();
+    const std::int64_t lo = is_signed ? INT32_MIN : 0, hi = is_signed ? INT32_MAX : UINT32_MAX;
+    const std::string range = std::to_string(lo) + " to " + std::to_string(hi);
+    o.describe("border_color", std::string("[r, g, b, a] whole numbers from ") + range + " for an integer format");
+    const nlohmann::json& b = o.value("border_color");
+    if (!b.is_array() || b.size() != 4)
+      o.fail("border_color", std::string(format.gl_name) + " is an integer format: expected [r, g, b, a], whole numbers from " +
+                                 range + " (glTexParameterI" + (is_signed ? "iv" : "uiv") + "), got " + describe_json(b));
+    for (std::size_t c = 0; c < 4; ++c) {
+      const bool whole = b[c].is_number_integer() || (b[c].is_number_float() && b[c].get<double>() == std::floor(b[c].get<double>()));
+      const double v = b[c].is_number() ? b[c].get<double>() : 0.0;
+      if (!whole || v < double(lo) || v > double(hi))
+        o.fail("border_color." + std::to_string(c), std::string(format.gl_name) + " is an integer format: expected a whole number from " +
+                                                        range + ", got " + describe_json(b[c]));
+      s.border_integer[c] = std::int64_t(v);
+    }
+  } else if (o.has("border_color")) {
     const glm::vec4 b = o.rgba("border_color");
     s.border = {b.r, b.g, b.b, b.a};
   }
@@ -133,15 +153,19 @@ TextureSetting read_texture_setting(const std::string& name, const nlohmann::jso
     if (t.generate_mipmaps && t.format && texture::info(*t.format).depth)
       o.fail("generate_mipmap", std::string("glGenerateMipmap refuses a depth format (") + texture::info(*t.format).gl_name +
                                     " is not color-renderable, GL 4.6 8.14.4): give its levels");
+    if (t.generate_mipmaps && t.format && texture::info(*t.format).integer())
+      o.fail("generate_mipmap", std::string("glGenerateMipmap refuses an integer format (") + texture::info(*t.format).gl_name +
+                                    " is not filterable, GL 4.6 8.14.4): give its levels");
   }
-  read_sampler_state(o, t.sampler_state);
+  const texture::TexelFormatInfo& format = texture::info(t.format.value_or(texture::TexelFormat::kRgba32F));
+  read_sampler_state(o, t.sampler_state, format);
   if (o.has("sampler")) {
     // glBindSampler: a sampler object's state replaces the texture's, from GL's initial values.
     o.describe("sampler", "a sampler object bound to the texture's unit (glBindSampler): its own filter, wrap, "
                           "border_color, LOD and compare keys, from GL's initial values, override the texture's");
     JsonObject so(o.value("sampler"), path + ".sampler", source);
     texture::SamplerState state;  // GL's initial sampler object state
-    read_sampler_state(so, state);
+    read_sampler_state(so, state, format);
     so.finish();
     t.sampler_object = state;
   }

@@ -253,14 +253,15 @@ struct Decoder {
 
   void emit(XIns x) { p.code.push_back(x); }
 
-  // OpImageSample*, OpImage*Gather, OpImageFetch and OpImageQuery* on a sampler2D or
-  // sampler2DShadow: one TexOp each.
+  // OpImageSample*, OpImage*Gather, OpImageFetch and OpImageQuery* on a sampler2D, isampler2D,
+  // usampler2D or sampler2DShadow: one TexOp each.
   void texture(const Instruction& ins, const std::vector<std::uint32_t>& o) {
     const spv::Op op = spv::Op(ins.opcode);
     const Type& image = m.type(value_type.at(o.at(0)));
     const std::string name = sampler_glsl_name(m, image);
-    if (name != "sampler2D" && name != "sampler2DShadow")
-      unsupported(m, ins, (name[0] == 'i' ? "an " : "a ") + name + " (tessref samples sampler2D and sampler2DShadow only)");
+    if (name != "sampler2D" && name != "sampler2DShadow" && name != "isampler2D" && name != "usampler2D")
+      unsupported(m, ins, (name[0] == 'i' ? "an " : "a ") + name +
+                              " (tessref samples sampler2D, isampler2D, usampler2D and sampler2DShadow only)");
     TexOp t;
     t.image = value(ins, o[0]);
     XIns x = base(ins, XOp::Texture);

@@ -294,8 +294,21 @@ void gather_float(const Level& level, const Axes& axes, const std::array<float, 
 }
 
 std::array<float, 4> border_color(const Texture& t) {
-  std::array<float, 4> b = t.sampler.border;
   const TexelFormatInfo& f = info(t.format);
+  if (f.integer()) {
+    // Clamped to the range of the format's first channel, but 32-bit channels are kept as
+    // they are and GL_RGB10_A2UI's are clamped per channel (lp_build_clamp_border_color).
+    const int c0 = f.type == ChannelType::kUint10_10_10_2 ? -1 : 0;
+    std::array<float, 4> b;
+    for (int c = 0; c < 4; ++c) {
+      const int k = c0 < 0 ? c : c0;
+      const std::int64_t v = c < f.channels ? std::clamp(t.sampler.border_integer[std::size_t(c)], f.integer_min(k), f.integer_max(k))
+                                            : c == 3 ? 1 : 0;
+      b[std::size_t(c)] = integer_bits(v);
+    }
+    return b;
+  }
+  std::array<float, 4> b = t.sampler.border;
   // Clamped to the format's range (lp_build_clamp_border_color: x86's max then min, NaN to the
   // bound).
   float lo = -INFINITY, hi = INFINITY;

@@ -165,6 +165,9 @@ bool fixed_point_path(const Texture& t, const LodInput& in) {
          (in.per_quad || linear_image(s.min_filter) == linear_image(s.mag_filter));
 }
 
+// 1 as format f's texels hold it: the integer 1 for integer formats.
+float one(TexelFormat f) { return info(f).integer() ? integer_bits(1) : 1.0f; }
+
 void apply_swizzle(const Texture& t, const float in[4], float out[4]) {
   for (int c = 0; c < 4; ++c) {
     switch (t.swizzle[std::size_t(c)]) {
@@ -173,14 +176,16 @@ void apply_swizzle(const Texture& t, const float in[4], float out[4]) {
       case Swizzle::Blue: out[c] = in[2]; break;
       case Swizzle::Alpha: out[c] = in[3]; break;
       case Swizzle::Zero: out[c] = 0.0f; break;
-      case Swizzle::One: out[c] = 1.0f; break;
+      case Swizzle::One: out[c] = one(t.format); break;
     }
   }
 }
 
-void incomplete(float out[4]) {
+// GL 4.6 11.1.3.5: (0, 0, 0, 1), integers for an integer format. llvmpipe differs there
+// (docs/textures.md): Mesa binds an RGBA8 texture in its place.
+void incomplete(const Texture& t, float out[4]) {
   out[0] = out[1] = out[2] = 0.0f;
-  out[3] = 1.0f;
+  out[3] = one(t.format);
 }
 
 // The comparison of a shadow lookup; D_ref clamped to [0, 1] for fixed-point depth formats (GL
@@ -208,7 +213,7 @@ bool linear_in_vector(const Texture& t, const LodInput& lod) {
 
 void sample(const Texture& t, float s, float tc, const LodInput& lod, int offset_s, int offset_t, const float* dref,
             float out[4], bool vector_linear) {
-  if (!t.complete) return incomplete(out);
+  if (!t.complete) return incomplete(t, out);
   const LevelChoice c = choose_levels(t, lod);
   const Level& l0 = t.levels[std::size_t(c.level0)];
   const Axes axes = axes_of(t);
@@ -251,14 +256,14 @@ void gather(const Texture& t, float s, float tc, int offset_s, int offset_t, int
   const Swizzle sw = t.swizzle[std::size_t(component & 3)];
   if (!t.complete) {  // the four texels of the 1 x 1 (0, 0, 0, 1) texture
     float texel[4], swizzled[4];
-    incomplete(texel);
+    incomplete(t, texel);
     apply_swizzle(t, texel, swizzled);
     out[0] = out[1] = out[2] = out[3] = swizzled[component & 3];
     return;
   }
   const std::optional<DepthCompare> compare = depth_compare(t, dref);
   if (!compare && (sw == Swizzle::Zero || sw == Swizzle::One)) {
-    out[0] = out[1] = out[2] = out[3] = sw == Swizzle::One ? 1.0f : 0.0f;
+    out[0] = out[1] = out[2] = out[3] = sw == Swizzle::One ? one(t.format) : 0.0f;
     return;
   }
   // GL_LINEAR's footprint on the base level whatever the filters (llvmpipe: linear, no mipmap).
@@ -267,10 +272,10 @@ void gather(const Texture& t, float s, float tc, int offset_s, int offset_t, int
 }
 
 void fetch(const Texture& t, int i, int j, int lod, float out[4]) {
-  if (!t.complete) return incomplete(out);
+  if (!t.complete) return incomplete(t, out);
   const std::int64_t level = std::int64_t(t.base_level) + lod;
   // Outside: zero in each channel the format has; the others read 0 (green, blue) and 1 (alpha).
-  float texel[4] = {0.0f, 0.0f, 0.0f, info(t.format).channels < 4 ? 1.0f : 0.0f};
+  float texel[4] = {0.0f, 0.0f, 0.0f, info(t.format).channels < 4 ? one(t.format) : 0.0f};
   if (level >= t.base_level && level <= t.last_level) {
     const Level& l = t.levels[std::size_t(level)];
     if (i >= 0 && j >= 0 && i < l.width && j < l.height)

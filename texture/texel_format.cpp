@@ -48,8 +48,33 @@ constexpr Named kFormats[] = {
     {TexelFormat::kR8Snorm, {"GL_R8_SNORM", 1, ChannelType::kSnorm8}},
     {TexelFormat::kR11fG11fB10f, {"GL_R11F_G11F_B10F", 3, ChannelType::kUfloat11_11_10}},
     {TexelFormat::kRgb9E5, {"GL_RGB9_E5", 3, ChannelType::kRgb9E5}},
+    {TexelFormat::kRgba8I, {"GL_RGBA8I", 4, ChannelType::kSint8}},
+    {TexelFormat::kRgb8I, {"GL_RGB8I", 3, ChannelType::kSint8}},
+    {TexelFormat::kRg8I, {"GL_RG8I", 2, ChannelType::kSint8}},
+    {TexelFormat::kR8I, {"GL_R8I", 1, ChannelType::kSint8}},
+    {TexelFormat::kRgba8Ui, {"GL_RGBA8UI", 4, ChannelType::kUint8}},
+    {TexelFormat::kRgb8Ui, {"GL_RGB8UI", 3, ChannelType::kUint8}},
+    {TexelFormat::kRg8Ui, {"GL_RG8UI", 2, ChannelType::kUint8}},
+    {TexelFormat::kR8Ui, {"GL_R8UI", 1, ChannelType::kUint8}},
+    {TexelFormat::kRgba16I, {"GL_RGBA16I", 4, ChannelType::kSint16}},
+    {TexelFormat::kRgb16I, {"GL_RGB16I", 3, ChannelType::kSint16}},
+    {TexelFormat::kRg16I, {"GL_RG16I", 2, ChannelType::kSint16}},
+    {TexelFormat::kR16I, {"GL_R16I", 1, ChannelType::kSint16}},
+    {TexelFormat::kRgba16Ui, {"GL_RGBA16UI", 4, ChannelType::kUint16}},
+    {TexelFormat::kRgb16Ui, {"GL_RGB16UI", 3, ChannelType::kUint16}},
+    {TexelFormat::kRg16Ui, {"GL_RG16UI", 2, ChannelType::kUint16}},
+    {TexelFormat::kR16Ui, {"GL_R16UI", 1, ChannelType::kUint16}},
+    {TexelFormat::kRgba32I, {"GL_RGBA32I", 4, ChannelType::kSint32}},
+    {TexelFormat::kRgb32I, {"GL_RGB32I", 3, ChannelType::kSint32}},
+    {TexelFormat::kRg32I, {"GL_RG32I", 2, ChannelType::kSint32}},
+    {TexelFormat::kR32I, {"GL_R32I", 1, ChannelType::kSint32}},
+    {TexelFormat::kRgba32Ui, {"GL_RGBA32UI", 4, ChannelType::kUint32}},
+    {TexelFormat::kRgb32Ui, {"GL_RGB32UI", 3, ChannelType::kUint32}},
+    {TexelFormat::kRg32Ui, {"GL_RG32UI", 2, ChannelType::kUint32}},
+    {TexelFormat::kR32Ui, {"GL_R32UI", 1, ChannelType::kUint32}},
+    {TexelFormat::kRgb10A2Ui, {"GL_RGB10_A2UI", 4, ChannelType::kUint10_10_10_2}},
 };
-static_assert(std::size(kFormats) == std::size_t(TexelFormat::kRgb9E5) + 1, "one entry per TexelFormat");
+static_assert(std::size(kFormats) == std::size_t(TexelFormat::kRgb10A2Ui) + 1, "one entry per TexelFormat");
 
 // An sRGB channel as the sampler decodes it. GL 4.6 equation 8.17 is exact; llvmpipe
 // (lp_build_srgb_to_linear) evaluates a linear segment up to k = 15 and a cubic above it, whose
@@ -124,7 +149,25 @@ float rgb9e5_channel(std::uint32_t word, int k) {
   return float(std::ldexp(double((word >> (9 * k)) & 511u), int(word >> 27) - 15 - 9));
 }
 
+// Bits of channel c of an integer type.
+int integer_channel_bits(ChannelType t, int c) {
+  switch (t) {
+    case ChannelType::kSint8: case ChannelType::kUint8: return 8;
+    case ChannelType::kSint16: case ChannelType::kUint16: return 16;
+    case ChannelType::kUint10_10_10_2: return c == 3 ? 2 : 10;
+    default: return 32;
+  }
+}
+
 }  // namespace
+
+std::int64_t TexelFormatInfo::integer_min(int c) const {
+  return signed_integer() ? -(std::int64_t(1) << (integer_channel_bits(type, c) - 1)) : 0;
+}
+std::int64_t TexelFormatInfo::integer_max(int c) const {
+  const int bits = integer_channel_bits(type, c);
+  return signed_integer() ? (std::int64_t(1) << (bits - 1)) - 1 : (std::int64_t(1) << bits) - 1;
+}
 
 const TexelFormatInfo& info(TexelFormat f) {
   for (const Named& n : kFormats)
@@ -146,6 +189,12 @@ std::string texel_format_names() {
 
 std::vector<std::uint8_t> encode_texels(TexelFormat f, const float* rgba, std::size_t texels) {
   const TexelFormatInfo& fi = info(f);
+  if (fi.integer()) {  // each value rounded to the nearest integer (NaN: 0)
+    std::vector<std::int64_t> ints(texels * 4);
+    for (std::size_t k = 0; k < ints.size(); ++k)
+      ints[k] = std::isnan(rgba[k]) ? 0 : std::int64_t(std::nearbyint(std::clamp(double(rgba[k]), -0x1p40, 0x1p40)));
+    return encode_integer_texels(f, ints.data(), texels);
+  }
   std::vector<std::uint8_t> out(texels * std::size_t(fi.bytes_per_texel()));
   std::uint8_t* dst = out.data();
   if (fi.packed()) {
@@ -185,7 +234,10 @@ std::vector<std::uint8_t> encode_texels(TexelFormat f, const float* rgba, std::s
           dst += 2;
           break;
         }
-        case ChannelType::kUfloat11_11_10: case ChannelType::kRgb9E5: break;  // packed: above
+        case ChannelType::kUfloat11_11_10: case ChannelType::kRgb9E5: case ChannelType::kUint10_10_10_2: break;
+        // Integer formats: encode_integer_texels.
+        case ChannelType::kSint8: case ChannelType::kSint16: case ChannelType::kSint32: case ChannelType::kUint8:
+        case ChannelType::kUint16: case ChannelType::kUint32: break;
         case ChannelType::kUnorm24: {
           const std::uint32_t k = fixed::unorm_from_float(v, 24);
           const std::uint32_t word = (k << 8) | (f == TexelFormat::kDepth24 ? k >> 16 : 0u);
@@ -198,8 +250,53 @@ std::vector<std::uint8_t> encode_texels(TexelFormat f, const float* rgba, std::s
   return out;
 }
 
+std::vector<std::uint8_t> encode_integer_texels(TexelFormat f, const std::int64_t* rgba, std::size_t texels) {
+  const TexelFormatInfo& fi = info(f);
+  std::vector<std::uint8_t> out(texels * std::size_t(fi.bytes_per_texel()));
+  std::uint8_t* dst = out.data();
+  for (std::size_t t = 0; t < texels; ++t) {
+    std::int64_t v[4];
+    for (int c = 0; c < 4; ++c) v[c] = std::clamp(rgba[t * 4 + std::size_t(c)], fi.integer_min(c), fi.integer_max(c));
+    if (fi.type == ChannelType::kUint10_10_10_2) {
+      const auto word = std::uint32_t(v[0] | v[1] << 10 | v[2] << 20 | v[3] << 30);
+      std::memcpy(dst, &word, 4);
+      dst += 4;
+      continue;
+    }
+    // Little-endian two's complement, the bytes GL_BYTE .. GL_UNSIGNED_INT data hold.
+    for (int c = 0; c < fi.channels; ++c)
+      for (int b = 0; b < fi.bytes_per_channel(); ++b) *dst++ = std::uint8_t(std::uint64_t(v[c]) >> (8 * b));
+  }
+  return out;
+}
+
 std::vector<float> decode_texels(TexelFormat f, const std::vector<std::uint8_t>& bytes) {
   const TexelFormatInfo& fi = info(f);
+  if (fi.integer()) {
+    const std::size_t texels = bytes.size() / std::size_t(fi.bytes_per_texel());
+    std::vector<float> out(texels * 4);
+    const std::uint8_t* src = bytes.data();
+    const int bytes_per_channel = fi.bytes_per_channel();
+    for (std::size_t t = 0; t < texels; ++t) {
+      float* dst = out.data() + t * 4;
+      std::int64_t v[4] = {0, 0, 0, 1};
+      if (fi.type == ChannelType::kUint10_10_10_2) {
+        std::uint32_t word;
+        std::memcpy(&word, src, 4);
+        src += 4;
+        v[0] = word & 1023u, v[1] = (word >> 10) & 1023u, v[2] = (word >> 20) & 1023u, v[3] = word >> 30;
+      } else {
+        for (int c = 0; c < fi.channels; ++c) {
+          std::uint64_t u = 0;
+          for (int b = 0; b < bytes_per_channel; ++b) u |= std::uint64_t(*src++) << (8 * b);
+          const int bits = 8 * bytes_per_channel;
+          v[c] = fi.signed_integer() && (u >> (bits - 1)) ? std::int64_t(u) - (std::int64_t(1) << bits) : std::int64_t(u);
+        }
+      }
+      for (int c = 0; c < 4; ++c) dst[c] = integer_bits(v[c]);
+    }
+    return out;
+  }
   const std::size_t texels = bytes.size() / std::size_t(fi.bytes_per_texel());
   std::vector<float> out(texels * 4);
   const std::uint8_t* src = bytes.data();
@@ -247,7 +344,9 @@ std::vector<float> decode_texels(TexelFormat f, const std::vector<std::uint8_t>&
           src += 2;
           break;
         }
-        case ChannelType::kUfloat11_11_10: case ChannelType::kRgb9E5: break;  // packed: above
+        case ChannelType::kUfloat11_11_10: case ChannelType::kRgb9E5: case ChannelType::kUint10_10_10_2: break;
+        case ChannelType::kSint8: case ChannelType::kSint16: case ChannelType::kSint32: case ChannelType::kUint8:
+        case ChannelType::kUint16: case ChannelType::kUint32: break;  // integer formats: above
         case ChannelType::kUnorm24: {
           std::uint32_t word;
           std::memcpy(&word, src, 4);

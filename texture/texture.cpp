@@ -44,7 +44,17 @@ Level make_level(TexelFormat f, int width, int height, const float* rgba) {
   return l;
 }
 
-// GL 4.6 8.17: a texture is complete when its base level exists and, for a minification filter
+Level make_integer_level(TexelFormat f, int width, int height, const std::int64_t* rgba) {
+  Level l;
+  l.width = width;
+  l.height = height;
+  l.stored = encode_integer_texels(f, rgba, std::size_t(width) * std::size_t(height));
+  l.texels = decode_texels(f, l.stored);
+  return l;
+}
+
+// GL 4.6 8.17: a texture is complete when its base level exists, an integer format is sampled
+// with GL_NEAREST (or GL_NEAREST_MIPMAP_NEAREST) and, for a minification filter
 // that uses mipmaps, level_base <= level_max and every level from the base to
 // q = min(p, level_max), p = level_base + floor(log2(max(w_b, h_b))), exists with the size
 // max(1, floor(w_b / 2^(k - level_base))) x max(1, floor(h_b / 2^(k - level_base))).
@@ -55,6 +65,14 @@ void Texture::finalize() {
   if (base_level < 0 || base_level >= n || levels[std::size_t(base_level)].width <= 0 ||
       levels[std::size_t(base_level)].height <= 0) {
     incomplete_reason = "it has no level " + std::to_string(base_level) + " (GL_TEXTURE_BASE_LEVEL)";
+    return;
+  }
+  // GL 4.6 8.17: integer formats are not filterable.
+  if (info(format).integer() && (sampler.mag_filter != Filter::Nearest ||
+                                 (sampler.min_filter != Filter::Nearest && sampler.min_filter != Filter::NearestMipmapNearest))) {
+    incomplete_reason = std::string(info(format).gl_name) + " is an integer format, which GL samples only with " +
+                        "GL_NEAREST magnification and GL_NEAREST or GL_NEAREST_MIPMAP_NEAREST minification (filters " +
+                        gl_name(sampler.min_filter) + ", " + gl_name(sampler.mag_filter) + ")";
     return;
   }
   const Level& base = levels[std::size_t(base_level)];

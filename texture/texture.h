@@ -39,6 +39,8 @@ struct SamplerState {
   Filter mag_filter = Filter::Linear;
   Wrap wrap_s = Wrap::Repeat, wrap_t = Wrap::Repeat;
   std::array<float, 4> border{0.0f, 0.0f, 0.0f, 0.0f};  // GL_TEXTURE_BORDER_COLOR
+  // The border colour an integer format reads, as glTexParameterIiv / Iuiv give it.
+  std::array<std::int64_t, 4> border_integer{0, 0, 0, 0};
   float min_lod = -1000.0f, max_lod = 1000.0f;           // GL_TEXTURE_MIN_LOD / MAX_LOD
   float lod_bias = 0.0f;                                 // GL_TEXTURE_LOD_BIAS
   bool compare = false;                   // GL_TEXTURE_COMPARE_MODE COMPARE_REF_TO_TEXTURE (else NONE)
@@ -48,7 +50,7 @@ struct SamplerState {
 // One mip level: width x height texels, row 0 at the bottom (GL). `stored` holds them in the
 // format's own layout (what a driver is given); `texels` as the sampler reads them, four floats
 // each (k / 255 for 8-bit normalized channels, linear values for sRGB ones, missing green and
-// blue 0, missing alpha 1).
+// blue 0, missing alpha 1; integer formats: the integers' bits, texture::decode_texels).
 struct Level {
   int width = 0, height = 0;
   std::vector<std::uint8_t> stored;
@@ -58,6 +60,8 @@ struct Level {
 // A level of format f from RGBA floats, 4 per texel, row 0 at the bottom: stored in the format and
 // read back (encode_texels, decode_texels).
 Level make_level(TexelFormat f, int width, int height, const float* rgba);
+// A level of integer format f from integers, 4 per texel (encode_integer_texels).
+Level make_integer_level(TexelFormat f, int width, int height, const std::int64_t* rgba);
 
 struct Texture {
   TexelFormat format = TexelFormat::kRgba32F;

@@ -58,10 +58,16 @@ Outcome compare(GlContext& ctx, const std::vector<std::string>& sets, float tole
       o.max_difference = std::max(o.max_difference, d);
       beyond = beyond || !(d <= tolerance);
       if (o.first.empty()) {
-        char buf[256];
-        std::snprintf(buf, sizeof buf, "pixel (%zu, %zu) channel %d: tessref %.9g (0x%08x), llvmpipe %.9g (0x%08x)",
+        char buf[512];
+        const glm::vec4 &t = ours.framebuffer.color[i], &l = gl.color[i];
+        std::snprintf(buf, sizeof buf,
+                      "pixel (%zu, %zu) channel %d: tessref %.9g (0x%08x), llvmpipe %.9g (0x%08x); all four: tessref "
+                      "0x%08x 0x%08x 0x%08x 0x%08x, llvmpipe 0x%08x 0x%08x 0x%08x 0x%08x",
                       i % std::size_t(gl.width), i / std::size_t(gl.width), c, double(a), std::bit_cast<std::uint32_t>(a),
-                      double(b), std::bit_cast<std::uint32_t>(b));
+                      double(b), std::bit_cast<std::uint32_t>(b), std::bit_cast<std::uint32_t>(t.x),
+                      std::bit_cast<std::uint32_t>(t.y), std::bit_cast<std::uint32_t>(t.z), std::bit_cast<std::uint32_t>(t.w),
+                      std::bit_cast<std::uint32_t>(l.x), std::bit_cast<std::uint32_t>(l.y), std::bit_cast<std::uint32_t>(l.z),
+                      std::bit_cast<std::uint32_t>(l.w));
         o.first = buf;
       }
     }
@@ -137,6 +143,42 @@ Case shadow_case(const std::string& format, const std::string& min, const std::s
   return c;
 }
 
+// The integer formats (GL 4.6 table 8.12) read by an isampler2D or usampler2D (lookup_int.frag,
+// lookup_uint.frag), from raw random bytes (every bit pattern is a value) given as six levels with
+// GL_TEXTURE_MAX_LEVEL 5: GL samples them with GL_NEAREST only, so these are exact copies. With
+// the minification filter GL_NEAREST the texture has level 0 alone: Mesa samples an integer
+// texture's levels as GL_NEAREST_MIPMAP_NEAREST then, where GL reads the base level
+// (docs/textures.md), and with one level both read it.
+struct IntegerFormat {
+  const char* name;
+  int width, height;  // level 0, so that its bytes are the chain's level 0 file
+  bool rgb;           // noise_bytes3_*.raw (texels of 3, 6 or 12 bytes), else noise_bytes_*.raw
+};
+const IntegerFormat kIntegerFormats[] = {
+    {"GL_RGBA32I", 64, 64, false},   {"GL_RGBA32UI", 64, 64, false},  {"GL_RGBA16I", 128, 64, false},
+    {"GL_RGBA16UI", 128, 64, false}, {"GL_RG32I", 128, 64, false},    {"GL_RG32UI", 128, 64, false},
+    {"GL_RGBA8I", 128, 128, false},  {"GL_RGBA8UI", 128, 128, false}, {"GL_RG16I", 128, 128, false},
+    {"GL_RG16UI", 128, 128, false},  {"GL_R32I", 128, 128, false},    {"GL_R32UI", 128, 128, false},
+    {"GL_RGB10_A2UI", 128, 128, false}, {"GL_RG8I", 256, 128, false}, {"GL_RG8UI", 256, 128, false},
+    {"GL_R16I", 256, 128, false},    {"GL_R16UI", 256, 128, false},   {"GL_R8I", 256, 256, false},
+    {"GL_R8UI", 256, 256, false},    {"GL_RGB32I", 64, 64, true},     {"GL_RGB32UI", 64, 64, true},
+    {"GL_RGB16I", 128, 64, true},    {"GL_RGB16UI", 128, 64, true},   {"GL_RGB8I", 128, 128, true},
+    {"GL_RGB8UI", 128, 128, true}};
+
+Case integer_case(const IntegerFormat& f, const std::string& min, const std::string& mag, const std::string& wrap, int fn,
+                  const std::string& extra = "") {
+  std::string levels;
+  for (int k = 0; k < (min == "nearest" ? 1 : 6); ++k)
+    levels += std::string(k ? ", " : "") + "\"sampling/noise_bytes" + (f.rgb ? "3" : "") + "_" + std::to_string(k) + ".raw\"";
+  const bool is_unsigned = std::string(f.name).find("UI") != std::string::npos;
+  return Case{{"fragment=\"sampling/lookup_" + std::string(is_unsigned ? "uint" : "int") + ".frag\"",
+               "textures.u_tex={\"path\": null, \"levels\": [" + levels + "], \"raw_size\": [" + std::to_string(f.width) +
+                   ", " + std::to_string(f.height) + "], \"internalformat\": \"" + f.name +
+                   "\", \"generate_mipmap\": false, \"max_level\": 5, \"min_filter\": \"" + min + "\", \"mag_filter\": \"" +
+                   mag + "\", \"wrap\": \"" + wrap + "\"" + extra + "}",
+               function(fn)}};
+}
+
 const char* const kDepthFormats[] = {"GL_DEPTH_COMPONENT16", "GL_DEPTH_COMPONENT24", "GL_DEPTH_COMPONENT32F",
                                      "GL_DEPTH24_STENCIL8"};
 const char* const kCompareFuncs[] = {"lequal", "gequal", "less", "greater", "equal", "notequal", "always", "never"};
@@ -210,6 +252,19 @@ std::vector<Case> suite_cases() {
                                 {"textures.u_tex.border_color=[0.5, 0, 0, 0]"}));
     cases.push_back(shadow_case(format, "linear", "nearest", "mirrored_repeat", "equal", 6));
   }
+  // Integer formats: each one; every lookup on a signed and an unsigned one; every wrap; a border
+  // colour beyond each format's range (clamped to the first channel's range, 32-bit ones not).
+  for (const IntegerFormat& f : kIntegerFormats)
+    cases.push_back(integer_case(f, "nearest_mipmap_nearest", "nearest", "clamp_to_border", 2,
+                                 ", \"border_color\": [" + std::string(std::string(f.name).find("UI") != std::string::npos
+                                                                           ? "70000, 3000000000, 5, 1024]"
+                                                                           : "-70000, 200, -2147483648, 2147483647]")));
+  for (int fn = 0; fn < 13; ++fn) {
+    cases.push_back(integer_case(kIntegerFormats[0], "nearest_mipmap_nearest", "nearest", "repeat", fn));
+    cases.push_back(integer_case(kIntegerFormats[7], "nearest", "nearest", "mirrored_repeat", fn));
+  }
+  for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge", "mirror_clamp_to_edge"})
+    cases.push_back(integer_case(kIntegerFormats[15], "nearest_mipmap_nearest", "nearest", wrap, 4));
   return cases;
 }
 
@@ -240,6 +295,11 @@ std::vector<Case> full_cases() {
               continue;
             cases.push_back(make_case(f.file, f.name, min, mag, wrap, fn));
           }
+  for (const IntegerFormat& f : kIntegerFormats)
+    for (const char* min : {"nearest", "nearest_mipmap_nearest"})
+      for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge", "clamp_to_border", "mirror_clamp_to_edge"})
+        for (int fn = 0; fn < 13; ++fn)
+          if (fn != 9 || std::string(wrap) == "repeat") cases.push_back(integer_case(f, min, "nearest", wrap, fn));
   for (const char* format : kDepthFormats)
     for (const char* min : {"nearest", "linear"})
       for (const char* mag : {"nearest", "linear"})

@@ -1,7 +1,9 @@
 // Textures in scenes (docs/textures.md) on tessref alone: bad texture descriptions are errors that
 // name the key, an incomplete texture is GL's (0, 0, 0, 1) with a warning, and lookups do not
 // depend on the thread count or the executor's batch size.
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
+#include "io/image_output.h"
 #include "mesh/mesh_source.h"
 #include "render/glsl_scene.h"
 #include "render/render.h"
@@ -185,6 +188,119 @@ TEST(TextureScene, IncompleteTextureReadsZeroZeroZeroOneWithAWarning) {
             std::string::npos) << r.stats.warnings[0];
   for (const glm::vec4& c : r.framebuffer.color) ASSERT_EQ(c, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
   EXPECT_TRUE(render_sweep({}).stats.warnings.empty());
+}
+
+// Integer formats (GL 4.6 8.17, GLSL 4.60 8.9): a sampler type that does not match the format's,
+// glGenerateMipmap, a filter other than GL_NEAREST (incomplete, with the reason), a file value
+// the format cannot hold and a border colour that is not a whole number are each refused or
+// warned of, naming the key.
+TEST(TextureScene, IntegerFormatMismatchesAreErrorsNamingTheKey) {
+  const std::vector<std::string> rgba8ui = {"textures.u_tex.internalformat=\"GL_RGBA8UI\"", "textures.u_tex.generate_mipmap=false",
+                                            "textures.u_tex.filter=\"nearest\""};
+  auto with = [](std::vector<std::string> a, const std::vector<std::string>& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+  };
+  const std::string float_sampler = error_of(rgba8ui);
+  EXPECT_NE(float_sampler.find("draws.0.shaders.textures.u_tex.internalformat: GL_RGBA8UI is an integer format, read by "
+                               "a usampler2D, and the uniform is a sampler2D (GL leaves the result undefined)"),
+            std::string::npos) << float_sampler;
+  const std::string int_sampler = error_of({"fragment=\"sampling/lookup_int.frag\""});
+  EXPECT_NE(int_sampler.find("draws.0.shaders.textures.u_tex.internalformat: the uniform is an isampler2D, which reads "
+                             "signed integer formats (GL_R8I .. GL_RGBA32I), not GL_RGBA8"),
+            std::string::npos) << int_sampler;
+  const std::string wrong_sign = error_of(with(rgba8ui, {"fragment=\"sampling/lookup_int.frag\""}));
+  EXPECT_NE(wrong_sign.find("GL_RGBA8UI is an integer format, read by a usampler2D, and the uniform is an isampler2D"),
+            std::string::npos) << wrong_sign;
+  const std::string generate = error_of({"textures.u_tex.internalformat=\"GL_RGBA8UI\"", "fragment=\"sampling/lookup_uint.frag\""});
+  EXPECT_NE(generate.find("draws.0.shaders.textures.u_tex.generate_mipmap: glGenerateMipmap refuses an integer format "
+                          "(GL_RGBA8UI is not filterable"),
+            std::string::npos) << generate;
+  // noise_64x64.png's top-left texel is (139, ...): beyond GL_RGBA8I's 127.
+  const std::string range = error_of({"textures.u_tex.internalformat=\"GL_RGBA8I\"", "textures.u_tex.generate_mipmap=false",
+                                      "textures.u_tex.filter=\"nearest\"", "fragment=\"sampling/lookup_int.frag\""});
+  EXPECT_NE(range.find("/tests/data/draws/sampling/noise_64x64.png pixel ("), std::string::npos) << range;
+  EXPECT_NE(range.find(", and GL_RGBA8I holds whole numbers from -128 to 127 (internalformat"), std::string::npos) << range;
+  // noise_64x64.exr holds k * 6.1 - 3: not whole numbers.
+  const std::string fraction = error_of({"textures.u_tex.path=\"sampling/noise_64x64.exr\"", "textures.u_tex.internalformat=\"GL_RGBA32I\"",
+                                         "textures.u_tex.generate_mipmap=false", "textures.u_tex.filter=\"nearest\"",
+                                         "fragment=\"sampling/lookup_int.frag\""});
+  EXPECT_NE(fraction.find(", and GL_RGBA32I holds whole numbers from -2147483648 to 2147483647"), std::string::npos) << fraction;
+  const std::string border = error_of(with(with(rgba8ui, {"fragment=\"sampling/lookup_uint.frag\""}),
+                                           {"textures.u_tex.border_color=[1, 1.5, 0, 0]"}));
+  EXPECT_NE(border.find("draws.0.shaders.textures.u_tex.border_color.1: GL_RGBA8UI is an integer format: expected a whole "
+                        "number from 0 to 4294967295, got a number (1.5)"),
+            std::string::npos) << border;
+  const std::string negative = error_of(with(with(rgba8ui, {"fragment=\"sampling/lookup_uint.frag\""}),
+                                             {"textures.u_tex.border_color=[-1, 0, 0, 0]"}));
+  EXPECT_NE(negative.find("border_color.0: GL_RGBA8UI is an integer format: expected a whole number from 0 to 4294967295, got a number (-1)"),
+            std::string::npos) << negative;
+  // GL_LINEAR magnification: incomplete, reading the integers (0, 0, 0, 1).
+  const RenderResult linear = render_sweep({"textures.u_tex.internalformat=\"GL_RGBA8UI\"", "textures.u_tex.generate_mipmap=false",
+                                            "textures.u_tex.min_filter=\"nearest\"", "fragment=\"sampling/lookup_uint.frag\""});
+  ASSERT_EQ(linear.stats.warnings.size(), 1u);
+  EXPECT_NE(linear.stats.warnings[0].find("the texture is incomplete, so it reads (0, 0, 0, 1): GL_RGBA8UI is an integer "
+                                          "format, which GL samples only with GL_NEAREST magnification"),
+            std::string::npos) << linear.stats.warnings[0];
+  // lookup_uint.frag writes the integers' bits: (0, 0, 0, 1) as integers (GL 4.6 11.1.3.5).
+  const glm::vec4 zero_zero_zero_one(0.0f, 0.0f, 0.0f, std::bit_cast<float>(1u));
+  for (const glm::vec4& c : linear.framebuffer.color) ASSERT_EQ(std::memcmp(&c, &zero_zero_zero_one, sizeof c), 0);
+}
+
+// GL 4.6 8.14.2: with the minification filter GL_NEAREST only the base level is read, for an
+// integer format too, whatever levels the texture has and whatever the LOD.
+TEST(TextureLod, IntegerNearestMinificationReadsTheBaseLevel) {
+  texture::Texture t;
+  t.format = texture::TexelFormat::kR32I;
+  const std::int64_t level0[4 * 4] = {-7, 0, 0, 1, -7, 0, 0, 1, -7, 0, 0, 1, -7, 0, 0, 1};
+  const std::int64_t level1[4] = {123456789, 0, 0, 1};
+  t.levels.push_back(texture::make_integer_level(t.format, 2, 2, level0));
+  t.levels.push_back(texture::make_integer_level(t.format, 1, 1, level1));
+  t.sampler.min_filter = t.sampler.mag_filter = texture::Filter::Nearest;
+  t.finalize();
+  ASSERT_TRUE(t.complete) << t.incomplete_reason;
+  for (float lod : {0.0f, 1.0f, 4.0f}) {
+    texture::LodInput in;
+    in.lod = lod;
+    float out[4];
+    texture::sample(t, 0.5f, 0.5f, in, 0, 0, nullptr, out);
+    EXPECT_EQ(std::bit_cast<std::int32_t>(out[0]), -7) << "LOD " << lod;
+    EXPECT_EQ(std::bit_cast<std::int32_t>(out[3]), 1) << "LOD " << lod;  // R32I has no alpha: the integer 1
+  }
+  t.sampler.min_filter = texture::Filter::NearestMipmapNearest;
+  t.finalize();
+  texture::LodInput in;
+  in.lod = 1.0f;
+  float out[4];
+  texture::sample(t, 0.5f, 0.5f, in, 0, 0, nullptr, out);
+  EXPECT_EQ(std::bit_cast<std::int32_t>(out[0]), 123456789);
+}
+
+// Integer texels from files: an 8-bit PNG's stored integers k, a float EXR's whole numbers
+// (negative ones for a signed format), stored in the format and read back as the same integers.
+TEST(TextureScene, IntegerTexelsAreTheFilesIntegers) {
+  const Scene scene = load_scene(kSweep, {"draws.0.shaders.textures.u_tex.internalformat=\"GL_RGBA8UI\"",
+                                          "draws.0.shaders.textures.u_tex.generate_mipmap=false"});
+  const texture::Texture png = load_texture(scene.draws[0].shaders->textures[0], "png");
+  const FloatImage image = read_float_image(std::string(TESSREF_SOURCE_DIR) + "/tests/data/draws/sampling/noise_64x64.png");
+  // Texel (x, y) of level 0 is the file's row 63 - y.
+  for (int y : {0, 17, 63})
+    for (int x : {0, 40, 63})
+      for (int c = 0; c < 4; ++c) {
+        const float file = image.pixels[std::size_t(((63 - y) * 64 + x) * 4 + c)];
+        const float texel = png.levels[0].texels[std::size_t((y * 64 + x) * 4 + c)];
+        EXPECT_EQ(std::bit_cast<std::uint32_t>(texel), std::uint32_t(std::lround(file * 255.0f))) << x << ", " << y << ", " << c;
+      }
+  const std::filesystem::path exr = std::filesystem::temp_directory_path() / "tessref_integers.exr";
+  write_float_channels(exr, 2, 1, {"R", "G"}, {-32768.0f, 32767.0f, 0.0f, -1.0f});
+  const Scene signed_scene = load_scene(kSweep, {"draws.0.shaders.textures.u_tex.path=\"" + exr.string() + "\"",
+                                                 "draws.0.shaders.textures.u_tex.internalformat=\"GL_RG16I\"",
+                                                 "draws.0.shaders.textures.u_tex.generate_mipmap=false"});
+  const texture::Texture rg16i = load_texture(signed_scene.draws[0].shaders->textures[0], "exr");
+  const std::int32_t want[8] = {-32768, 32767, 0, 1, 0, -1, 0, 1};  // missing blue 0, alpha 1
+  for (int k = 0; k < 8; ++k) EXPECT_EQ(std::bit_cast<std::int32_t>(rg16i.levels[0].texels[std::size_t(k)]), want[k]) << k;
+  EXPECT_EQ(rg16i.levels[0].stored, (std::vector<std::uint8_t>{0x00, 0x80, 0xff, 0x7f, 0x00, 0x00, 0xff, 0xff}));
+  std::filesystem::remove(exr);
 }
 
 TEST(TextureScene, LookupsDoNotDependOnThreadsOrBatchSize) {

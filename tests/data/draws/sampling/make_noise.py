@@ -29,3 +29,11 @@ def pfm(path, w, h, value):
     rows = b''.join(struct.pack('<%df' % w, *[value(x, y) for x in range(w)]) for y in range(h))
     open(path, 'wb').write(b'Pf\n%d %d\n-1.0\n' % (w, h) + rows)
 pfm(d + '/depth_64x64.pfm', 64, 64, lambda x, y: (h(x * 7 + y * 131 + 5) % 65) / 64.0)
+# Raw texel bytes for the integer formats, whose every bit pattern is a value: six levels of random
+# bytes, 65536 >> 2k bytes (levels 0..5 of a 64x64 texture of 16-byte texels, 128x64 of 8-byte
+# ones, 128x128 of 4-byte ones, 256x128 of 2-byte and 256x256 of 1-byte ones), and for the RGB
+# formats 49152 >> 2k bytes (64x64 of 12-byte texels, 128x64 of 6-byte, 128x128 of 3-byte ones).
+for chain, size in (('noise_bytes', 65536), ('noise_bytes3', 49152)):
+    for k in range(6):
+        n = size >> (2 * k)
+        open('%s/%s_%d.raw' % (d, chain, k), 'wb').write(bytes(h(i * 2654435761 ^ k * 40503 ^ size) & 255 for i in range(n)))
