@@ -168,6 +168,7 @@ void set_sampler_state(const texture::SamplerState& s, texture::TexelFormat form
 
 GlTextures::GlTextures(const std::string& scene_source, const ShaderSettings& shaders) : shaders_(shaders) {
   ids_.resize(shaders.textures.size());
+  targets_.assign(shaders.textures.size(), GL_TEXTURE_2D);
   samplers_.assign(shaders.textures.size(), 0u);
   if (ids_.empty()) return;
   glGenTextures(GLsizei(ids_.size()), ids_.data());
@@ -176,29 +177,36 @@ GlTextures::GlTextures(const std::string& scene_source, const ShaderSettings& sh
     const texture::Texture tex = load_texture(t, scene_source + ": " + shaders.key + ".textures." + t.sampler);
     const GlFormat f = gl_format(tex.format);
     const texture::Level& level0 = tex.levels[0];
-    // glTexStorage2D: the levels given, or every level down to 1 x 1 for glGenerateMipmap.
+    const GLenum target = tex.array ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D;
+    // glTexStorage2D/3D: the levels given, or every level down to 1 x 1 for glGenerateMipmap.
+    const int given = t.layers.empty() ? int(t.levels.size()) : 1;
     const int all = texture::last_mip_level(0, level0.width, level0.height) + 1;
-    const int levels = t.generate_mipmaps ? all : int(t.levels.size());
-    glBindTexture(GL_TEXTURE_2D, ids_[k]);
-    glTexStorage2D(GL_TEXTURE_2D, levels, f.internal, level0.width, level0.height);
+    const int levels = t.generate_mipmaps ? all : given;
+    glBindTexture(target, ids_[k]);
+    if (tex.array) glTexStorage3D(target, levels, f.internal, level0.width, level0.height, level0.layers);
+    else glTexStorage2D(target, levels, f.internal, level0.width, level0.height);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    for (int l = 0; l < int(t.levels.size()); ++l) {
+    for (int l = 0; l < given; ++l) {
       const texture::Level& level = tex.levels[std::size_t(l)];
-      glTexSubImage2D(GL_TEXTURE_2D, l, 0, 0, level.width, level.height, f.format, f.type, level.stored.data());
+      if (tex.array)
+        glTexSubImage3D(target, l, 0, 0, 0, level.width, level.height, level.layers, f.format, f.type, level.stored.data());
+      else
+        glTexSubImage2D(target, l, 0, 0, level.width, level.height, f.format, f.type, level.stored.data());
     }
     // glGenerateMipmap right after the upload, with the initial base and max level: every level.
-    if (t.generate_mipmaps) glGenerateMipmap(GL_TEXTURE_2D);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, tex.base_level);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, tex.max_level);
+    if (t.generate_mipmaps) glGenerateMipmap(target);
+    glTexParameteri(target, GL_TEXTURE_BASE_LEVEL, tex.base_level);
+    glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, tex.max_level);
     // The texture's own sampler state; a sampler object's, when the scene binds one, overrides it.
-    set_sampler_state(t.sampler_state, tex.format, [](GLenum p, GLint v) { glTexParameteri(GL_TEXTURE_2D, p, v); },
-                      [](GLenum p, GLfloat v) { glTexParameterf(GL_TEXTURE_2D, p, v); },
-                      Overloads{[](const GLfloat* c) { glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, c); },
-                                [](const GLint* c) { glTexParameterIiv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, c); },
-                                [](const GLuint* c) { glTexParameterIuiv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, c); }});
+    set_sampler_state(t.sampler_state, tex.format, [target](GLenum p, GLint v) { glTexParameteri(target, p, v); },
+                      [target](GLenum p, GLfloat v) { glTexParameterf(target, p, v); },
+                      Overloads{[target](const GLfloat* c) { glTexParameterfv(target, GL_TEXTURE_BORDER_COLOR, c); },
+                                [target](const GLint* c) { glTexParameterIiv(target, GL_TEXTURE_BORDER_COLOR, c); },
+                                [target](const GLuint* c) { glTexParameterIuiv(target, GL_TEXTURE_BORDER_COLOR, c); }});
     const GLint swizzle[4] = {gl_swizzle(tex.swizzle[0]), gl_swizzle(tex.swizzle[1]), gl_swizzle(tex.swizzle[2]),
                               gl_swizzle(tex.swizzle[3])};
-    glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
+    glTexParameteriv(target, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
+    targets_[k] = target;
     if (t.sampler_object) {
       GLuint sampler = 0;
       glGenSamplers(1, &sampler);
@@ -211,6 +219,7 @@ GlTextures::GlTextures(const std::string& scene_source, const ShaderSettings& sh
     }
   }
   glBindTexture(GL_TEXTURE_2D, 0);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
   check_gl("GlTextures: uploading shaders.textures");
 }
 
@@ -231,7 +240,7 @@ void GlTextures::set_samplers(unsigned program) const {
 void GlTextures::bind() const {
   for (std::size_t k = 0; k < ids_.size(); ++k) {
     glActiveTexture(GLenum(GL_TEXTURE0 + k));
-    glBindTexture(GL_TEXTURE_2D, ids_[k]);
+    glBindTexture(targets_[k], ids_[k]);
     glBindSampler(GLuint(k), samplers_[k]);
   }
   glActiveTexture(GL_TEXTURE0);

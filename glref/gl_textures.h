@@ -27,6 +27,7 @@ class GlTextures {
   const ShaderSettings& shaders_;
   std::vector<unsigned> ids_;
   std::vector<unsigned> samplers_;  // a sampler object per unit, 0 for none
+  std::vector<unsigned> targets_;   // GL_TEXTURE_2D or GL_TEXTURE_2D_ARRAY per unit
 };
 
 }  // namespace tessref::glref

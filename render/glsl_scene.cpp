@@ -168,7 +168,6 @@ std::string with_article(const std::string& type) { return (type[0] == 'i' ? "an
 
 // shaders.textures: each image on its own texture unit (its index), the sampler uniform set to
 // that unit.
-
 void bind_textures(const Scene& scene, const ShaderSettings& shaders, glsl::GlslProgram& program, SceneProgram& out) {
   std::uint32_t unit = 0;
   for (const TextureSetting& t : shaders.textures) {
@@ -178,31 +177,39 @@ void bind_textures(const Scene& scene, const ShaderSettings& shaders, glsl::Glsl
       throw InputError(key + ": the program has no active sampler uniform of that name" +
                        (shape ? " (it is a " + shape->glsl_name + ")" : std::string()));
     const std::string& type = shape->glsl_name;
-    const bool shadow = type == "sampler2DShadow";
-    if (type != "sampler2D" && type != "isampler2D" && type != "usampler2D" && !shadow)
-      throw InputError(key + ": the uniform is " + with_article(type) + ", but textures are 2D images (GL_TEXTURE_2D); "
-                       "GL draws nothing from a sampler whose unit holds a texture of another target");
+    // The sampler's dimensions and shadow suffix without the i or u of its sampled type.
+    const std::string dims = type.substr(type[0] == 's' ? 0 : 1);
+    const bool shadow = dims.ends_with("Shadow"), array = dims.starts_with("sampler2DArray");
+    if (dims != "sampler2D" && dims != "sampler2DShadow" && dims != "sampler2DArray" && dims != "sampler2DArrayShadow")
+      throw InputError(key + ": the uniform is " + with_article(type) + ", but textures are 2D images (GL_TEXTURE_2D) "
+                       "or 2D arrays (GL_TEXTURE_2D_ARRAY); GL draws nothing from a sampler whose unit holds a texture "
+                       "of another target");
     auto tex = std::make_unique<texture::Texture>(load_texture(t, key));
+    if (tex->array != array)
+      throw InputError(key + ".target: the uniform is " + with_article(type) + ", which reads a " +
+                       (array ? "GL_TEXTURE_2D_ARRAY" : "GL_TEXTURE_2D") + " texture, and this one is " +
+                       (tex->array ? "GL_TEXTURE_2D_ARRAY" : "GL_TEXTURE_2D") +
+                       "; GL draws nothing from a sampler whose unit holds a texture of another target");
     // GLSL 4.60 8.9 and GL 4.6 8.23.1 leave these lookups undefined: refused, not guessed.
     const texture::TexelFormatInfo& format = texture::info(tex->format);
-    const char* wanted = format.signed_integer() ? "isampler2D" : format.unsigned_integer() ? "usampler2D" : nullptr;
-    if (wanted && type != wanted)
+    const std::string wanted = format.signed_integer() ? "i" + dims : format.unsigned_integer() ? "u" + dims : "";
+    if (!wanted.empty() && type != wanted)
       throw InputError(key + ".internalformat: " + format.gl_name + " is an integer format, read by " + with_article(wanted) +
                        ", and the uniform is " + with_article(type) + " (GL leaves the result undefined)");
-    if (!wanted && type[0] != 's')
+    if (wanted.empty() && type[0] != 's')
       throw InputError(key + ".internalformat: the uniform is " + with_article(type) + ", which reads " +
                        (type[0] == 'i' ? "signed" : "unsigned") + " integer formats (GL_R8I .. GL_RGBA32" +
                        (type[0] == 'i' ? "I" : "UI") + "), not " + format.gl_name + " (GL leaves the result undefined)");
     if (shadow && !format.depth)
-      throw InputError(key + ".internalformat: the uniform is a sampler2DShadow, which needs a depth format "
+      throw InputError(key + ".internalformat: the uniform is " + with_article(type) + ", which needs a depth format "
                        "(GL_DEPTH_COMPONENT16, 24, 32F or GL_DEPTH24_STENCIL8), not " + std::string(format.gl_name) +
                        " (GL leaves the result undefined)");
     if (shadow && !tex->sampler.compare)
-      throw InputError(key + ".compare_mode: the uniform is a sampler2DShadow, so give \"compare_ref_to_texture\" "
+      throw InputError(key + ".compare_mode: the uniform is " + with_article(type) + ", so give \"compare_ref_to_texture\" "
                        "(with GL_NONE GL leaves a shadow lookup's result undefined)");
     if (!shadow && tex->sampler.compare)
-      throw InputError(key + ".compare_mode: the uniform is a sampler2D, which GL leaves undefined with "
-                       "GL_COMPARE_REF_TO_TEXTURE: use a sampler2DShadow, or \"none\"");
+      throw InputError(key + ".compare_mode: the uniform is " + with_article(type) + ", which GL leaves undefined with "
+                       "GL_COMPARE_REF_TO_TEXTURE: use a " + type + "Shadow, or \"none\"");
     // GL 4.6 11.1.3.5: an incomplete texture reads (0, 0, 0, 1); the draw goes on, as on a driver.
     if (!tex->complete)
       out.warnings.push_back(key + ": the texture is incomplete, so it reads (0, 0, 0, 1): " + tex->incomplete_reason);
@@ -426,28 +433,28 @@ std::vector<std::int64_t> integer_texels(const FloatImage& image, const std::vec
   return out;
 }
 
-}  // namespace
-
-namespace {
-
-// Level k of a texture whose level 0 is w x h, from a file of raw texel bytes in format f.
-texture::Level read_raw_level(const std::filesystem::path& file, texture::TexelFormat f, int w, int h, int k,
+// Level k of a texture whose level 0 is w x h with `layers` layers, from a file of raw texel
+// bytes in format f.
+texture::Level read_raw_level(const std::filesystem::path& file, texture::TexelFormat f, std::array<int, 3> size0, int k,
                               const std::string& at) {
   const texture::TexelFormatInfo& fi = texture::info(f);
+  const int w = size0[0], h = size0[1];
   if (k > 0 && std::max(w, h) >> k == 0)
     throw InputError(at + ": a " + std::to_string(w) + "x" + std::to_string(h) + " texture has no level " + std::to_string(k));
   texture::Level level;
   level.width = std::max(1, w >> k);
   level.height = std::max(1, h >> k);
+  level.layers = size0[2];
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(at + ": cannot open " + file.string());
   level.stored.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  const std::size_t want = std::size_t(level.width) * std::size_t(level.height) * std::size_t(fi.bytes_per_texel());
+  const std::size_t want =
+      std::size_t(level.width) * std::size_t(level.height) * std::size_t(level.layers) * std::size_t(fi.bytes_per_texel());
   if (level.stored.size() != want)
     throw InputError(at + ": " + file.string() + " has " + std::to_string(level.stored.size()) + " bytes, and level " +
                      std::to_string(k) + " of " + fi.gl_name + " is " + std::to_string(level.width) + "x" +
-                     std::to_string(level.height) + " texels of " + std::to_string(fi.bytes_per_texel()) + " bytes: " +
-                     std::to_string(want) + " (raw_size)");
+                     std::to_string(level.height) + (level.layers > 1 ? "x" + std::to_string(level.layers) : "") +
+                     " texels of " + std::to_string(fi.bytes_per_texel()) + " bytes: " + std::to_string(want) + " (raw_size)");
   // GL_DEPTH_COMPONENT24 words as GL_UNSIGNED_INT: the top 24 bits are the depth; the low byte is
   // made to repeat them, so the driver's conversion cannot round differently.
   if (f == texture::TexelFormat::kDepth24)
@@ -461,36 +468,80 @@ texture::Level read_raw_level(const std::filesystem::path& file, texture::TexelF
   return level;
 }
 
+// One image file's texels for a texture of `format` (declared when `declared`), RGBA rows from the
+// bottom: floats, or integers for an integer format.
+struct ImageTexels {
+  int width = 0, height = 0;
+  std::vector<float> rgba;
+  std::vector<std::int64_t> integers;
+};
+ImageTexels read_image_texels(const std::filesystem::path& file, const texture::TexelFormatInfo& format, bool declared,
+                              const std::string& at) {
+  FloatImage image;
+  try {
+    image = read_float_image(file);
+  } catch (const InputError& e) {
+    throw InputError(at + ": " + e.what());
+  }
+  if (declared && image.channels != format.channels)
+    throw InputError(at + ": " + file.string() + " is " + channels_name(image.channels) + ", and " + format.gl_name +
+                     " has " + std::to_string(format.channels) + " channel" + (format.channels > 1 ? "s" : "") +
+                     " (internalformat)");
+  using texture::kMaxTextureSize;
+  if (image.width > kMaxTextureSize || image.height > kMaxTextureSize)
+    throw InputError(at + ": " + file.string() + " is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                     ", more than GL_MAX_TEXTURE_SIZE (" + std::to_string(kMaxTextureSize) + ")");
+  ImageTexels out;
+  out.width = image.width;
+  out.height = image.height;
+  out.rgba = rgba_rows(image, !declared);
+  if (format.integer()) out.integers = integer_texels(image, out.rgba, format, file, at);
+  return out;
+}
+
+// Layers of one level, each width x height, as a level of format f.
+texture::Level make_level(texture::TexelFormat f, const std::vector<ImageTexels>& layers) {
+  const int w = layers[0].width, h = layers[0].height, n = int(layers.size());
+  if (texture::info(f).integer()) {
+    std::vector<std::int64_t> all;
+    for (const ImageTexels& l : layers) all.insert(all.end(), l.integers.begin(), l.integers.end());
+    return texture::make_integer_level(f, w, h, all.data(), n);
+  }
+  std::vector<float> all;
+  for (const ImageTexels& l : layers) all.insert(all.end(), l.rgba.begin(), l.rgba.end());
+  return texture::make_level(f, w, h, all.data(), n);
+}
+
 }  // namespace
 
 texture::Texture load_texture(const TextureSetting& t, const std::string& key) {
   texture::Texture tex;
+  tex.array = t.array;
   tex.format = t.format.value_or(texture::TexelFormat::kRgba32F);
   const texture::TexelFormatInfo& format = texture::info(tex.format);
+  if (!t.layers.empty()) {  // an array's level 0, one file per layer
+    std::vector<ImageTexels> layers;
+    for (std::size_t k = 0; k < t.layers.size(); ++k) {
+      const std::string at = key + ".layers." + std::to_string(k);
+      layers.push_back(read_image_texels(t.layers[k], format, t.format.has_value(), at));
+      if (layers[k].width != layers[0].width || layers[k].height != layers[0].height)
+        throw InputError(at + ": " + t.layers[k].string() + " is " + std::to_string(layers[k].width) + "x" +
+                         std::to_string(layers[k].height) + ", and layer 0 is " + std::to_string(layers[0].width) + "x" +
+                         std::to_string(layers[0].height) + " (an array's layers are one size)");
+    }
+    tex.levels.push_back(make_level(tex.format, layers));
+  }
   int width0 = 0, height0 = 0;
   for (std::size_t k = 0; k < t.levels.size(); ++k) {
     const std::string at = t.levels.size() > 1 ? key + ".levels." + std::to_string(k) : key;
     if (t.raw_size) {
-      tex.levels.push_back(read_raw_level(t.levels[k], tex.format, (*t.raw_size)[0], (*t.raw_size)[1], int(k), at));
+      tex.levels.push_back(read_raw_level(t.levels[k], tex.format, *t.raw_size, int(k), at));
       continue;
     }
-    FloatImage image;
-    try {
-      image = read_float_image(t.levels[k]);
-    } catch (const InputError& e) {
-      throw InputError(at + ": " + e.what());
-    }
-    if (t.format && image.channels != format.channels)
-      throw InputError(at + ": " + t.levels[k].string() + " is " + channels_name(image.channels) + ", and " +
-                       format.gl_name + " has " + std::to_string(format.channels) + " channel" +
-                       (format.channels > 1 ? "s" : "") + " (internalformat)");
+    ImageTexels image = read_image_texels(t.levels[k], format, t.format.has_value(), at);
     if (k == 0) {
       width0 = image.width;
       height0 = image.height;
-      using texture::kMaxTextureSize;
-      if (width0 > kMaxTextureSize || height0 > kMaxTextureSize)
-        throw InputError(at + ": " + t.levels[k].string() + " is " + std::to_string(width0) + "x" + std::to_string(height0) +
-                         ", more than GL_MAX_TEXTURE_SIZE (" + std::to_string(kMaxTextureSize) + ")");
     }
     // glTexStorage2D fixes level k's size from level 0's (GL 4.6 8.19).
     const int w = std::max(1, width0 >> k), h = std::max(1, height0 >> k);
@@ -500,12 +551,7 @@ texture::Texture load_texture(const TextureSetting& t, const std::string& key) {
                        std::to_string(width0) + "x" + std::to_string(height0) + " texture is " +
                        (std::max(width0, height0) >> k == 0 ? std::string("past its last level")
                                                             : std::to_string(w) + "x" + std::to_string(h)));
-    const std::vector<float> rgba = rgba_rows(image, !t.format);
-    if (format.integer())
-      tex.levels.push_back(texture::make_integer_level(tex.format, image.width, image.height,
-                                                       integer_texels(image, rgba, format, t.levels[k], at).data()));
-    else
-      tex.levels.push_back(texture::make_level(tex.format, image.width, image.height, rgba.data()));
+    tex.levels.push_back(make_level(tex.format, {std::move(image)}));
   }
   // glGenerateMipmap right after level 0 is uploaded, before any glTexParameter: every level.
   if (t.generate_mipmaps) texture::generate_mipmaps(tex);

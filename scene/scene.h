@@ -92,13 +92,16 @@ struct UniformSetting {
 // scene/texture_schema.h.
 struct TextureSetting {
   std::string sampler;  // the uniform's name
-  std::vector<std::filesystem::path> levels;  // level k's image file, from level 0
+  bool array = false;   // GL_TEXTURE_2D_ARRAY, else GL_TEXTURE_2D
+  std::vector<std::filesystem::path> levels;  // level k's image file, from level 0 (raw: every layer)
+  std::vector<std::filesystem::path> layers;  // an array's level 0 as one image file per layer
   // GL_RGBA32F from any image when absent (the image's gray expanded to RGB); else the file's
   // channels must be the format's.
   std::optional<texture::TexelFormat> format;
-  // raw_size: the files are the format's bytes as glTexSubImage2D takes them (GL_UNPACK_ALIGNMENT
-  // 1, the bottom row first), level 0 this many texels wide and high; else image files.
-  std::optional<std::array<int, 2>> raw_size;
+  // raw_size: the files are the format's bytes as glTexSubImage2D / 3D take them
+  // (GL_UNPACK_ALIGNMENT 1, the bottom row first, layer after layer), level 0 this many texels
+  // wide and high and this many layers (1 for GL_TEXTURE_2D); else image files.
+  std::optional<std::array<int, 3>> raw_size;
   bool generate_mipmaps = false;  // glGenerateMipmap after level 0 is given
   // The file's levels are all the texture has unless generate_mipmaps: its storage then has
   // every level down to 1 x 1.

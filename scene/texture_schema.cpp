@@ -112,11 +112,33 @@ TextureSetting read_texture_setting(const std::string& name, const nlohmann::jso
     return t;
   }
   JsonObject o(value, path, source);
-  const bool has_path = o.has("path"), has_levels = o.has("levels");
+  if (o.has("target")) {
+    o.describe("target", "GL_TEXTURE_2D (default) or GL_TEXTURE_2D_ARRAY");
+    const std::string target = o.string("target");
+    if (target != "GL_TEXTURE_2D" && target != "GL_TEXTURE_2D_ARRAY")
+      o.fail("target", "expected GL_TEXTURE_2D or GL_TEXTURE_2D_ARRAY (tessref's targets), got \"" + target + "\"");
+    t.array = target == "GL_TEXTURE_2D_ARRAY";
+  }
+  const bool has_path = o.has("path"), has_levels = o.has("levels"), has_layers = o.has("layers");
   o.describe("path", "an image file: level 0");
   o.describe("levels", "an array of image files: levels 0, 1, ... (glTexSubImage2D per level)");
-  if (has_path == has_levels) o.fail(has_path ? "levels" : "path", "give either path (level 0) or levels (one file per level)");
-  if (has_path) {
+  o.describe("layers", "a GL_TEXTURE_2D_ARRAY's level 0: an array of image files, one per layer");
+  if (has_layers && !t.array)
+    o.fail("layers", "layers are a 2D array texture's: give \"target\": \"GL_TEXTURE_2D_ARRAY\"");
+  if (int(has_path) + int(has_levels) + int(has_layers) != 1)
+    o.fail(has_path ? "levels" : "path", t.array ? "give one of layers (level 0's layers, image files), or path or levels "
+                                                   "(raw bytes of every layer, with raw_size)"
+                                                 : "give either path (level 0) or levels (one file per level)");
+  if (has_layers) {
+    const nlohmann::json& files = o.value("layers");
+    if (!files.is_array() || files.empty() || files.size() > std::size_t(texture::kMaxArrayLayers))
+      o.fail("layers", "expected an array of 1 to " + std::to_string(texture::kMaxArrayLayers) +
+                           " image files (GL_MAX_ARRAY_TEXTURE_LAYERS), got " + describe_json(files));
+    for (std::size_t k = 0; k < files.size(); ++k) {
+      if (!files[k].is_string()) o.fail("layers." + std::to_string(k), "expected an image file name, got " + describe_json(files[k]));
+      t.layers.push_back(resolve(files[k].get<std::string>()));
+    }
+  } else if (has_path) {
     t.levels.push_back(resolve(o.string("path")));
   } else {
     const nlohmann::json& files = o.value("levels");
@@ -134,17 +156,28 @@ TextureSetting read_texture_setting(const std::string& name, const nlohmann::jso
     if (!t.format) o.fail("internalformat", "expected one of " + texture::texel_format_names() + ", got \"" + f + "\"");
   }
   if (o.has("raw_size")) {
-    o.describe("raw_size", "[width, height]: the files are raw texel bytes of internalformat, level 0 this size");
+    o.describe("raw_size", t.array ? "[width, height, layers]: the files are raw texel bytes of internalformat, every "
+                                     "layer of a level, level 0 this size"
+                                   : "[width, height]: the files are raw texel bytes of internalformat, level 0 this size");
     const nlohmann::json& size = o.value("raw_size");
-    auto side = [](const nlohmann::json& v) {
-      return v.is_number_integer() && v.get<long long>() >= 1 && v.get<long long>() <= texture::kMaxTextureSize;
+    auto within = [](const nlohmann::json& v, int most) {
+      return v.is_number_integer() && v.get<long long>() >= 1 && v.get<long long>() <= most;
     };
-    if (!size.is_array() || size.size() != 2 || !side(size[0]) || !side(size[1]))
-      o.fail("raw_size", "expected [width, height], whole numbers from 1 to " + std::to_string(texture::kMaxTextureSize) +
-                             " (GL_MAX_TEXTURE_SIZE), got " + describe_json(size));
+    const std::string sides = "whole numbers from 1 to " + std::to_string(texture::kMaxTextureSize) + " (GL_MAX_TEXTURE_SIZE)";
+    if (has_layers) o.fail("raw_size", "raw bytes come in path or levels (every layer of a level in one file), not layers");
+    if (t.array && (!size.is_array() || size.size() != 3 || !within(size[0], texture::kMaxTextureSize) ||
+                    !within(size[1], texture::kMaxTextureSize) || !within(size[2], texture::kMaxArrayLayers)))
+      o.fail("raw_size", "expected [width, height, layers], " + sides + " and layers from 1 to " +
+                             std::to_string(texture::kMaxArrayLayers) + " (GL_MAX_ARRAY_TEXTURE_LAYERS), got " + describe_json(size));
+    if (!t.array && (!size.is_array() || size.size() != 2 || !within(size[0], texture::kMaxTextureSize) ||
+                     !within(size[1], texture::kMaxTextureSize)))
+      o.fail("raw_size", "expected [width, height], " + sides + ", got " + describe_json(size));
     if (!t.format) o.fail("raw_size", "raw texel bytes need the internalformat that lays them out");
-    t.raw_size = std::array<int, 2>{size[0].get<int>(), size[1].get<int>()};
+    t.raw_size = std::array<int, 3>{size[0].get<int>(), size[1].get<int>(), t.array ? size[2].get<int>() : 1};
   }
+  if (t.array && !has_layers && !t.raw_size)
+    o.fail(has_path ? "path" : "levels", "a GL_TEXTURE_2D_ARRAY's image files are its layers: give layers (level 0's), "
+                                         "or raw bytes of every layer with raw_size [width, height, layers]");
   if (o.has("generate_mipmap")) {
     t.generate_mipmaps = o.boolean("generate_mipmap");
     if (t.generate_mipmaps && t.levels.size() > 1)

@@ -301,9 +301,11 @@ void Runner::texture(const XIns& x) {
     return u < inv.textures_.size() ? inv.textures_[u] : nullptr;
   };
   static const texture::Texture kUnbound;  // no levels: incomplete, reads (0, 0, 0, 1)
+  // A unit holds a texture per target: a 2D array sampler on a unit with a 2D texture reads the
+  // unit's empty GL_TEXTURE_2D_ARRAY binding, and the reverse.
   auto tex = [&](int l) -> const texture::Texture& {
     const texture::Texture* t = bound(l);
-    return t ? *t : kUnbound;
+    return t && t->array == op.arrayed ? *t : kUnbound;
   };
   auto irow = [&](std::uint32_t r, std::uint32_t c, int l) { return std::int32_t(row<std::uint32_t>(r, c)[l]); };
   auto frow = [&](std::uint32_t r, std::uint32_t c, int l) { return row<float>(r, c)[l]; };
@@ -313,11 +315,11 @@ void Runner::texture(const XIns& x) {
   if (op.kind == Kind::QuerySize || op.kind == Kind::QueryLevels) {
     for (int l = 0; l < n; ++l) {
       if (!mask[l]) continue;
-      int size[2];
+      int size[3];  // width, height, layers
       texture::level_size(tex(l), op.lod == kNone ? 0 : irow(op.lod, 0, l), size);
       if (op.kind == Kind::QueryLevels) row<std::uint32_t>(x.dst)[l] = std::uint32_t(texture::query_levels(tex(l)));
       else
-        for (std::uint32_t c = 0; c < x.n && c < 2; ++c) row<std::uint32_t>(x.dst, c)[l] = std::uint32_t(size[c]);
+        for (std::uint32_t c = 0; c < x.n && c < 3; ++c) row<std::uint32_t>(x.dst, c)[l] = std::uint32_t(size[c]);
     }
     return;
   }
@@ -329,16 +331,20 @@ void Runner::texture(const XIns& x) {
       const std::int64_t i = std::int64_t(irow(op.coord, 0, l)) + offset(0, l), j = std::int64_t(irow(op.coord, 1, l)) + offset(1, l);
       const bool inside = i >= 0 && j >= 0 && i <= 0x7fffffff && j <= 0x7fffffff;
       // Outside int's range: a texel no level has.
-      texture::fetch(tex(l), inside ? int(i) : -1, inside ? int(j) : -1, op.lod == kNone ? 0 : irow(op.lod, 0, l), texel);
+      texture::fetch(tex(l), inside ? int(i) : -1, inside ? int(j) : -1, op.arrayed ? irow(op.coord, 2, l) : 0,
+                     op.lod == kNone ? 0 : irow(op.lod, 0, l), texel);
       for (std::uint32_t c = 0; c < x.n; ++c) row<float>(x.dst, c)[l] = texel[c];
     }
     return;
   }
   // Sample, Gather and QueryLod: the coordinates and reference depth, projected for the Proj forms.
   float s[L], t[L], dref[L];
+  int layer[L];  // an array's layer (texture::array_layer), else 0
   for (int l = 0; l < n; ++l) {
     s[l] = frow(op.coord, 0, l);
     t[l] = frow(op.coord, 1, l);
+    // textureQueryLod takes (s, t) alone.
+    layer[l] = op.arrayed && op.kind != Kind::QueryLod ? texture::array_layer(tex(l), frow(op.coord, 2, l)) : 0;
     dref[l] = op.dref == kNone ? 0.0f : frow(op.dref, 0, l);
     if (op.proj) {  // times 1/q, as Mesa lowers the projection (nir_lower_tex)
       const float inv_q = 1.0f / frow(op.coord, op.coord_comps - 1, l);
@@ -358,12 +364,13 @@ void Runner::texture(const XIns& x) {
         // lowers it (nir_lower_tex's tg4 offsets).
         for (int k = 0; k < 4; ++k) {
           float one[4];
-          texture::gather(tex(l), s[l], t[l], irow(op.offsets, std::uint32_t(2 * k), l),
+          texture::gather(tex(l), s[l], t[l], layer[l], irow(op.offsets, std::uint32_t(2 * k), l),
                           irow(op.offsets, std::uint32_t(2 * k + 1), l), component, shadow ? &dref[l] : nullptr, one);
           texel[k] = one[3];
         }
       } else {
-        texture::gather(tex(l), s[l], t[l], offset(0, l), offset(1, l), component, shadow ? &dref[l] : nullptr, texel);
+        texture::gather(tex(l), s[l], t[l], layer[l], offset(0, l), offset(1, l), component, shadow ? &dref[l] : nullptr,
+                        texel);
       }
       for (std::uint32_t c = 0; c < x.n; ++c) row<float>(x.dst, c)[l] = texel[c];
     }
@@ -427,7 +434,8 @@ void Runner::texture(const XIns& x) {
       continue;
     }
     float texel[4];
-    texture::sample(tex(l), s[l], t[l], in, offset(0, l), offset(1, l), shadow ? &dref[l] : nullptr, texel, vector_linear[l]);
+    texture::sample(tex(l), s[l], t[l], layer[l], in, offset(0, l), offset(1, l), shadow ? &dref[l] : nullptr, texel,
+                    vector_linear[l]);
     for (std::uint32_t c = 0; c < x.n; ++c) row<float>(x.dst, c)[l] = texel[c];
   }
 }

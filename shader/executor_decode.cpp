@@ -12,6 +12,10 @@
 namespace tessref::shader {
 namespace {
 
+// The samplers the executor reads, for messages.
+const std::string kSamplers =
+    "sampler2D, isampler2D, usampler2D, sampler2DShadow and their 2DArray forms";
+
 [[noreturn]] void unsupported(const Module& m, const Instruction& ins, const std::string& what) {
   std::string where = ins.line > 0 ? " (line " + std::to_string(ins.line) + ")" : "";
   const char* name = opcode_name(ins.opcode);
@@ -253,17 +257,17 @@ struct Decoder {
 
   void emit(XIns x) { p.code.push_back(x); }
 
-  // OpImageSample*, OpImage*Gather, OpImageFetch and OpImageQuery* on a sampler2D, isampler2D,
-  // usampler2D or sampler2DShadow: one TexOp each.
+  // OpImageSample*, OpImage*Gather, OpImageFetch and OpImageQuery* on a 2D sampler or 2D array
+  // sampler of any sampled type, or their shadow forms: one TexOp each.
   void texture(const Instruction& ins, const std::vector<std::uint32_t>& o) {
     const spv::Op op = spv::Op(ins.opcode);
     const Type& image = m.type(value_type.at(o.at(0)));
     const std::string name = sampler_glsl_name(m, image);
-    if (name != "sampler2D" && name != "sampler2DShadow" && name != "isampler2D" && name != "usampler2D")
-      unsupported(m, ins, (name[0] == 'i' ? "an " : "a ") + name +
-                              " (tessref samples sampler2D, isampler2D, usampler2D and sampler2DShadow only)");
+    if (image.image_dim != spv::Dim2D || image.image_ms)
+      unsupported(m, ins, (name[0] == 'i' ? "an " : "a ") + name + " (tessref samples " + kSamplers + " only)");
     TexOp t;
     t.image = value(ins, o[0]);
+    t.arrayed = image.image_arrayed != 0;
     XIns x = base(ins, XOp::Texture);
     switch (op) {
       case spv::OpImageQuerySizeLod: case spv::OpImageQuerySize:

@@ -57,6 +57,7 @@ struct TexOp {
   std::uint32_t coord = kNone;  // float coordinates (Fetch: integer texel indices)
   std::uint32_t coord_comps = 0;
   bool proj = false;            // divide s and t by the coordinate's last component
+  bool arrayed = false;         // a 2D array: the coordinate's third component is the layer
   // Sample without Lod or Grad: the LOD comes from the quad's derivatives of the coordinate in a
   // fragment shader, and is 0 in other stages (GLSL 4.60 8.9).
   bool implicit_lod = false;

@@ -195,24 +195,24 @@ i32 nearest_index8(float s, i32 w, i32 off, Wrap wrap, bool pot) {
   return wrap == Wrap::Repeat ? i & (w - 1) : std::clamp(i, 0, w - 1);
 }
 
-void texel8(TexelFormat format, const Level& l, i32 i, i32 j, std::uint8_t out[4]) {
+void texel8(TexelFormat format, const LevelSlice& l, i32 i, i32 j, std::uint8_t out[4]) {
   const int channels = info(format).channels;
-  const std::uint8_t* p = l.stored.data() + (std::size_t(j) * std::size_t(l.width) + std::size_t(i)) * std::size_t(channels);
+  const std::uint8_t* p = l.stored + (std::size_t(j) * std::size_t(l.width) + std::size_t(i)) * std::size_t(channels);
   for (int c = 0; c < 4; ++c) out[c] = c < channels ? p[c] : c == 3 ? 255 : 0;
 }
 
-void texelf(const Level& l, const std::array<float, 4>& border, i32 i, i32 j, float out[4]) {
+void texelf(const LevelSlice& l, const std::array<float, 4>& border, i32 i, i32 j, float out[4]) {
   if (i < 0 || j < 0) {
     for (int c = 0; c < 4; ++c) out[c] = border[std::size_t(c)];
     return;
   }
-  const float* p = l.texels.data() + (std::size_t(j) * std::size_t(l.width) + std::size_t(i)) * 4;
+  const float* p = l.texels + (std::size_t(j) * std::size_t(l.width) + std::size_t(i)) * 4;
   for (int c = 0; c < 4; ++c) out[c] = p[c];
 }
 
 }  // namespace
 
-void filter_unorm8(TexelFormat format, const Level& level, const Axes& axes, bool linear, float s, float t,
+void filter_unorm8(TexelFormat format, const LevelSlice& level, const Axes& axes, bool linear, float s, float t,
                    int offset_s, int offset_t, std::uint8_t out[4]) {
   const i32 w = level.width, h = level.height;
   if (!linear) {
@@ -247,7 +247,7 @@ bool passes(const DepthCompare& c, float depth) {
   return false;
 }
 
-void filter_float(const Level& level, const Axes& axes, const std::array<float, 4>& border, FloatFilter filter,
+void filter_float(const LevelSlice& level, const Axes& axes, const std::array<float, 4>& border, FloatFilter filter,
                   float s, float t, int offset_s, int offset_t, const DepthCompare* compare, float out[4]) {
   const i32 w = level.width, h = level.height;
   if (filter == FloatFilter::Nearest) {
@@ -281,7 +281,7 @@ void filter_float(const Level& level, const Axes& axes, const std::array<float, 
     out[c] = lerp(y.weight, lerp(x.weight, t00[c], t10[c]), lerp(x.weight, t01[c], t11[c]));
 }
 
-void gather_float(const Level& level, const Axes& axes, const std::array<float, 4>& border, float s, float t,
+void gather_float(const LevelSlice& level, const Axes& axes, const std::array<float, 4>& border, float s, float t,
                   int offset_s, int offset_t, int channel, const DepthCompare* compare, float out[4]) {
   const std::array<i32, 2> x = gather_indices(s, level.width, offset_s, axes.wrap[0], axes.pot[0]);
   const std::array<i32, 2> y = gather_indices(t, level.height, offset_t, axes.wrap[1], axes.pot[1]);

@@ -18,7 +18,7 @@ struct Axes {
 
 // Formats of 8-bit normalized channels, filtered in 8-bit fixed point (repeat and clamp-to-edge
 // only): the channels, four per texel (missing green and blue 0, missing alpha 255).
-void filter_unorm8(TexelFormat format, const Level& level, const Axes& axes, bool linear, float s, float t,
+void filter_unorm8(TexelFormat format, const LevelSlice& level, const Axes& axes, bool linear, float s, float t,
                    int offset_s, int offset_t, std::uint8_t out[4]);
 
 // How filter_float filters. NearestByWeights: GL_NEAREST as llvmpipe computes it for the
@@ -40,12 +40,12 @@ bool passes(const DepthCompare& c, float depth);
 // Every other format and wrap, in float: the texels as decoded, border texels as `border`. With a
 // comparison, every channel of the result is the filtered 1s and 0s: for GL_LINEAR, per row
 // (w where the second passes) + (1 - w where the first does), then the rows interpolated.
-void filter_float(const Level& level, const Axes& axes, const std::array<float, 4>& border, FloatFilter filter,
+void filter_float(const LevelSlice& level, const Axes& axes, const std::array<float, 4>& border, FloatFilter filter,
                   float s, float t, int offset_s, int offset_t, const DepthCompare* compare, float out[4]);
 
 // textureGather (GL 4.6 8.14.2): GL_LINEAR's four texels at (s, t), in the order (i0, j1),
 // (i1, j1), (i1, j0), (i0, j0): channel `channel` of each, or with a comparison its 1 or 0.
-void gather_float(const Level& level, const Axes& axes, const std::array<float, 4>& border, float s, float t,
+void gather_float(const LevelSlice& level, const Axes& axes, const std::array<float, 4>& border, float s, float t,
                   int offset_s, int offset_t, int channel, const DepthCompare* compare, float out[4]);
 
 // GL_TEXTURE_BORDER_COLOR as the sampler uses it: clamped to [0, 1] for normalized formats.

@@ -52,25 +52,30 @@ float render_target_value(ChannelType type, int channel, float x) {
 // float otherwise), then stores the result as llvmpipe's render target of the format stores it
 // (render_target_value). For an even size that is the mean of a 2 x 2 block; an odd size weighs
 // two texels at the centre, not three.
+// An array's layers are blitted one by one.
 Level downsample(TexelFormat format, const Level& src, int w, int h) {
   const Axes clamp{{Wrap::ClampToEdge, Wrap::ClampToEdge}, {false, false}};
   const std::array<float, 4> no_border{};
   const ChannelType type = info(format).type;
-  std::vector<float> rgba(std::size_t(w) * std::size_t(h) * 4);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const float s = (float(x) + 0.5f) / float(w), t = (float(y) + 0.5f) / float(h);
-      float* out = rgba.data() + (std::size_t(y) * std::size_t(w) + std::size_t(x)) * 4;
-      if (type == ChannelType::kUnorm8) {
-        std::uint8_t texel[4];
-        filter_unorm8(format, src, clamp, true, s, t, 0, 0, texel);
-        for (int c = 0; c < 4; ++c) out[c] = fixed::unorm8_to_float(texel[c]);  // exact k / 255: encodes to k
-        continue;
+  std::vector<float> rgba(std::size_t(w) * std::size_t(h) * std::size_t(src.layers) * 4);
+  for (int layer = 0; layer < src.layers; ++layer) {
+    const LevelSlice from = src.slice(layer);
+    float* to = rgba.data() + std::size_t(layer) * std::size_t(w) * std::size_t(h) * 4;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const float s = (float(x) + 0.5f) / float(w), t = (float(y) + 0.5f) / float(h);
+        float* out = to + (std::size_t(y) * std::size_t(w) + std::size_t(x)) * 4;
+        if (type == ChannelType::kUnorm8) {
+          std::uint8_t texel[4];
+          filter_unorm8(format, from, clamp, true, s, t, 0, 0, texel);
+          for (int c = 0; c < 4; ++c) out[c] = fixed::unorm8_to_float(texel[c]);  // exact k / 255: encodes to k
+          continue;
+        }
+        filter_float(from, clamp, no_border, FloatFilter::Linear, s, t, 0, 0, nullptr, out);
+        for (int c = 0; c < 4; ++c) out[c] = render_target_value(type, c, out[c]);
       }
-      filter_float(src, clamp, no_border, FloatFilter::Linear, s, t, 0, 0, nullptr, out);
-      for (int c = 0; c < 4; ++c) out[c] = render_target_value(type, c, out[c]);
-    }
-  return make_level(format, w, h, rgba.data());
+  }
+  return make_level(format, w, h, rgba.data(), src.layers);
 }
 
 }  // namespace

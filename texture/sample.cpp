@@ -211,11 +211,18 @@ bool linear_in_vector(const Texture& t, const LodInput& lod) {
   return choose_levels(t, lod).linear;
 }
 
-void sample(const Texture& t, float s, float tc, const LodInput& lod, int offset_s, int offset_t, const float* dref,
-            float out[4], bool vector_linear) {
+int array_layer(const Texture& t, float r) {
+  if (!t.array || !t.complete) return 0;
+  const double layer = std::floor(double(r) + 0.5);  // exact: r + 0.5 in double
+  const int last = t.levels[std::size_t(t.base_level)].layers - 1;
+  return layer >= double(last) ? last : layer > 0.0 ? int(layer) : 0;  // NaN: 0
+}
+
+void sample(const Texture& t, float s, float tc, int layer, const LodInput& lod, int offset_s, int offset_t,
+            const float* dref, float out[4], bool vector_linear) {
   if (!t.complete) return incomplete(t, out);
   const LevelChoice c = choose_levels(t, lod);
-  const Level& l0 = t.levels[std::size_t(c.level0)];
+  const LevelSlice l0 = t.levels[std::size_t(c.level0)].slice(layer);
   const Axes axes = axes_of(t);
   const std::optional<DepthCompare> compare = depth_compare(t, dref);
   const DepthCompare* cmp = compare ? &*compare : nullptr;
@@ -227,7 +234,7 @@ void sample(const Texture& t, float s, float tc, const LodInput& lod, int offset
     const i32 w = fptosi(c.fpart * 256.0f);
     if (w > 0) {
       std::uint8_t r1[4];
-      filter_unorm8(t.format, t.levels[std::size_t(c.level1)], axes, c.linear, s, tc, offset_s, offset_t, r1);
+      filter_unorm8(t.format, t.levels[std::size_t(c.level1)].slice(layer), axes, c.linear, s, tc, offset_s, offset_t, r1);
       for (int k = 0; k < 4; ++k) r0[k] = fixed::unorm8_lerp(w, r0[k], r1[k]);
     }
     for (int k = 0; k < 4; ++k) texel[k] = fixed::unorm8_texel_to_float(r0[k]);
@@ -240,7 +247,7 @@ void sample(const Texture& t, float s, float tc, const LodInput& lod, int offset
     filter_float(l0, axes, border, filter, s, tc, offset_s, offset_t, cmp, texel);
     if (c.fpart > 0.0f) {
       float t1[4];
-      filter_float(t.levels[std::size_t(c.level1)], axes, border, filter, s, tc, offset_s, offset_t, cmp, t1);
+      filter_float(t.levels[std::size_t(c.level1)].slice(layer), axes, border, filter, s, tc, offset_s, offset_t, cmp, t1);
       for (int k = 0; k < 4; ++k) texel[k] = lerp(c.fpart, texel[k], t1[k]);
     }
   }
@@ -251,7 +258,7 @@ void sample(const Texture& t, float s, float tc, const LodInput& lod, int offset
   apply_swizzle(t, texel, out);
 }
 
-void gather(const Texture& t, float s, float tc, int offset_s, int offset_t, int component, const float* dref,
+void gather(const Texture& t, float s, float tc, int layer, int offset_s, int offset_t, int component, const float* dref,
             float out[4]) {
   const Swizzle sw = t.swizzle[std::size_t(component & 3)];
   if (!t.complete) {  // the four texels of the 1 x 1 (0, 0, 0, 1) texture
@@ -267,33 +274,36 @@ void gather(const Texture& t, float s, float tc, int offset_s, int offset_t, int
     return;
   }
   // GL_LINEAR's footprint on the base level whatever the filters (llvmpipe: linear, no mipmap).
-  gather_float(t.levels[std::size_t(t.base_level)], axes_of(t), border_color(t), s, tc, offset_s, offset_t,
+  gather_float(t.levels[std::size_t(t.base_level)].slice(layer), axes_of(t), border_color(t), s, tc, offset_s, offset_t,
                int(sw), compare ? &*compare : nullptr, out);
 }
 
-void fetch(const Texture& t, int i, int j, int lod, float out[4]) {
+void fetch(const Texture& t, int i, int j, int layer, int lod, float out[4]) {
   if (!t.complete) return incomplete(t, out);
   const std::int64_t level = std::int64_t(t.base_level) + lod;
   // Outside: zero in each channel the format has; the others read 0 (green, blue) and 1 (alpha).
   float texel[4] = {0.0f, 0.0f, 0.0f, info(t.format).channels < 4 ? one(t.format) : 0.0f};
   if (level >= t.base_level && level <= t.last_level) {
     const Level& l = t.levels[std::size_t(level)];
-    if (i >= 0 && j >= 0 && i < l.width && j < l.height)
-      for (int c = 0; c < 4; ++c) texel[c] = l.texels[(std::size_t(j) * std::size_t(l.width) + std::size_t(i)) * 4 + std::size_t(c)];
+    if (i >= 0 && j >= 0 && i < l.width && j < l.height && layer >= 0 && layer < l.layers) {
+      const LevelSlice slice = l.slice(layer);
+      for (int c = 0; c < 4; ++c) texel[c] = slice.texels[(std::size_t(j) * std::size_t(l.width) + std::size_t(i)) * 4 + std::size_t(c)];
+    }
   }
   apply_swizzle(t, texel, out);
 }
 
-void level_size(const Texture& t, int lod, int out[2]) {
+void level_size(const Texture& t, int lod, int out[3]) {
   if (!t.complete) {
-    out[0] = out[1] = 1;
+    out[0] = out[1] = out[2] = 1;
     return;
   }
   const std::int64_t level = std::int64_t(t.base_level) + lod;
-  out[0] = out[1] = 0;
+  out[0] = out[1] = out[2] = 0;
   if (level < t.base_level || level > t.last_level) return;
   out[0] = t.levels[std::size_t(level)].width;
   out[1] = t.levels[std::size_t(level)].height;
+  out[2] = t.levels[std::size_t(level)].layers;
 }
 
 int query_levels(const Texture& t) { return t.complete ? t.last_level - t.base_level + 1 : 1; }

@@ -26,19 +26,25 @@ struct LodInput {
   bool per_quad = false;
 };
 
-// texture(), textureLod(), textureGrad(), the Offset and Proj forms (s and t already divided):
+// An array texture's layer for the coordinate r (GL 4.6 8.14.2): clamp(floor(r + 0.5), 0, d - 1),
+// exactly (llvmpipe rounds ties to even instead: docs/textures.md); NaN reads layer 0. 0 for a
+// texture that is not an array.
+int array_layer(const Texture& t, float r);
+
+// texture(), textureLod(), textureGrad(), the Offset and Proj forms (s and t already divided), on
+// layer `layer` of an array (array_layer; 0 otherwise):
 // the filtered, swizzled texel. `dref`: a shadow sampler's reference depth (already divided for
 // Proj forms), compared when the texture's compare mode is on; every channel of the result is
 // then the filtered comparisons. `vector_linear`: whether another invocation sampled together with
 // this one (llvmpipe runs a vector of them at once) is filtered with GL_LINEAR, which changes how
 // llvmpipe filters the others with GL_NEAREST (see linear_in_vector).
-void sample(const Texture& t, float s, float tc, const LodInput& lod, int offset_s, int offset_t, const float* dref,
-            float out[4], bool vector_linear = false);
+void sample(const Texture& t, float s, float tc, int layer, const LodInput& lod, int offset_s, int offset_t,
+            const float* dref, float out[4], bool vector_linear = false);
 
 // textureGather() and textureGatherOffset(): the four texels GL_LINEAR would read on the base
 // level (i0 j1, i1 j1, i1 j0, i0 j0), component `component` (0..3) through the swizzle; with
 // `dref` (the shadow forms), each texel's comparison as 1 or 0.
-void gather(const Texture& t, float s, float tc, int offset_s, int offset_t, int component, const float* dref,
+void gather(const Texture& t, float s, float tc, int layer, int offset_s, int offset_t, int component, const float* dref,
             float out[4]);
 
 // Whether this lookup counts as GL_LINEAR for the invocations sampled with it: true when the
@@ -47,14 +53,14 @@ void gather(const Texture& t, float s, float tc, int offset_s, int offset_t, int
 // GL_NEAREST are filtered by rounded linear weights (texture/filter.h, NearestByWeights).
 bool linear_in_vector(const Texture& t, const LodInput& lod);
 
-// texelFetch(): texel (i, j) of level base_level + lod; zero outside the level or for a level
-// outside base_level .. last_level (GL 4.6 11.1.3.2 leaves it undefined): (0, 0, 0, 0), with alpha
-// 1 for formats without alpha.
-void fetch(const Texture& t, int i, int j, int lod, float out[4]);
+// texelFetch(): texel (i, j) of layer `layer` (0 unless an array) of level base_level + lod; zero
+// outside the level or its layers, or for a level outside base_level .. last_level (GL 4.6
+// 11.1.3.2 leaves it undefined): (0, 0, 0, 0), with alpha 1 for formats without alpha.
+void fetch(const Texture& t, int i, int j, int layer, int lod, float out[4]);
 
-// textureSize(): level base_level + lod's width and height, (0, 0) for a level outside the
-// texture's; (1, 1) for an incomplete texture (the 1 x 1 texture Mesa binds in its place).
-void level_size(const Texture& t, int lod, int out[2]);
+// textureSize(): level base_level + lod's width, height and layers, zeros for a level outside
+// the texture's; (1, 1, 1) for an incomplete texture (the 1 x 1 texture Mesa binds in its place).
+void level_size(const Texture& t, int lod, int out[3]);
 // textureQueryLevels(): last_level - base_level + 1 (1 for an incomplete texture, as above).
 int query_levels(const Texture& t);
 // textureQueryLod() (GLSL 4.60 8.9.2): (the level that would be accessed relative to

@@ -35,20 +35,22 @@ int last_mip_level(int base, int w, int h) {
   return base + int(std::bit_width(unsigned(std::max(w, h)))) - 1;
 }
 
-Level make_level(TexelFormat f, int width, int height, const float* rgba) {
+Level make_level(TexelFormat f, int width, int height, const float* rgba, int layers) {
   Level l;
   l.width = width;
   l.height = height;
-  l.stored = encode_texels(f, rgba, std::size_t(width) * std::size_t(height));
+  l.layers = layers;
+  l.stored = encode_texels(f, rgba, std::size_t(width) * std::size_t(height) * std::size_t(layers));
   l.texels = decode_texels(f, l.stored);
   return l;
 }
 
-Level make_integer_level(TexelFormat f, int width, int height, const std::int64_t* rgba) {
+Level make_integer_level(TexelFormat f, int width, int height, const std::int64_t* rgba, int layers) {
   Level l;
   l.width = width;
   l.height = height;
-  l.stored = encode_integer_texels(f, rgba, std::size_t(width) * std::size_t(height));
+  l.layers = layers;
+  l.stored = encode_integer_texels(f, rgba, std::size_t(width) * std::size_t(height) * std::size_t(layers));
   l.texels = decode_texels(f, l.stored);
   return l;
 }
@@ -57,7 +59,8 @@ Level make_integer_level(TexelFormat f, int width, int height, const std::int64_
 // with GL_NEAREST (or GL_NEAREST_MIPMAP_NEAREST) and, for a minification filter
 // that uses mipmaps, level_base <= level_max and every level from the base to
 // q = min(p, level_max), p = level_base + floor(log2(max(w_b, h_b))), exists with the size
-// max(1, floor(w_b / 2^(k - level_base))) x max(1, floor(h_b / 2^(k - level_base))).
+// max(1, floor(w_b / 2^(k - level_base))) x max(1, floor(h_b / 2^(k - level_base))) (and, for
+// an array, the base level's layers).
 void Texture::finalize() {
   complete = false;
   last_level = base_level;
@@ -99,9 +102,12 @@ void Texture::finalize() {
       return;
     }
     const Level& l = levels[std::size_t(k)];
-    if (l.width != w || l.height != h) {
-      incomplete_reason = "level " + std::to_string(k) + " is " + std::to_string(l.width) + "x" +
-                          std::to_string(l.height) + ", and GL requires " + std::to_string(w) + "x" + std::to_string(h);
+    if (l.width != w || l.height != h || l.layers != base.layers) {
+      auto size = [&](int x, int y, int layers) {  // "WxH", or "WxH with N layers" for an array
+        return std::to_string(x) + "x" + std::to_string(y) + (array ? " with " + std::to_string(layers) + " layers" : "");
+      };
+      incomplete_reason = "level " + std::to_string(k) + " is " + size(l.width, l.height, l.layers) + ", and GL requires " +
+                          size(w, h, base.layers);
       return;
     }
   }

@@ -1,5 +1,5 @@
 #pragma once
-// A GL texture as the sampler sees it: a 2D image with its mip levels, the internal format its
+// A GL texture as the sampler sees it: a 2D image (or array of them) with its mip levels, the internal format its
 // texels were converted to, and the texture's and sampler object's state (GL 4.6 8.10 and 8.14).
 // Plain data: the scene loader fills it, the executor reads it through texture/sample.h.
 #include <array>
@@ -25,6 +25,8 @@ enum class Swizzle : std::uint8_t { Red, Green, Blue, Alpha, Zero, One };
 
 // GL_MAX_TEXTURE_SIZE on llvmpipe; the sampler's fixed-point coordinates rely on it.
 inline constexpr int kMaxTextureSize = 16384;
+// GL_MAX_ARRAY_TEXTURE_LAYERS on llvmpipe.
+inline constexpr int kMaxArrayLayers = 2048;
 
 const char* gl_name(Filter f);
 const char* gl_name(CompareFunc f);
@@ -47,23 +49,38 @@ struct SamplerState {
   CompareFunc compare_func = CompareFunc::Lequal;  // GL_TEXTURE_COMPARE_FUNC
 };
 
-// One mip level: width x height texels, row 0 at the bottom (GL). `stored` holds them in the
-// format's own layout (what a driver is given); `texels` as the sampler reads them, four floats
-// each (k / 255 for 8-bit normalized channels, linear values for sRGB ones, missing green and
-// blue 0, missing alpha 1; integer formats: the integers' bits, texture::decode_texels).
-struct Level {
+// One layer of one mip level, as the filters read it: width x height texels from `texels` (four
+// floats each) and `stored` (the format's bytes).
+struct LevelSlice {
   int width = 0, height = 0;
-  std::vector<std::uint8_t> stored;
-  std::vector<float> texels;
+  const float* texels = nullptr;
+  const std::uint8_t* stored = nullptr;
 };
 
-// A level of format f from RGBA floats, 4 per texel, row 0 at the bottom: stored in the format and
-// read back (encode_texels, decode_texels).
-Level make_level(TexelFormat f, int width, int height, const float* rgba);
+// One mip level: `layers` images of width x height texels (1 for GL_TEXTURE_2D), row 0 at the
+// bottom (GL), layer after layer. `stored` holds them in the format's own layout (what a driver
+// is given); `texels` as the sampler reads them, four floats each (k / 255 for 8-bit normalized
+// channels, linear values for sRGB ones, missing green and blue 0, missing alpha 1; integer
+// formats: the integers' bits, texture::decode_texels).
+struct Level {
+  int width = 0, height = 0, layers = 1;
+  std::vector<std::uint8_t> stored;
+  std::vector<float> texels;
+  LevelSlice slice(int layer) const {
+    const std::size_t texels_per_layer = std::size_t(width) * std::size_t(height);
+    return {width, height, texels.data() + std::size_t(layer) * texels_per_layer * 4,
+            stored.data() + std::size_t(layer) * (stored.size() / std::size_t(layers))};
+  }
+};
+
+// A level of format f from RGBA floats, 4 per texel, row 0 at the bottom, layer after layer:
+// stored in the format and read back (encode_texels, decode_texels).
+Level make_level(TexelFormat f, int width, int height, const float* rgba, int layers = 1);
 // A level of integer format f from integers, 4 per texel (encode_integer_texels).
-Level make_integer_level(TexelFormat f, int width, int height, const std::int64_t* rgba);
+Level make_integer_level(TexelFormat f, int width, int height, const std::int64_t* rgba, int layers = 1);
 
 struct Texture {
+  bool array = false;  // GL_TEXTURE_2D_ARRAY (every level has the same layers), else GL_TEXTURE_2D
   TexelFormat format = TexelFormat::kRgba32F;
   std::vector<Level> levels;  // levels[k] is mip level k (from level 0, whatever base_level is)
   int base_level = 0;         // GL_TEXTURE_BASE_LEVEL

@@ -179,9 +179,38 @@ Case integer_case(const IntegerFormat& f, const std::string& min, const std::str
                function(fn)}};
 }
 
+// A 2D array texture (lookup_array.frag) of three 64 x 64 layers with glGenerateMipmap, stored
+// in `format`: a layer coordinate per lookup from -2 to 4.875 in eighths, clamped to the layers,
+// avoiding ties (see docs/textures.md). What it must show follows make_case.
+Case array_case(const std::string& format, const std::string& min, const std::string& mag, const std::string& wrap, int fn) {
+  // lookup_array.frag's function 8 is textureGradOffset: a LOD per lookup, as function 3's.
+  Case c = make_case("noise_64x64.png", format, min, mag, wrap, fn == 8 ? 3 : fn);
+  c.sets = {"fragment=\"sampling/lookup_array.frag\"",
+            "textures.u_tex={\"path\": null, \"target\": \"GL_TEXTURE_2D_ARRAY\", \"layers\": [\"sampling/noise_64x64.png\", "
+            "\"sampling/noise_64x64_layer1.png\", \"sampling/noise_64x64_layer2.png\"], \"internalformat\": \"" + format +
+                "\", \"generate_mipmap\": true, \"min_filter\": \"" + min + "\", \"mag_filter\": \"" + mag + "\", \"wrap\": \"" +
+                wrap + "\"}",
+            function(fn)};
+  return c;
+}
+
 const char* const kDepthFormats[] = {"GL_DEPTH_COMPONENT16", "GL_DEPTH_COMPONENT24", "GL_DEPTH_COMPONENT32F",
                                      "GL_DEPTH24_STENCIL8"};
 const char* const kCompareFuncs[] = {"lequal", "gequal", "less", "greater", "equal", "notequal", "always", "never"};
+
+// A shadow lookup on a 2D array of two depth layers (lookup_shadow_array.frag: the lookups GLSL
+// has for a sampler2DArrayShadow), as shadow_case.
+Case shadow_array_case(const std::string& format, const std::string& min, const std::string& mag, const std::string& wrap,
+                       const std::string& func, int fn) {
+  Case c{{"fragment=\"sampling/lookup_shadow_array.frag\"",
+          "textures.u_tex={\"path\": null, \"target\": \"GL_TEXTURE_2D_ARRAY\", \"layers\": [\"sampling/depth_64x64.exr\", "
+          "\"sampling/depth_64x64_layer1.exr\"], \"internalformat\": \"" + format + "\", \"generate_mipmap\": false, "
+          "\"min_filter\": \"" + min + "\", \"mag_filter\": \"" + mag + "\", \"wrap\": \"" + wrap +
+              "\", \"compare_mode\": \"compare_ref_to_texture\", \"compare_func\": \"" + func + "\"}",
+          function(fn)}};
+  if (fn <= 5 && linear_image(min) != linear_image(mag)) c.max_differing = 0.005;  // as make_case says
+  return c;
+}
 
 // The suite's cases: each lookup function on the fixed-point path (RGBA8, repeat) and on the
 // float path (RGBA32F, mirrored repeat); every wrap and filter on both; a size that is not a
@@ -265,6 +294,18 @@ std::vector<Case> suite_cases() {
   }
   for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge", "mirror_clamp_to_edge"})
     cases.push_back(integer_case(kIntegerFormats[15], "nearest_mipmap_nearest", "nearest", wrap, 4));
+  // 2D arrays: every lookup on the 8-bit and the float path, every wrap with differing filters.
+  for (int fn = 0; fn < 13; ++fn) {
+    cases.push_back(array_case("GL_RGBA8", "linear_mipmap_linear", "linear", "repeat", fn));
+    cases.push_back(array_case("GL_RGBA32F", "linear_mipmap_linear", "linear", "mirrored_repeat", fn));
+  }
+  for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge", "clamp_to_border", "mirror_clamp_to_edge"}) {
+    cases.push_back(array_case("GL_RGBA8", "nearest_mipmap_nearest", "linear", wrap, 0));
+    cases.push_back(array_case("GL_RGBA16F", "linear_mipmap_nearest", "nearest", wrap, 2));
+  }
+  for (int fn : {0, 3, 4, 5, 6, 7, 8, 9})
+    cases.push_back(shadow_array_case("GL_DEPTH_COMPONENT24", "linear", "linear", "clamp_to_border", "lequal", fn));
+  cases.push_back(shadow_array_case("GL_DEPTH_COMPONENT32F", "nearest", "nearest", "repeat", "greater", 0));
   return cases;
 }
 
@@ -295,11 +336,22 @@ std::vector<Case> full_cases() {
               continue;
             cases.push_back(make_case(f.file, f.name, min, mag, wrap, fn));
           }
+  for (const char* format : {"GL_RGBA8", "GL_RGBA32F", "GL_SRGB8_ALPHA8"})
+    for (const char* min : {"nearest", "linear", "nearest_mipmap_nearest", "linear_mipmap_nearest", "nearest_mipmap_linear",
+                            "linear_mipmap_linear"})
+      for (const char* mag : {"nearest", "linear"})
+        for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge", "clamp_to_border", "mirror_clamp_to_edge"})
+          for (int fn = 0; fn < 13; ++fn)
+            if (fn != 9 || std::string(wrap) == "repeat") cases.push_back(array_case(format, min, mag, wrap, fn));
   for (const IntegerFormat& f : kIntegerFormats)
     for (const char* min : {"nearest", "nearest_mipmap_nearest"})
       for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge", "clamp_to_border", "mirror_clamp_to_edge"})
         for (int fn = 0; fn < 13; ++fn)
           if (fn != 9 || std::string(wrap) == "repeat") cases.push_back(integer_case(f, min, "nearest", wrap, fn));
+  for (const char* format : kDepthFormats)
+    for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge", "clamp_to_border", "mirror_clamp_to_edge"})
+      for (int fn : {0, 3, 4, 5, 6, 7, 8})
+        cases.push_back(shadow_array_case(format, "linear", "nearest", wrap, "lequal", fn));
   for (const char* format : kDepthFormats)
     for (const char* min : {"nearest", "linear"})
       for (const char* mag : {"nearest", "linear"})

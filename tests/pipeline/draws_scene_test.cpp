@@ -154,7 +154,7 @@ TEST(DrawsScene, TexturesAreBoundPerDrawAndCheckedAgainstTheSamplerTarget) {
   // The executor samples 2D textures only (more targets are the texture work's): a sampler3D is
   // refused when the program is built, naming the stage and line; bind_textures's target check
   // ("the uniform is a sampler3D, but textures are 2D images") takes over once it runs them.
-  EXPECT_NE(wrong.find("draws.0.shaders: fragment shader: unsupported construct (line 7): a sampler3D (tessref samples sampler2D, isampler2D, usampler2D and sampler2DShadow only)"),
+  EXPECT_NE(wrong.find("draws.0.shaders: fragment shader: unsupported construct (line 7): a sampler3D (tessref samples sampler2D, isampler2D, usampler2D, sampler2DShadow and their 2DArray forms only)"),
             std::string::npos) << wrong;
 }
 

@@ -263,7 +263,7 @@ TEST(TextureLod, IntegerNearestMinificationReadsTheBaseLevel) {
     texture::LodInput in;
     in.lod = lod;
     float out[4];
-    texture::sample(t, 0.5f, 0.5f, in, 0, 0, nullptr, out);
+    texture::sample(t, 0.5f, 0.5f, 0, in, 0, 0, nullptr, out);
     EXPECT_EQ(std::bit_cast<std::int32_t>(out[0]), -7) << "LOD " << lod;
     EXPECT_EQ(std::bit_cast<std::int32_t>(out[3]), 1) << "LOD " << lod;  // R32I has no alpha: the integer 1
   }
@@ -272,7 +272,7 @@ TEST(TextureLod, IntegerNearestMinificationReadsTheBaseLevel) {
   texture::LodInput in;
   in.lod = 1.0f;
   float out[4];
-  texture::sample(t, 0.5f, 0.5f, in, 0, 0, nullptr, out);
+  texture::sample(t, 0.5f, 0.5f, 0, in, 0, 0, nullptr, out);
   EXPECT_EQ(std::bit_cast<std::int32_t>(out[0]), 123456789);
 }
 
@@ -301,6 +301,63 @@ TEST(TextureScene, IntegerTexelsAreTheFilesIntegers) {
   for (int k = 0; k < 8; ++k) EXPECT_EQ(std::bit_cast<std::int32_t>(rg16i.levels[0].texels[std::size_t(k)]), want[k]) << k;
   EXPECT_EQ(rg16i.levels[0].stored, (std::vector<std::uint8_t>{0x00, 0x80, 0xff, 0x7f, 0x00, 0x00, 0xff, 0xff}));
   std::filesystem::remove(exr);
+}
+
+// 2D array textures (GL_TEXTURE_2D_ARRAY): the target, layer files and raw sizes checked by key;
+// a sampler whose target is not the texture's refused, as GL draws nothing from it.
+TEST(TextureScene, ArrayTexturesAreCheckedByKey) {
+  const std::string layers = R"("layers": ["sampling/noise_64x64.png", "sampling/noise_64x64_layer1.png"])";
+  auto array = [&](const std::string& keys) {
+    return "textures.u_tex={\"path\": null, \"target\": \"GL_TEXTURE_2D_ARRAY\", " + keys + "}";
+  };
+  const std::string no_target = error_of({"textures.u_tex={\"path\": null, " + layers + "}"});
+  EXPECT_NE(no_target.find("draws.0.shaders.textures.u_tex.layers: layers are a 2D array texture's: give \"target\": "
+                           "\"GL_TEXTURE_2D_ARRAY\""),
+            std::string::npos) << no_target;
+  const std::string image_path = error_of({"textures.u_tex.target=\"GL_TEXTURE_2D_ARRAY\""});
+  EXPECT_NE(image_path.find("draws.0.shaders.textures.u_tex.path: a GL_TEXTURE_2D_ARRAY's image files are its layers: give "
+                            "layers (level 0's), or raw bytes of every layer with raw_size [width, height, layers]"),
+            std::string::npos) << image_path;
+  const std::string sizes = error_of({array(R"("layers": ["sampling/noise_64x64.png", "sampling/noise_24x10.png"])")});
+  EXPECT_NE(sizes.find("draws.0.shaders.textures.u_tex.layers.1: " + std::string(TESSREF_SOURCE_DIR) +
+                       "/tests/data/draws/sampling/noise_24x10.png is 24x10, and layer 0 is 64x64 (an array's layers are one size)"),
+            std::string::npos) << sizes;
+  const std::string raw = error_of({array(R"("path": "sampling/noise_bytes_0.raw", "internalformat": "GL_RGBA8", "raw_size": [64, 64])")});
+  EXPECT_NE(raw.find("draws.0.shaders.textures.u_tex.raw_size: expected [width, height, layers], whole numbers from 1 to 16384 "
+                     "(GL_MAX_TEXTURE_SIZE) and layers from 1 to 2048 (GL_MAX_ARRAY_TEXTURE_LAYERS), got an array of 2"),
+            std::string::npos) << raw;
+  const std::string plain_sampler = error_of({array(layers)});
+  EXPECT_NE(plain_sampler.find("draws.0.shaders.textures.u_tex.target: the uniform is a sampler2D, which reads a GL_TEXTURE_2D "
+                               "texture, and this one is GL_TEXTURE_2D_ARRAY"),
+            std::string::npos) << plain_sampler;
+  const std::string array_sampler = error_of({"fragment=\"sampling/lookup_array.frag\""});
+  EXPECT_NE(array_sampler.find("draws.0.shaders.textures.u_tex.target: the uniform is a sampler2DArray, which reads a "
+                               "GL_TEXTURE_2D_ARRAY texture, and this one is GL_TEXTURE_2D"),
+            std::string::npos) << array_sampler;
+  // Raw bytes of every layer: four 64 x 64 layers of GL_RGBA8 are noise_bytes_0.raw's 65,536 bytes.
+  const Scene scene = load_scene(kSweep, {"draws.0.shaders." + array(R"("path": "sampling/noise_bytes_0.raw", "internalformat": "GL_RGBA8", "raw_size": [64, 64, 4], "generate_mipmap": true)")});
+  const texture::Texture t = load_texture(scene.draws[0].shaders->textures[0], "raw");
+  ASSERT_EQ(t.levels.size(), 7u);
+  EXPECT_TRUE(t.complete) << t.incomplete_reason;
+  EXPECT_EQ(t.levels[0].layers, 4);
+  EXPECT_EQ(t.levels[6].layers, 4);  // every level has the base level's layers
+  EXPECT_EQ(t.levels[0].slice(3).stored - t.levels[0].stored.data(), 3 * 64 * 64 * 4);
+}
+
+// GL 4.6 8.14.2: an array's layer is clamp(floor(r + 0.5), 0, d - 1): ties go up (llvmpipe rounds
+// them to even), NaN reads layer 0.
+TEST(TextureLod, ArrayLayerIsFloorOfRPlusOneHalfClamped) {
+  texture::Texture t;
+  t.array = true;
+  const std::vector<float> rgba(std::size_t(2 * 2 * 4 * 4), 0.5f);
+  t.levels.push_back(texture::make_level(texture::TexelFormat::kRgba8, 2, 2, rgba.data(), 4));
+  t.sampler.min_filter = texture::Filter::Nearest;
+  t.finalize();
+  ASSERT_TRUE(t.complete) << t.incomplete_reason;
+  const std::pair<float, int> cases[] = {{0.5f, 1},      {1.5f, 2},     {2.5f, 3},        {0.49999997f, 0}, {-0.5f, 0},
+                                         {-0.50000006f, 0}, {3.5f, 3}, {1e30f, 3},       {-INFINITY, 0},   {NAN, 0},
+                                         {2.4999998f, 2}};
+  for (const auto& [r, layer] : cases) EXPECT_EQ(texture::array_layer(t, r), layer) << r;
 }
 
 TEST(TextureScene, LookupsDoNotDependOnThreadsOrBatchSize) {

@@ -22,6 +22,9 @@ png(d + '/noise_64x64.png', 64, 64, 4, noise(1))
 png(d + '/noise_24x10.png', 24, 10, 4, noise(2))
 png(d + '/noise_64x64_rgb.png', 64, 64, 3, noise(3))
 png(d + '/noise_64x64_gray.png', 64, 64, 1, noise(4))
+# Layers 1 and 2 of the 2D array cases (layer 0 is noise_64x64.png).
+png(d + '/noise_64x64_layer1.png', 64, 64, 4, noise(5))
+png(d + '/noise_64x64_layer2.png', 64, 64, 4, noise(6))
 # depth_64x64.exr: depths k / 64 (k in 0..64, exact in every depth format's float reading only at
 # 0 and 1, exact in float everywhere), written as a gray PFM (bottom row first):
 #   oiiotool depth_64x64.pfm -d float --compression zip -o depth_64x64.exr
@@ -29,6 +32,8 @@ def pfm(path, w, h, value):
     rows = b''.join(struct.pack('<%df' % w, *[value(x, y) for x in range(w)]) for y in range(h))
     open(path, 'wb').write(b'Pf\n%d %d\n-1.0\n' % (w, h) + rows)
 pfm(d + '/depth_64x64.pfm', 64, 64, lambda x, y: (h(x * 7 + y * 131 + 5) % 65) / 64.0)
+# depth_64x64_layer1.exr, layer 1 of the shadow array cases (layer 0 is depth_64x64.exr), likewise.
+pfm(d + '/depth_64x64_layer1.pfm', 64, 64, lambda x, y: (h(x * 7 + y * 131 + 9) % 65) / 64.0)
 # Raw texel bytes for the integer formats, whose every bit pattern is a value: six levels of random
 # bytes, 65536 >> 2k bytes (levels 0..5 of a 64x64 texture of 16-byte texels, 128x64 of 8-byte
 # ones, 128x128 of 4-byte ones, 256x128 of 2-byte and 256x256 of 1-byte ones), and for the RGB
