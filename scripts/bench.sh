@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # tessref against Mesa llvmpipe, in one run, and the machine's limits (issue 7; docs/benchmarks.md,
 # bench/README.md):
-#   1. frame time at 1024x1024 (frame_bench): default scene (PN 12), icosphere PN 64, Wuson PN 12/64;
+#   1. frame time at 1024x1024 (frame_bench): default scene (PN 12), icosphere PN 64, Wuson PN 12/64,
+#      and the default scene as GLSL with a textured fragment shader;
 #   2. the primitive generator alone (tpg_bench) and PN patch evaluation alone (pn_bench), also with
 #      the GLSL twins on tessref's SPIR-V executor (batch 64 and 1);
 #   3. the rasterizer alone on a seeded triangle soup (raster_bench);
@@ -88,7 +89,7 @@ run() {
 log "machine_limits"
 "$build/bench/machine_limits" $limits_flag --json "$results/limits.json" | tee "$results/limits.log" >&2
 run frames frame_bench "$r_frame" \
-  --benchmark_filter='^BM_(TessrefFrame/(pn12|ico64|wuson12)|LlvmpipeFrame/(pn12|ico64|wuson12)/fair)'
+  --benchmark_filter='^BM_(TessrefFrame/(pn12|ico64|wuson12|textured)|LlvmpipeFrame/(pn12|ico64|wuson12|textured)/fair)'
 run frames_wuson64 frame_bench "$r_heavy" \
   --benchmark_filter='^BM_(TessrefFrame/wuson64|LlvmpipeFrame/wuson64/fair)'
 run tpg tpg_bench "$r_tpg"

@@ -75,6 +75,13 @@ constexpr Named kFormats[] = {
     {TexelFormat::kRgb10A2Ui, {"GL_RGB10_A2UI", 4, ChannelType::kUint10_10_10_2}},
 };
 static_assert(std::size(kFormats) == std::size_t(TexelFormat::kRgb10A2Ui) + 1, "one entry per TexelFormat");
+// info() indexes the table by the enum (every texel lookup asks for it).
+constexpr bool in_enum_order() {
+  for (std::size_t i = 0; i < std::size(kFormats); ++i)
+    if (std::size_t(kFormats[i].format) != i) return false;
+  return true;
+}
+static_assert(in_enum_order(), "kFormats lists the formats in TexelFormat's order");
 
 // An sRGB channel as the sampler decodes it. GL 4.6 equation 8.17 is exact; llvmpipe
 // (lp_build_srgb_to_linear) evaluates a linear segment up to k = 15 and a cubic above it, whose
@@ -169,11 +176,7 @@ std::int64_t TexelFormatInfo::integer_max(int c) const {
   return signed_integer() ? (std::int64_t(1) << (bits - 1)) - 1 : (std::int64_t(1) << bits) - 1;
 }
 
-const TexelFormatInfo& info(TexelFormat f) {
-  for (const Named& n : kFormats)
-    if (n.format == f) return n.info;
-  return kFormats[0].info;
-}
+const TexelFormatInfo& info(TexelFormat f) { return kFormats[std::size_t(f)].info; }
 
 std::optional<TexelFormat> parse_texel_format(const std::string& gl_name) {
   for (const Named& n : kFormats)
