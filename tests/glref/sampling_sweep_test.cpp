@@ -194,6 +194,20 @@ Case array_case(const std::string& format, const std::string& min, const std::st
   return c;
 }
 
+// A signed integer 2D array (lookup_int_array.frag) of four 64 x 64 layers of GL_RGBA8I from
+// raw random bytes (noise_bytes_*.raw, six levels, GL_TEXTURE_MAX_LEVEL 5).
+Case integer_array_case(const std::string& min, const std::string& wrap, int fn) {
+  std::string levels;
+  for (int k = 0; k < (min == "nearest" ? 1 : 6); ++k)  // one level with GL_NEAREST, as integer_case
+    levels += std::string(k ? ", " : "") + "\"sampling/noise_bytes_" + std::to_string(k) + ".raw\"";
+  return Case{{"fragment=\"sampling/lookup_int_array.frag\"",
+               "textures.u_tex={\"path\": null, \"target\": \"GL_TEXTURE_2D_ARRAY\", \"levels\": [" + levels +
+                   "], \"raw_size\": [64, 64, 4], \"internalformat\": \"GL_RGBA8I\", \"generate_mipmap\": false, "
+                   "\"max_level\": 5, \"min_filter\": \"" + min + "\", \"mag_filter\": \"nearest\", \"wrap\": \"" + wrap +
+                   "\", \"border_color\": [-300, 5, 127, -128]}",
+               function(fn)}};
+}
+
 const char* const kDepthFormats[] = {"GL_DEPTH_COMPONENT16", "GL_DEPTH_COMPONENT24", "GL_DEPTH_COMPONENT32F",
                                      "GL_DEPTH24_STENCIL8"};
 const char* const kCompareFuncs[] = {"lequal", "gequal", "less", "greater", "equal", "notequal", "always", "never"};
@@ -303,6 +317,8 @@ std::vector<Case> suite_cases() {
     cases.push_back(array_case("GL_RGBA8", "nearest_mipmap_nearest", "linear", wrap, 0));
     cases.push_back(array_case("GL_RGBA16F", "linear_mipmap_nearest", "nearest", wrap, 2));
   }
+  for (int fn = 0; fn < 13; ++fn) cases.push_back(integer_array_case("nearest_mipmap_nearest", "clamp_to_border", fn));
+  cases.push_back(integer_array_case("nearest", "mirrored_repeat", 0));
   for (int fn : {0, 3, 4, 5, 6, 7, 8, 9})
     cases.push_back(shadow_array_case("GL_DEPTH_COMPONENT24", "linear", "linear", "clamp_to_border", "lequal", fn));
   cases.push_back(shadow_array_case("GL_DEPTH_COMPONENT32F", "nearest", "nearest", "repeat", "greater", 0));
@@ -348,6 +364,10 @@ std::vector<Case> full_cases() {
       for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge", "clamp_to_border", "mirror_clamp_to_edge"})
         for (int fn = 0; fn < 13; ++fn)
           if (fn != 9 || std::string(wrap) == "repeat") cases.push_back(integer_case(f, min, "nearest", wrap, fn));
+  for (const char* min : {"nearest", "nearest_mipmap_nearest"})
+    for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge", "clamp_to_border", "mirror_clamp_to_edge"})
+      for (int fn = 0; fn < 13; ++fn)
+        if (fn != 9 || std::string(wrap) == "repeat") cases.push_back(integer_array_case(min, wrap, fn));
   for (const char* format : kDepthFormats)
     for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge", "clamp_to_border", "mirror_clamp_to_edge"})
       for (int fn : {0, 3, 4, 5, 6, 7, 8})
