@@ -441,31 +441,26 @@ texture::Level read_raw_level(const std::filesystem::path& file, texture::TexelF
   const int w = size0[0], h = size0[1];
   if (k > 0 && std::max(w, h) >> k == 0)
     throw InputError(at + ": a " + std::to_string(w) + "x" + std::to_string(h) + " texture has no level " + std::to_string(k));
-  texture::Level level;
-  level.width = std::max(1, w >> k);
-  level.height = std::max(1, h >> k);
-  level.layers = size0[2];
+  const int width = std::max(1, w >> k), height = std::max(1, h >> k), layers = size0[2];
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(at + ": cannot open " + file.string());
-  level.stored.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  const std::size_t want =
-      std::size_t(level.width) * std::size_t(level.height) * std::size_t(level.layers) * std::size_t(fi.bytes_per_texel());
-  if (level.stored.size() != want)
-    throw InputError(at + ": " + file.string() + " has " + std::to_string(level.stored.size()) + " bytes, and level " +
-                     std::to_string(k) + " of " + fi.gl_name + " is " + std::to_string(level.width) + "x" +
-                     std::to_string(level.height) + (level.layers > 1 ? "x" + std::to_string(level.layers) : "") +
-                     " texels of " + std::to_string(fi.bytes_per_texel()) + " bytes: " + std::to_string(want) + " (raw_size)");
+  std::vector<std::uint8_t> stored{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const std::size_t want = std::size_t(width) * std::size_t(height) * std::size_t(layers) * std::size_t(fi.bytes_per_texel());
+  if (stored.size() != want)
+    throw InputError(at + ": " + file.string() + " has " + std::to_string(stored.size()) + " bytes, and level " +
+                     std::to_string(k) + " of " + fi.gl_name + " is " + std::to_string(width) + "x" + std::to_string(height) +
+                     (layers > 1 ? "x" + std::to_string(layers) : "") + " texels of " + std::to_string(fi.bytes_per_texel()) +
+                     " bytes: " + std::to_string(want) + " (raw_size)");
   // GL_DEPTH_COMPONENT24 words as GL_UNSIGNED_INT: the top 24 bits are the depth; the low byte is
   // made to repeat them, so the driver's conversion cannot round differently.
   if (f == texture::TexelFormat::kDepth24)
-    for (std::size_t i = 0; i + 4 <= level.stored.size(); i += 4) {
+    for (std::size_t i = 0; i + 4 <= stored.size(); i += 4) {
       std::uint32_t word;
-      std::memcpy(&word, &level.stored[i], 4);
+      std::memcpy(&word, &stored[i], 4);
       word = (word & 0xffffff00u) | (word >> 24);
-      std::memcpy(&level.stored[i], &word, 4);
+      std::memcpy(&stored[i], &word, 4);
     }
-  level.texels = texture::decode_texels(f, level.stored);
-  return level;
+  return texture::level_from_stored(f, width, height, layers, std::move(stored));
 }
 
 // One image file's texels for a texture of `format` (declared when `declared`), RGBA rows from the

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <utility>
 
 namespace tessref::texture {
 
@@ -35,24 +36,24 @@ int last_mip_level(int base, int w, int h) {
   return base + int(std::bit_width(unsigned(std::max(w, h)))) - 1;
 }
 
-Level make_level(TexelFormat f, int width, int height, const float* rgba, int layers) {
+Level level_from_stored(TexelFormat f, int width, int height, int layers, std::vector<std::uint8_t> stored) {
   Level l;
   l.width = width;
   l.height = height;
   l.layers = layers;
-  l.stored = encode_texels(f, rgba, std::size_t(width) * std::size_t(height) * std::size_t(layers));
+  l.stored = std::move(stored);
   l.texels = decode_texels(f, l.stored);
   return l;
 }
 
+Level make_level(TexelFormat f, int width, int height, const float* rgba, int layers) {
+  const std::size_t texels = std::size_t(width) * std::size_t(height) * std::size_t(layers);
+  return level_from_stored(f, width, height, layers, encode_texels(f, rgba, texels));
+}
+
 Level make_integer_level(TexelFormat f, int width, int height, const std::int64_t* rgba, int layers) {
-  Level l;
-  l.width = width;
-  l.height = height;
-  l.layers = layers;
-  l.stored = encode_integer_texels(f, rgba, std::size_t(width) * std::size_t(height) * std::size_t(layers));
-  l.texels = decode_texels(f, l.stored);
-  return l;
+  const std::size_t texels = std::size_t(width) * std::size_t(height) * std::size_t(layers);
+  return level_from_stored(f, width, height, layers, encode_integer_texels(f, rgba, texels));
 }
 
 // GL 4.6 8.17: a texture is complete when its base level exists, an integer format is sampled

@@ -73,6 +73,9 @@ struct Level {
   }
 };
 
+// A level of format f from its stored bytes (width x height x layers texels of the format's
+// layout), read back by decode_texels.
+Level level_from_stored(TexelFormat f, int width, int height, int layers, std::vector<std::uint8_t> stored);
 // A level of format f from RGBA floats, 4 per texel, row 0 at the bottom, layer after layer:
 // stored in the format and read back (encode_texels, decode_texels).
 Level make_level(TexelFormat f, int width, int height, const float* rgba, int layers = 1);
