@@ -5,7 +5,7 @@
 # that differs with its count and first difference, then the totals; exits 1 if a case exceeds
 # what docs/textures.md states. Builds build/ first if needed.
 #
-#   scripts/sampling-sweep.sh           # about 4,400 cases, 72 million lookups
+#   scripts/sampling-sweep.sh           # about 14,500 cases, 237 million lookups, 30 minutes on 2 cores
 set -euo pipefail
 cd "$(dirname "$0")/.."
 [ -x build/tests/test_glref ] || { cmake -S . -B build >/dev/null && cmake --build build -j"$(nproc)" --target test_glref; }
