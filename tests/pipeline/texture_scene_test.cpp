@@ -43,6 +43,17 @@ std::string error_of(const std::vector<std::string>& sets) {
   return "no error";
 }
 
+// The sweep with `sets` fails with an error that contains `message`.
+void expect_error(const std::vector<std::string>& sets, const std::string& message) {
+  const std::string e = error_of(sets);
+  EXPECT_NE(e.find(message), std::string::npos) << e;
+}
+
+std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
 TEST(TextureScene, BadTexturesAreErrorsNamingTheKey) {
   // A file whose channels contradict the declared format.
   EXPECT_NE(error_of({"textures.u_tex.internalformat=\"GL_R8\""})
@@ -91,37 +102,28 @@ TEST(TextureScene, BadTexturesAreErrorsNamingTheKey) {
 TEST(TextureScene, ShadowSamplerAndDepthFormatMismatchesAreErrorsNamingTheKey) {
   const std::vector<std::string> shadow = {"fragment=\"sampling/lookup_shadow.frag\"", "textures.u_tex.generate_mipmap=false",
                                            "textures.u_tex.min_filter=\"linear\""};
-  auto with = [](std::vector<std::string> a, const std::vector<std::string>& b) {
-    a.insert(a.end(), b.begin(), b.end());
-    return a;
-  };
-  const std::string colour = error_of(with(shadow, {"textures.u_tex.compare_mode=\"compare_ref_to_texture\""}));
-  EXPECT_NE(colour.find("draws.0.shaders.textures.u_tex.internalformat: the uniform is a sampler2DShadow, which needs a depth "
-                        "format (GL_DEPTH_COMPONENT16, 24, 32F or GL_DEPTH24_STENCIL8), not GL_RGBA8"),
-            std::string::npos) << colour;
+  expect_error(with(shadow, {"textures.u_tex.compare_mode=\"compare_ref_to_texture\""}),
+               "draws.0.shaders.textures.u_tex.internalformat: the uniform is a sampler2DShadow, which needs a depth "
+               "format (GL_DEPTH_COMPONENT16, 24, 32F or GL_DEPTH24_STENCIL8), not GL_RGBA8");
   const std::vector<std::string> depth = {"textures.u_tex.path=\"sampling/depth_64x64.exr\"",
                                           "textures.u_tex.internalformat=\"GL_DEPTH_COMPONENT24\""};
-  const std::string no_compare = error_of(with(shadow, depth));
-  EXPECT_NE(no_compare.find("draws.0.shaders.textures.u_tex.compare_mode: the uniform is a sampler2DShadow, so give "
-                            "\"compare_ref_to_texture\""),
-            std::string::npos) << no_compare;
-  const std::string plain = error_of(with(with(depth, {"textures.u_tex.generate_mipmap=false"}),
-                                          {"textures.u_tex.compare_mode=\"compare_ref_to_texture\""}));
-  EXPECT_NE(plain.find("draws.0.shaders.textures.u_tex.compare_mode: the uniform is a sampler2D, which GL leaves undefined "
-                       "with GL_COMPARE_REF_TO_TEXTURE"),
-            std::string::npos) << plain;
+  expect_error(with(shadow, depth),
+               "draws.0.shaders.textures.u_tex.compare_mode: the uniform is a sampler2DShadow, so give "
+               "\"compare_ref_to_texture\"");
+  expect_error(with(with(depth, {"textures.u_tex.generate_mipmap=false"}),
+               {"textures.u_tex.compare_mode=\"compare_ref_to_texture\""}),
+               "draws.0.shaders.textures.u_tex.compare_mode: the uniform is a sampler2D, which GL leaves undefined "
+               "with GL_COMPARE_REF_TO_TEXTURE");
   const std::string generate = error_of(depth);  // the sweep scene generates mipmaps
   EXPECT_NE(generate.find("draws.0.shaders.textures.u_tex.generate_mipmap: glGenerateMipmap refuses a depth format "
                           "(GL_DEPTH_COMPONENT24 is not color-renderable"),
             std::string::npos) << generate;
-  const std::string swizzle = error_of(with(with(shadow, depth), {"textures.u_tex.compare_mode=\"compare_ref_to_texture\"",
-                                                                  "textures.u_tex.swizzle=[\"red\", \"red\", \"red\", \"one\"]"}));
-  EXPECT_NE(swizzle.find("draws.0.shaders.textures.u_tex.swizzle: tessref does not swizzle a depth comparison's result"),
-            std::string::npos) << swizzle;
-  const std::string func = error_of(with(with(shadow, depth), {"textures.u_tex.compare_mode=\"compare_ref_to_texture\"",
-                                                               "textures.u_tex.compare_func=\"lessequal\""}));
-  EXPECT_NE(func.find("draws.0.shaders.textures.u_tex.compare_func: expected one of never, less, equal, lequal"),
-            std::string::npos) << func;
+  expect_error(with(with(shadow, depth), {"textures.u_tex.compare_mode=\"compare_ref_to_texture\"",
+               "textures.u_tex.swizzle=[\"red\", \"red\", \"red\", \"one\"]"}),
+               "draws.0.shaders.textures.u_tex.swizzle: tessref does not swizzle a depth comparison's result");
+  expect_error(with(with(shadow, depth), {"textures.u_tex.compare_mode=\"compare_ref_to_texture\"",
+               "textures.u_tex.compare_func=\"lessequal\""}),
+               "draws.0.shaders.textures.u_tex.compare_func: expected one of never, less, equal, lequal");
   // The same keys right: it draws, and every lookup is a comparison's 0 or 1 or a filtered mix.
   EXPECT_EQ(error_of(with(with(shadow, depth), {"textures.u_tex.compare_mode=\"compare_ref_to_texture\""})), "no error");
 }
@@ -169,13 +171,11 @@ TEST(TextureScene, RawTexelBytesDrawAsTheImageTheyCameFrom) {
   const std::vector<std::string> sets = {"textures.u_tex.path=\"" + raw.string() + "\"", "textures.u_tex.raw_size=[64, 64]"};
   const RenderResult a = render_sweep({}), b = render_sweep(sets);
   EXPECT_EQ(a.framebuffer.color, b.framebuffer.color);
-  const std::string wrong = error_of({"textures.u_tex.path=\"" + raw.string() + "\"", "textures.u_tex.raw_size=[64, 32]"});
-  EXPECT_NE(wrong.find("draws.0.shaders.textures.u_tex: " + raw.string() + " has 16384 bytes, and level 0 of GL_RGBA8 is "
-                       "64x32 texels of 4 bytes: 8192 (raw_size)"),
-            std::string::npos) << wrong;
-  const std::string zero = error_of({"textures.u_tex.raw_size=[0, 64]"});
-  EXPECT_NE(zero.find("draws.0.shaders.textures.u_tex.raw_size: expected [width, height], whole numbers from 1 to 16384"),
-            std::string::npos) << zero;
+  expect_error({"textures.u_tex.path=\"" + raw.string() + "\"", "textures.u_tex.raw_size=[64, 32]"},
+               "draws.0.shaders.textures.u_tex: " + raw.string() + " has 16384 bytes, and level 0 of GL_RGBA8 is "
+               "64x32 texels of 4 bytes: 8192 (raw_size)");
+  expect_error({"textures.u_tex.raw_size=[0, 64]"},
+               "draws.0.shaders.textures.u_tex.raw_size: expected [width, height], whole numbers from 1 to 16384");
   std::filesystem::remove(raw);
 }
 
@@ -197,44 +197,34 @@ TEST(TextureScene, IncompleteTextureReadsZeroZeroZeroOneWithAWarning) {
 TEST(TextureScene, IntegerFormatMismatchesAreErrorsNamingTheKey) {
   const std::vector<std::string> rgba8ui = {"textures.u_tex.internalformat=\"GL_RGBA8UI\"", "textures.u_tex.generate_mipmap=false",
                                             "textures.u_tex.filter=\"nearest\""};
-  auto with = [](std::vector<std::string> a, const std::vector<std::string>& b) {
-    a.insert(a.end(), b.begin(), b.end());
-    return a;
-  };
-  const std::string float_sampler = error_of(rgba8ui);
-  EXPECT_NE(float_sampler.find("draws.0.shaders.textures.u_tex.internalformat: GL_RGBA8UI is an integer format, read by "
-                               "a usampler2D, and the uniform is a sampler2D (GL leaves the result undefined)"),
-            std::string::npos) << float_sampler;
-  const std::string int_sampler = error_of({"fragment=\"sampling/lookup_int.frag\""});
-  EXPECT_NE(int_sampler.find("draws.0.shaders.textures.u_tex.internalformat: the uniform is an isampler2D, which reads "
-                             "signed integer formats (GL_R8I .. GL_RGBA32I), not GL_RGBA8"),
-            std::string::npos) << int_sampler;
-  const std::string wrong_sign = error_of(with(rgba8ui, {"fragment=\"sampling/lookup_int.frag\""}));
-  EXPECT_NE(wrong_sign.find("GL_RGBA8UI is an integer format, read by a usampler2D, and the uniform is an isampler2D"),
-            std::string::npos) << wrong_sign;
-  const std::string generate = error_of({"textures.u_tex.internalformat=\"GL_RGBA8UI\"", "fragment=\"sampling/lookup_uint.frag\""});
-  EXPECT_NE(generate.find("draws.0.shaders.textures.u_tex.generate_mipmap: glGenerateMipmap refuses an integer format "
-                          "(GL_RGBA8UI is not filterable"),
-            std::string::npos) << generate;
+  expect_error(rgba8ui,
+               "draws.0.shaders.textures.u_tex.internalformat: GL_RGBA8UI is an integer format, read by "
+               "a usampler2D, and the uniform is a sampler2D (GL leaves the result undefined)");
+  expect_error({"fragment=\"sampling/lookup_int.frag\""},
+               "draws.0.shaders.textures.u_tex.internalformat: the uniform is an isampler2D, which reads "
+               "signed integer formats (GL_R8I .. GL_RGBA32I), not GL_RGBA8");
+  expect_error(with(rgba8ui, {"fragment=\"sampling/lookup_int.frag\""}),
+               "GL_RGBA8UI is an integer format, read by a usampler2D, and the uniform is an isampler2D");
+  expect_error({"textures.u_tex.internalformat=\"GL_RGBA8UI\"", "fragment=\"sampling/lookup_uint.frag\""},
+               "draws.0.shaders.textures.u_tex.generate_mipmap: glGenerateMipmap refuses an integer format "
+               "(GL_RGBA8UI is not filterable");
   // noise_64x64.png's top-left texel is (139, ...): beyond GL_RGBA8I's 127.
   const std::string range = error_of({"textures.u_tex.internalformat=\"GL_RGBA8I\"", "textures.u_tex.generate_mipmap=false",
                                       "textures.u_tex.filter=\"nearest\"", "fragment=\"sampling/lookup_int.frag\""});
   EXPECT_NE(range.find("/tests/data/draws/sampling/noise_64x64.png pixel ("), std::string::npos) << range;
   EXPECT_NE(range.find(", and GL_RGBA8I holds whole numbers from -128 to 127 (internalformat"), std::string::npos) << range;
   // noise_64x64.exr holds k * 6.1 - 3: not whole numbers.
-  const std::string fraction = error_of({"textures.u_tex.path=\"sampling/noise_64x64.exr\"", "textures.u_tex.internalformat=\"GL_RGBA32I\"",
-                                         "textures.u_tex.generate_mipmap=false", "textures.u_tex.filter=\"nearest\"",
-                                         "fragment=\"sampling/lookup_int.frag\""});
-  EXPECT_NE(fraction.find(", and GL_RGBA32I holds whole numbers from -2147483648 to 2147483647"), std::string::npos) << fraction;
-  const std::string border = error_of(with(with(rgba8ui, {"fragment=\"sampling/lookup_uint.frag\""}),
-                                           {"textures.u_tex.border_color=[1, 1.5, 0, 0]"}));
-  EXPECT_NE(border.find("draws.0.shaders.textures.u_tex.border_color.1: GL_RGBA8UI is an integer format: expected a whole "
-                        "number from 0 to 4294967295, got a number (1.5)"),
-            std::string::npos) << border;
-  const std::string negative = error_of(with(with(rgba8ui, {"fragment=\"sampling/lookup_uint.frag\""}),
-                                             {"textures.u_tex.border_color=[-1, 0, 0, 0]"}));
-  EXPECT_NE(negative.find("border_color.0: GL_RGBA8UI is an integer format: expected a whole number from 0 to 4294967295, got a number (-1)"),
-            std::string::npos) << negative;
+  expect_error({"textures.u_tex.path=\"sampling/noise_64x64.exr\"", "textures.u_tex.internalformat=\"GL_RGBA32I\"",
+               "textures.u_tex.generate_mipmap=false", "textures.u_tex.filter=\"nearest\"",
+               "fragment=\"sampling/lookup_int.frag\""},
+               ", and GL_RGBA32I holds whole numbers from -2147483648 to 2147483647");
+  expect_error(with(with(rgba8ui, {"fragment=\"sampling/lookup_uint.frag\""}),
+               {"textures.u_tex.border_color=[1, 1.5, 0, 0]"}),
+               "draws.0.shaders.textures.u_tex.border_color.1: GL_RGBA8UI is an integer format: expected a whole "
+               "number from 0 to 4294967295, got a number (1.5)");
+  expect_error(with(with(rgba8ui, {"fragment=\"sampling/lookup_uint.frag\""}),
+               {"textures.u_tex.border_color=[-1, 0, 0, 0]"}),
+               "border_color.0: GL_RGBA8UI is an integer format: expected a whole number from 0 to 4294967295, got a number (-1)");
   // GL_LINEAR magnification: incomplete, reading the integers (0, 0, 0, 1).
   const RenderResult linear = render_sweep({"textures.u_tex.internalformat=\"GL_RGBA8UI\"", "textures.u_tex.generate_mipmap=false",
                                             "textures.u_tex.min_filter=\"nearest\"", "fragment=\"sampling/lookup_uint.frag\""});
@@ -310,30 +300,24 @@ TEST(TextureScene, ArrayTexturesAreCheckedByKey) {
   auto array = [&](const std::string& keys) {
     return "textures.u_tex={\"path\": null, \"target\": \"GL_TEXTURE_2D_ARRAY\", " + keys + "}";
   };
-  const std::string no_target = error_of({"textures.u_tex={\"path\": null, " + layers + "}"});
-  EXPECT_NE(no_target.find("draws.0.shaders.textures.u_tex.layers: layers are a 2D array texture's: give \"target\": "
-                           "\"GL_TEXTURE_2D_ARRAY\""),
-            std::string::npos) << no_target;
-  const std::string image_path = error_of({"textures.u_tex.target=\"GL_TEXTURE_2D_ARRAY\""});
-  EXPECT_NE(image_path.find("draws.0.shaders.textures.u_tex.path: a GL_TEXTURE_2D_ARRAY's image files are its layers: give "
-                            "layers (level 0's), or raw bytes of every layer with raw_size [width, height, layers]"),
-            std::string::npos) << image_path;
-  const std::string sizes = error_of({array(R"("layers": ["sampling/noise_64x64.png", "sampling/noise_24x10.png"])")});
-  EXPECT_NE(sizes.find("draws.0.shaders.textures.u_tex.layers.1: " + std::string(TESSREF_SOURCE_DIR) +
-                       "/tests/data/draws/sampling/noise_24x10.png is 24x10, and layer 0 is 64x64 (an array's layers are one size)"),
-            std::string::npos) << sizes;
-  const std::string raw = error_of({array(R"("path": "sampling/noise_bytes_0.raw", "internalformat": "GL_RGBA8", "raw_size": [64, 64])")});
-  EXPECT_NE(raw.find("draws.0.shaders.textures.u_tex.raw_size: expected [width, height, layers], whole numbers from 1 to 16384 "
-                     "(GL_MAX_TEXTURE_SIZE) and layers from 1 to 2048 (GL_MAX_ARRAY_TEXTURE_LAYERS), got an array of 2"),
-            std::string::npos) << raw;
-  const std::string plain_sampler = error_of({array(layers)});
-  EXPECT_NE(plain_sampler.find("draws.0.shaders.textures.u_tex.target: the uniform is a sampler2D, which reads a GL_TEXTURE_2D "
-                               "texture, and this one is GL_TEXTURE_2D_ARRAY"),
-            std::string::npos) << plain_sampler;
-  const std::string array_sampler = error_of({"fragment=\"sampling/lookup_array.frag\""});
-  EXPECT_NE(array_sampler.find("draws.0.shaders.textures.u_tex.target: the uniform is a sampler2DArray, which reads a "
-                               "GL_TEXTURE_2D_ARRAY texture, and this one is GL_TEXTURE_2D"),
-            std::string::npos) << array_sampler;
+  expect_error({"textures.u_tex={\"path\": null, " + layers + "}"},
+               "draws.0.shaders.textures.u_tex.layers: layers are a 2D array texture's: give \"target\": "
+               "\"GL_TEXTURE_2D_ARRAY\"");
+  expect_error({"textures.u_tex.target=\"GL_TEXTURE_2D_ARRAY\""},
+               "draws.0.shaders.textures.u_tex.path: a GL_TEXTURE_2D_ARRAY's image files are its layers: give "
+               "layers (level 0's), or raw bytes of every layer with raw_size [width, height, layers]");
+  expect_error({array(R"("layers": ["sampling/noise_64x64.png", "sampling/noise_24x10.png"])")},
+               "draws.0.shaders.textures.u_tex.layers.1: " + std::string(TESSREF_SOURCE_DIR) +
+               "/tests/data/draws/sampling/noise_24x10.png is 24x10, and layer 0 is 64x64 (an array's layers are one size)");
+  expect_error({array(R"("path": "sampling/noise_bytes_0.raw", "internalformat": "GL_RGBA8", "raw_size": [64, 64])")},
+               "draws.0.shaders.textures.u_tex.raw_size: expected [width, height, layers], whole numbers from 1 to 16384 "
+               "(GL_MAX_TEXTURE_SIZE) and layers from 1 to 2048 (GL_MAX_ARRAY_TEXTURE_LAYERS), got an array of 2");
+  expect_error({array(layers)},
+               "draws.0.shaders.textures.u_tex.target: the uniform is a sampler2D, which reads a GL_TEXTURE_2D "
+               "texture, and this one is GL_TEXTURE_2D_ARRAY");
+  expect_error({"fragment=\"sampling/lookup_array.frag\""},
+               "draws.0.shaders.textures.u_tex.target: the uniform is a sampler2DArray, which reads a "
+               "GL_TEXTURE_2D_ARRAY texture, and this one is GL_TEXTURE_2D");
   // Raw bytes of every layer: four 64 x 64 layers of GL_RGBA8 are noise_bytes_0.raw's 65,536 bytes.
   const Scene scene = load_scene(kSweep, {"draws.0.shaders." + array(R"("path": "sampling/noise_bytes_0.raw", "internalformat": "GL_RGBA8", "raw_size": [64, 64, 4], "generate_mipmap": true)")});
   const texture::Texture t = load_texture(scene.draws[0].shaders->textures[0], "raw");
