@@ -464,7 +464,7 @@ texture::Level read_raw_level(const std::filesystem::path& file, texture::TexelF
 }
 
 // One image file's texels for a texture of `format` (declared when `declared`), RGBA rows from the
-// bottom: floats, or integers for an integer format.
+// bottom: floats, or for an integer format integers (and no floats).
 struct ImageTexels {
   int width = 0, height = 0;
   std::vector<float> rgba;
@@ -490,21 +490,23 @@ ImageTexels read_image_texels(const std::filesystem::path& file, const texture::
   out.width = image.width;
   out.height = image.height;
   out.rgba = rgba_rows(image, !declared);
-  if (format.integer()) out.integers = integer_texels(image, out.rgba, format, file, at);
+  if (format.integer()) {
+    out.integers = integer_texels(image, out.rgba, format, file, at);
+    out.rgba = {};
+  }
   return out;
 }
 
-// Layers of one level, each width x height, as a level of format f.
-texture::Level make_level(texture::TexelFormat f, const std::vector<ImageTexels>& layers) {
+// Layers of one level, each width x height, as a level of format f (one layer is not copied).
+texture::Level level_of_layers(texture::TexelFormat f, std::vector<ImageTexels> layers) {
   const int w = layers[0].width, h = layers[0].height, n = int(layers.size());
-  if (texture::info(f).integer()) {
-    std::vector<std::int64_t> all;
-    for (const ImageTexels& l : layers) all.insert(all.end(), l.integers.begin(), l.integers.end());
-    return texture::make_integer_level(f, w, h, all.data(), n);
-  }
-  std::vector<float> all;
-  for (const ImageTexels& l : layers) all.insert(all.end(), l.rgba.begin(), l.rgba.end());
-  return texture::make_level(f, w, h, all.data(), n);
+  auto joined = [&](auto member) {
+    auto all = std::move(layers[0].*member);
+    for (std::size_t k = 1; k < layers.size(); ++k) all.insert(all.end(), (layers[k].*member).begin(), (layers[k].*member).end());
+    return all;
+  };
+  if (texture::info(f).integer()) return texture::make_integer_level(f, w, h, joined(&ImageTexels::integers).data(), n);
+  return texture::make_level(f, w, h, joined(&ImageTexels::rgba).data(), n);
 }
 
 }  // namespace
@@ -524,7 +526,7 @@ texture::Texture load_texture(const TextureSetting& t, const std::string& key) {
                          std::to_string(layers[k].height) + ", and layer 0 is " + std::to_string(layers[0].width) + "x" +
                          std::to_string(layers[0].height) + " (an array's layers are one size)");
     }
-    tex.levels.push_back(make_level(tex.format, layers));
+    tex.levels.push_back(level_of_layers(tex.format, std::move(layers)));
   }
   int width0 = 0, height0 = 0;
   for (std::size_t k = 0; k < t.levels.size(); ++k) {
@@ -533,7 +535,9 @@ texture::Texture load_texture(const TextureSetting& t, const std::string& key) {
       tex.levels.push_back(read_raw_level(t.levels[k], tex.format, *t.raw_size, int(k), at));
       continue;
     }
-    ImageTexels image = read_image_texels(t.levels[k], format, t.format.has_value(), at);
+    std::vector<ImageTexels> level;  // one layer
+    level.push_back(read_image_texels(t.levels[k], format, t.format.has_value(), at));
+    const ImageTexels& image = level[0];
     if (k == 0) {
       width0 = image.width;
       height0 = image.height;
@@ -546,7 +550,7 @@ texture::Texture load_texture(const TextureSetting& t, const std::string& key) {
                        std::to_string(width0) + "x" + std::to_string(height0) + " texture is " +
                        (std::max(width0, height0) >> k == 0 ? std::string("past its last level")
                                                             : std::to_string(w) + "x" + std::to_string(h)));
-    tex.levels.push_back(make_level(tex.format, {std::move(image)}));
+    tex.levels.push_back(level_of_layers(tex.format, std::move(level)));
   }
   // glGenerateMipmap right after level 0 is uploaded, before any glTexParameter: every level.
   if (t.generate_mipmaps) texture::generate_mipmaps(tex);

@@ -129,26 +129,21 @@ TextureSetting read_texture_setting(const std::string& name, const nlohmann::jso
     o.fail(has_path ? "levels" : "path", t.array ? "give one of layers (level 0's layers, image files), or path or levels "
                                                    "(raw bytes of every layer, with raw_size)"
                                                  : "give either path (level 0) or levels (one file per level)");
-  if (has_layers) {
-    const nlohmann::json& files = o.value("layers");
-    if (!files.is_array() || files.empty() || files.size() > std::size_t(texture::kMaxArrayLayers))
-      o.fail("layers", "expected an array of 1 to " + std::to_string(texture::kMaxArrayLayers) +
-                           " image files (GL_MAX_ARRAY_TEXTURE_LAYERS), got " + describe_json(files));
-    for (std::size_t k = 0; k < files.size(); ++k) {
-      if (!files[k].is_string()) o.fail("layers." + std::to_string(k), "expected an image file name, got " + describe_json(files[k]));
-      t.layers.push_back(resolve(files[k].get<std::string>()));
+  // An array of 1 to `most` image file names (`limit` names the GL limit, if any).
+  auto files = [&](const std::string& key, std::size_t most, const std::string& limit) {
+    const nlohmann::json& list = o.value(key);
+    if (!list.is_array() || list.empty() || list.size() > most)
+      o.fail(key, "expected an array of 1 to " + std::to_string(most) + " image files" + limit + ", got " + describe_json(list));
+    std::vector<std::filesystem::path> out;
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      if (!list[k].is_string()) o.fail(key + "." + std::to_string(k), "expected an image file name, got " + describe_json(list[k]));
+      out.push_back(resolve(list[k].get<std::string>()));
     }
-  } else if (has_path) {
-    t.levels.push_back(resolve(o.string("path")));
-  } else {
-    const nlohmann::json& files = o.value("levels");
-    if (!files.is_array() || files.empty() || files.size() > 16)
-      o.fail("levels", "expected an array of 1 to 16 image files, got " + describe_json(files));
-    for (std::size_t k = 0; k < files.size(); ++k) {
-      if (!files[k].is_string()) o.fail("levels." + std::to_string(k), "expected an image file name, got " + describe_json(files[k]));
-      t.levels.push_back(resolve(files[k].get<std::string>()));
-    }
-  }
+    return out;
+  };
+  if (has_layers) t.layers = files("layers", std::size_t(texture::kMaxArrayLayers), " (GL_MAX_ARRAY_TEXTURE_LAYERS)");
+  else if (has_path) t.levels.push_back(resolve(o.string("path")));
+  else t.levels = files("levels", 16, "");
   if (o.has("internalformat")) {
     const std::string f = o.string("internalformat");
     o.describe("internalformat", "one of " + texture::texel_format_names());
@@ -165,13 +160,13 @@ TextureSetting read_texture_setting(const std::string& name, const nlohmann::jso
     };
     const std::string sides = "whole numbers from 1 to " + std::to_string(texture::kMaxTextureSize) + " (GL_MAX_TEXTURE_SIZE)";
     if (has_layers) o.fail("raw_size", "raw bytes come in path or levels (every layer of a level in one file), not layers");
-    if (t.array && (!size.is_array() || size.size() != 3 || !within(size[0], texture::kMaxTextureSize) ||
-                    !within(size[1], texture::kMaxTextureSize) || !within(size[2], texture::kMaxArrayLayers)))
-      o.fail("raw_size", "expected [width, height, layers], " + sides + " and layers from 1 to " +
-                             std::to_string(texture::kMaxArrayLayers) + " (GL_MAX_ARRAY_TEXTURE_LAYERS), got " + describe_json(size));
-    if (!t.array && (!size.is_array() || size.size() != 2 || !within(size[0], texture::kMaxTextureSize) ||
-                     !within(size[1], texture::kMaxTextureSize)))
-      o.fail("raw_size", "expected [width, height], " + sides + ", got " + describe_json(size));
+    // [width, height], and for an array its layers.
+    if (!size.is_array() || size.size() != (t.array ? 3u : 2u) || !within(size[0], texture::kMaxTextureSize) ||
+        !within(size[1], texture::kMaxTextureSize) || (t.array && !within(size[2], texture::kMaxArrayLayers)))
+      o.fail("raw_size", t.array ? "expected [width, height, layers], " + sides + " and layers from 1 to " +
+                                       std::to_string(texture::kMaxArrayLayers) + " (GL_MAX_ARRAY_TEXTURE_LAYERS), got " +
+                                       describe_json(size)
+                                 : "expected [width, height], " + sides + ", got " + describe_json(size));
     if (!t.format) o.fail("raw_size", "raw texel bytes need the internalformat that lays them out");
     t.raw_size = std::array<int, 3>{size[0].get<int>(), size[1].get<int>(), t.array ? size[2].get<int>() : 1};
   }

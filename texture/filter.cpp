@@ -298,11 +298,12 @@ std::array<float, 4> border_color(const Texture& t) {
   if (f.integer()) {
     // Clamped to the range of the format's first channel, but 32-bit channels are kept as
     // they are and GL_RGB10_A2UI's are clamped per channel (lp_build_clamp_border_color).
-    const int c0 = f.type == ChannelType::kUint10_10_10_2 ? -1 : 0;
+    const bool per_channel = f.type == ChannelType::kUint10_10_10_2;
     std::array<float, 4> b;
     for (int c = 0; c < 4; ++c) {
-      const int k = c0 < 0 ? c : c0;
-      const std::int64_t v = c < f.channels ? std::clamp(t.sampler.border_integer[std::size_t(c)], f.integer_min(k), f.integer_max(k))
+      const int range = per_channel ? c : 0;  // whose range clamps channel c
+      const std::int64_t v = c < f.channels ? std::clamp(t.sampler.border_integer[std::size_t(c)], f.integer_min(range),
+                                                         f.integer_max(range))
                                             : c == 3 ? 1 : 0;
       b[std::size_t(c)] = integer_bits(v);
     }

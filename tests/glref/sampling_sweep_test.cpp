@@ -165,14 +165,20 @@ const IntegerFormat kIntegerFormats[] = {
     {"GL_RGB16I", 128, 64, true},    {"GL_RGB16UI", 128, 64, true},   {"GL_RGB8I", 128, 128, true},
     {"GL_RGB8UI", 128, 128, true}};
 
-Case integer_case(const IntegerFormat& f, const std::string& min, const std::string& mag, const std::string& wrap, int fn,
-                  const std::string& extra = "") {
+// The raw chain's files, noise_bytes_*.raw or noise_bytes3_*.raw, as a JSON list: levels 0 to 5, or
+// level 0 alone with the minification filter GL_NEAREST (see above).
+std::string raw_levels(bool rgb, const std::string& min) {
   std::string levels;
   for (int k = 0; k < (min == "nearest" ? 1 : 6); ++k)
-    levels += std::string(k ? ", " : "") + "\"sampling/noise_bytes" + (f.rgb ? "3" : "") + "_" + std::to_string(k) + ".raw\"";
+    levels += std::string(k ? ", " : "") + "\"sampling/noise_bytes" + (rgb ? "3" : "") + "_" + std::to_string(k) + ".raw\"";
+  return "[" + levels + "]";
+}
+
+Case integer_case(const IntegerFormat& f, const std::string& min, const std::string& mag, const std::string& wrap, int fn,
+                  const std::string& extra = "") {
   const bool is_unsigned = std::string(f.name).find("UI") != std::string::npos;
   return Case{{"fragment=\"sampling/lookup_" + std::string(is_unsigned ? "uint" : "int") + ".frag\"",
-               "textures.u_tex={\"path\": null, \"levels\": [" + levels + "], \"raw_size\": [" + std::to_string(f.width) +
+               "textures.u_tex={\"path\": null, \"levels\": " + raw_levels(f.rgb, min) + ", \"raw_size\": [" + std::to_string(f.width) +
                    ", " + std::to_string(f.height) + "], \"internalformat\": \"" + f.name +
                    "\", \"generate_mipmap\": false, \"max_level\": 5, \"min_filter\": \"" + min + "\", \"mag_filter\": \"" +
                    mag + "\", \"wrap\": \"" + wrap + "\"" + extra + "}",
@@ -197,12 +203,9 @@ Case array_case(const std::string& format, const std::string& min, const std::st
 // A signed integer 2D array (lookup_int_array.frag) of four 64 x 64 layers of GL_RGBA8I from
 // raw random bytes (noise_bytes_*.raw, six levels, GL_TEXTURE_MAX_LEVEL 5).
 Case integer_array_case(const std::string& min, const std::string& wrap, int fn) {
-  std::string levels;
-  for (int k = 0; k < (min == "nearest" ? 1 : 6); ++k)  // one level with GL_NEAREST, as integer_case
-    levels += std::string(k ? ", " : "") + "\"sampling/noise_bytes_" + std::to_string(k) + ".raw\"";
   return Case{{"fragment=\"sampling/lookup_int_array.frag\"",
-               "textures.u_tex={\"path\": null, \"target\": \"GL_TEXTURE_2D_ARRAY\", \"levels\": [" + levels +
-                   "], \"raw_size\": [64, 64, 4], \"internalformat\": \"GL_RGBA8I\", \"generate_mipmap\": false, "
+               "textures.u_tex={\"path\": null, \"target\": \"GL_TEXTURE_2D_ARRAY\", \"levels\": " + raw_levels(false, min) +
+                   ", \"raw_size\": [64, 64, 4], \"internalformat\": \"GL_RGBA8I\", \"generate_mipmap\": false, "
                    "\"max_level\": 5, \"min_filter\": \"" + min + "\", \"mag_filter\": \"nearest\", \"wrap\": \"" + wrap +
                    "\", \"border_color\": [-300, 5, 127, -128]}",
                function(fn)}};
@@ -216,13 +219,13 @@ const char* const kCompareFuncs[] = {"lequal", "gequal", "less", "greater", "equ
 // has for a sampler2DArrayShadow), as shadow_case.
 Case shadow_array_case(const std::string& format, const std::string& min, const std::string& mag, const std::string& wrap,
                        const std::string& func, int fn) {
-  Case c{{"fragment=\"sampling/lookup_shadow_array.frag\"",
-          "textures.u_tex={\"path\": null, \"target\": \"GL_TEXTURE_2D_ARRAY\", \"layers\": [\"sampling/depth_64x64.exr\", "
-          "\"sampling/depth_64x64_layer1.exr\"], \"internalformat\": \"" + format + "\", \"generate_mipmap\": false, "
-          "\"min_filter\": \"" + min + "\", \"mag_filter\": \"" + mag + "\", \"wrap\": \"" + wrap +
-              "\", \"compare_mode\": \"compare_ref_to_texture\", \"compare_func\": \"" + func + "\"}",
-          function(fn)}};
-  if (fn <= 5 && linear_image(min) != linear_image(mag)) c.max_differing = 0.005;  // as make_case says
+  Case c = shadow_case(format, min, mag, wrap, func, fn);
+  c.sets = {"fragment=\"sampling/lookup_shadow_array.frag\"",
+            "textures.u_tex={\"path\": null, \"target\": \"GL_TEXTURE_2D_ARRAY\", \"layers\": [\"sampling/depth_64x64.exr\", "
+            "\"sampling/depth_64x64_layer1.exr\"], \"internalformat\": \"" + format + "\", \"generate_mipmap\": false, "
+            "\"min_filter\": \"" + min + "\", \"mag_filter\": \"" + mag + "\", \"wrap\": \"" + wrap +
+                "\", \"compare_mode\": \"compare_ref_to_texture\", \"compare_func\": \"" + func + "\"}",
+            function(fn)};
   return c;
 }
 
