@@ -433,7 +433,7 @@ TEST_F(Cli, ProgressLineOnATerminal) {
   if (std::system("script --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "script(1) is not installed";
   TempDir dir;
   const auto t0 = std::chrono::steady_clock::now();
-  const CliRun r = test::run_command("script -qec '" + kBinary + " render --repeat 4 --set shaders.program=twins -o " +
+  const CliRun r = test::run_command("script -qec '" + kBinary + " render --repeat 30 --set shaders.program=twins -o " +
                                     (dir.path() / "x.png").string() + "' /dev/null");
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ASSERT_EQ(r.exit_code, 0) << r.output;
