@@ -96,12 +96,17 @@ void run(const std::vector<std::uint32_t>& spirv, Stage stage, Words& words) {
   }
   texture::Texture textures[2];
   for (texture::Texture& t : textures) {
-    const int width = 1 + int(words.next() % 3), height = 1 + int(words.next() % 3);
+    const std::uint32_t target = words.next();
+    t.target = static_cast<texture::Target>(target % 5);
+    // 1D targets and buffer textures are one row; arrays have 1 to 3 layers.
+    const int width = 1 + int(words.next() % 3), rows = 1 + int(words.next() % 3);
+    const int height = texture::dimensions(t.target) == 1 ? 1 : rows;
+    const int layers = texture::is_array(t.target) ? 1 + int(target / 5 % 3) : 1;
     std::vector<float> rgba;
-    for (int i = 0; i < 4 * width * height; ++i) rgba.push_back(float(words.next() % 256) / 255.0f);
+    for (int i = 0; i < 4 * width * height * layers; ++i) rgba.push_back(float(words.next() % 256) / 255.0f);
     const std::uint32_t mode = words.next();
     t.format = static_cast<texture::TexelFormat>((mode >> 5) % 30);
-    t.levels.push_back(texture::make_level(t.format, width, height, rgba.data()));
+    t.levels.push_back(texture::make_level(t.format, width, height, rgba.data(), layers));
     t.sampler.min_filter = static_cast<texture::Filter>((mode >> 9) % 6);
     t.sampler.mag_filter = static_cast<texture::Filter>(mode & 1);
     t.sampler.wrap_s = static_cast<texture::Wrap>((mode >> 1) % 5);
@@ -109,7 +114,7 @@ void run(const std::vector<std::uint32_t>& spirv, Stage stage, Words& words) {
     t.sampler.lod_bias = float(std::int32_t(words.next())) / 65536.0f;
     t.sampler.compare = (mode & 0x10000) != 0;
     t.sampler.compare_func = static_cast<texture::CompareFunc>((mode >> 17) % 8);
-    if (mode & 0x8000) texture::generate_mipmaps(t);
+    if ((mode & 0x8000) && t.target != texture::Target::kBuffer) texture::generate_mipmaps(t);
     else t.finalize();
   }
   inv.bind_texture(0, &textures[0]);

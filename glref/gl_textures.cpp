@@ -3,7 +3,10 @@
 #include <epoxy/gl.h>
 
 #include "glref/gl_error.h"
-#include "render/glsl_scene.h"
+#include <algorithm>
+
+#include "render/buffer_load.h"
+#include "render/texture_load.h"
 
 namespace tessref::glref {
 namespace {
@@ -78,6 +81,7 @@ GlFormat gl_format(texture::TexelFormat f) {
   }
   switch (f) {
     case TF::kRgba32F: return {GL_RGBA32F, format, type};
+    case TF::kRgb32F: return {GL_RGB32F, format, type};
     case TF::kRg32F: return {GL_RG32F, format, type};
     case TF::kR32F: return {GL_R32F, format, type};
     case TF::kRgba16F: return {GL_RGBA16F, format, type};
@@ -164,9 +168,20 @@ void set_sampler_state(const texture::SamplerState& s, texture::TexelFormat form
   i(GL_TEXTURE_COMPARE_FUNC, kFuncs[int(s.compare_func)]);
 }
 
+GLenum gl_target(texture::Target t) {
+  switch (t) {
+    case texture::Target::k1D: return GL_TEXTURE_1D;
+    case texture::Target::k2D: return GL_TEXTURE_2D;
+    case texture::Target::k1DArray: return GL_TEXTURE_1D_ARRAY;
+    case texture::Target::k2DArray: return GL_TEXTURE_2D_ARRAY;
+    case texture::Target::kBuffer: return GL_TEXTURE_BUFFER;
+  }
+  return GL_TEXTURE_2D;
+}
+
 }  // namespace
 
-GlTextures::GlTextures(const std::string& scene_source, const ShaderSettings& shaders) : shaders_(shaders) {
+GlTextures::GlTextures(const Scene& scene, const ShaderSettings& shaders) : shaders_(shaders) {
   ids_.resize(shaders.textures.size());
   targets_.assign(shaders.textures.size(), GL_TEXTURE_2D);
   samplers_.assign(shaders.textures.size(), 0u);
@@ -174,24 +189,52 @@ GlTextures::GlTextures(const std::string& scene_source, const ShaderSettings& sh
   glGenTextures(GLsizei(ids_.size()), ids_.data());
   for (std::size_t k = 0; k < ids_.size(); ++k) {
     const TextureSetting& t = shaders.textures[k];
-    const texture::Texture tex = load_texture(t, scene_source + ": " + shaders.key + ".textures." + t.sampler);
+    const texture::Texture tex = load_texture(t, scene.source + ": " + shaders.key + ".textures." + t.sampler, scene);
     const GlFormat f = gl_format(tex.format);
     const texture::Level& level0 = tex.levels[0];
-    const GLenum target = tex.array ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D;
-    // glTexStorage2D/3D: the levels given, or every level down to 1 x 1 for glGenerateMipmap.
+    const GLenum target = gl_target(tex.target);
+    targets_[k] = target;
+    glBindTexture(target, ids_[k]);
+    if (tex.target == texture::Target::kBuffer) {
+      // The buffer object as the application made it, and the range the scene names.
+      const std::vector<draw::Buffer> buffers = load_buffers(scene);
+      const auto source = std::find_if(buffers.begin(), buffers.end(), [&](const draw::Buffer& b) { return b.name == t.buffer; });
+      GLuint buffer = 0;
+      glGenBuffers(1, &buffer);
+      buffers_.push_back(buffer);
+      glBindBuffer(GL_TEXTURE_BUFFER, buffer);
+      glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(source->bytes.size()), source->bytes.data(), GL_STATIC_DRAW);
+      glBindBuffer(GL_TEXTURE_BUFFER, 0);
+      glTexBufferRange(GL_TEXTURE_BUFFER, f.internal, buffer, GLintptr(t.buffer_offset),
+                       GLsizeiptr(t.buffer_size.value_or(source->bytes.size() - t.buffer_offset)));
+      continue;
+    }
+    // glTexStorage*: the levels given, or every level down to 1 (x 1) for glGenerateMipmap.
     const int given = t.layers.empty() ? int(t.levels.size()) : 1;
     const int all = texture::last_mip_level(0, level0.width, level0.height) + 1;
     const int levels = t.generate_mipmaps ? all : given;
-    glBindTexture(target, ids_[k]);
-    if (tex.array) glTexStorage3D(target, levels, f.internal, level0.width, level0.height, level0.layers);
-    else glTexStorage2D(target, levels, f.internal, level0.width, level0.height);
+    switch (tex.target) {
+      case texture::Target::k1D: glTexStorage1D(target, levels, f.internal, level0.width); break;
+      case texture::Target::k1DArray: glTexStorage2D(target, levels, f.internal, level0.width, level0.layers); break;
+      case texture::Target::k2DArray:
+        glTexStorage3D(target, levels, f.internal, level0.width, level0.height, level0.layers);
+        break;
+      default: glTexStorage2D(target, levels, f.internal, level0.width, level0.height); break;
+    }
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     for (int l = 0; l < given; ++l) {
       const texture::Level& level = tex.levels[std::size_t(l)];
-      if (tex.array)
-        glTexSubImage3D(target, l, 0, 0, 0, level.width, level.height, level.layers, f.format, f.type, level.stored.data());
-      else
-        glTexSubImage2D(target, l, 0, 0, level.width, level.height, f.format, f.type, level.stored.data());
+      const void* bytes = level.stored.data();
+      switch (tex.target) {
+        case texture::Target::k1D: glTexSubImage1D(target, l, 0, level.width, f.format, f.type, bytes); break;
+        case texture::Target::k1DArray:  // the layers are the image's rows
+          glTexSubImage2D(target, l, 0, 0, level.width, level.layers, f.format, f.type, bytes);
+          break;
+        case texture::Target::k2DArray:
+          glTexSubImage3D(target, l, 0, 0, 0, level.width, level.height, level.layers, f.format, f.type, bytes);
+          break;
+        default: glTexSubImage2D(target, l, 0, 0, level.width, level.height, f.format, f.type, bytes); break;
+      }
     }
     // glGenerateMipmap right after the upload, with the initial base and max level: every level.
     if (t.generate_mipmaps) glGenerateMipmap(target);
@@ -206,7 +249,6 @@ GlTextures::GlTextures(const std::string& scene_source, const ShaderSettings& sh
     const GLint swizzle[4] = {gl_swizzle(tex.swizzle[0]), gl_swizzle(tex.swizzle[1]), gl_swizzle(tex.swizzle[2]),
                               gl_swizzle(tex.swizzle[3])};
     glTexParameteriv(target, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
-    targets_[k] = target;
     if (t.sampler_object) {
       GLuint sampler = 0;
       glGenSamplers(1, &sampler);
@@ -218,13 +260,13 @@ GlTextures::GlTextures(const std::string& scene_source, const ShaderSettings& sh
                                   [sampler](const GLuint* c) { glSamplerParameterIuiv(sampler, GL_TEXTURE_BORDER_COLOR, c); }});
     }
   }
-  glBindTexture(GL_TEXTURE_2D, 0);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+  for (const unsigned target : targets_) glBindTexture(target, 0);
   check_gl("GlTextures: uploading shaders.textures");
 }
 
 GlTextures::~GlTextures() {
   if (!ids_.empty()) glDeleteTextures(GLsizei(ids_.size()), ids_.data());
+  if (!buffers_.empty()) glDeleteBuffers(GLsizei(buffers_.size()), buffers_.data());
   for (unsigned sampler : samplers_)
     if (sampler) glDeleteSamplers(1, &sampler);
 }

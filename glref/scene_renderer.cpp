@@ -197,7 +197,7 @@ SceneRenderer::SceneRenderer(GlContext& context, const Scene& scene, const Mesh&
     program_ = link_program(twin_stages(scene_, false, options_.specialize), {},
                             scene_.draws.empty() ? attribute_locations(scene_) : AttributeLocations{});
     set_uniforms(program_, scene_.shaders);
-    textures_ = std::make_unique<GlTextures>(scene_.source, scene_.shaders);
+    textures_ = std::make_unique<GlTextures>(scene_, scene_.shaders);
     textures_->set_samplers(program_.id());
   }
 
@@ -212,7 +212,7 @@ SceneRenderer::SceneRenderer(GlContext& context, const Scene& scene, const Mesh&
       if (d.shaders) {
         draw_programs_[i] = link_program(custom_stages(scene_, *d.shaders, false));
         set_uniforms(draw_programs_[i], *d.shaders);
-        draw_textures_[i] = std::make_unique<GlTextures>(scene_.source, *d.shaders);
+        draw_textures_[i] = std::make_unique<GlTextures>(scene_, *d.shaders);
         draw_textures_[i]->set_samplers(draw_programs_[i].id());
       }
       programs.push_back(d.shaders ? draw_programs_[i].id() : program_.id());

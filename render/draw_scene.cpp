@@ -1,36 +1,14 @@
 #include "render/draw_scene.h"
 
 #include <algorithm>
-#include <cstring>
 #include <map>
 #include <span>
-#include <fstream>
-#include <iterator>
 
 #include "common/error.h"
 #include "raster/clear.h"
 #include "render/glsl_scene.h"
 
 namespace tessref {
-
-std::vector<draw::Buffer> load_buffers(const Scene& scene) {
-  std::vector<draw::Buffer> out;
-  for (const BufferSetting& b : scene.buffers) {
-    draw::Buffer buffer{b.name, b.data};
-    if (!b.file.empty()) {
-      std::ifstream in(b.file, std::ios::binary);
-      if (!in)
-        throw InputError(scene.source + ": buffers." + b.name + ".file: cannot read '" + b.file.string() + "'");
-      const std::vector<char> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-      if (in.bad())
-        throw InputError(scene.source + ": buffers." + b.name + ".file: error reading '" + b.file.string() + "'");
-      buffer.bytes.resize(bytes.size());
-      std::memcpy(buffer.bytes.data(), bytes.data(), bytes.size());
-    }
-    out.push_back(std::move(buffer));
-  }
-  return out;
-}
 
 int primitive_corners(DrawMode mode) {
   switch (mode) {

@@ -6,14 +6,12 @@
 #include <vector>
 
 #include "draw/vertex_fetch.h"
+#include "render/buffer_load.h"
 #include "render/draw_call.h"
 #include "render/glsl_scene.h"
 #include "scene/scene.h"
 
 namespace tessref {
-
-// The scene's buffers with their bytes (files read now). InputError naming buffers.NAME.file.
-std::vector<draw::Buffer> load_buffers(const Scene& scene);
 
 // Vertices per assembled primitive of an untessellated mode: 3, 2 (lines) or 1 (points).
 int primitive_corners(DrawMode mode);

@@ -21,13 +21,6 @@ struct SceneProgram {
   std::vector<std::string> warnings;  // incomplete textures
 };
 
-// shaders.textures[k] as a texture: its level files in its internal format (rows from the bottom,
-// as GL numbers them), glGenerateMipmap's levels when asked, its sampler state, finalized: what
-// tessref samples and the GL runner uploads. InputError, naming `key` ("SCENE:
-// shaders.textures.NAME"), for an unreadable file, a file whose channels are not the declared
-// format's, or a level whose size is not the one glTexStorage2D gives it.
-texture::Texture load_texture(const TextureSetting& t, const std::string& key);
-
 // The GLSL of the scene's program, stage by stage: the twins, or the user's files (`twin:NAME`
 // resolved). InputError when a file cannot be read. The real-GL runner draws the same sources.
 std::vector<shader::ShaderSource> scene_sources(const Scene& scene);

@@ -86,21 +86,27 @@ struct UniformSetting {
   bool boolean = false;
 };
 
-// shaders.textures: a 2D texture bound to a sampler2D uniform, as an application creates it
-// (glTexStorage2D with its internal format and levels, glTexSubImage2D per level from an image
-// file, glGenerateMipmap when asked) with its sampler state (glTexParameter). Read by
-// scene/texture_schema.h.
+// shaders.textures: a texture bound to a sampler uniform, as an application creates it
+// (glTexStorage* with its internal format and levels, glTexSubImage* per level from an image file,
+// glGenerateMipmap when asked, or glTexBufferRange on one of the scene's buffers) with its sampler
+// state (glTexParameter). Read by scene/texture_schema.h.
 struct TextureSetting {
   std::string sampler;  // the uniform's name
-  bool array = false;   // GL_TEXTURE_2D_ARRAY, else GL_TEXTURE_2D
-  std::vector<std::filesystem::path> levels;  // level k's image file, from level 0 (raw: every layer)
-  std::vector<std::filesystem::path> layers;  // an array's level 0 as one image file per layer
+  texture::Target target = texture::Target::k2D;
+  // level k's image file, from level 0 (raw: every layer; a 1D array's image: its rows are the layers)
+  std::vector<std::filesystem::path> levels;
+  std::vector<std::filesystem::path> layers;  // a 2D array's level 0 as one image file per layer
+  // GL_TEXTURE_BUFFER: glTexBufferRange(GL_TEXTURE_BUFFER, format, buffers.NAME, offset, size);
+  // no size: the rest of the buffer (glTexBuffer when the offset is 0 too).
+  std::string buffer;
+  std::size_t buffer_offset = 0;
+  std::optional<std::size_t> buffer_size;
   // GL_RGBA32F from any image when absent (the image's gray expanded to RGB); else the file's
   // channels must be the format's.
   std::optional<texture::TexelFormat> format;
-  // raw_size: the files are the format's bytes as glTexSubImage2D / 3D take them
-  // (GL_UNPACK_ALIGNMENT 1, the bottom row first, layer after layer), level 0 this many texels
-  // wide and high and this many layers (1 for GL_TEXTURE_2D); else image files.
+  // raw_size: the files are the format's bytes as glTexSubImage* takes them (GL_UNPACK_ALIGNMENT
+  // 1, the bottom row first, layer after layer), level 0 this many texels wide and high (1 for 1D
+  // targets) and this many layers (1 unless an array); else image files.
   std::optional<std::array<int, 3>> raw_size;
   bool generate_mipmaps = false;  // glGenerateMipmap after level 0 is given
   // The file's levels are all the texture has unless generate_mipmaps: its storage then has

@@ -342,7 +342,8 @@ ShaderSettings read_shaders(JsonObject o, const JsonSource& source, const std::f
   }
   o.describe("textures", "an object of sampler name: image file or {target, path, levels or layers, internalformat, "
                          "raw_size, generate_mipmap, filter, min_filter, mag_filter, wrap, wrap_s, wrap_t, border_color, "
-                         "min_lod, max_lod, lod_bias, base_level, max_level, swizzle, compare_mode, compare_func, sampler}");
+                         "min_lod, max_lod, lod_bias, base_level, max_level, swizzle, compare_mode, compare_func, sampler}, "
+                         "or {target: GL_TEXTURE_BUFFER, buffer, internalformat, offset, size}");
   if (o.has("textures")) {
     const nlohmann::json& textures = o.value("textures");
     if (!textures.is_object())

@@ -59,6 +59,79 @@ Enum choice(JsonObject& o, const std::string& key, const std::array<std::pair<co
   o.fail(key, "expected one of " + names(table, count) + ", got \"" + s + "\"");
 }
 
+constexpr std::array<std::pair<const char*, texture::Target>, 5> kTargets{{
+    {"GL_TEXTURE_1D", texture::Target::k1D},
+    {"GL_TEXTURE_2D", texture::Target::k2D},
+    {"GL_TEXTURE_1D_ARRAY", texture::Target::k1DArray},
+    {"GL_TEXTURE_2D_ARRAY", texture::Target::k2DArray},
+    {"GL_TEXTURE_BUFFER", texture::Target::kBuffer},
+}};
+
+void read_internalformat(JsonObject& o, TextureSetting& t) {
+  if (!o.has("internalformat")) return;
+  const std::string f = o.string("internalformat");
+  o.describe("internalformat", "one of " + texture::texel_format_names());
+  t.format = texture::parse_texel_format(f);
+  if (!t.format) o.fail("internalformat", "expected one of " + texture::texel_format_names() + ", got \"" + f + "\"");
+}
+
+// GL 4.6 table 8.18: the formats a buffer texture may have.
+bool buffer_texture_format(texture::TexelFormat f) {
+  using TF = texture::TexelFormat;
+  switch (f) {
+    case TF::kR8: case TF::kR16: case TF::kR16F: case TF::kR32F: case TF::kR8I: case TF::kR16I: case TF::kR32I:
+    case TF::kR8Ui: case TF::kR16Ui: case TF::kR32Ui:
+    case TF::kRg8: case TF::kRg16: case TF::kRg16F: case TF::kRg32F: case TF::kRg8I: case TF::kRg16I: case TF::kRg32I:
+    case TF::kRg8Ui: case TF::kRg16Ui: case TF::kRg32Ui:
+    case TF::kRgb32F: case TF::kRgb32I: case TF::kRgb32Ui:
+    case TF::kRgba8: case TF::kRgba16: case TF::kRgba16F: case TF::kRgba32F: case TF::kRgba8I: case TF::kRgba16I:
+    case TF::kRgba32I: case TF::kRgba8Ui: case TF::kRgba16Ui: case TF::kRgba32Ui:
+      return true;
+    default: return false;
+  }
+}
+std::string buffer_texture_formats() {
+  std::string out;
+  for (int k = 0; k <= int(texture::TexelFormat::kRgb32F); ++k)
+    if (buffer_texture_format(texture::TexelFormat(k)))
+      out += (out.empty() ? "" : ", ") + std::string(texture::info(texture::TexelFormat(k)).gl_name);
+  return out;
+}
+
+// GL_TEXTURE_BUFFER: a range of one of the scene's buffers, read as texels of a format of table
+// 8.18 (glTexBufferRange). It has no images, levels or sampler state.
+void read_buffer_texture(JsonObject& o, TextureSetting& t) {
+  for (const char* key : {"path", "levels", "layers", "raw_size", "generate_mipmap", "filter", "min_filter", "mag_filter",
+                          "wrap", "wrap_s", "wrap_t", "border_color", "min_lod", "max_lod", "lod_bias", "compare_mode",
+                          "compare_func", "sampler", "base_level", "max_level", "swizzle"})
+    if (o.has(key))
+      o.fail(key, "a GL_TEXTURE_BUFFER texture has no images, levels or sampler state (GL 4.6 8.9): its texels are "
+                  "the bytes of `buffer` from `offset`, read by texelFetch");
+  o.describe("buffer", "the scene buffer (buffers.NAME) whose bytes the buffer texture reads");
+  t.buffer = o.string("buffer");
+  if (!o.has("internalformat"))
+    o.fail("internalformat", "a GL_TEXTURE_BUFFER needs the format its bytes hold: one of " + buffer_texture_formats());
+  read_internalformat(o, t);
+  if (!buffer_texture_format(*t.format))
+    o.fail("internalformat", std::string(texture::info(*t.format).gl_name) + " is not a buffer texture format (GL 4.6 "
+                             "table 8.18): expected one of " + buffer_texture_formats());
+  // GL_TEXTURE_BUFFER_OFFSET_ALIGNMENT may be as large as 256 (GL 4.6 table 23.64): a program
+  // that relies on less fails on some driver, so tessref asks for 256.
+  constexpr std::int64_t kMaxBytes = std::int64_t(1) << 40;
+  if (o.has("offset")) {
+    o.describe("offset", "a byte offset into the buffer, a multiple of 256 (default 0)");
+    t.buffer_offset = std::size_t(o.integer64("offset", 0, kMaxBytes));
+    if (t.buffer_offset % 256)
+      o.fail("offset", std::to_string(t.buffer_offset) + " is not a multiple of 256: GL_TEXTURE_BUFFER_OFFSET_ALIGNMENT "
+                       "may be as large as 256, and glTexBufferRange refuses an offset that is not a multiple of it");
+  }
+  if (o.has("size")) {
+    o.describe("size", "bytes of the range, > 0 (default: the rest of the buffer)");
+    t.buffer_size = std::size_t(o.integer64("size", 1, kMaxBytes));
+  }
+  o.finish();
+}
+
 // The sampler state keys of a texture, or of a sampler object (glSamplerParameter).
 void read_sampler_state(JsonObject& o, texture::SamplerState& s, const texture::TexelFormatInfo& format) {
   // filter and wrap set both filters and both wraps; the specific keys override them.
@@ -113,22 +186,26 @@ TextureSetting read_texture_setting(const std::string& name, const nlohmann::jso
   }
   JsonObject o(value, path, source);
   if (o.has("target")) {
-    o.describe("target", "GL_TEXTURE_2D (default) or GL_TEXTURE_2D_ARRAY");
-    const std::string target = o.string("target");
-    if (target != "GL_TEXTURE_2D" && target != "GL_TEXTURE_2D_ARRAY")
-      o.fail("target", "expected GL_TEXTURE_2D or GL_TEXTURE_2D_ARRAY (tessref's targets), got \"" + target + "\"");
-    t.array = target == "GL_TEXTURE_2D_ARRAY";
+    o.describe("target", "one of " + names(kTargets) + " (default GL_TEXTURE_2D)");
+    t.target = choice(o, "target", kTargets);
   }
+  if (t.target == texture::Target::kBuffer) {
+    read_buffer_texture(o, t);
+    return t;
+  }
+  const bool array = texture::is_array(t.target), one_d = texture::dimensions(t.target) == 1;
   const bool has_path = o.has("path"), has_levels = o.has("levels"), has_layers = o.has("layers");
   o.describe("path", "an image file: level 0");
-  o.describe("levels", "an array of image files: levels 0, 1, ... (glTexSubImage2D per level)");
+  o.describe("levels", "an array of image files: levels 0, 1, ... (glTexSubImage* per level)");
   o.describe("layers", "a GL_TEXTURE_2D_ARRAY's level 0: an array of image files, one per layer");
-  if (has_layers && !t.array)
-    o.fail("layers", "layers are a 2D array texture's: give \"target\": \"GL_TEXTURE_2D_ARRAY\"");
+  if (has_layers && t.target != texture::Target::k2DArray)
+    o.fail("layers", std::string("layers are a 2D array texture's: give \"target\": \"GL_TEXTURE_2D_ARRAY\"") +
+                         (t.target == texture::Target::k1DArray ? " (a 1D array's layers are the rows of its path or levels images)" : ""));
   if (int(has_path) + int(has_levels) + int(has_layers) != 1)
-    o.fail(has_path ? "levels" : "path", t.array ? "give one of layers (level 0's layers, image files), or path or levels "
-                                                   "(raw bytes of every layer, with raw_size)"
-                                                 : "give either path (level 0) or levels (one file per level)");
+    o.fail(has_path ? "levels" : "path", t.target == texture::Target::k2DArray
+                                             ? "give one of layers (level 0's layers, image files), or path or levels "
+                                               "(raw bytes of every layer, with raw_size)"
+                                             : "give either path (level 0) or levels (one file per level)");
   // An array of 1 to `most` image file names (`limit` names the GL limit, if any).
   auto files = [&](const std::string& key, std::size_t most, const std::string& limit) {
     const nlohmann::json& list = o.value(key);
@@ -144,33 +221,30 @@ TextureSetting read_texture_setting(const std::string& name, const nlohmann::jso
   if (has_layers) t.layers = files("layers", std::size_t(texture::kMaxArrayLayers), " (GL_MAX_ARRAY_TEXTURE_LAYERS)");
   else if (has_path) t.levels.push_back(resolve(o.string("path")));
   else t.levels = files("levels", 16, "");
-  if (o.has("internalformat")) {
-    const std::string f = o.string("internalformat");
-    o.describe("internalformat", "one of " + texture::texel_format_names());
-    t.format = texture::parse_texel_format(f);
-    if (!t.format) o.fail("internalformat", "expected one of " + texture::texel_format_names() + ", got \"" + f + "\"");
-  }
+  read_internalformat(o, t);
   if (o.has("raw_size")) {
-    o.describe("raw_size", t.array ? "[width, height, layers]: the files are raw texel bytes of internalformat, every "
-                                     "layer of a level, level 0 this size"
-                                   : "[width, height]: the files are raw texel bytes of internalformat, level 0 this size");
+    // [width], [width, layers], [width, height] or [width, height, layers], with each one's limit.
+    std::vector<std::pair<std::string, int>> sides{{"width", texture::kMaxTextureSize}};
+    if (!one_d) sides.emplace_back("height", texture::kMaxTextureSize);
+    if (array) sides.emplace_back("layers", texture::kMaxArrayLayers);
+    std::string shape;
+    for (const auto& [side, most] : sides) shape += (shape.empty() ? "[" : ", ") + side;
+    shape += "]";
+    const std::string limits = "whole numbers from 1 to " + std::to_string(texture::kMaxTextureSize) + " (GL_MAX_TEXTURE_SIZE)" +
+                               (array ? " and layers from 1 to " + std::to_string(texture::kMaxArrayLayers) + " (GL_MAX_ARRAY_TEXTURE_LAYERS)" : "");
+    o.describe("raw_size", shape + ": the files are raw texel bytes of internalformat" + (array ? ", every layer of a level" : "") +
+                               ", level 0 this size");
     const nlohmann::json& size = o.value("raw_size");
-    auto within = [](const nlohmann::json& v, int most) {
-      return v.is_number_integer() && v.get<long long>() >= 1 && v.get<long long>() <= most;
-    };
-    const std::string sides = "whole numbers from 1 to " + std::to_string(texture::kMaxTextureSize) + " (GL_MAX_TEXTURE_SIZE)";
     if (has_layers) o.fail("raw_size", "raw bytes come in path or levels (every layer of a level in one file), not layers");
-    // [width, height], and for an array its layers.
-    if (!size.is_array() || size.size() != (t.array ? 3u : 2u) || !within(size[0], texture::kMaxTextureSize) ||
-        !within(size[1], texture::kMaxTextureSize) || (t.array && !within(size[2], texture::kMaxArrayLayers)))
-      o.fail("raw_size", t.array ? "expected [width, height, layers], " + sides + " and layers from 1 to " +
-                                       std::to_string(texture::kMaxArrayLayers) + " (GL_MAX_ARRAY_TEXTURE_LAYERS), got " +
-                                       describe_json(size)
-                                 : "expected [width, height], " + sides + ", got " + describe_json(size));
+    bool ok = size.is_array() && size.size() == sides.size();
+    for (std::size_t k = 0; ok && k < sides.size(); ++k)
+      ok = size[k].is_number_integer() && size[k].get<long long>() >= 1 && size[k].get<long long>() <= sides[k].second;
+    if (!ok) o.fail("raw_size", "expected " + shape + ", " + limits + ", got " + describe_json(size));
     if (!t.format) o.fail("raw_size", "raw texel bytes need the internalformat that lays them out");
-    t.raw_size = std::array<int, 3>{size[0].get<int>(), size[1].get<int>(), t.array ? size[2].get<int>() : 1};
+    t.raw_size = std::array<int, 3>{size[0].get<int>(), one_d ? 1 : size[1].get<int>(),
+                                    array ? size[sides.size() - 1].get<int>() : 1};
   }
-  if (t.array && !has_layers && !t.raw_size)
+  if (t.target == texture::Target::k2DArray && !has_layers && !t.raw_size)
     o.fail(has_path ? "path" : "levels", "a GL_TEXTURE_2D_ARRAY's image files are its layers: give layers (level 0's), "
                                          "or raw bytes of every layer with raw_size [width, height, layers]");
   if (o.has("generate_mipmap")) {

@@ -1,7 +1,8 @@
 #pragma once
 // shaders.textures.NAME: an image file name, or an object that says how the application creates
-// the texture (internal format, levels, glGenerateMipmap) and samples it (glTexParameter's
-// filters, wraps, border colour, LOD range and bias, base and max level, swizzle).
+// the texture (target, internal format, levels, glGenerateMipmap, or a buffer texture's range of a
+// scene buffer) and samples it (glTexParameter's filters, wraps, border colour, LOD range and bias,
+// base and max level, swizzle).
 #include <filesystem>
 
 #include "scene/json_reader.h"

@@ -302,15 +302,18 @@ void Runner::texture(const XIns& x) {
   };
   static const texture::Texture kUnbound;  // no levels: incomplete, reads (0, 0, 0, 1)
   // A unit holds a texture per target: a 2D array sampler on a unit with a 2D texture reads the
-  // unit's empty GL_TEXTURE_2D_ARRAY binding, and the reverse.
+  // unit's empty GL_TEXTURE_2D_ARRAY binding, and so on.
   auto tex = [&](int l) -> const texture::Texture& {
     const texture::Texture* t = bound(l);
-    return t && t->array == op.arrayed ? *t : kUnbound;
+    return t && t->target == op.target ? *t : kUnbound;
   };
+  // Coordinates within a layer (1 or 2), and where an array's layer coordinate is.
+  const std::uint32_t dims = std::uint32_t(texture::dimensions(op.target));
+  const bool arrayed = texture::is_array(op.target);
   auto irow = [&](std::uint32_t r, std::uint32_t c, int l) { return std::int32_t(row<std::uint32_t>(r, c)[l]); };
   auto frow = [&](std::uint32_t r, std::uint32_t c, int l) { return row<float>(r, c)[l]; };
-  // textureOffset's (or texelFetchOffset's) component c: 0 without one.
-  auto offset = [&](std::uint32_t c, int l) { return op.offset == kNone ? 0 : irow(op.offset, c, l); };
+  // textureOffset's (or texelFetchOffset's) component c: 0 without one, or past the target's.
+  auto offset = [&](std::uint32_t c, int l) { return op.offset == kNone || c >= dims ? 0 : irow(op.offset, c, l); };
 
   if (op.kind == Kind::QuerySize || op.kind == Kind::QueryLevels) {
     for (int l = 0; l < n; ++l) {
@@ -328,10 +331,11 @@ void Runner::texture(const XIns& x) {
       if (!mask[l]) continue;
       float texel[4];
       // The offset is added in 64 bits by fetch's bounds check: no overflow at INT_MAX.
-      const std::int64_t i = std::int64_t(irow(op.coord, 0, l)) + offset(0, l), j = std::int64_t(irow(op.coord, 1, l)) + offset(1, l);
+      const std::int64_t i = std::int64_t(irow(op.coord, 0, l)) + offset(0, l),
+                         j = dims == 2 ? std::int64_t(irow(op.coord, 1, l)) + offset(1, l) : 0;
       const bool inside = i >= 0 && j >= 0 && i <= 0x7fffffff && j <= 0x7fffffff;
       // Outside int's range: a texel no level has.
-      texture::fetch(tex(l), inside ? int(i) : -1, inside ? int(j) : -1, op.arrayed ? irow(op.coord, 2, l) : 0,
+      texture::fetch(tex(l), inside ? int(i) : -1, inside ? int(j) : -1, arrayed ? irow(op.coord, dims, l) : 0,
                      op.lod == kNone ? 0 : irow(op.lod, 0, l), texel);
       for (std::uint32_t c = 0; c < x.n; ++c) row<float>(x.dst, c)[l] = texel[c];
     }
@@ -342,9 +346,9 @@ void Runner::texture(const XIns& x) {
   int layer[L];  // an array's layer (texture::array_layer), else 0
   for (int l = 0; l < n; ++l) {
     s[l] = frow(op.coord, 0, l);
-    t[l] = frow(op.coord, 1, l);
-    // textureQueryLod takes (s, t) alone.
-    layer[l] = op.arrayed && op.kind != Kind::QueryLod ? texture::array_layer(tex(l), frow(op.coord, 2, l)) : 0;
+    t[l] = dims == 2 ? frow(op.coord, 1, l) : 0.0f;
+    // textureQueryLod takes the coordinates within a layer alone.
+    layer[l] = arrayed && op.kind != Kind::QueryLod ? texture::array_layer(tex(l), frow(op.coord, dims, l)) : 0;
     dref[l] = op.dref == kNone ? 0.0f : frow(op.dref, 0, l);
     if (op.proj) {  // times 1/q, as Mesa lowers the projection (nir_lower_tex)
       const float inv_q = 1.0f / frow(op.coord, op.coord_comps - 1, l);
@@ -388,9 +392,9 @@ void Runner::texture(const XIns& x) {
       in.from = texture::LodInput::From::Derivatives;
       in.gradients = true;
       in.dsdx = frow(op.grad_x, 0, l);
-      in.dtdx = frow(op.grad_x, 1, l);
+      in.dtdx = dims == 2 ? frow(op.grad_x, 1, l) : 0.0f;
       in.dsdy = frow(op.grad_y, 0, l);
-      in.dtdy = frow(op.grad_y, 1, l);
+      in.dtdy = dims == 2 ? frow(op.grad_y, 1, l) : 0.0f;
     } else if (p.fragment && (l | 3) < n) {
       const int q = l & ~3;
       in.from = texture::LodInput::From::Derivatives;

@@ -14,7 +14,7 @@ namespace {
 
 // The samplers the executor reads, for messages.
 const std::string kSamplers =
-    "sampler2D, isampler2D, usampler2D, sampler2DShadow and their 2DArray forms";
+    "sampler1D, sampler2D, their Array and Shadow forms, samplerBuffer, and the isampler and usampler forms of each";
 
 [[noreturn]] void unsupported(const Module& m, const Instruction& ins, const std::string& what) {
   std::string where = ins.line > 0 ? " (line " + std::to_string(ins.line) + ")" : "";
@@ -257,17 +257,21 @@ struct Decoder {
 
   void emit(XIns x) { p.code.push_back(x); }
 
-  // OpImageSample*, OpImage*Gather, OpImageFetch and OpImageQuery* on a 2D sampler or 2D array
-  // sampler of any sampled type, or their shadow forms: one TexOp each.
+  // OpImageSample*, OpImage*Gather, OpImageFetch and OpImageQuery* on a sampler of a target
+  // tessref samples (kSamplers), any sampled type, or their shadow forms: one TexOp each.
   void texture(const Instruction& ins, const std::vector<std::uint32_t>& o) {
     const spv::Op op = spv::Op(ins.opcode);
     const Type& image = m.type(value_type.at(o.at(0)));
     const std::string name = sampler_glsl_name(m, image);
-    if (image.image_dim != spv::Dim2D || image.image_ms)
-      unsupported(m, ins, (name[0] == 'i' ? "an " : "a ") + name + " (tessref samples " + kSamplers + " only)");
+    const bool arrayed = image.image_arrayed != 0;
     TexOp t;
+    switch (image.image_ms ? spv::DimMax : spv::Dim(image.image_dim)) {
+      case spv::Dim1D: t.target = arrayed ? texture::Target::k1DArray : texture::Target::k1D; break;
+      case spv::Dim2D: t.target = arrayed ? texture::Target::k2DArray : texture::Target::k2D; break;
+      case spv::DimBuffer: t.target = texture::Target::kBuffer; break;
+      default: unsupported(m, ins, (name[0] == 'i' ? "an " : "a ") + name + " (tessref samples " + kSamplers + " only)");
+    }
     t.image = value(ins, o[0]);
-    t.arrayed = image.image_arrayed != 0;
     XIns x = base(ins, XOp::Texture);
     switch (op) {
       case spv::OpImageQuerySizeLod: case spv::OpImageQuerySize:

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "shader/executor.h"
+#include "texture/texture.h"
 
 namespace tessref::shader {
 
@@ -57,7 +58,9 @@ struct TexOp {
   std::uint32_t coord = kNone;  // float coordinates (Fetch: integer texel indices)
   std::uint32_t coord_comps = 0;
   bool proj = false;            // divide s and t by the coordinate's last component
-  bool arrayed = false;         // a 2D array: the coordinate's third component is the layer
+  // The sampler's target: arrays take their layer from the coordinate component after s (1D) or
+  // s and t (2D); buffer textures are read by texelFetch and textureSize alone.
+  texture::Target target = texture::Target::k2D;
   // Sample without Lod or Grad: the LOD comes from the quad's derivatives of the coordinate in a
   // fragment shader, and is 0 in other stages (GLSL 4.60 8.9).
   bool implicit_lod = false;

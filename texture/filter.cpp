@@ -215,14 +215,21 @@ void texelf(const LevelSlice& l, const std::array<float, 4>& border, i32 i, i32 
 void filter_unorm8(TexelFormat format, const LevelSlice& level, const Axes& axes, bool linear, float s, float t,
                    int offset_s, int offset_t, std::uint8_t out[4]) {
   const i32 w = level.width, h = level.height;
+  const bool one_d = axes.dims == 1;
   if (!linear) {
     texel8(format, level, nearest_index8(s, w, offset_s, axes.wrap[0], axes.pot[0]),
-           nearest_index8(t, h, offset_t, axes.wrap[1], axes.pot[1]), out);
+           one_d ? 0 : nearest_index8(t, h, offset_t, axes.wrap[1], axes.pot[1]), out);
     return;
   }
   const LinearIndices8 x = linear_indices8(s, w, offset_s, axes.wrap[0], axes.pot[0]);
-  const LinearIndices8 y = linear_indices8(t, h, offset_t, axes.wrap[1], axes.pot[1]);
   std::uint8_t t00[4], t10[4], t01[4], t11[4];
+  if (one_d) {
+    texel8(format, level, x.i0, 0, t00);
+    texel8(format, level, x.i1, 0, t10);
+    for (int c = 0; c < 4; ++c) out[c] = fixed::unorm8_lerp(x.weight, t00[c], t10[c]);
+    return;
+  }
+  const LinearIndices8 y = linear_indices8(t, h, offset_t, axes.wrap[1], axes.pot[1]);
   texel8(format, level, x.i0, y.i0, t00);
   texel8(format, level, x.i1, y.i0, t10);
   texel8(format, level, x.i0, y.i1, t01);
@@ -250,15 +257,16 @@ bool passes(const DepthCompare& c, float depth) {
 void filter_float(const LevelSlice& level, const Axes& axes, const std::array<float, 4>& border, FloatFilter filter,
                   float s, float t, int offset_s, int offset_t, const DepthCompare* compare, float out[4]) {
   const i32 w = level.width, h = level.height;
+  const bool one_d = axes.dims == 1;
   if (filter == FloatFilter::Nearest) {
     const i32 i = nearest_index(s, w, offset_s, axes.wrap[0], axes.pot[0]);
-    const i32 j = nearest_index(t, h, offset_t, axes.wrap[1], axes.pot[1]);
+    const i32 j = one_d ? 0 : nearest_index(t, h, offset_t, axes.wrap[1], axes.pot[1]);
     texelf(level, border, i, j, out);
     if (compare) out[0] = out[1] = out[2] = out[3] = passes(*compare, out[0]) ? 1.0f : 0.0f;
     return;
   }
   LinearIndices x = linear_indices(s, w, offset_s, axes.wrap[0], axes.pot[0]);
-  LinearIndices y = linear_indices(t, h, offset_t, axes.wrap[1], axes.pot[1]);
+  LinearIndices y = one_d ? LinearIndices{0, 0, 0.0f} : linear_indices(t, h, offset_t, axes.wrap[1], axes.pot[1]);
   if (filter == FloatFilter::NearestByWeights) {
     x.weight = x.weight > 0.5f ? 1.0f : 0.0f;
     y.weight = y.weight > 0.5f ? 1.0f : 0.0f;
@@ -266,14 +274,20 @@ void filter_float(const LevelSlice& level, const Axes& axes, const std::array<fl
   float t00[4], t10[4], t01[4], t11[4];
   texelf(level, border, x.i0, y.i0, t00);
   texelf(level, border, x.i1, y.i0, t10);
+  // lp_build_masklerp: the weights selected by the tests and added.
+  const float wx1 = 1.0f - x.weight;
+  auto row = [&](const float* a, const float* b) {
+    return (passes(*compare, b[0]) ? x.weight : 0.0f) + (passes(*compare, a[0]) ? wx1 : 0.0f);
+  };
+  if (one_d) {  // one interpolation, along s
+    if (compare) out[0] = out[1] = out[2] = out[3] = row(t00, t10);
+    else
+      for (int c = 0; c < 4; ++c) out[c] = lerp(x.weight, t00[c], t10[c]);
+    return;
+  }
   texelf(level, border, x.i0, y.i1, t01);
   texelf(level, border, x.i1, y.i1, t11);
   if (compare) {
-    // lp_build_masklerp: the weights selected by the tests and added.
-    const float wx1 = 1.0f - x.weight;
-    auto row = [&](const float* a, const float* b) {
-      return (passes(*compare, b[0]) ? x.weight : 0.0f) + (passes(*compare, a[0]) ? wx1 : 0.0f);
-    };
     out[0] = out[1] = out[2] = out[3] = lerp(y.weight, row(t00, t10), row(t01, t11));
     return;
   }

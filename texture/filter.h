@@ -10,10 +10,12 @@
 namespace tessref::texture {
 
 // The wrap mode of s and t, and whether level 0's width and height are powers of two (llvmpipe
-// wraps REPEAT with a mask then, and through the coordinate's fraction otherwise).
+// wraps REPEAT with a mask then, and through the coordinate's fraction otherwise). A 1D texture
+// (dims 1) is filtered along s alone: its one row, t and its wrap unused.
 struct Axes {
   std::array<Wrap, 2> wrap;
   std::array<bool, 2> pot;
+  int dims = 2;
 };
 
 // Formats of 8-bit normalized channels, filtered in 8-bit fixed point (repeat and clamp-to-edge

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <optional>
 
 #include "common/fixed_point.h"
@@ -60,9 +61,22 @@ GalliumLod gallium_lod(const SamplerState& s, bool needs_lod) {
   return g;
 }
 
+// ρ of a 1D texture (GL 4.6 equation 8.7 with v = 0): max(|ds/dx|, |ds/dy|) times the base
+// level's width, as lp_build_rho computes it for one dimension (its exact form: no squares).
+float rho_1d(const Texture& t, const LodInput& in) {
+  float rho = max_ps(std::fabs(in.dsdx), std::fabs(in.dsdy)) * float(t.levels[std::size_t(t.base_level)].width);
+  if (in.gradients && !std::isfinite(rho)) rho = 0.0f;
+  return rho;
+}
+
 // ρ² of GL 4.6 equation 8.7 with the base level's size, each product and sum a float operation
 // (lp_build_rho without the ρ approximation): the square root is folded into the log2 below.
+// 1D textures: ρ_1d squared.
 float rho_squared(const Texture& t, const LodInput& in) {
+  if (dimensions(t.target) == 1) {
+    const float rho = rho_1d(t, in);
+    return rho * rho;
+  }
   const Level& base = t.levels[std::size_t(t.base_level)];
   const float w = float(base.width), h = float(base.height);
   const float a = in.dsdx * w, b = in.dtdx * h, c = in.dsdy * w, d = in.dtdy * h;
@@ -102,8 +116,15 @@ LodValue compute_lod(const Texture& t, const LodInput& in, Mip mip, const Galliu
     const float rho2 = rho_squared(t, in);
     if (!in.has_bias && !query && g.bias == 0.0f && !g.apply_max && !g.apply_min && mip != Mip::Linear) {
       v.shortcut = true;
-      v.ipart = (i32((std::bit_cast<std::uint32_t>(rho2) >> 23) & 255u) - 127 + 1) >> 1;
-      v.positive = rho2 > 1.0f;
+      auto exponent = [](float x) { return i32((std::bit_cast<std::uint32_t>(x) >> 23) & 255u) - 127; };
+      if (dimensions(t.target) == 1) {  // ρ itself: the exponent of ρ·√2 (lp_build_ilog2)
+        const float rho = rho_1d(t, in);
+        v.ipart = exponent(rho * std::numbers::sqrt2_v<float>);
+        v.positive = rho > 1.0f;
+      } else {  // ρ²: half its exponent, rounded up (lp_build_ilog2_sqrt)
+        v.ipart = (exponent(rho2) + 1) >> 1;
+        v.positive = rho2 > 1.0f;
+      }
       return v;
     }
     v.lod = half_fast_log2(rho2);
@@ -200,7 +221,8 @@ std::optional<DepthCompare> depth_compare(const Texture& t, const float* dref) {
 Axes axes_of(const Texture& t) {
   const Level& level_zero = t.levels[0];
   return {{t.sampler.wrap_s, t.sampler.wrap_t},
-          {std::has_single_bit(unsigned(level_zero.width)), std::has_single_bit(unsigned(level_zero.height))}};
+          {std::has_single_bit(unsigned(level_zero.width)), std::has_single_bit(unsigned(level_zero.height))},
+          dimensions(t.target)};
 }
 
 }  // namespace
@@ -212,7 +234,7 @@ bool linear_in_vector(const Texture& t, const LodInput& lod) {
 }
 
 int array_layer(const Texture& t, float r) {
-  if (!t.array || !t.complete) return 0;
+  if (!is_array(t.target) || !t.complete) return 0;
   const double layer = std::floor(double(r) + 0.5);  // exact: r + 0.5 in double
   const int last = t.levels[std::size_t(t.base_level)].layers - 1;
   return layer >= double(last) ? last : layer > 0.0 ? int(layer) : 0;  // NaN: 0
@@ -298,12 +320,14 @@ void level_size(const Texture& t, int lod, int out[3]) {
     out[0] = out[1] = out[2] = 1;
     return;
   }
-  const std::int64_t level = std::int64_t(t.base_level) + lod;
+  const std::int64_t level = t.target == Target::kBuffer ? 0 : std::int64_t(t.base_level) + lod;
   out[0] = out[1] = out[2] = 0;
   if (level < t.base_level || level > t.last_level) return;
-  out[0] = t.levels[std::size_t(level)].width;
-  out[1] = t.levels[std::size_t(level)].height;
-  out[2] = t.levels[std::size_t(level)].layers;
+  const Level& l = t.levels[std::size_t(level)];
+  int k = 0;
+  out[k++] = l.width;
+  if (dimensions(t.target) == 2) out[k++] = l.height;
+  if (is_array(t.target)) out[k++] = l.layers;
 }
 
 int query_levels(const Texture& t) { return t.complete ? t.last_level - t.base_level + 1 : 1; }

@@ -26,7 +26,7 @@ struct LodInput {
   bool per_quad = false;
 };
 
-// An array texture's layer for the coordinate r (GL 4.6 8.14.2): clamp(floor(r + 0.5), 0, d - 1),
+// An array texture's layer for its layer coordinate r (t of a 1D array, r of a 2D one; GL 4.6 8.14.2): clamp(floor(r + 0.5), 0, d - 1),
 // exactly (llvmpipe rounds ties to even instead: docs/textures.md); NaN reads layer 0. 0 for a
 // texture that is not an array.
 int array_layer(const Texture& t, float r);
@@ -58,8 +58,9 @@ bool linear_in_vector(const Texture& t, const LodInput& lod);
 // 11.1.3.2 leaves it undefined): (0, 0, 0, 0), with alpha 1 for formats without alpha.
 void fetch(const Texture& t, int i, int j, int layer, int lod, float out[4]);
 
-// textureSize(): level base_level + lod's width, height and layers, zeros for a level outside
-// the texture's; (1, 1, 1) for an incomplete texture (the 1 x 1 texture Mesa binds in its place).
+// textureSize(): level base_level + lod's size as GLSL gives it (width; height for 2D targets;
+// layers for arrays; a buffer texture's texels, whatever the lod), zeros for a level outside the
+// texture's; (1, 1, 1) for an incomplete texture (the 1 x 1 texture Mesa binds in its place).
 void level_size(const Texture& t, int lod, int out[3]);
 // textureQueryLevels(): last_level - base_level + 1 (1 for an incomplete texture, as above).
 int query_levels(const Texture& t);

@@ -73,8 +73,9 @@ constexpr Named kFormats[] = {
     {TexelFormat::kRg32Ui, {"GL_RG32UI", 2, ChannelType::kUint32}},
     {TexelFormat::kR32Ui, {"GL_R32UI", 1, ChannelType::kUint32}},
     {TexelFormat::kRgb10A2Ui, {"GL_RGB10_A2UI", 4, ChannelType::kUint10_10_10_2}},
+    {TexelFormat::kRgb32F, {"GL_RGB32F", 3, ChannelType::kFloat32}},
 };
-static_assert(std::size(kFormats) == std::size_t(TexelFormat::kRgb10A2Ui) + 1, "one entry per TexelFormat");
+static_assert(std::size(kFormats) == std::size_t(TexelFormat::kRgb32F) + 1, "one entry per TexelFormat");
 // info() indexes the table by the enum (every texel lookup asks for it).
 constexpr bool in_enum_order() {
   for (std::size_t i = 0; i < std::size(kFormats); ++i)

@@ -27,6 +27,7 @@ enum class TexelFormat {
   kRgba16I, kRgb16I, kRg16I, kR16I, kRgba16Ui, kRgb16Ui, kRg16Ui, kR16Ui,
   kRgba32I, kRgb32I, kRg32I, kR32I, kRgba32Ui, kRgb32Ui, kRg32Ui, kR32Ui,
   kRgb10A2Ui,
+  kRgb32F,
 };
 
 // kUnorm24: a 24-bit depth in the top bits of a 32-bit word, as GL_UNSIGNED_INT (DEPTH_COMPONENT24:

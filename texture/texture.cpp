@@ -18,6 +18,17 @@ const char* gl_name(Filter f) {
   return "?";
 }
 
+const char* gl_name(Target t) {
+  switch (t) {
+    case Target::k1D: return "GL_TEXTURE_1D";
+    case Target::k2D: return "GL_TEXTURE_2D";
+    case Target::k1DArray: return "GL_TEXTURE_1D_ARRAY";
+    case Target::k2DArray: return "GL_TEXTURE_2D_ARRAY";
+    case Target::kBuffer: return "GL_TEXTURE_BUFFER";
+  }
+  return "?";
+}
+
 const char* gl_name(CompareFunc f) {
   switch (f) {
     case CompareFunc::Never: return "GL_NEVER";
@@ -66,6 +77,12 @@ void Texture::finalize() {
   complete = false;
   last_level = base_level;
   const int n = int(levels.size());
+  if (target == Target::kBuffer) {  // no levels, filters or completeness (GL 4.6 8.9): its one image
+    base_level = last_level = 0;
+    complete = n == 1;
+    if (!complete) incomplete_reason = "a buffer texture has one image";
+    return;
+  }
   if (base_level < 0 || base_level >= n || levels[std::size_t(base_level)].width <= 0 ||
       levels[std::size_t(base_level)].height <= 0) {
     incomplete_reason = "it has no level " + std::to_string(base_level) + " (GL_TEXTURE_BASE_LEVEL)";
@@ -105,7 +122,7 @@ void Texture::finalize() {
     const Level& l = levels[std::size_t(k)];
     if (l.width != w || l.height != h || l.layers != base.layers) {
       auto size = [&](int x, int y, int layers) {  // "WxH", or "WxH with N layers" for an array
-        return std::to_string(x) + "x" + std::to_string(y) + (array ? " with " + std::to_string(layers) + " layers" : "");
+        return std::to_string(x) + "x" + std::to_string(y) + (is_array(target) ? " with " + std::to_string(layers) + " layers" : "");
       };
       incomplete_reason = "level " + std::to_string(k) + " is " + size(l.width, l.height, l.layers) + ", and GL requires " +
                           size(w, h, base.layers);

@@ -1,6 +1,7 @@
 #pragma once
-// A GL texture as the sampler sees it: a 2D image (or array of them) with its mip levels, the internal format its
-// texels were converted to, and the texture's and sampler object's state (GL 4.6 8.10 and 8.14).
+// A GL texture as the sampler sees it: a 1D or 2D image (or an array of them) with its mip levels, or a buffer
+// texture's texels, in the internal format its texels were converted to, with the texture's and sampler object's
+// state (GL 4.6 8.10 and 8.14).
 // Plain data: the scene loader fills it, the executor reads it through texture/sample.h.
 #include <array>
 #include <cstdint>
@@ -10,6 +11,14 @@
 #include "texture/texel_format.h"
 
 namespace tessref::texture {
+
+// The texture targets tessref samples (GL 4.6 8.1).
+enum class Target : std::uint8_t { k1D, k2D, k1DArray, k2DArray, kBuffer };
+const char* gl_name(Target t);
+// The coordinates that address a texel within a layer: 1 (1D textures and their arrays, buffer
+// textures) or 2.
+inline int dimensions(Target t) { return t == Target::k2D || t == Target::k2DArray ? 2 : 1; }
+inline bool is_array(Target t) { return t == Target::k1DArray || t == Target::k2DArray; }
 
 // GL_TEXTURE_MIN_FILTER / GL_TEXTURE_MAG_FILTER (the magnification filter is Nearest or Linear).
 enum class Filter {
@@ -27,6 +36,8 @@ enum class Swizzle : std::uint8_t { Red, Green, Blue, Alpha, Zero, One };
 inline constexpr int kMaxTextureSize = 16384;
 // GL_MAX_ARRAY_TEXTURE_LAYERS on llvmpipe.
 inline constexpr int kMaxArrayLayers = 2048;
+// GL_MAX_TEXTURE_BUFFER_SIZE on llvmpipe (texels): a buffer texture's range holds at most this many.
+inline constexpr std::int64_t kMaxTextureBufferSize = 134217728;
 
 const char* gl_name(Filter f);
 const char* gl_name(CompareFunc f);
@@ -57,8 +68,8 @@ struct LevelSlice {
   const std::uint8_t* stored = nullptr;
 };
 
-// One mip level: `layers` images of width x height texels (1 for GL_TEXTURE_2D), row 0 at the
-// bottom (GL), layer after layer. `stored` holds them in the format's own layout (what a driver
+// One mip level: `layers` images of width x height texels (1 layer unless an array; height 1 for
+// 1D targets and buffer textures), row 0 at the bottom (GL), layer after layer. `stored` holds them in the format's own layout (what a driver
 // is given); `texels` as the sampler reads them, four floats each (k / 255 for 8-bit normalized
 // channels, linear values for sRGB ones, missing green and blue 0, missing alpha 1; integer
 // formats: the integers' bits, texture::decode_texels).
@@ -83,7 +94,7 @@ Level make_level(TexelFormat f, int width, int height, const float* rgba, int la
 Level make_integer_level(TexelFormat f, int width, int height, const std::int64_t* rgba, int layers = 1);
 
 struct Texture {
-  bool array = false;  // GL_TEXTURE_2D_ARRAY (every level has the same layers), else GL_TEXTURE_2D
+  Target target = Target::k2D;  // arrays: every level has the same layers
   TexelFormat format = TexelFormat::kRgba32F;
   std::vector<Level> levels;  // levels[k] is mip level k (from level 0, whatever base_level is)
   int base_level = 0;         // GL_TEXTURE_BASE_LEVEL

@@ -22,6 +22,7 @@
 #include "mesh/mesh_source.h"
 #include "render/render.h"
 #include "scene/scene_loader.h"
+#include "texture/texel_format.h"
 
 namespace tessref::glref {
 namespace {
@@ -229,6 +230,65 @@ Case shadow_array_case(const std::string& format, const std::string& min, const 
   return c;
 }
 
+// A 1D texture (lookup_1d.frag: its function 8 is textureProj in half the quads and
+// textureGradOffset in the others, so the LOD is per lookup, as function 3's) of 256 texels with
+// glGenerateMipmap, or a 1D array (lookup_1d_array.frag) of five 64-texel layers, stored in
+// `format`. What it must show follows make_case.
+Case one_d_case(bool array, const std::string& format, const std::string& min, const std::string& mag,
+                const std::string& wrap, int fn) {
+  Case c = make_case("noise_1d_256.png", format, min, mag, wrap, fn == 8 ? 3 : fn);
+  c.sets = {std::string("fragment=\"sampling/lookup_1d") + (array ? "_array" : "") + ".frag\"",
+            "textures.u_tex={\"path\": \"sampling/" + std::string(array ? "noise_1d_array_64x5.png" : "noise_1d_256.png") +
+                "\", \"target\": \"" + (array ? "GL_TEXTURE_1D_ARRAY" : "GL_TEXTURE_1D") + "\", \"internalformat\": \"" + format +
+                "\", \"generate_mipmap\": true, \"min_filter\": \"" + min + "\", \"mag_filter\": \"" + mag + "\", \"wrap\": \"" +
+                wrap + "\"}",
+            function(fn)};
+  return c;
+}
+
+// A shadow lookup (lookup_1d_shadow.frag) on a 1D depth texture of 256 texels from raw bytes
+// (depth_1d_256.raw as GL_DEPTH_COMPONENT32F, depth16_1d_256.raw as GL_DEPTH_COMPONENT16).
+Case one_d_shadow_case(const std::string& format, const std::string& min, const std::string& mag, const std::string& wrap,
+                       const std::string& func, int fn) {
+  Case c = shadow_case(format, min, mag, wrap, func, fn == 6 ? 0 : fn);  // function 6 is textureProj
+  const std::string file = format == "GL_DEPTH_COMPONENT16" ? "depth16_1d_256.raw" : "depth_1d_256.raw";
+  c.sets = {"fragment=\"sampling/lookup_1d_shadow.frag\"",
+            "textures.u_tex={\"path\": \"sampling/" + file + "\", \"target\": \"GL_TEXTURE_1D\", \"raw_size\": [256], "
+            "\"internalformat\": \"" + format + "\", \"generate_mipmap\": false, \"min_filter\": \"" + min +
+                "\", \"mag_filter\": \"" + mag + "\", \"wrap\": \"" + wrap +
+                "\", \"compare_mode\": \"compare_ref_to_texture\", \"compare_func\": \"" + func + "\"}",
+            function(fn)};
+  return c;
+}
+
+// GL 4.6 table 8.18: every buffer texture format, and the scene buffer its bytes come from
+// (sampling_sweep.json's buffers: random bytes, or finite floats and half floats for the float
+// formats, whose random bit patterns would include NaNs).
+const char* const kBufferFormats[] = {
+    "GL_R8",      "GL_R16",     "GL_R16F",    "GL_R32F",     "GL_R8I",      "GL_R16I",     "GL_R32I",
+    "GL_R8UI",    "GL_R16UI",   "GL_R32UI",   "GL_RG8",      "GL_RG16",     "GL_RG16F",    "GL_RG32F",
+    "GL_RG8I",    "GL_RG16I",   "GL_RG32I",   "GL_RG8UI",    "GL_RG16UI",   "GL_RG32UI",   "GL_RGB32F",
+    "GL_RGB32I",  "GL_RGB32UI", "GL_RGBA8",   "GL_RGBA16",   "GL_RGBA16F",  "GL_RGBA32F",  "GL_RGBA8I",
+    "GL_RGBA16I", "GL_RGBA32I", "GL_RGBA8UI", "GL_RGBA16UI", "GL_RGBA32UI"};
+
+// texelFetch (function 0) or textureSize (9) on a buffer texture of `format` over the range
+// [offset, offset + size) of its buffer: size need not be a whole number of texels (GL takes the
+// whole ones). Bit-exact.
+Case buffer_case(const std::string& format, std::size_t offset, std::size_t size, int fn) {
+  const texture::TexelFormat f = *texture::parse_texel_format(format);
+  const texture::TexelFormatInfo& fi = texture::info(f);
+  const std::string buffer = fi.type == texture::ChannelType::kFloat32   ? "noise_floats"
+                             : fi.type == texture::ChannelType::kFloat16 ? "noise_halfs"
+                                                                         : "noise_bytes";
+  const std::string shader = fi.signed_integer() ? "_int" : fi.unsigned_integer() ? "_uint" : "";
+  const std::size_t texels = size / std::size_t(fi.bytes_per_texel());
+  return Case{{"fragment=\"sampling/lookup_buffer" + shader + ".frag\"",
+               "textures.u_tex={\"path\": null, \"generate_mipmap\": null, \"min_filter\": null, \"mag_filter\": null, "
+               "\"wrap\": null, \"target\": \"GL_TEXTURE_BUFFER\", \"buffer\": \"" + buffer + "\", \"internalformat\": \"" +
+                   format + "\", \"offset\": " + std::to_string(offset) + ", \"size\": " + std::to_string(size) + "}",
+               "uniforms={\"u_size_lod\": null, \"u_count\": " + std::to_string(texels) + "}", function(fn)}};
+}
+
 // The suite's cases: each lookup function on the fixed-point path (RGBA8, repeat) and on the
 // float path (RGBA32F, mirrored repeat); every wrap and filter on both; a size that is not a
 // power of two; each format; and the sampler state keys.
@@ -325,6 +385,23 @@ std::vector<Case> suite_cases() {
   for (int fn : {0, 3, 4, 5, 6, 7, 8, 9})
     cases.push_back(shadow_array_case("GL_DEPTH_COMPONENT24", "linear", "linear", "clamp_to_border", "lequal", fn));
   cases.push_back(shadow_array_case("GL_DEPTH_COMPONENT32F", "nearest", "nearest", "repeat", "greater", 0));
+  // 1D textures and 1D arrays: every lookup on the 8-bit and the float path, every wrap with
+  // differing filters; 1D shadow lookups; buffer textures of every format.
+  for (int fn = 0; fn < 10; ++fn)
+    for (bool array : {false, true}) {
+      cases.push_back(one_d_case(array, "GL_RGBA8", "linear_mipmap_linear", "linear", "repeat", fn));
+      cases.push_back(one_d_case(array, "GL_RGBA32F", "linear_mipmap_linear", "linear", "mirrored_repeat", fn));
+    }
+  for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge", "clamp_to_border", "mirror_clamp_to_edge"}) {
+    cases.push_back(one_d_case(false, "GL_RGBA8", "nearest_mipmap_nearest", "linear", wrap, 0));
+    cases.push_back(one_d_case(true, "GL_RGBA16F", "linear_mipmap_nearest", "nearest", wrap, 2));
+  }
+  for (int fn : {0, 1, 2, 3, 4, 5, 6, 9})
+    cases.push_back(one_d_shadow_case("GL_DEPTH_COMPONENT32F", "linear", "linear", "clamp_to_border", "lequal", fn));
+  cases.push_back(one_d_shadow_case("GL_DEPTH_COMPONENT16", "nearest", "linear", "repeat", "greater", 0));
+  for (const char* format : kBufferFormats) cases.push_back(buffer_case(format, 256, 4003, 0));
+  cases.push_back(buffer_case("GL_RGBA32UI", 0, 65536, 0));
+  cases.push_back(buffer_case("GL_RGB32F", 0, 16384, 9));
   return cases;
 }
 
@@ -375,6 +452,21 @@ std::vector<Case> full_cases() {
     for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge", "clamp_to_border", "mirror_clamp_to_edge"})
       for (int fn : {0, 3, 4, 5, 6, 7, 8})
         cases.push_back(shadow_array_case(format, "linear", "nearest", wrap, "lequal", fn));
+  for (const char* format : {"GL_RGBA8", "GL_RGBA32F", "GL_SRGB8_ALPHA8"})
+    for (const char* min : {"nearest", "linear", "nearest_mipmap_nearest", "linear_mipmap_nearest", "nearest_mipmap_linear",
+                            "linear_mipmap_linear"})
+      for (const char* mag : {"nearest", "linear"})
+        for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge", "clamp_to_border", "mirror_clamp_to_edge"})
+          for (int fn = 0; fn < 10; ++fn)
+            if (fn != 9 || std::string(wrap) == "repeat")
+              for (bool array : {false, true}) cases.push_back(one_d_case(array, format, min, mag, wrap, fn));
+  for (const char* format : {"GL_DEPTH_COMPONENT16", "GL_DEPTH_COMPONENT32F"})
+    for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge", "clamp_to_border", "mirror_clamp_to_edge"})
+      for (int fn = 0; fn <= 6; ++fn)
+        for (const char* func : {"lequal", "notequal"}) cases.push_back(one_d_shadow_case(format, "linear", "nearest", wrap, func, fn));
+  for (const char* format : kBufferFormats)
+    for (std::size_t offset : {0, 256, 4096})
+      for (std::size_t size : {1, 15, 4003, 12288}) cases.push_back(buffer_case(format, offset, size, offset == 0 ? 9 : 0));
   for (const char* format : kDepthFormats)
     for (const char* min : {"nearest", "linear"})
       for (const char* mag : {"nearest", "linear"})

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "io/image_output.h"
 #include "mesh/mesh_source.h"
 #include "render/glsl_scene.h"
+#include "render/texture_load.h"
 #include "render/render.h"
 #include "scene/scene_loader.h"
 #include "texture/mipmap.h"
@@ -162,7 +164,7 @@ TEST(TextureFormat, DepthTexelsReadAsKTimesTheReciprocalOfTheirSteps) {
 TEST(TextureScene, RawTexelBytesDrawAsTheImageTheyCameFrom) {
   const Scene scene = load_scene(kSweep);
   std::vector<std::string> warnings;
-  const texture::Texture from_png = load_texture(scene.draws[0].shaders->textures[0], "png");
+  const texture::Texture from_png = load_texture(scene.draws[0].shaders->textures[0], "png", scene);
   const std::filesystem::path raw = std::filesystem::temp_directory_path() / "tessref_raw_rgba8.bin";
   {
     std::ofstream out(raw, std::ios::binary);
@@ -271,7 +273,7 @@ TEST(TextureLod, IntegerNearestMinificationReadsTheBaseLevel) {
 TEST(TextureScene, IntegerTexelsAreTheFilesIntegers) {
   const Scene scene = load_scene(kSweep, {"draws.0.shaders.textures.u_tex.internalformat=\"GL_RGBA8UI\"",
                                           "draws.0.shaders.textures.u_tex.generate_mipmap=false"});
-  const texture::Texture png = load_texture(scene.draws[0].shaders->textures[0], "png");
+  const texture::Texture png = load_texture(scene.draws[0].shaders->textures[0], "png", scene);
   const FloatImage image = read_float_image(std::string(TESSREF_SOURCE_DIR) + "/tests/data/draws/sampling/noise_64x64.png");
   // Texel (x, y) of level 0 is the file's row 63 - y.
   for (int y : {0, 17, 63})
@@ -286,7 +288,7 @@ TEST(TextureScene, IntegerTexelsAreTheFilesIntegers) {
   const Scene signed_scene = load_scene(kSweep, {"draws.0.shaders.textures.u_tex.path=\"" + exr.string() + "\"",
                                                  "draws.0.shaders.textures.u_tex.internalformat=\"GL_RG16I\"",
                                                  "draws.0.shaders.textures.u_tex.generate_mipmap=false"});
-  const texture::Texture rg16i = load_texture(signed_scene.draws[0].shaders->textures[0], "exr");
+  const texture::Texture rg16i = load_texture(signed_scene.draws[0].shaders->textures[0], "exr", signed_scene);
   const std::int32_t want[8] = {-32768, 32767, 0, 1, 0, -1, 0, 1};  // missing blue 0, alpha 1
   for (int k = 0; k < 8; ++k) EXPECT_EQ(std::bit_cast<std::int32_t>(rg16i.levels[0].texels[std::size_t(k)]), want[k]) << k;
   EXPECT_EQ(rg16i.levels[0].stored, (std::vector<std::uint8_t>{0x00, 0x80, 0xff, 0x7f, 0x00, 0x00, 0xff, 0xff}));
@@ -320,7 +322,7 @@ TEST(TextureScene, ArrayTexturesAreCheckedByKey) {
                "GL_TEXTURE_2D_ARRAY texture, and this one is GL_TEXTURE_2D");
   // Raw bytes of every layer: four 64 x 64 layers of GL_RGBA8 are noise_bytes_0.raw's 65,536 bytes.
   const Scene scene = load_scene(kSweep, {"draws.0.shaders." + array(R"("path": "sampling/noise_bytes_0.raw", "internalformat": "GL_RGBA8", "raw_size": [64, 64, 4], "generate_mipmap": true)")});
-  const texture::Texture t = load_texture(scene.draws[0].shaders->textures[0], "raw");
+  const texture::Texture t = load_texture(scene.draws[0].shaders->textures[0], "raw", scene);
   ASSERT_EQ(t.levels.size(), 7u);
   EXPECT_TRUE(t.complete) << t.incomplete_reason;
   EXPECT_EQ(t.levels[0].layers, 4);
@@ -332,7 +334,7 @@ TEST(TextureScene, ArrayTexturesAreCheckedByKey) {
 // them to even), NaN reads layer 0.
 TEST(TextureLod, ArrayLayerIsFloorOfRPlusOneHalfClamped) {
   texture::Texture t;
-  t.array = true;
+  t.target = texture::Target::k2DArray;
   const std::vector<float> rgba(std::size_t(2 * 2 * 4 * 4), 0.5f);
   t.levels.push_back(texture::make_level(texture::TexelFormat::kRgba8, 2, 2, rgba.data(), 4));
   t.sampler.min_filter = texture::Filter::Nearest;
@@ -403,6 +405,118 @@ TEST(TextureLod, FastLog2IsExactAtPowersOfTwoAndLinearBetween) {
   EXPECT_EQ(lod(4.0f), 2.0f);
   EXPECT_EQ(lod(1.5f), 0.5625f);  // log2(1.5) is 0.585
   EXPECT_EQ(lod(0.0f), -63.5f);
+}
+
+TEST(TextureScene, OneDimensionalAndBufferTexturesAreCheckedByKey) {
+  auto one_d = [](const std::string& target, const std::string& keys) {
+    return "textures.u_tex={\"path\": null, \"target\": \"" + target + "\", " + keys + "}";
+  };
+  // A 1D level is one row; a 1D array's layers are its image's rows; raw sizes per target.
+  expect_error({one_d("GL_TEXTURE_1D", R"("path": "sampling/noise_24x10.png")"), "fragment=\"sampling/lookup_1d.frag\""},
+               "draws.0.shaders.textures.u_tex: " + std::string(TESSREF_SOURCE_DIR) +
+                   "/tests/data/draws/sampling/noise_24x10.png is 24x10, and a GL_TEXTURE_1D level is one row (an image of "
+                   "height 1)");
+  expect_error({one_d("GL_TEXTURE_1D_ARRAY", R"("layers": ["sampling/noise_1d_256.png"])")},
+               "draws.0.shaders.textures.u_tex.layers: layers are a 2D array texture's: give \"target\": "
+               "\"GL_TEXTURE_2D_ARRAY\" (a 1D array's layers are the rows of its path or levels images)");
+  expect_error({one_d("GL_TEXTURE_1D", R"("path": "sampling/depth_1d_256.raw", "internalformat": "GL_R32F", "raw_size": [256, 1])")},
+               "draws.0.shaders.textures.u_tex.raw_size: expected [width], whole numbers from 1 to 16384 "
+               "(GL_MAX_TEXTURE_SIZE), got an array of 2");
+  expect_error({one_d("GL_TEXTURE_1D_ARRAY", R"("levels": ["sampling/noise_1d_array_64x5.png", "sampling/noise_1d_256.png"])"),
+                "textures.u_tex.generate_mipmap=false"},
+               "draws.0.shaders.textures.u_tex.levels.1: level 1 is 256x1, and a level 1 of a 64x5 texture is 32x5 (a 1D "
+               "array's rows are its layers, in every level)");
+  expect_error({one_d("GL_TEXTURE_1D", R"("path": "sampling/noise_1d_256.png")")},
+               "draws.0.shaders.textures.u_tex.target: the uniform is a sampler2D, which reads a GL_TEXTURE_2D texture, "
+               "and this one is GL_TEXTURE_1D");
+  expect_error({"textures.u_tex.target=\"GL_TEXTURE_3D\""},
+               "draws.0.shaders.textures.u_tex.target: expected one of GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_1D_ARRAY, "
+               "GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BUFFER, got \"GL_TEXTURE_3D\"");
+  // Buffer textures: a range of a scene buffer in a format of GL 4.6 table 8.18, no sampler state.
+  auto buffer = [](const std::string& keys) {
+    return std::vector<std::string>{"textures.u_tex={\"path\": null, \"generate_mipmap\": null, \"min_filter\": null, "
+                                    "\"mag_filter\": null, \"wrap\": null, \"target\": \"GL_TEXTURE_BUFFER\", " + keys + "}",
+                                    "fragment=\"sampling/lookup_buffer.frag\"", "uniforms={\"u_size_lod\": null, \"u_count\": 4}"};
+  };
+  expect_error(buffer(R"("buffer": "noise_bytes", "internalformat": "GL_RGB8")"),
+               "draws.0.shaders.textures.u_tex.internalformat: GL_RGB8 is not a buffer texture format (GL 4.6 table 8.18)");
+  expect_error(buffer(R"("buffer": "noise_bytes", "internalformat": null)"),
+               "draws.0.shaders.textures.u_tex.internalformat: a GL_TEXTURE_BUFFER needs the format its bytes hold");
+  expect_error(buffer(R"("buffer": "nothing", "internalformat": "GL_R8")"),
+               "draws.0.shaders.textures.u_tex.buffer: no buffer named \"nothing\" (buffers: corners, noise_bytes, "
+               "noise_floats, noise_halfs)");
+  expect_error(buffer(R"("buffer": "noise_bytes", "internalformat": "GL_R8", "offset": 100)"),
+               "draws.0.shaders.textures.u_tex.offset: 100 is not a multiple of 256");
+  expect_error(buffer(R"("buffer": "noise_bytes", "internalformat": "GL_R8", "offset": 65280, "size": 512)"),
+               "draws.0.shaders.textures.u_tex.size: offset 65280 + size 512 is past the buffer's end: "
+               "buffers.noise_bytes has 65536 bytes");
+  expect_error(buffer(R"("buffer": "noise_bytes", "internalformat": "GL_R8", "offset": 65536)"),
+               "draws.0.shaders.textures.u_tex.offset: 65536 is not inside the buffer: buffers.noise_bytes has 65536 bytes");
+  expect_error(buffer(R"("buffer": "noise_bytes", "internalformat": "GL_R8", "wrap": "repeat")"),
+               "draws.0.shaders.textures.u_tex.wrap: a GL_TEXTURE_BUFFER texture has no images, levels or sampler state");
+  expect_error(buffer(R"("buffer": "noise_bytes", "internalformat": "GL_R8UI")"),
+               "draws.0.shaders.textures.u_tex.internalformat: GL_R8UI is an integer format, read by a usamplerBuffer, "
+               "and the uniform is a samplerBuffer");
+}
+
+// A buffer texture's texels are its range's whole texels, from the buffer's own bytes: GL_RG16
+// over bytes 256 .. 256 + 4003 of noise_bytes_0.raw is 1000 texels, texel k from bytes 256 + 4k.
+TEST(TextureScene, BufferTextureTexelsAreTheRangesWholeTexels) {
+  const Scene scene = load_scene(kSweep, {"draws.0.shaders.textures.u_tex={\"path\": null, \"generate_mipmap\": null, "
+                                          "\"min_filter\": null, \"mag_filter\": null, \"wrap\": null, \"target\": "
+                                          "\"GL_TEXTURE_BUFFER\", \"buffer\": \"noise_bytes\", \"internalformat\": \"GL_RG16\", "
+                                          "\"offset\": 256, \"size\": 4003}"});
+  const texture::Texture t = load_texture(scene.draws[0].shaders->textures[0], "buffer", scene);
+  ASSERT_TRUE(t.complete);
+  int size[3];
+  texture::level_size(t, 5, size);  // a buffer texture has no levels: the lod is ignored
+  EXPECT_EQ(size[0], 1000);
+  std::ifstream in(std::string(TESSREF_SOURCE_DIR) + "/tests/data/draws/sampling/noise_bytes_0.raw", std::ios::binary);
+  std::vector<unsigned char> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  for (int k : {0, 1, 999}) {
+    float texel[4];
+    texture::fetch(t, k, 0, 0, 0, texel);
+    const std::size_t at = 256 + 4 * std::size_t(k);
+    EXPECT_EQ(texel[0], float(bytes[at] | bytes[at + 1] << 8) / 65535.0f) << k;
+    EXPECT_EQ(texel[1], float(bytes[at + 2] | bytes[at + 3] << 8) / 65535.0f) << k;
+    EXPECT_EQ(texel[2], 0.0f);
+    EXPECT_EQ(texel[3], 1.0f);
+  }
+  float outside[4];
+  texture::fetch(t, 1000, 0, 0, 0, outside);  // past the range: zeros, alpha 1 for a format without alpha
+  EXPECT_EQ(outside[0], 0.0f);
+  EXPECT_EQ(outside[1], 0.0f);
+  EXPECT_EQ(outside[3], 1.0f);
+}
+
+// A 1D texture's LOD is log2(ρ) with ρ = max(|ds/dx|, |ds/dy|) · w (GL 4.6 8.14.1 with one
+// coordinate); its 1D array's layer is the second coordinate's.
+TEST(TextureLod, OneDimensionalLodUsesSAlone) {
+  texture::Texture t;
+  t.target = texture::Target::k1D;
+  std::vector<float> rgba(256 * 4, 0.25f);
+  t.levels.push_back(texture::make_level(texture::TexelFormat::kRgba32F, 256, 1, rgba.data()));
+  texture::generate_mipmaps(t);
+  t.sampler.min_filter = texture::Filter::LinearMipmapLinear;
+  t.finalize();
+  ASSERT_TRUE(t.complete) << t.incomplete_reason;
+  EXPECT_EQ(t.last_level, 8);
+  auto lod = [&](float dsdx, float dsdy) {
+    texture::LodInput in;
+    in.from = texture::LodInput::From::Derivatives;
+    in.dsdx = dsdx;
+    in.dsdy = dsdy;
+    in.dtdx = 1.0f;  // t is not a 1D texture's: ignored
+    float out[2];
+    texture::query_lod(t, in, out);
+    return out[1];
+  };
+  EXPECT_EQ(lod(4.0f / 256.0f, 0.0f), 2.0f);
+  EXPECT_EQ(lod(-1.0f / 256.0f, 8.0f / 256.0f), 3.0f);
+  EXPECT_EQ(lod(1.5f / 256.0f, 0.0f), 0.5625f);
+  int size[3];
+  texture::level_size(t, 2, size);
+  EXPECT_EQ(size[0], 64);
 }
 
 }  // namespace

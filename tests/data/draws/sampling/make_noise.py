@@ -42,3 +42,17 @@ for chain, size in (('noise_bytes', 65536), ('noise_bytes3', 49152)):
     for k in range(6):
         n = size >> (2 * k)
         open('%s/%s_%d.raw' % (d, chain, k), 'wb').write(bytes(h(i * 2654435761 ^ k * 40503 ^ size) & 255 for i in range(n)))
+# 1D textures: 256 texels (one row), and a 1D array of five 64-texel layers (the image's rows, bottom first).
+png(d + '/noise_1d_256.png', 256, 1, 4, noise(7))
+png(d + '/noise_1d_array_64x5.png', 64, 5, 4, noise(8))
+# Buffer texture data for the float formats, whose random bit patterns would include NaNs: 4096
+# finite float32 values (multiples of 2^-10 in [-512, 512)) and 8192 finite half-float patterns.
+open(d + '/noise_floats.raw', 'wb').write(struct.pack('<4096f', *[((h(i * 97 + 11) & 0xfffff) - 0x80000) / 1024.0 for i in range(4096)]))
+def finite_half(v):
+    return v & ~0x4000 if (v >> 10) & 31 == 31 else v
+open(d + '/noise_halfs.raw', 'wb').write(struct.pack('<8192H', *[finite_half(h(i * 131 + 3) & 0xffff) for i in range(8192)]))
+# A 1D depth texture of 256 texels as raw bytes: GL_DEPTH_COMPONENT32F depths k / 64, and
+# GL_DEPTH_COMPONENT16 words k * 1024 (k in 0..64; 65536 clamped to 65535).
+depths = [h(x * 7 + 13) % 65 for x in range(256)]
+open(d + '/depth_1d_256.raw', 'wb').write(struct.pack('<256f', *[k / 64.0 for k in depths]))
+open(d + '/depth16_1d_256.raw', 'wb').write(struct.pack('<256H', *[min(k * 1024, 65535) for k in depths]))
