@@ -97,11 +97,11 @@ void run(const std::vector<std::uint32_t>& spirv, Stage stage, Words& words) {
   texture::Texture textures[2];
   for (texture::Texture& t : textures) {
     const std::uint32_t target = words.next();
-    t.target = static_cast<texture::Target>(target % 5);
-    // 1D targets and buffer textures are one row; arrays have 1 to 3 layers.
+    t.target = static_cast<texture::Target>(target % 6);
+    // 1D targets and buffer textures are one row; arrays have 1 to 3 layers, 3D textures slices.
     const int width = 1 + int(words.next() % 3), rows = 1 + int(words.next() % 3);
     const int height = texture::dimensions(t.target) == 1 ? 1 : rows;
-    const int layers = texture::is_array(t.target) ? 1 + int(target / 5 % 3) : 1;
+    const int layers = texture::is_array(t.target) || t.target == texture::Target::k3D ? 1 + int(target / 6 % 3) : 1;
     std::vector<float> rgba;
     for (int i = 0; i < 4 * width * height * layers; ++i) rgba.push_back(float(words.next() % 256) / 255.0f);
     const std::uint32_t mode = words.next();

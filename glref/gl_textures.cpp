@@ -150,6 +150,7 @@ void set_sampler_state(const texture::SamplerState& s, texture::TexelFormat form
   i(GL_TEXTURE_MAG_FILTER, gl_filter(s.mag_filter));
   i(GL_TEXTURE_WRAP_S, gl_wrap(s.wrap_s));
   i(GL_TEXTURE_WRAP_T, gl_wrap(s.wrap_t));
+  i(GL_TEXTURE_WRAP_R, gl_wrap(s.wrap_r));
   const texture::TexelFormatInfo& fi = texture::info(format);
   GLint ints[4];
   GLuint uints[4];
@@ -175,6 +176,7 @@ GLenum gl_target(texture::Target t) {
     case texture::Target::k1DArray: return GL_TEXTURE_1D_ARRAY;
     case texture::Target::k2DArray: return GL_TEXTURE_2D_ARRAY;
     case texture::Target::kBuffer: return GL_TEXTURE_BUFFER;
+    case texture::Target::k3D: return GL_TEXTURE_3D;
   }
   return GL_TEXTURE_2D;
 }
@@ -211,12 +213,13 @@ GlTextures::GlTextures(const Scene& scene, const ShaderSettings& shaders) : shad
     }
     // glTexStorage*: the levels given, or every level down to 1 (x 1) for glGenerateMipmap.
     const int given = t.layers.empty() ? int(t.levels.size()) : 1;
-    const int all = texture::last_mip_level(0, level0.width, level0.height) + 1;
+    const bool three_d = tex.target == texture::Target::k3D;
+    const int all = texture::last_mip_level(0, level0.width, level0.height, three_d ? level0.layers : 1) + 1;
     const int levels = t.generate_mipmaps ? all : given;
     switch (tex.target) {
       case texture::Target::k1D: glTexStorage1D(target, levels, f.internal, level0.width); break;
       case texture::Target::k1DArray: glTexStorage2D(target, levels, f.internal, level0.width, level0.layers); break;
-      case texture::Target::k2DArray:
+      case texture::Target::k2DArray: case texture::Target::k3D:
         glTexStorage3D(target, levels, f.internal, level0.width, level0.height, level0.layers);
         break;
       default: glTexStorage2D(target, levels, f.internal, level0.width, level0.height); break;
@@ -230,7 +233,7 @@ GlTextures::GlTextures(const Scene& scene, const ShaderSettings& shaders) : shad
         case texture::Target::k1DArray:  // the layers are the image's rows
           glTexSubImage2D(target, l, 0, 0, level.width, level.layers, f.format, f.type, bytes);
           break;
-        case texture::Target::k2DArray:
+        case texture::Target::k2DArray: case texture::Target::k3D:
           glTexSubImage3D(target, l, 0, 0, 0, level.width, level.height, level.layers, f.format, f.type, bytes);
           break;
         default: glTexSubImage2D(target, l, 0, 0, level.width, level.height, f.format, f.type, bytes); break;

@@ -79,12 +79,14 @@ std::vector<std::int64_t> integer_texels(const FloatImage& image, const std::vec
 // Level k of a texture whose level 0 is w x h with `layers` layers, from a file of raw texel
 // bytes in format f.
 texture::Level read_raw_level(const std::filesystem::path& file, texture::TexelFormat f, std::array<int, 3> size0, int k,
-                              const std::string& at) {
+                              bool three_d, const std::string& at) {
   const texture::TexelFormatInfo& fi = texture::info(f);
-  const int w = size0[0], h = size0[1];
-  if (k > 0 && std::max(w, h) >> k == 0)
-    throw InputError(at + ": a " + std::to_string(w) + "x" + std::to_string(h) + " texture has no level " + std::to_string(k));
-  const int width = std::max(1, w >> k), height = std::max(1, h >> k), layers = size0[2];
+  const int w = size0[0], h = size0[1], d = three_d ? size0[2] : 1;
+  if (k > 0 && std::max({w, h, d}) >> k == 0)
+    throw InputError(at + ": a " + std::to_string(w) + "x" + std::to_string(h) + (three_d ? "x" + std::to_string(d) : "") +
+                     " texture has no level " + std::to_string(k));
+  // A 3D texture's depth halves with each level; an array keeps its layers.
+  const int width = std::max(1, w >> k), height = std::max(1, h >> k), layers = three_d ? std::max(1, d >> k) : size0[2];
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(at + ": cannot open " + file.string());
   std::vector<std::uint8_t> stored{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -193,11 +195,15 @@ texture::Texture load_texture(const TextureSetting& t, const std::string& key, c
     tex.finalize();
     return tex;
   }
-  if (!t.layers.empty()) {  // a 2D array's level 0, one file per layer
+  if (!t.layers.empty()) {  // a 2D array's level 0, one file per layer, or a 3D texture's per slice
     std::vector<ImageTexels> layers;
     for (std::size_t k = 0; k < t.layers.size(); ++k) {
       const std::string at = key + ".layers." + std::to_string(k);
       layers.push_back(read_image_texels(t.layers[k], format, t.format.has_value(), at));
+      if (t.target == texture::Target::k3D && std::max(layers[k].width, layers[k].height) > texture::kMax3DTextureSize)
+        throw InputError(at + ": " + t.layers[k].string() + " is " + std::to_string(layers[k].width) + "x" +
+                         std::to_string(layers[k].height) + ", more than GL_MAX_3D_TEXTURE_SIZE (" +
+                         std::to_string(texture::kMax3DTextureSize) + ")");
       if (layers[k].width != layers[0].width || layers[k].height != layers[0].height)
         throw InputError(at + ": " + t.layers[k].string() + " is " + std::to_string(layers[k].width) + "x" +
                          std::to_string(layers[k].height) + ", and layer 0 is " + std::to_string(layers[0].width) + "x" +
@@ -210,7 +216,7 @@ texture::Texture load_texture(const TextureSetting& t, const std::string& key, c
   for (std::size_t k = 0; k < t.levels.size(); ++k) {
     const std::string at = t.levels.size() > 1 ? key + ".levels." + std::to_string(k) : key;
     if (t.raw_size) {
-      tex.levels.push_back(read_raw_level(t.levels[k], tex.format, *t.raw_size, int(k), at));
+      tex.levels.push_back(read_raw_level(t.levels[k], tex.format, *t.raw_size, int(k), t.target == texture::Target::k3D, at));
       continue;
     }
     std::vector<ImageTexels> level;  // one image

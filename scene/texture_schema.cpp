@@ -59,9 +59,10 @@ Enum choice(JsonObject& o, const std::string& key, const std::array<std::pair<co
   o.fail(key, "expected one of " + names(table, count) + ", got \"" + s + "\"");
 }
 
-constexpr std::array<std::pair<const char*, texture::Target>, 5> kTargets{{
+constexpr std::array<std::pair<const char*, texture::Target>, 6> kTargets{{
     {"GL_TEXTURE_1D", texture::Target::k1D},
     {"GL_TEXTURE_2D", texture::Target::k2D},
+    {"GL_TEXTURE_3D", texture::Target::k3D},
     {"GL_TEXTURE_1D_ARRAY", texture::Target::k1DArray},
     {"GL_TEXTURE_2D_ARRAY", texture::Target::k2DArray},
     {"GL_TEXTURE_BUFFER", texture::Target::kBuffer},
@@ -102,7 +103,7 @@ std::string buffer_texture_formats() {
 // 8.18 (glTexBufferRange). It has no images, levels or sampler state.
 void read_buffer_texture(JsonObject& o, TextureSetting& t) {
   for (const char* key : {"path", "levels", "layers", "raw_size", "generate_mipmap", "filter", "min_filter", "mag_filter",
-                          "wrap", "wrap_s", "wrap_t", "border_color", "min_lod", "max_lod", "lod_bias", "compare_mode",
+                          "wrap", "wrap_s", "wrap_t", "wrap_r", "border_color", "min_lod", "max_lod", "lod_bias", "compare_mode",
                           "compare_func", "sampler", "base_level", "max_level", "swizzle"})
     if (o.has(key))
       o.fail(key, "a GL_TEXTURE_BUFFER texture has no images, levels or sampler state (GL 4.6 8.9): its texels are "
@@ -138,9 +139,10 @@ void read_sampler_state(JsonObject& o, texture::SamplerState& s, const texture::
   if (o.has("filter")) s.min_filter = s.mag_filter = choice(o, "filter", kFilters, 2);
   if (o.has("min_filter")) s.min_filter = choice(o, "min_filter", kFilters);
   if (o.has("mag_filter")) s.mag_filter = choice(o, "mag_filter", kFilters, 2);
-  if (o.has("wrap")) s.wrap_s = s.wrap_t = choice(o, "wrap", kWraps);
+  if (o.has("wrap")) s.wrap_s = s.wrap_t = s.wrap_r = choice(o, "wrap", kWraps);
   if (o.has("wrap_s")) s.wrap_s = choice(o, "wrap_s", kWraps);
   if (o.has("wrap_t")) s.wrap_t = choice(o, "wrap_t", kWraps);
+  if (o.has("wrap_r")) s.wrap_r = choice(o, "wrap_r", kWraps);
   if (o.has("border_color") && format.integer()) {
     // glTexParameterIiv (signed formats) or glTexParameterIuiv (unsigned ones).
     const bool is_signed = format.signed_integer();
@@ -193,19 +195,24 @@ TextureSetting read_texture_setting(const std::string& name, const nlohmann::jso
     read_buffer_texture(o, t);
     return t;
   }
+  // Targets whose level 0 is several images: a 2D array's layers, a 3D texture's slices.
+  const bool stacked = t.target == texture::Target::k2DArray || t.target == texture::Target::k3D;
+  const bool three_d = t.target == texture::Target::k3D;
   const bool array = texture::is_array(t.target), one_d = texture::dimensions(t.target) == 1;
   const bool has_path = o.has("path"), has_levels = o.has("levels"), has_layers = o.has("layers");
   o.describe("path", "an image file: level 0");
   o.describe("levels", "an array of image files: levels 0, 1, ... (glTexSubImage* per level)");
-  o.describe("layers", "a GL_TEXTURE_2D_ARRAY's level 0: an array of image files, one per layer");
-  if (has_layers && t.target != texture::Target::k2DArray)
-    o.fail("layers", std::string("layers are a 2D array texture's: give \"target\": \"GL_TEXTURE_2D_ARRAY\"") +
+  o.describe("layers", "a GL_TEXTURE_2D_ARRAY's (or GL_TEXTURE_3D's) level 0: an array of image files, one per layer "
+                       "(depth slice)");
+  if (has_layers && !stacked)
+    o.fail("layers", std::string("layers are a 2D array texture's (or a 3D texture's slices): give \"target\": "
+                                 "\"GL_TEXTURE_2D_ARRAY\" or \"GL_TEXTURE_3D\"") +
                          (t.target == texture::Target::k1DArray ? " (a 1D array's layers are the rows of its path or levels images)" : ""));
   if (int(has_path) + int(has_levels) + int(has_layers) != 1)
-    o.fail(has_path ? "levels" : "path", t.target == texture::Target::k2DArray
-                                             ? "give one of layers (level 0's layers, image files), or path or levels "
-                                               "(raw bytes of every layer, with raw_size)"
-                                             : "give either path (level 0) or levels (one file per level)");
+    o.fail(has_path ? "levels" : "path", stacked ? std::string("give one of layers (level 0's ") + (three_d ? "slices" : "layers") +
+                                                       ", image files), or path or levels (raw bytes of every " +
+                                                       (three_d ? "slice" : "layer") + ", with raw_size)"
+                                                 : "give either path (level 0) or levels (one file per level)");
   // An array of 1 to `most` image file names (`limit` names the GL limit, if any).
   auto files = [&](const std::string& key, std::size_t most, const std::string& limit) {
     const nlohmann::json& list = o.value(key);
@@ -227,26 +234,33 @@ TextureSetting read_texture_setting(const std::string& name, const nlohmann::jso
     std::vector<std::pair<std::string, int>> sides{{"width", texture::kMaxTextureSize}};
     if (!one_d) sides.emplace_back("height", texture::kMaxTextureSize);
     if (array) sides.emplace_back("layers", texture::kMaxArrayLayers);
+    if (three_d) sides.emplace_back("depth", texture::kMax3DTextureSize);
     std::string shape;
     for (const auto& [side, most] : sides) shape += (shape.empty() ? "[" : ", ") + side;
     shape += "]";
-    const std::string limits = "whole numbers from 1 to " + std::to_string(texture::kMaxTextureSize) + " (GL_MAX_TEXTURE_SIZE)" +
-                               (array ? " and layers from 1 to " + std::to_string(texture::kMaxArrayLayers) + " (GL_MAX_ARRAY_TEXTURE_LAYERS)" : "");
-    o.describe("raw_size", shape + ": the files are raw texel bytes of internalformat" + (array ? ", every layer of a level" : "") +
-                               ", level 0 this size");
+    const std::string limits =
+        three_d ? "whole numbers from 1 to " + std::to_string(texture::kMax3DTextureSize) + " (GL_MAX_3D_TEXTURE_SIZE)"
+                : "whole numbers from 1 to " + std::to_string(texture::kMaxTextureSize) + " (GL_MAX_TEXTURE_SIZE)" +
+                      (array ? " and layers from 1 to " + std::to_string(texture::kMaxArrayLayers) + " (GL_MAX_ARRAY_TEXTURE_LAYERS)" : "");
+    o.describe("raw_size", shape + ": the files are raw texel bytes of internalformat" +
+                               (array ? ", every layer of a level" : three_d ? ", every slice of a level" : "") + ", level 0 this size");
     const nlohmann::json& size = o.value("raw_size");
     if (has_layers) o.fail("raw_size", "raw bytes come in path or levels (every layer of a level in one file), not layers");
     bool ok = size.is_array() && size.size() == sides.size();
     for (std::size_t k = 0; ok && k < sides.size(); ++k)
-      ok = size[k].is_number_integer() && size[k].get<long long>() >= 1 && size[k].get<long long>() <= sides[k].second;
+      ok = size[k].is_number_integer() && size[k].get<long long>() >= 1 &&
+           size[k].get<long long>() <= (three_d ? texture::kMax3DTextureSize : sides[k].second);
     if (!ok) o.fail("raw_size", "expected " + shape + ", " + limits + ", got " + describe_json(size));
     if (!t.format) o.fail("raw_size", "raw texel bytes need the internalformat that lays them out");
     t.raw_size = std::array<int, 3>{size[0].get<int>(), one_d ? 1 : size[1].get<int>(),
-                                    array ? size[sides.size() - 1].get<int>() : 1};
+                                    array || three_d ? size[sides.size() - 1].get<int>() : 1};
   }
   if (t.target == texture::Target::k2DArray && !has_layers && !t.raw_size)
     o.fail(has_path ? "path" : "levels", "a GL_TEXTURE_2D_ARRAY's image files are its layers: give layers (level 0's), "
                                          "or raw bytes of every layer with raw_size [width, height, layers]");
+  if (three_d && !has_layers && !t.raw_size)
+    o.fail(has_path ? "path" : "levels", "a GL_TEXTURE_3D's image files are its depth slices: give layers (level 0's "
+                                         "slices), or raw bytes of every slice with raw_size [width, height, depth]");
   if (o.has("generate_mipmap")) {
     t.generate_mipmaps = o.boolean("generate_mipmap");
     if (t.generate_mipmaps && t.levels.size() > 1)

@@ -5,8 +5,10 @@
 # that differs with its count and first difference, then the totals; exits 1 if a case exceeds
 # what docs/textures.md states. Builds build/ first if needed.
 #
-#   scripts/sampling-sweep.sh           # about 14,500 cases, 237 million lookups, 30 minutes on 2 cores
+#   scripts/sampling-sweep.sh           # about 18,000 cases, 300 million lookups, 40 minutes on 2 cores
+#   scripts/sampling-sweep.sh lookup_1d # the cases whose keys contain "lookup_1d" (1D textures)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 [ -x build/tests/test_glref ] || { cmake -S . -B build >/dev/null && cmake --build build -j"$(nproc)" --target test_glref; }
+if [ $# -gt 0 ]; then export TESSREF_SAMPLING_SWEEP_MATCH="$1"; fi
 TESSREF_SAMPLING_SWEEP=full build/tests/test_glref --gtest_filter='SamplingSweepVsLlvmpipe.*'

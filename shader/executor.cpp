@@ -331,22 +331,26 @@ void Runner::texture(const XIns& x) {
       if (!mask[l]) continue;
       float texel[4];
       // The offset is added in 64 bits by fetch's bounds check: no overflow at INT_MAX.
-      const std::int64_t i = std::int64_t(irow(op.coord, 0, l)) + offset(0, l),
-                         j = dims == 2 ? std::int64_t(irow(op.coord, 1, l)) + offset(1, l) : 0;
-      const bool inside = i >= 0 && j >= 0 && i <= 0x7fffffff && j <= 0x7fffffff;
-      // Outside int's range: a texel no level has.
-      texture::fetch(tex(l), inside ? int(i) : -1, inside ? int(j) : -1, arrayed ? irow(op.coord, dims, l) : 0,
-                     op.lod == kNone ? 0 : irow(op.lod, 0, l), texel);
+      auto at = [&](std::uint32_t c) {  // component c with its offset; 0 past the coordinate's
+        return c < dims ? std::int64_t(irow(op.coord, c, l)) + offset(c, l) : 0;
+      };
+      const std::int64_t i = at(0), j = at(1), k = at(2);
+      const bool inside = i >= 0 && j >= 0 && k >= 0 && i <= 0x7fffffff && j <= 0x7fffffff && k <= 0x7fffffff;
+      // Outside int's range: a texel no level has. The layer: an array's, or a 3D texture's slice.
+      const int layer = arrayed ? irow(op.coord, dims, l) : inside ? int(k) : -1;
+      texture::fetch(tex(l), inside ? int(i) : -1, inside ? int(j) : -1, layer, op.lod == kNone ? 0 : irow(op.lod, 0, l),
+                     texel);
       for (std::uint32_t c = 0; c < x.n; ++c) row<float>(x.dst, c)[l] = texel[c];
     }
     return;
   }
   // Sample, Gather and QueryLod: the coordinates and reference depth, projected for the Proj forms.
-  float s[L], t[L], dref[L];
+  float s[L], t[L], r[L], dref[L];
   int layer[L];  // an array's layer (texture::array_layer), else 0
   for (int l = 0; l < n; ++l) {
     s[l] = frow(op.coord, 0, l);
-    t[l] = dims == 2 ? frow(op.coord, 1, l) : 0.0f;
+    t[l] = dims >= 2 ? frow(op.coord, 1, l) : 0.0f;
+    r[l] = dims == 3 ? frow(op.coord, 2, l) : 0.0f;
     // textureQueryLod takes the coordinates within a layer alone.
     layer[l] = arrayed && op.kind != Kind::QueryLod ? texture::array_layer(tex(l), frow(op.coord, dims, l)) : 0;
     dref[l] = op.dref == kNone ? 0.0f : frow(op.dref, 0, l);
@@ -354,6 +358,7 @@ void Runner::texture(const XIns& x) {
       const float inv_q = 1.0f / frow(op.coord, op.coord_comps - 1, l);
       s[l] = s[l] * inv_q;
       t[l] = t[l] * inv_q;
+      r[l] = r[l] * inv_q;
       dref[l] = dref[l] * inv_q;
     }
   }
@@ -392,9 +397,11 @@ void Runner::texture(const XIns& x) {
       in.from = texture::LodInput::From::Derivatives;
       in.gradients = true;
       in.dsdx = frow(op.grad_x, 0, l);
-      in.dtdx = dims == 2 ? frow(op.grad_x, 1, l) : 0.0f;
+      in.dtdx = dims >= 2 ? frow(op.grad_x, 1, l) : 0.0f;
+      in.drdx = dims == 3 ? frow(op.grad_x, 2, l) : 0.0f;
       in.dsdy = frow(op.grad_y, 0, l);
-      in.dtdy = dims == 2 ? frow(op.grad_y, 1, l) : 0.0f;
+      in.dtdy = dims >= 2 ? frow(op.grad_y, 1, l) : 0.0f;
+      in.drdy = dims == 3 ? frow(op.grad_y, 2, l) : 0.0f;
     } else if (p.fragment && (l | 3) < n) {
       const int q = l & ~3;
       in.from = texture::LodInput::From::Derivatives;
@@ -402,6 +409,8 @@ void Runner::texture(const XIns& x) {
       in.dtdx = t[q + 1] - t[q];
       in.dsdy = s[q + 2] - s[q];
       in.dtdy = t[q + 2] - t[q];
+      in.drdx = r[q + 1] - r[q];
+      in.drdy = r[q + 2] - r[q];
       in.has_bias = op.bias != kNone;
       in.bias = in.has_bias ? frow(op.bias, 0, l) : 0.0f;
       in.per_quad = !in.has_bias;
@@ -438,8 +447,8 @@ void Runner::texture(const XIns& x) {
       continue;
     }
     float texel[4];
-    texture::sample(tex(l), s[l], t[l], layer[l], in, offset(0, l), offset(1, l), shadow ? &dref[l] : nullptr, texel,
-                    vector_linear[l]);
+    const texture::Coords at{s[l], t[l], r[l], layer[l], offset(0, l), offset(1, l), offset(2, l)};
+    texture::sample(tex(l), at, in, shadow ? &dref[l] : nullptr, texel, vector_linear[l]);
     for (std::uint32_t c = 0; c < x.n; ++c) row<float>(x.dst, c)[l] = texel[c];
   }
 }

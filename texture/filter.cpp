@@ -212,6 +212,20 @@ void texelf(const LevelSlice& l, const std::array<float, 4>& border, i32 i, i32 
 
 }  // namespace
 
+AxisTexels axis_texels(float c, int size, int offset, Wrap wrap, bool pot, bool linear, bool unorm8) {
+  AxisTexels a;
+  if (!linear) {
+    a.k0 = a.k1 = unorm8 ? nearest_index8(c, size, offset, wrap, pot) : nearest_index(c, size, offset, wrap, pot);
+  } else if (unorm8) {
+    const LinearIndices8 l = linear_indices8(c, size, offset, wrap, pot);
+    a = {l.i0, l.i1, 0.0f, l.weight};
+  } else {
+    const LinearIndices l = linear_indices(c, size, offset, wrap, pot);
+    a = {l.i0, l.i1, l.weight, 0};
+  }
+  return a;
+}
+
 void filter_unorm8(TexelFormat format, const LevelSlice& level, const Axes& axes, bool linear, float s, float t,
                    int offset_s, int offset_t, std::uint8_t out[4]) {
   const i32 w = level.width, h = level.height;

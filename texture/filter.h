@@ -9,14 +9,26 @@
 
 namespace tessref::texture {
 
-// The wrap mode of s and t, and whether level 0's width and height are powers of two (llvmpipe
-// wraps REPEAT with a mask then, and through the coordinate's fraction otherwise). A 1D texture
-// (dims 1) is filtered along s alone: its one row, t and its wrap unused.
+// The wrap mode of s, t and r, and whether level 0's width, height and depth are powers of two
+// (llvmpipe wraps REPEAT with a mask then, and through the coordinate's fraction otherwise). A 1D
+// texture (dims 1) is filtered along s alone: its one row, t and its wrap unused; the filters
+// below take one slice, and a 3D texture's r is resolved by axis_texels.
 struct Axes {
-  std::array<Wrap, 2> wrap;
-  std::array<bool, 2> pot;
+  std::array<Wrap, 3> wrap;
+  std::array<bool, 3> pot;
   int dims = 2;
 };
+
+// Along one axis of `size` texels (a 3D texture's r): the texels a lookup reads, -1 for the
+// border colour, and the second one's weight. GL_NEAREST reads k0 alone (weight 0); GL_LINEAR in
+// float gives `weight`, on the 8-bit path `weight8` (in 256ths), as the filters below compute
+// them for s and t.
+struct AxisTexels {
+  std::int32_t k0 = 0, k1 = 0;
+  float weight = 0.0f;
+  std::int32_t weight8 = 0;
+};
+AxisTexels axis_texels(float c, int size, int offset, Wrap wrap, bool pot, bool linear, bool unorm8);
 
 // Formats of 8-bit normalized channels, filtered in 8-bit fixed point (repeat and clamp-to-edge
 // only): the channels, four per texel (missing green and blue 0, missing alpha 255).

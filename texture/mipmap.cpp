@@ -9,6 +9,7 @@
 #include "common/fixed_point.h"
 #include "common/srgb.h"
 #include "texture/filter.h"
+#include "texture/sampler_ops.h"
 
 namespace tessref::texture {
 namespace {
@@ -52,30 +53,47 @@ float render_target_value(ChannelType type, int channel, float x) {
 // float otherwise), then stores the result as llvmpipe's render target of the format stores it
 // (render_target_value). For an even size that is the mean of a 2 x 2 block; an odd size weighs
 // two texels at the centre, not three.
-// An array's layers are blitted one by one.
-Level downsample(TexelFormat format, const Level& src, int w, int h) {
-  const Axes clamp{{Wrap::ClampToEdge, Wrap::ClampToEdge}, {false, false}};
+// An array's layers are blitted one by one; a 3D texture's new slice z samples its two nearest
+// slices at r = (z + 0.5) / depth, each as a 2D level, and interpolates them (as lerp_3d does).
+Level downsample(TexelFormat format, Target target, const Level& src, int w, int h) {
+  const Axes clamp{{Wrap::ClampToEdge, Wrap::ClampToEdge, Wrap::ClampToEdge}, {false, false, false}, dimensions(target)};
   const std::array<float, 4> no_border{};
   const ChannelType type = info(format).type;
-  std::vector<float> rgba(std::size_t(w) * std::size_t(h) * std::size_t(src.layers) * 4);
-  for (int layer = 0; layer < src.layers; ++layer) {
-    const LevelSlice from = src.slice(layer);
+  const bool unorm8 = type == ChannelType::kUnorm8, three_d = target == Target::k3D;
+  const int layers = three_d ? std::max(1, src.layers / 2) : src.layers;
+  std::vector<float> rgba(std::size_t(w) * std::size_t(h) * std::size_t(layers) * 4);
+  for (int layer = 0; layer < layers; ++layer) {
+    // The source slices and the second one's weight (an array: the layer itself).
+    const AxisTexels r = three_d ? axis_texels((float(layer) + 0.5f) / float(layers), src.layers, 0, Wrap::ClampToEdge,
+                                               false, true, unorm8)
+                                 : AxisTexels{layer, layer, 0.0f, 0};
+    const LevelSlice from0 = src.slice(r.k0), from1 = src.slice(r.k1);
     float* to = rgba.data() + std::size_t(layer) * std::size_t(w) * std::size_t(h) * 4;
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) {
         const float s = (float(x) + 0.5f) / float(w), t = (float(y) + 0.5f) / float(h);
         float* out = to + (std::size_t(y) * std::size_t(w) + std::size_t(x)) * 4;
-        if (type == ChannelType::kUnorm8) {
+        if (unorm8) {
           std::uint8_t texel[4];
-          filter_unorm8(format, from, clamp, true, s, t, 0, 0, texel);
+          filter_unorm8(format, from0, clamp, true, s, t, 0, 0, texel);
+          if (three_d) {
+            std::uint8_t second[4];
+            filter_unorm8(format, from1, clamp, true, s, t, 0, 0, second);
+            for (int c = 0; c < 4; ++c) texel[c] = fixed::unorm8_lerp(r.weight8, texel[c], second[c]);
+          }
           for (int c = 0; c < 4; ++c) out[c] = fixed::unorm8_to_float(texel[c]);  // exact k / 255: encodes to k
           continue;
         }
-        filter_float(from, clamp, no_border, FloatFilter::Linear, s, t, 0, 0, nullptr, out);
+        filter_float(from0, clamp, no_border, FloatFilter::Linear, s, t, 0, 0, nullptr, out);
+        if (three_d) {
+          float second[4];
+          filter_float(from1, clamp, no_border, FloatFilter::Linear, s, t, 0, 0, nullptr, second);
+          for (int c = 0; c < 4; ++c) out[c] = ops::lerp(r.weight, out[c], second[c]);
+        }
         for (int c = 0; c < 4; ++c) out[c] = render_target_value(type, c, out[c]);
       }
   }
-  return make_level(format, w, h, rgba.data(), src.layers);
+  return make_level(format, w, h, rgba.data(), layers);
 }
 
 }  // namespace
@@ -84,12 +102,12 @@ void generate_mipmaps(Texture& t) {
   if (t.base_level < 0 || t.base_level >= int(t.levels.size())) return t.finalize();
   const Level& base = t.levels[std::size_t(t.base_level)];
   if (base.width <= 0 || base.height <= 0) return t.finalize();
-  const int p = last_mip_level(t.base_level, base.width, base.height);
+  const int p = last_mip_level(t.base_level, base.width, base.height, t.target == Target::k3D ? base.layers : 1);
   const int q = std::min(p, t.max_level);
   if (int(t.levels.size()) < q + 1) t.levels.resize(std::size_t(q) + 1);
   for (int k = t.base_level + 1; k <= q; ++k) {
     const Level& prev = t.levels[std::size_t(k - 1)];
-    t.levels[std::size_t(k)] = downsample(t.format, prev, std::max(1, prev.width / 2), std::max(1, prev.height / 2));
+    t.levels[std::size_t(k)] = downsample(t.format, t.target, prev, std::max(1, prev.width / 2), std::max(1, prev.height / 2));
   }
   t.finalize();
 }

@@ -71,7 +71,7 @@ float rho_1d(const Texture& t, const LodInput& in) {
 
 // ρ² of GL 4.6 equation 8.7 with the base level's size, each product and sum a float operation
 // (lp_build_rho without the ρ approximation): the square root is folded into the log2 below.
-// 1D textures: ρ_1d squared.
+// 1D textures: ρ_1d squared; 3D textures add (dr·d)² to each sum.
 float rho_squared(const Texture& t, const LodInput& in) {
   if (dimensions(t.target) == 1) {
     const float rho = rho_1d(t, in);
@@ -80,7 +80,12 @@ float rho_squared(const Texture& t, const LodInput& in) {
   const Level& base = t.levels[std::size_t(t.base_level)];
   const float w = float(base.width), h = float(base.height);
   const float a = in.dsdx * w, b = in.dtdx * h, c = in.dsdy * w, d = in.dtdy * h;
-  const float rx = a * a + b * b, ry = c * c + d * d;
+  float rx = a * a + b * b, ry = c * c + d * d;
+  if (t.target == Target::k3D) {
+    const float depth = float(base.layers), e = in.drdx * depth, f = in.drdy * depth;
+    rx = rx + e * e;
+    ry = ry + f * f;
+  }
   float rho2 = max_ps(rx, ry);
   if (in.gradients && !std::isfinite(rho2)) rho2 = 0.0f;
   return rho2;
@@ -183,6 +188,7 @@ bool fixed_point_path(const Texture& t, const LodInput& in) {
   const SamplerState& s = t.sampler;
   auto simple = [](Wrap w) { return w == Wrap::Repeat || w == Wrap::ClampToEdge; };
   return f.type == ChannelType::kUnorm8 && simple(s.wrap_s) && simple(s.wrap_t) &&
+         (t.target != Target::k3D || simple(s.wrap_r)) &&
          (in.per_quad || linear_image(s.min_filter) == linear_image(s.mag_filter));
 }
 
@@ -220,9 +226,50 @@ std::optional<DepthCompare> depth_compare(const Texture& t, const float* dref) {
 // The wraps, and whether level 0's sides are powers of two.
 Axes axes_of(const Texture& t) {
   const Level& level_zero = t.levels[0];
-  return {{t.sampler.wrap_s, t.sampler.wrap_t},
-          {std::has_single_bit(unsigned(level_zero.width)), std::has_single_bit(unsigned(level_zero.height))},
+  return {{t.sampler.wrap_s, t.sampler.wrap_t, t.sampler.wrap_r},
+          {std::has_single_bit(unsigned(level_zero.width)), std::has_single_bit(unsigned(level_zero.height)),
+           std::has_single_bit(unsigned(level_zero.layers))},
           dimensions(t.target)};
+}
+
+// A level filtered at `at` on the 8-bit path: one slice, or a 3D texture's slices along r
+// interpolated (lp_build_lerp_3d: each slice's 2D result, then r).
+void filter_level8(const Texture& t, const Level& level, const Axes& axes, bool linear, const Coords& at,
+                   std::uint8_t out[4]) {
+  if (t.target != Target::k3D) {
+    filter_unorm8(t.format, level.slice(at.layer), axes, linear, at.s, at.t, at.offset_s, at.offset_t, out);
+    return;
+  }
+  const AxisTexels r = axis_texels(at.r, level.layers, at.offset_r, axes.wrap[2], axes.pot[2], linear, true);
+  filter_unorm8(t.format, level.slice(r.k0), axes, linear, at.s, at.t, at.offset_s, at.offset_t, out);
+  if (!linear) return;
+  std::uint8_t second[4];
+  filter_unorm8(t.format, level.slice(r.k1), axes, linear, at.s, at.t, at.offset_s, at.offset_t, second);
+  for (int c = 0; c < 4; ++c) out[c] = fixed::unorm8_lerp(r.weight8, out[c], second[c]);
+}
+
+// The same in float: a slice at r outside a GL_CLAMP_TO_BORDER texture reads the border colour.
+void filter_level_float(const Texture& t, const Level& level, const Axes& axes, const std::array<float, 4>& border,
+                        FloatFilter filter, const Coords& at, const DepthCompare* cmp, float out[4]) {
+  if (t.target != Target::k3D) {
+    filter_float(level.slice(at.layer), axes, border, filter, at.s, at.t, at.offset_s, at.offset_t, cmp, out);
+    return;
+  }
+  const bool linear = filter != FloatFilter::Nearest;
+  AxisTexels r = axis_texels(at.r, level.layers, at.offset_r, axes.wrap[2], axes.pot[2], linear, false);
+  if (filter == FloatFilter::NearestByWeights) r.weight = r.weight > 0.5f ? 1.0f : 0.0f;
+  auto slice = [&](std::int32_t k, float texel[4]) {
+    if (k < 0) {
+      for (int c = 0; c < 4; ++c) texel[c] = border[std::size_t(c)];
+      return;
+    }
+    filter_float(level.slice(k), axes, border, filter, at.s, at.t, at.offset_s, at.offset_t, cmp, texel);
+  };
+  slice(r.k0, out);
+  if (!linear) return;
+  float second[4];
+  slice(r.k1, second);
+  for (int c = 0; c < 4; ++c) out[c] = lerp(r.weight, out[c], second[c]);
 }
 
 }  // namespace
@@ -240,23 +287,22 @@ int array_layer(const Texture& t, float r) {
   return layer >= double(last) ? last : layer > 0.0 ? int(layer) : 0;  // NaN: 0
 }
 
-void sample(const Texture& t, float s, float tc, int layer, const LodInput& lod, int offset_s, int offset_t,
-            const float* dref, float out[4], bool vector_linear) {
+void sample(const Texture& t, const Coords& at, const LodInput& lod, const float* dref, float out[4], bool vector_linear) {
   if (!t.complete) return incomplete(t, out);
   const LevelChoice c = choose_levels(t, lod);
-  const LevelSlice l0 = t.levels[std::size_t(c.level0)].slice(layer);
+  const Level& l0 = t.levels[std::size_t(c.level0)];
   const Axes axes = axes_of(t);
   const std::optional<DepthCompare> compare = depth_compare(t, dref);
   const DepthCompare* cmp = compare ? &*compare : nullptr;
   float texel[4];
   if (fixed_point_path(t, lod)) {
     std::uint8_t r0[4];
-    filter_unorm8(t.format, l0, axes, c.linear, s, tc, offset_s, offset_t, r0);
+    filter_level8(t, l0, axes, c.linear, at, r0);
     // The levels' weight in 8 bits, truncated (lp_build_sample_mipmap's lod_fpart.fixed16).
     const i32 w = fptosi(c.fpart * 256.0f);
     if (w > 0) {
       std::uint8_t r1[4];
-      filter_unorm8(t.format, t.levels[std::size_t(c.level1)].slice(layer), axes, c.linear, s, tc, offset_s, offset_t, r1);
+      filter_level8(t, t.levels[std::size_t(c.level1)], axes, c.linear, at, r1);
       for (int k = 0; k < 4; ++k) r0[k] = fixed::unorm8_lerp(w, r0[k], r1[k]);
     }
     for (int k = 0; k < 4; ++k) texel[k] = fixed::unorm8_texel_to_float(r0[k]);
@@ -266,10 +312,10 @@ void sample(const Texture& t, float s, float tc, int layer, const LodInput& lod,
                                : vector_linear && linear_image(t.sampler.min_filter) != linear_image(t.sampler.mag_filter)
                                    ? FloatFilter::NearestByWeights
                                    : FloatFilter::Nearest;
-    filter_float(l0, axes, border, filter, s, tc, offset_s, offset_t, cmp, texel);
+    filter_level_float(t, l0, axes, border, filter, at, cmp, texel);
     if (c.fpart > 0.0f) {
       float t1[4];
-      filter_float(t.levels[std::size_t(c.level1)].slice(layer), axes, border, filter, s, tc, offset_s, offset_t, cmp, t1);
+      filter_level_float(t, t.levels[std::size_t(c.level1)], axes, border, filter, at, cmp, t1);
       for (int k = 0; k < 4; ++k) texel[k] = lerp(c.fpart, texel[k], t1[k]);
     }
   }
@@ -326,8 +372,8 @@ void level_size(const Texture& t, int lod, int out[3]) {
   const Level& l = t.levels[std::size_t(level)];
   int k = 0;
   out[k++] = l.width;
-  if (dimensions(t.target) == 2) out[k++] = l.height;
-  if (is_array(t.target)) out[k++] = l.layers;
+  if (dimensions(t.target) >= 2) out[k++] = l.height;
+  if (is_array(t.target) || t.target == Target::k3D) out[k++] = l.layers;
 }
 
 int query_levels(const Texture& t) { return t.complete ? t.last_level - t.base_level + 1 : 1; }

@@ -13,10 +13,10 @@ namespace tessref::texture {
 struct LodInput {
   enum class From { Derivatives, Explicit };
   From from = From::Explicit;
-  // Derivatives: ds/dx, dt/dx, ds/dy, dt/dy. For an implicit LOD in a fragment shader, the quad's
-  // (its top-left pixel's differences to its right and upper neighbours: one LOD per quad); for
-  // textureGrad, the invocation's own.
-  float dsdx = 0.0f, dtdx = 0.0f, dsdy = 0.0f, dtdy = 0.0f;
+  // Derivatives: ds/dx, dt/dx, ds/dy, dt/dy (and dr/dx, dr/dy for a 3D texture). For an implicit
+  // LOD in a fragment shader, the quad's (its top-left pixel's differences to its right and upper
+  // neighbours: one LOD per quad); for textureGrad, the invocation's own.
+  float dsdx = 0.0f, dtdx = 0.0f, dsdy = 0.0f, dtdy = 0.0f, drdx = 0.0f, drdy = 0.0f;
   bool gradients = false;  // textureGrad: a ρ² that is infinite or NaN counts as 0
   float lod = 0.0f;        // Explicit: textureLod's (an implicit LOD outside fragment shaders: 0)
   bool has_bias = false;   // texture(..., bias) in a fragment shader
@@ -31,15 +31,22 @@ struct LodInput {
 // texture that is not an array.
 int array_layer(const Texture& t, float r);
 
-// texture(), textureLod(), textureGrad(), the Offset and Proj forms (s and t already divided), on
-// layer `layer` of an array (array_layer; 0 otherwise):
-// the filtered, swizzled texel. `dref`: a shadow sampler's reference depth (already divided for
+// Where a lookup samples: s, t and r (those the target has; already divided for Proj forms), the
+// layer of an array (array_layer; 0 otherwise), and textureOffset's texel offsets.
+struct Coords {
+  float s = 0.0f, t = 0.0f, r = 0.0f;
+  int layer = 0;
+  int offset_s = 0, offset_t = 0, offset_r = 0;
+};
+
+// texture(), textureLod(), textureGrad(), the Offset and Proj forms at `at`: the filtered,
+// swizzled texel. `dref`: a shadow sampler's reference depth (already divided for
 // Proj forms), compared when the texture's compare mode is on; every channel of the result is
 // then the filtered comparisons. `vector_linear`: whether another invocation sampled together with
 // this one (llvmpipe runs a vector of them at once) is filtered with GL_LINEAR, which changes how
 // llvmpipe filters the others with GL_NEAREST (see linear_in_vector).
-void sample(const Texture& t, float s, float tc, int layer, const LodInput& lod, int offset_s, int offset_t,
-            const float* dref, float out[4], bool vector_linear = false);
+void sample(const Texture& t, const Coords& at, const LodInput& lod, const float* dref, float out[4],
+            bool vector_linear = false);
 
 // textureGather() and textureGatherOffset(): the four texels GL_LINEAR would read on the base
 // level (i0 j1, i1 j1, i1 j0, i0 j0), component `component` (0..3) through the swizzle; with
@@ -53,7 +60,7 @@ void gather(const Texture& t, float s, float tc, int layer, int offset_s, int of
 // GL_NEAREST are filtered by rounded linear weights (texture/filter.h, NearestByWeights).
 bool linear_in_vector(const Texture& t, const LodInput& lod);
 
-// texelFetch(): texel (i, j) of layer `layer` (0 unless an array) of level base_level + lod; zero
+// texelFetch(): texel (i, j) of layer `layer` (an array's; a 3D texture's slice; else 0) of level base_level + lod; zero
 // outside the level or its layers, or for a level outside base_level .. last_level (GL 4.6
 // 11.1.3.2 leaves it undefined): (0, 0, 0, 0), with alpha 1 for formats without alpha.
 void fetch(const Texture& t, int i, int j, int layer, int lod, float out[4]);

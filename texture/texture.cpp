@@ -25,6 +25,7 @@ const char* gl_name(Target t) {
     case Target::k1DArray: return "GL_TEXTURE_1D_ARRAY";
     case Target::k2DArray: return "GL_TEXTURE_2D_ARRAY";
     case Target::kBuffer: return "GL_TEXTURE_BUFFER";
+    case Target::k3D: return "GL_TEXTURE_3D";
   }
   return "?";
 }
@@ -43,8 +44,8 @@ const char* gl_name(CompareFunc f) {
   return "?";
 }
 
-int last_mip_level(int base, int w, int h) {
-  return base + int(std::bit_width(unsigned(std::max(w, h)))) - 1;
+int last_mip_level(int base, int w, int h, int d) {
+  return base + int(std::bit_width(unsigned(std::max({w, h, d})))) - 1;
 }
 
 Level level_from_stored(TexelFormat f, int width, int height, int layers, std::vector<std::uint8_t> stored) {
@@ -70,9 +71,9 @@ Level make_integer_level(TexelFormat f, int width, int height, const std::int64_
 // GL 4.6 8.17: a texture is complete when its base level exists, an integer format is sampled
 // with GL_NEAREST (or GL_NEAREST_MIPMAP_NEAREST) and, for a minification filter
 // that uses mipmaps, level_base <= level_max and every level from the base to
-// q = min(p, level_max), p = level_base + floor(log2(max(w_b, h_b))), exists with the size
-// max(1, floor(w_b / 2^(k - level_base))) x max(1, floor(h_b / 2^(k - level_base))) (and, for
-// an array, the base level's layers).
+// q = min(p, level_max), p = level_base + floor(log2(max(w_b, h_b, d_b))), exists with the size
+// max(1, floor(w_b / 2^(k - level_base))) x max(1, floor(h_b / 2^(k - level_base))) (x the same
+// of d_b for a 3D texture; an array keeps the base level's layers).
 void Texture::finalize() {
   complete = false;
   last_level = base_level;
@@ -97,7 +98,8 @@ void Texture::finalize() {
     return;
   }
   const Level& base = levels[std::size_t(base_level)];
-  const int p = last_mip_level(base_level, base.width, base.height);
+  const bool three_d = target == Target::k3D;  // its depth halves with each level; an array's layers do not
+  const int p = last_mip_level(base_level, base.width, base.height, three_d ? base.layers : 1);
   if (!uses_mipmaps(sampler.min_filter)) {
     // Complete with the base level alone; texelFetch, textureSize and textureQueryLevels still
     // see the levels the storage has, up to max_level (as Mesa's sampler view does).
@@ -113,6 +115,7 @@ void Texture::finalize() {
   const int q = std::min(p, max_level);
   for (int k = base_level + 1; k <= q; ++k) {
     const int w = std::max(1, base.width >> (k - base_level)), h = std::max(1, base.height >> (k - base_level));
+    const int layers = three_d ? std::max(1, base.layers >> (k - base_level)) : base.layers;
     if (k >= n) {
       incomplete_reason = std::string("its minification filter ") + gl_name(sampler.min_filter) + " needs levels " +
                           std::to_string(base_level) + " to " + std::to_string(q) + ", and level " +
@@ -120,12 +123,13 @@ void Texture::finalize() {
       return;
     }
     const Level& l = levels[std::size_t(k)];
-    if (l.width != w || l.height != h || l.layers != base.layers) {
-      auto size = [&](int x, int y, int layers) {  // "WxH", or "WxH with N layers" for an array
-        return std::to_string(x) + "x" + std::to_string(y) + (is_array(target) ? " with " + std::to_string(layers) + " layers" : "");
+    if (l.width != w || l.height != h || l.layers != layers) {
+      auto size = [&](int x, int y, int n) {  // "WxH", "WxH with N layers" for an array, "WxHxD" in 3D
+        return std::to_string(x) + "x" + std::to_string(y) +
+               (three_d ? "x" + std::to_string(n) : is_array(target) ? " with " + std::to_string(n) + " layers" : "");
       };
       incomplete_reason = "level " + std::to_string(k) + " is " + size(l.width, l.height, l.layers) + ", and GL requires " +
-                          size(w, h, base.layers);
+                          size(w, h, layers);
       return;
     }
   }

@@ -1,5 +1,5 @@
 #pragma once
-// A GL texture as the sampler sees it: a 1D or 2D image (or an array of them) with its mip levels, or a buffer
+// A GL texture as the sampler sees it: a 1D, 2D or 3D image (or an array of 1D or 2D ones) with its mip levels, or a buffer
 // texture's texels, in the internal format its texels were converted to, with the texture's and sampler object's
 // state (GL 4.6 8.10 and 8.14).
 // Plain data: the scene loader fills it, the executor reads it through texture/sample.h.
@@ -13,11 +13,13 @@
 namespace tessref::texture {
 
 // The texture targets tessref samples (GL 4.6 8.1).
-enum class Target : std::uint8_t { k1D, k2D, k1DArray, k2DArray, kBuffer };
+enum class Target : std::uint8_t { k1D, k2D, k1DArray, k2DArray, kBuffer, k3D };
 const char* gl_name(Target t);
 // The coordinates that address a texel within a layer: 1 (1D textures and their arrays, buffer
-// textures) or 2.
-inline int dimensions(Target t) { return t == Target::k2D || t == Target::k2DArray ? 2 : 1; }
+// textures), 2 or 3.
+inline int dimensions(Target t) {
+  return t == Target::k3D ? 3 : t == Target::k2D || t == Target::k2DArray ? 2 : 1;
+}
 inline bool is_array(Target t) { return t == Target::k1DArray || t == Target::k2DArray; }
 
 // GL_TEXTURE_MIN_FILTER / GL_TEXTURE_MAG_FILTER (the magnification filter is Nearest or Linear).
@@ -34,6 +36,8 @@ enum class Swizzle : std::uint8_t { Red, Green, Blue, Alpha, Zero, One };
 
 // GL_MAX_TEXTURE_SIZE on llvmpipe; the sampler's fixed-point coordinates rely on it.
 inline constexpr int kMaxTextureSize = 16384;
+// GL_MAX_3D_TEXTURE_SIZE on llvmpipe.
+inline constexpr int kMax3DTextureSize = 2048;
 // GL_MAX_ARRAY_TEXTURE_LAYERS on llvmpipe.
 inline constexpr int kMaxArrayLayers = 2048;
 // GL_MAX_TEXTURE_BUFFER_SIZE on llvmpipe (texels): a buffer texture's range holds at most this many.
@@ -42,7 +46,7 @@ inline constexpr std::int64_t kMaxTextureBufferSize = 134217728;
 const char* gl_name(Filter f);
 const char* gl_name(CompareFunc f);
 // p of GL 4.6 8.17: the last level of a full mip chain whose level `base` is w x h.
-int last_mip_level(int base, int w, int h);
+int last_mip_level(int base, int w, int h, int d = 1);
 inline bool uses_mipmaps(Filter f) { return f != Filter::Nearest && f != Filter::Linear; }
 
 // Sampler state (a sampler object's, or the texture's own when no sampler object is bound),
@@ -50,7 +54,7 @@ inline bool uses_mipmaps(Filter f) { return f != Filter::Nearest && f != Filter:
 struct SamplerState {
   Filter min_filter = Filter::NearestMipmapLinear;
   Filter mag_filter = Filter::Linear;
-  Wrap wrap_s = Wrap::Repeat, wrap_t = Wrap::Repeat;
+  Wrap wrap_s = Wrap::Repeat, wrap_t = Wrap::Repeat, wrap_r = Wrap::Repeat;
   std::array<float, 4> border{0.0f, 0.0f, 0.0f, 0.0f};  // GL_TEXTURE_BORDER_COLOR
   // The border colour an integer format reads, as glTexParameterIiv / Iuiv give it.
   std::array<std::int64_t, 4> border_integer{0, 0, 0, 0};
@@ -68,8 +72,9 @@ struct LevelSlice {
   const std::uint8_t* stored = nullptr;
 };
 
-// One mip level: `layers` images of width x height texels (1 layer unless an array; height 1 for
-// 1D targets and buffer textures), row 0 at the bottom (GL), layer after layer. `stored` holds them in the format's own layout (what a driver
+// One mip level: `layers` images of width x height texels (1 layer unless an array; a 3D
+// texture's depth slices; height 1 for 1D targets and buffer textures), row 0 at the bottom (GL),
+// layer after layer. `stored` holds them in the format's own layout (what a driver
 // is given); `texels` as the sampler reads them, four floats each (k / 255 for 8-bit normalized
 // channels, linear values for sRGB ones, missing green and blue 0, missing alpha 1; integer
 // formats: the integers' bits, texture::decode_texels).

@@ -255,7 +255,7 @@ TEST(TextureLod, IntegerNearestMinificationReadsTheBaseLevel) {
     texture::LodInput in;
     in.lod = lod;
     float out[4];
-    texture::sample(t, 0.5f, 0.5f, 0, in, 0, 0, nullptr, out);
+    texture::sample(t, {0.5f, 0.5f}, in, nullptr, out);
     EXPECT_EQ(std::bit_cast<std::int32_t>(out[0]), -7) << "LOD " << lod;
     EXPECT_EQ(std::bit_cast<std::int32_t>(out[3]), 1) << "LOD " << lod;  // R32I has no alpha: the integer 1
   }
@@ -264,7 +264,7 @@ TEST(TextureLod, IntegerNearestMinificationReadsTheBaseLevel) {
   texture::LodInput in;
   in.lod = 1.0f;
   float out[4];
-  texture::sample(t, 0.5f, 0.5f, 0, in, 0, 0, nullptr, out);
+  texture::sample(t, {0.5f, 0.5f}, in, nullptr, out);
   EXPECT_EQ(std::bit_cast<std::int32_t>(out[0]), 123456789);
 }
 
@@ -303,8 +303,8 @@ TEST(TextureScene, ArrayTexturesAreCheckedByKey) {
     return "textures.u_tex={\"path\": null, \"target\": \"GL_TEXTURE_2D_ARRAY\", " + keys + "}";
   };
   expect_error({"textures.u_tex={\"path\": null, " + layers + "}"},
-               "draws.0.shaders.textures.u_tex.layers: layers are a 2D array texture's: give \"target\": "
-               "\"GL_TEXTURE_2D_ARRAY\"");
+               "draws.0.shaders.textures.u_tex.layers: layers are a 2D array texture's (or a 3D texture's slices): give "
+               "\"target\": \"GL_TEXTURE_2D_ARRAY\" or \"GL_TEXTURE_3D\"");
   expect_error({"textures.u_tex.target=\"GL_TEXTURE_2D_ARRAY\""},
                "draws.0.shaders.textures.u_tex.path: a GL_TEXTURE_2D_ARRAY's image files are its layers: give "
                "layers (level 0's), or raw bytes of every layer with raw_size [width, height, layers]");
@@ -417,8 +417,9 @@ TEST(TextureScene, OneDimensionalAndBufferTexturesAreCheckedByKey) {
                    "/tests/data/draws/sampling/noise_24x10.png is 24x10, and a GL_TEXTURE_1D level is one row (an image of "
                    "height 1)");
   expect_error({one_d("GL_TEXTURE_1D_ARRAY", R"("layers": ["sampling/noise_1d_256.png"])")},
-               "draws.0.shaders.textures.u_tex.layers: layers are a 2D array texture's: give \"target\": "
-               "\"GL_TEXTURE_2D_ARRAY\" (a 1D array's layers are the rows of its path or levels images)");
+               "draws.0.shaders.textures.u_tex.layers: layers are a 2D array texture's (or a 3D texture's slices): give "
+               "\"target\": \"GL_TEXTURE_2D_ARRAY\" or \"GL_TEXTURE_3D\" (a 1D array's layers are the rows of its path or "
+               "levels images)");
   expect_error({one_d("GL_TEXTURE_1D", R"("path": "sampling/depth_1d_256.raw", "internalformat": "GL_R32F", "raw_size": [256, 1])")},
                "draws.0.shaders.textures.u_tex.raw_size: expected [width], whole numbers from 1 to 16384 "
                "(GL_MAX_TEXTURE_SIZE), got an array of 2");
@@ -429,9 +430,9 @@ TEST(TextureScene, OneDimensionalAndBufferTexturesAreCheckedByKey) {
   expect_error({one_d("GL_TEXTURE_1D", R"("path": "sampling/noise_1d_256.png")")},
                "draws.0.shaders.textures.u_tex.target: the uniform is a sampler2D, which reads a GL_TEXTURE_2D texture, "
                "and this one is GL_TEXTURE_1D");
-  expect_error({"textures.u_tex.target=\"GL_TEXTURE_3D\""},
-               "draws.0.shaders.textures.u_tex.target: expected one of GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_1D_ARRAY, "
-               "GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BUFFER, got \"GL_TEXTURE_3D\"");
+  expect_error({"textures.u_tex.target=\"GL_TEXTURE_CUBE_MAP\""},
+               "draws.0.shaders.textures.u_tex.target: expected one of GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, "
+               "GL_TEXTURE_1D_ARRAY, GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BUFFER, got \"GL_TEXTURE_CUBE_MAP\"");
   // Buffer textures: a range of a scene buffer in a format of GL 4.6 table 8.18, no sampler state.
   auto buffer = [](const std::string& keys) {
     return std::vector<std::string>{"textures.u_tex={\"path\": null, \"generate_mipmap\": null, \"min_filter\": null, "
@@ -517,6 +518,43 @@ TEST(TextureLod, OneDimensionalLodUsesSAlone) {
   int size[3];
   texture::level_size(t, 2, size);
   EXPECT_EQ(size[0], 64);
+}
+
+// A 3D texture's level 0 is one image per depth slice (or raw bytes of every slice); its depth
+// halves with each level, as GL 4.6 8.17's level sizes say, and textureSize gives all three.
+TEST(TextureScene, ThreeDimensionalTexturesHalveTheirDepth) {
+  const std::string slices = R"("layers": ["sampling/noise_64x64.png", "sampling/noise_64x64_layer1.png", )"
+                             R"("sampling/noise_64x64_layer2.png", "sampling/noise_64x64_layer3.png"])";
+  auto three_d = [](const std::string& keys) {
+    return "textures.u_tex={\"path\": null, \"target\": \"GL_TEXTURE_3D\", " + keys + "}";
+  };
+  expect_error({three_d(R"("path": "sampling/noise_64x64.png")")},
+               "draws.0.shaders.textures.u_tex.path: a GL_TEXTURE_3D's image files are its depth slices: give layers");
+  expect_error({three_d(R"("path": "sampling/noise_bytes_0.raw", "internalformat": "GL_RGBA8", "raw_size": [64, 64, 4000])")},
+               "draws.0.shaders.textures.u_tex.raw_size: expected [width, height, depth], whole numbers from 1 to 2048 "
+               "(GL_MAX_3D_TEXTURE_SIZE)");
+  expect_error({three_d(slices)},
+               "draws.0.shaders.textures.u_tex.target: the uniform is a sampler2D, which reads a GL_TEXTURE_2D texture, "
+               "and this one is GL_TEXTURE_3D");
+  const Scene scene = load_scene(kSweep, {"draws.0.shaders." + three_d(slices)});
+  const texture::Texture t = load_texture(scene.draws[0].shaders->textures[0], "3d", scene);
+  ASSERT_TRUE(t.complete) << t.incomplete_reason;
+  ASSERT_EQ(t.levels.size(), 7u);  // 64 x 64 x 4 down to 1 x 1 x 1
+  const int depths[] = {4, 2, 1, 1, 1, 1, 1};
+  for (std::size_t k = 0; k < 7; ++k) EXPECT_EQ(t.levels[k].layers, depths[k]) << k;
+  int size[3];
+  texture::level_size(t, 1, size);
+  EXPECT_EQ(size[0], 32);
+  EXPECT_EQ(size[1], 32);
+  EXPECT_EQ(size[2], 2);
+  // Level 1's slice 0 is the mean of the 2 x 2 x 2 block below it in 8-bit fixed point: three
+  // interpolations (s, t, r), each rounding to 8 bits, keep it within 1.5 steps of the exact mean
+  // of slices 0 and 1's texels (0, 0) to (1, 1).
+  int sum = 0;
+  for (int z = 0; z < 2; ++z)
+    for (int y = 0; y < 2; ++y)
+      for (int x = 0; x < 2; ++x) sum += t.levels[0].slice(z).stored[std::size_t(y * 64 + x) * 4];
+  EXPECT_NEAR(t.levels[1].stored[0], sum / 8.0, 1.5);
 }
 
 }  // namespace

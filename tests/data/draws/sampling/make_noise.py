@@ -25,6 +25,8 @@ png(d + '/noise_64x64_gray.png', 64, 64, 1, noise(4))
 # Layers 1 and 2 of the 2D array cases (layer 0 is noise_64x64.png).
 png(d + '/noise_64x64_layer1.png', 64, 64, 4, noise(5))
 png(d + '/noise_64x64_layer2.png', 64, 64, 4, noise(6))
+# Slice 3 of the 3D texture cases (slices 0 to 2 are noise_64x64.png and the two layers above).
+png(d + '/noise_64x64_layer3.png', 64, 64, 4, noise(9))
 # depth_64x64.exr: depths k / 64 (k in 0..64, exact in every depth format's float reading only at
 # 0 and 1, exact in float everywhere), written as a gray PFM (bottom row first):
 #   oiiotool depth_64x64.pfm -d float --compression zip -o depth_64x64.exr
