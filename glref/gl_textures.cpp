@@ -177,6 +177,7 @@ GLenum gl_target(texture::Target t) {
     case texture::Target::k2DArray: return GL_TEXTURE_2D_ARRAY;
     case texture::Target::kBuffer: return GL_TEXTURE_BUFFER;
     case texture::Target::k3D: return GL_TEXTURE_3D;
+    case texture::Target::kRectangle: return GL_TEXTURE_RECTANGLE;
   }
   return GL_TEXTURE_2D;
 }
@@ -241,8 +242,10 @@ GlTextures::GlTextures(const Scene& scene, const ShaderSettings& shaders) : shad
     }
     // glGenerateMipmap right after the upload, with the initial base and max level: every level.
     if (t.generate_mipmaps) glGenerateMipmap(target);
-    glTexParameteri(target, GL_TEXTURE_BASE_LEVEL, tex.base_level);
-    glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, tex.max_level);
+    if (tex.target != texture::Target::kRectangle) {  // a rectangle texture has level 0 alone
+      glTexParameteri(target, GL_TEXTURE_BASE_LEVEL, tex.base_level);
+      glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, tex.max_level);
+    }
     // The texture's own sampler state; a sampler object's, when the scene binds one, overrides it.
     set_sampler_state(t.sampler_state, tex.format, [target](GLenum p, GLint v) { glTexParameteri(target, p, v); },
                       [target](GLenum p, GLfloat v) { glTexParameterf(target, p, v); },

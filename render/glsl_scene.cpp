@@ -174,6 +174,7 @@ std::optional<texture::Target> sampler_target(const std::string& dims) {
   if (dims == "sampler1DArray") return texture::Target::k1DArray;
   if (dims == "sampler2DArray") return texture::Target::k2DArray;
   if (dims == "sampler3D") return texture::Target::k3D;
+  if (dims == "sampler2DRect") return texture::Target::kRectangle;
   if (dims == "samplerBuffer") return texture::Target::kBuffer;
   return std::nullopt;
 }
@@ -195,8 +196,8 @@ void bind_textures(const Scene& scene, const ShaderSettings& shaders, glsl::Glsl
     const std::optional<texture::Target> target = sampler_target(shadow ? dims.substr(0, dims.size() - 6) : dims);
     if (!target)
       throw InputError(key + ": the uniform is " + with_article(type) + ", and tessref's textures are GL_TEXTURE_1D, "
-                       "GL_TEXTURE_2D, their arrays, GL_TEXTURE_3D and GL_TEXTURE_BUFFER; GL draws nothing from a sampler "
-                       "whose unit holds a texture of another target");
+                       "GL_TEXTURE_2D, their arrays, GL_TEXTURE_3D, GL_TEXTURE_RECTANGLE and GL_TEXTURE_BUFFER; GL draws "
+                       "nothing from a sampler whose unit holds a texture of another target");
     auto tex = std::make_unique<texture::Texture>(load_texture(t, key, scene));
     if (tex->target != *target)
       throw InputError(key + ".target: the uniform is " + with_article(type) + ", which reads a " +

@@ -59,10 +59,11 @@ Enum choice(JsonObject& o, const std::string& key, const std::array<std::pair<co
   o.fail(key, "expected one of " + names(table, count) + ", got \"" + s + "\"");
 }
 
-constexpr std::array<std::pair<const char*, texture::Target>, 6> kTargets{{
+constexpr std::array<std::pair<const char*, texture::Target>, 7> kTargets{{
     {"GL_TEXTURE_1D", texture::Target::k1D},
     {"GL_TEXTURE_2D", texture::Target::k2D},
     {"GL_TEXTURE_3D", texture::Target::k3D},
+    {"GL_TEXTURE_RECTANGLE", texture::Target::kRectangle},
     {"GL_TEXTURE_1D_ARRAY", texture::Target::k1DArray},
     {"GL_TEXTURE_2D_ARRAY", texture::Target::k2DArray},
     {"GL_TEXTURE_BUFFER", texture::Target::kBuffer},
@@ -172,6 +173,35 @@ void read_sampler_state(JsonObject& o, texture::SamplerState& s, const texture::
   if (o.has("compare_func")) s.compare_func = choice(o, "compare_func", kCompareFuncs);
 }
 
+// GL_TEXTURE_RECTANGLE (GL 4.6 8.10, 8.14): one level, texel coordinates, and glTexParameter
+// refuses mipmap filters, the repeating and mirrored wraps and a base or max level other than 0.
+void check_rectangle(JsonObject& o, TextureSetting& t) {
+  const std::string one_level = "a GL_TEXTURE_RECTANGLE has level 0 alone";
+  if (t.levels.size() > 1) o.fail("levels", one_level + ": give path");
+  if (t.generate_mipmaps) o.fail("generate_mipmap", one_level + " (glGenerateMipmap refuses it: GL_INVALID_ENUM)");
+  if (t.base_level != 0) o.fail("base_level", one_level + " (GL_TEXTURE_BASE_LEVEL other than 0: GL_INVALID_OPERATION)");
+  if (o.has("max_level") && t.max_level != 0)
+    o.fail("max_level", one_level + " (GL_TEXTURE_MAX_LEVEL above 0: GL_INVALID_VALUE)");
+  t.max_level = 0;
+  if (texture::uses_mipmaps(t.sampler_state.min_filter))
+    o.fail("min_filter", std::string("a GL_TEXTURE_RECTANGLE is sampled with nearest or linear only, not ") +
+                             texture::gl_name(t.sampler_state.min_filter) + " (glTexParameter: GL_INVALID_ENUM)");
+  auto clamps = [](const texture::SamplerState& s) {
+    for (Wrap w : {s.wrap_s, s.wrap_t, s.wrap_r})
+      if (w != Wrap::ClampToEdge && w != Wrap::ClampToBorder) return false;
+    return true;
+  };
+  if (!clamps(t.sampler_state))
+    o.fail(o.has("wrap_s") ? "wrap_s" : o.has("wrap_t") ? "wrap_t" : o.has("wrap_r") ? "wrap_r" : "wrap",
+           "a GL_TEXTURE_RECTANGLE wraps with clamp_to_edge (its default) or clamp_to_border only (glTexParameter "
+           "refuses the others: GL_INVALID_ENUM)");
+  // A sampler object may hold any state; on a rectangle texture tessref takes what glTexParameter would.
+  if (t.sampler_object && (!clamps(*t.sampler_object) || texture::uses_mipmaps(t.sampler_object->min_filter)))
+    o.fail("sampler", "on a GL_TEXTURE_RECTANGLE, tessref takes a sampler object with nearest or linear minification and "
+                      "clamp_to_edge or clamp_to_border wraps (a sampler object starts with GL_NEAREST_MIPMAP_LINEAR and "
+                      "GL_REPEAT: give min_filter and wrap)");
+}
+
 }  // namespace
 
 TextureSetting read_texture_setting(const std::string& name, const nlohmann::json& value, const std::string& path,
@@ -274,6 +304,8 @@ TextureSetting read_texture_setting(const std::string& name, const nlohmann::jso
                                     " is not filterable, GL 4.6 8.14.4): give its levels");
   }
   const texture::TexelFormatInfo& format = texture::info(t.format.value_or(texture::TexelFormat::kRgba32F));
+  const bool rectangle = t.target == texture::Target::kRectangle;
+  if (rectangle) t.sampler_state.wrap_s = t.sampler_state.wrap_t = t.sampler_state.wrap_r = Wrap::ClampToEdge;  // GL's initial
   read_sampler_state(o, t.sampler_state, format);
   if (o.has("sampler")) {
     // glBindSampler: a sampler object's state replaces the texture's, from GL's initial values.
@@ -287,6 +319,7 @@ TextureSetting read_texture_setting(const std::string& name, const nlohmann::jso
   }
   if (o.has("base_level")) t.base_level = o.integer("base_level", 0, 1000);
   if (o.has("max_level")) t.max_level = o.integer("max_level", 0, 1000);
+  if (rectangle) check_rectangle(o, t);
   if (o.has("swizzle")) {
     const nlohmann::json& sw = o.value("swizzle");
     o.describe("swizzle", "an array of 4 of " + names(kSwizzles) + " (GL_TEXTURE_SWIZZLE_RGBA)");

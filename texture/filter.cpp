@@ -24,8 +24,9 @@ float fract_safe(float c) { return min_ps(c - std::floor(c), 0x1.fffffep-1f); }
 
 // GL_NEAREST: the texel index along one axis of a level `w` texels long; -1 for the border colour
 // (lp_build_sample_wrap_nearest).
-i32 nearest_index(float s, i32 w, i32 off, Wrap wrap, bool pot) {
+i32 nearest_index(float s, i32 w, i32 off, Wrap wrap, bool pot, bool normalized = true) {
   const float wf = float(w);
+  const float scale = normalized ? wf : 1.0f;  // a rectangle texture's coordinates are texels
   i32 i = 0;
   switch (wrap) {
     case Wrap::Repeat:
@@ -34,20 +35,20 @@ i32 nearest_index(float s, i32 w, i32 off, Wrap wrap, bool pot) {
       i = fptosi(fract_safe(s) * wf);
       break;
     case Wrap::ClampToEdge: {
-      float c = s * wf;
+      float c = s * scale;
       if (off) c = c + float(off);
       i = std::clamp(fptosi(c), 0, w - 1);
       break;
     }
     case Wrap::ClampToBorder:
-      i = add(ifloor(s * wf), off);
+      i = add(ifloor(s * scale), off);
       return i < 0 || i >= w ? -1 : i;
     case Wrap::MirroredRepeat:
       if (off) s = s + float(off) / wf;
       i = std::min(fptosi(mirror(s) * wf), w - 1);
       break;
     case Wrap::MirrorClampToEdge: {
-      float c = s * wf;
+      float c = s * scale;
       if (off) c = c + float(off);
       i = i32(std::min(std::uint32_t(fptosi(std::fabs(c))), std::uint32_t(w - 1)));  // unsigned min
       break;
@@ -62,8 +63,9 @@ struct LinearIndices {
   i32 i0, i1;
   float weight;
 };
-LinearIndices linear_indices(float s, i32 w, i32 off, Wrap wrap, bool pot) {
+LinearIndices linear_indices(float s, i32 w, i32 off, Wrap wrap, bool pot, bool normalized = true) {
   const float wf = float(w);
+  const float scale = normalized ? wf : 1.0f;
   auto floor_fract = [](float c, i32& i, float& f) {
     const float fl = std::floor(c);
     i = fptosi(fl);
@@ -88,7 +90,7 @@ LinearIndices linear_indices(float s, i32 w, i32 off, Wrap wrap, bool pot) {
       }
       break;
     case Wrap::ClampToEdge: {
-      float c = s * wf;
+      float c = s * scale;
       if (off) c = c + float(off);
       c = max_ps(min_ps(c, wf) - 0.5f, 0.0f);  // NaN: w - 0.5
       floor_fract(c, r.i0, r.weight);
@@ -96,7 +98,7 @@ LinearIndices linear_indices(float s, i32 w, i32 off, Wrap wrap, bool pot) {
       break;
     }
     case Wrap::ClampToBorder: {
-      float c = s * wf;
+      float c = s * scale;
       if (off) c = c + float(off);
       floor_fract(c - 0.5f, r.i0, r.weight);
       r.i1 = add(r.i0, 1);
@@ -112,7 +114,7 @@ LinearIndices linear_indices(float s, i32 w, i32 off, Wrap wrap, bool pot) {
       break;
     }
     case Wrap::MirrorClampToEdge: {
-      float c = s * wf;
+      float c = s * scale;
       if (off) c = c + float(off);
       c = max_ps(min_ps(std::fabs(c), wf) - 0.5f, 0.0f);
       floor_fract(c, r.i0, r.weight);
@@ -129,13 +131,14 @@ LinearIndices linear_indices(float s, i32 w, i32 off, Wrap wrap, bool pot) {
 // llvmpipe's linear selection relies on the weight (a pair swapped in a mirrored section, or
 // indices 0 and 1 with weight 0 next to an edge), its gather path takes the texels GL names
 // (lp_build_sample_wrap_linear with is_gather).
-std::array<i32, 2> gather_indices(float s, i32 w, i32 off, Wrap wrap, bool pot) {
+std::array<i32, 2> gather_indices(float s, i32 w, i32 off, Wrap wrap, bool pot, bool normalized) {
   const float wf = float(w);
+  const float scale = normalized ? wf : 1.0f;
   // Ones' complement for negative indices: mirror(-x) = x - 1.
   auto mirrored = [w](i32 i) { return std::min(i < 0 ? ~i : i, w - 1); };
   switch (wrap) {
     case Wrap::ClampToEdge: {
-      float c = s * wf;
+      float c = s * scale;
       if (off) c = c + float(off);
       c = max_ps(min_ps(c, wf), 0.0f);  // NaN: w
       return {fptosi(c - 0.5f), std::min(fptosi(c + 0.5f), w - 1)};
@@ -148,13 +151,13 @@ std::array<i32, 2> gather_indices(float s, i32 w, i32 off, Wrap wrap, bool pot) 
       return {mirrored(i0), mirrored(add(i0, 1))};
     }
     case Wrap::MirrorClampToEdge: {
-      float c = s * wf;
+      float c = s * scale;
       if (off) c = c + float(off);
       const i32 i0 = ifloor(c - 0.5f);
       return {mirrored(i0), mirrored(add(i0, 1))};
     }
     default: {
-      const LinearIndices r = linear_indices(s, w, off, wrap, pot);
+      const LinearIndices r = linear_indices(s, w, off, wrap, pot, normalized);
       return {r.i0, r.i1};
     }
   }
@@ -165,8 +168,8 @@ std::array<i32, 2> gather_indices(float s, i32 w, i32 off, Wrap wrap, bool pot) 
 struct LinearIndices8 {
   i32 i0, i1, weight;
 };
-LinearIndices8 linear_indices8(float s, i32 w, i32 off, Wrap wrap, bool pot) {
-  const i32 u = add(iround(s * float(w * 256)), -128);
+LinearIndices8 linear_indices8(float s, i32 w, i32 off, Wrap wrap, bool pot, bool normalized = true) {
+  const i32 u = add(iround(s * (normalized ? float(w * 256) : 256.0f)), -128);
   LinearIndices8 r{add(u >> 8, off), 0, u & 255};
   if (wrap == Wrap::ClampToEdge) {
     r.i1 = std::clamp(add(r.i0, 1), 0, w - 1);
@@ -189,9 +192,9 @@ LinearIndices8 linear_indices8(float s, i32 w, i32 off, Wrap wrap, bool pot) {
   return r;
 }
 
-i32 nearest_index8(float s, i32 w, i32 off, Wrap wrap, bool pot) {
+i32 nearest_index8(float s, i32 w, i32 off, Wrap wrap, bool pot, bool normalized = true) {
   if (wrap == Wrap::Repeat && !pot) return nearest_index(s, w, off, wrap, pot);
-  const i32 i = add(ifloor(s * float(w)), off);
+  const i32 i = add(ifloor(normalized ? s * float(w) : s), off);
   return wrap == Wrap::Repeat ? i & (w - 1) : std::clamp(i, 0, w - 1);
 }
 
@@ -231,11 +234,11 @@ void filter_unorm8(TexelFormat format, const LevelSlice& level, const Axes& axes
   const i32 w = level.width, h = level.height;
   const bool one_d = axes.dims == 1;
   if (!linear) {
-    texel8(format, level, nearest_index8(s, w, offset_s, axes.wrap[0], axes.pot[0]),
-           one_d ? 0 : nearest_index8(t, h, offset_t, axes.wrap[1], axes.pot[1]), out);
+    texel8(format, level, nearest_index8(s, w, offset_s, axes.wrap[0], axes.pot[0], axes.normalized),
+           one_d ? 0 : nearest_index8(t, h, offset_t, axes.wrap[1], axes.pot[1], axes.normalized), out);
     return;
   }
-  const LinearIndices8 x = linear_indices8(s, w, offset_s, axes.wrap[0], axes.pot[0]);
+  const LinearIndices8 x = linear_indices8(s, w, offset_s, axes.wrap[0], axes.pot[0], axes.normalized);
   std::uint8_t t00[4], t10[4], t01[4], t11[4];
   if (one_d) {
     texel8(format, level, x.i0, 0, t00);
@@ -243,7 +246,7 @@ void filter_unorm8(TexelFormat format, const LevelSlice& level, const Axes& axes
     for (int c = 0; c < 4; ++c) out[c] = fixed::unorm8_lerp(x.weight, t00[c], t10[c]);
     return;
   }
-  const LinearIndices8 y = linear_indices8(t, h, offset_t, axes.wrap[1], axes.pot[1]);
+  const LinearIndices8 y = linear_indices8(t, h, offset_t, axes.wrap[1], axes.pot[1], axes.normalized);
   texel8(format, level, x.i0, y.i0, t00);
   texel8(format, level, x.i1, y.i0, t10);
   texel8(format, level, x.i0, y.i1, t01);
@@ -273,14 +276,14 @@ void filter_float(const LevelSlice& level, const Axes& axes, const std::array<fl
   const i32 w = level.width, h = level.height;
   const bool one_d = axes.dims == 1;
   if (filter == FloatFilter::Nearest) {
-    const i32 i = nearest_index(s, w, offset_s, axes.wrap[0], axes.pot[0]);
-    const i32 j = one_d ? 0 : nearest_index(t, h, offset_t, axes.wrap[1], axes.pot[1]);
+    const i32 i = nearest_index(s, w, offset_s, axes.wrap[0], axes.pot[0], axes.normalized);
+    const i32 j = one_d ? 0 : nearest_index(t, h, offset_t, axes.wrap[1], axes.pot[1], axes.normalized);
     texelf(level, border, i, j, out);
     if (compare) out[0] = out[1] = out[2] = out[3] = passes(*compare, out[0]) ? 1.0f : 0.0f;
     return;
   }
-  LinearIndices x = linear_indices(s, w, offset_s, axes.wrap[0], axes.pot[0]);
-  LinearIndices y = one_d ? LinearIndices{0, 0, 0.0f} : linear_indices(t, h, offset_t, axes.wrap[1], axes.pot[1]);
+  LinearIndices x = linear_indices(s, w, offset_s, axes.wrap[0], axes.pot[0], axes.normalized);
+  LinearIndices y = one_d ? LinearIndices{0, 0, 0.0f} : linear_indices(t, h, offset_t, axes.wrap[1], axes.pot[1], axes.normalized);
   if (filter == FloatFilter::NearestByWeights) {
     x.weight = x.weight > 0.5f ? 1.0f : 0.0f;
     y.weight = y.weight > 0.5f ? 1.0f : 0.0f;
@@ -311,8 +314,8 @@ void filter_float(const LevelSlice& level, const Axes& axes, const std::array<fl
 
 void gather_float(const LevelSlice& level, const Axes& axes, const std::array<float, 4>& border, float s, float t,
                   int offset_s, int offset_t, int channel, const DepthCompare* compare, float out[4]) {
-  const std::array<i32, 2> x = gather_indices(s, level.width, offset_s, axes.wrap[0], axes.pot[0]);
-  const std::array<i32, 2> y = gather_indices(t, level.height, offset_t, axes.wrap[1], axes.pot[1]);
+  const std::array<i32, 2> x = gather_indices(s, level.width, offset_s, axes.wrap[0], axes.pot[0], axes.normalized);
+  const std::array<i32, 2> y = gather_indices(t, level.height, offset_t, axes.wrap[1], axes.pot[1], axes.normalized);
   const i32 corners[4][2] = {{x[0], y[1]}, {x[1], y[1]}, {x[1], y[0]}, {x[0], y[0]}};
   for (int k = 0; k < 4; ++k) {
     float texel[4];

@@ -17,6 +17,7 @@ struct Axes {
   std::array<Wrap, 3> wrap;
   std::array<bool, 3> pot;
   int dims = 2;
+  bool normalized = true;  // false: a rectangle texture's coordinates, in texels (clamp wraps only)
 };
 
 // Along one axis of `size` texels (a 3D texture's r): the texels a lookup reads, -1 for the

@@ -78,6 +78,8 @@ float rho_squared(const Texture& t, const LodInput& in) {
     return rho * rho;
   }
   const Level& base = t.levels[std::size_t(t.base_level)];
+  // A rectangle texture's too, though its coordinates are texels: Mesa's samplers (llvmpipe's and
+  // softpipe's) scale them by its size as well, measured bit for bit.
   const float w = float(base.width), h = float(base.height);
   const float a = in.dsdx * w, b = in.dtdx * h, c = in.dsdy * w, d = in.dtdy * h;
   float rx = a * a + b * b, ry = c * c + d * d;
@@ -229,7 +231,7 @@ Axes axes_of(const Texture& t) {
   return {{t.sampler.wrap_s, t.sampler.wrap_t, t.sampler.wrap_r},
           {std::has_single_bit(unsigned(level_zero.width)), std::has_single_bit(unsigned(level_zero.height)),
            std::has_single_bit(unsigned(level_zero.layers))},
-          dimensions(t.target)};
+          dimensions(t.target), t.target != Target::kRectangle};
 }
 
 // A level filtered at `at` on the 8-bit path: one slice, or a 3D texture's slices along r

@@ -26,6 +26,7 @@ const char* gl_name(Target t) {
     case Target::k2DArray: return "GL_TEXTURE_2D_ARRAY";
     case Target::kBuffer: return "GL_TEXTURE_BUFFER";
     case Target::k3D: return "GL_TEXTURE_3D";
+    case Target::kRectangle: return "GL_TEXTURE_RECTANGLE";
   }
   return "?";
 }

@@ -13,12 +13,12 @@
 namespace tessref::texture {
 
 // The texture targets tessref samples (GL 4.6 8.1).
-enum class Target : std::uint8_t { k1D, k2D, k1DArray, k2DArray, kBuffer, k3D };
+enum class Target : std::uint8_t { k1D, k2D, k1DArray, k2DArray, kBuffer, k3D, kRectangle };
 const char* gl_name(Target t);
 // The coordinates that address a texel within a layer: 1 (1D textures and their arrays, buffer
 // textures), 2 or 3.
 inline int dimensions(Target t) {
-  return t == Target::k3D ? 3 : t == Target::k2D || t == Target::k2DArray ? 2 : 1;
+  return t == Target::k3D ? 3 : t == Target::k2D || t == Target::k2DArray || t == Target::kRectangle ? 2 : 1;
 }
 inline bool is_array(Target t) { return t == Target::k1DArray || t == Target::k2DArray; }
 

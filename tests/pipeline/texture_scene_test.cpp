@@ -432,7 +432,8 @@ TEST(TextureScene, OneDimensionalAndBufferTexturesAreCheckedByKey) {
                "and this one is GL_TEXTURE_1D");
   expect_error({"textures.u_tex.target=\"GL_TEXTURE_CUBE_MAP\""},
                "draws.0.shaders.textures.u_tex.target: expected one of GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, "
-               "GL_TEXTURE_1D_ARRAY, GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BUFFER, got \"GL_TEXTURE_CUBE_MAP\"");
+               "GL_TEXTURE_RECTANGLE, GL_TEXTURE_1D_ARRAY, GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BUFFER, got "
+               "\"GL_TEXTURE_CUBE_MAP\"");
   // Buffer textures: a range of a scene buffer in a format of GL 4.6 table 8.18, no sampler state.
   auto buffer = [](const std::string& keys) {
     return std::vector<std::string>{"textures.u_tex={\"path\": null, \"generate_mipmap\": null, \"min_filter\": null, "
@@ -555,6 +556,35 @@ TEST(TextureScene, ThreeDimensionalTexturesHalveTheirDepth) {
     for (int y = 0; y < 2; ++y)
       for (int x = 0; x < 2; ++x) sum += t.levels[0].slice(z).stored[std::size_t(y * 64 + x) * 4];
   EXPECT_NEAR(t.levels[1].stored[0], sum / 8.0, 1.5);
+}
+
+// A rectangle texture takes what glTexParameter allows it, each refusal naming the key.
+TEST(TextureScene, RectangleTexturesAreCheckedByKey) {
+  auto rect = [](const std::string& keys) {
+    return std::vector<std::string>{"textures.u_tex={\"target\": \"GL_TEXTURE_RECTANGLE\", \"generate_mipmap\": false, "
+                                    "\"min_filter\": \"linear\", \"wrap\": \"clamp_to_edge\"" + keys + "}",
+                                    "fragment=\"sampling/lookup_rect.frag\"", "uniforms={\"u_size_lod\": null}"};
+  };
+  EXPECT_EQ(error_of(rect("")), "no error");
+  expect_error(rect(R"(, "generate_mipmap": true)"),
+               "draws.0.shaders.textures.u_tex.generate_mipmap: a GL_TEXTURE_RECTANGLE has level 0 alone");
+  expect_error(rect(R"(, "min_filter": "linear_mipmap_linear")"),
+               "draws.0.shaders.textures.u_tex.min_filter: a GL_TEXTURE_RECTANGLE is sampled with nearest or linear only, "
+               "not GL_LINEAR_MIPMAP_LINEAR");
+  expect_error(rect(R"(, "wrap_t": "repeat")"),
+               "draws.0.shaders.textures.u_tex.wrap_t: a GL_TEXTURE_RECTANGLE wraps with clamp_to_edge (its default) or "
+               "clamp_to_border only");
+  expect_error(rect(R"(, "base_level": 1)"),
+               "draws.0.shaders.textures.u_tex.base_level: a GL_TEXTURE_RECTANGLE has level 0 alone (GL_TEXTURE_BASE_LEVEL "
+               "other than 0: GL_INVALID_OPERATION)");
+  expect_error(rect(R"(, "sampler": {"min_filter": "nearest"})"),
+               "draws.0.shaders.textures.u_tex.sampler: on a GL_TEXTURE_RECTANGLE, tessref takes a sampler object");
+  // Its default wrap is GL's clamp_to_edge, not the scene's repeat.
+  const Scene scene = load_scene(kSweep, {"draws.0.shaders.textures.u_tex={\"target\": \"GL_TEXTURE_RECTANGLE\", "
+                                          "\"generate_mipmap\": false, \"min_filter\": \"linear\", \"wrap\": null}"});
+  const TextureSetting& t = scene.draws[0].shaders->textures[0];
+  EXPECT_EQ(t.sampler_state.wrap_s, texture::Wrap::ClampToEdge);
+  EXPECT_EQ(t.sampler_state.wrap_t, texture::Wrap::ClampToEdge);
 }
 
 }  // namespace

@@ -47,7 +47,8 @@ void main() {
       break;
     }
     case 7: result = vec4(textureQueryLod(u_tex, s), 0.0, 0.0); break;
-    case 8: result = pick < 2 ? textureProj(u_tex, vec2(s * step, step)) : textureGradOffset(u_tex, s, dx, dy, -3); break;
+    case 8: result = textureProj(u_tex, vec2(s * step, step)); break;
+    case 10: result = textureGradOffset(u_tex, s, dx, dy, -3); break;
     default: result = vec4(float(textureSize(u_tex, u_size_lod)), float(textureQueryLevels(u_tex)), 0.0, 0.0); break;
   }
 }

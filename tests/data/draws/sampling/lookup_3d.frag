@@ -58,7 +58,8 @@ void main() {
       break;
     }
     case 7: result = vec4(textureQueryLod(u_tex, uvw), 0.0, 0.0); break;
-    case 8: result = pick < 2 ? textureProj(u_tex, vec4(uvw * step, step)) : textureGradOffset(u_tex, uvw, dx, dy, ivec3(-1, 3, 2)); break;
+    case 8: result = textureProj(u_tex, vec4(uvw * step, step)); break;
+    case 10: result = textureGradOffset(u_tex, uvw, dx, dy, ivec3(-1, 3, 2)); break;
     default: result = vec4(vec3(textureSize(u_tex, u_size_lod)), float(textureQueryLevels(u_tex))); break;
   }
 }
