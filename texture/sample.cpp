@@ -189,8 +189,9 @@ bool fixed_point_path(const Texture& t, const LodInput& in) {
   const TexelFormatInfo& f = info(t.format);
   const SamplerState& s = t.sampler;
   auto simple = [](Wrap w) { return w == Wrap::Repeat || w == Wrap::ClampToEdge; };
-  return f.type == ChannelType::kUnorm8 && simple(s.wrap_s) && simple(s.wrap_t) &&
-         (t.target != Target::k3D || simple(s.wrap_r)) &&
+  const int dims = dimensions(t.target);  // the wraps of the axes the target has
+  return f.type == ChannelType::kUnorm8 && simple(s.wrap_s) && (dims < 2 || simple(s.wrap_t)) &&
+         (dims < 3 || simple(s.wrap_r)) &&
          (in.per_quad || linear_image(s.min_filter) == linear_image(s.mag_filter));
 }
 

@@ -231,6 +231,12 @@ Case shadow_array_case(const std::string& format, const std::string& min, const 
   return c;
 }
 
+// c with more keys.
+Case with_sets(Case c, const std::vector<std::string>& more) {
+  c.sets = with(c.sets, more);
+  return c;
+}
+
 // A 1D texture (lookup_1d.frag: function 8 is textureProj, 10 textureGradOffset) of 256 texels with
 // glGenerateMipmap, or a 1D array (lookup_1d_array.frag) of five 64-texel layers, stored in
 // `format`. What it must show follows make_case.
@@ -423,6 +429,9 @@ std::vector<Case> suite_cases() {
       cases.push_back(one_d_case(array, "GL_RGBA8", "linear_mipmap_linear", "linear", "repeat", fn));
       cases.push_back(one_d_case(array, "GL_RGBA32F", "linear_mipmap_linear", "linear", "mirrored_repeat", fn));
     }
+  // A 1D texture's wrap_t is not its own: the 8-bit path does not depend on it.
+  cases.push_back(with_sets(one_d_case(false, "GL_RGBA8", "linear_mipmap_linear", "linear", "repeat", 0),
+                            {"textures.u_tex.wrap_t=\"clamp_to_border\""}));
   for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge", "clamp_to_border", "mirror_clamp_to_edge"}) {
     cases.push_back(one_d_case(false, "GL_RGBA8", "nearest_mipmap_nearest", "linear", wrap, 0));
     cases.push_back(one_d_case(true, "GL_RGBA16F", "linear_mipmap_nearest", "nearest", wrap, 2));
