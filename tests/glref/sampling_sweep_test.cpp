@@ -284,10 +284,11 @@ Case three_d_case(const std::string& format, const std::string& min, const std::
 
 // A rectangle texture (lookup_rect.frag, coordinates in texels; or lookup_rect_shadow.frag on a
 // depth format): one level of `file` in `format`, clamp wraps and mipmap-free filters only. What
-// it must show follows make_case (function 1, textureProj, has an implicit LOD as function 0).
+// it must show follows make_case (function 1, textureProj, has an implicit LOD as function 0;
+// function 8, textureGradOffset, a LOD per lookup as function 3).
 Case rect_case(const std::string& file, const std::string& format, const std::string& min, const std::string& mag,
                const std::string& wrap, int fn, bool shadow = false) {
-  Case c = make_case(file, format, min, mag, wrap, fn == 1 ? 0 : fn);
+  Case c = make_case(file, format, min, mag, wrap, fn == 1 ? 0 : fn == 8 ? 3 : fn);
   c.sets = {std::string("fragment=\"sampling/lookup_rect") + (shadow ? "_shadow" : "") + ".frag\"",
             "textures.u_tex={\"path\": \"sampling/" + file + "\", \"target\": \"GL_TEXTURE_RECTANGLE\", \"internalformat\": \"" +
                 format + "\", \"generate_mipmap\": false, \"min_filter\": \"" + min + "\", \"mag_filter\": \"" + mag +
@@ -512,22 +513,18 @@ std::vector<Case> full_cases() {
     for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge", "clamp_to_border", "mirror_clamp_to_edge"})
       for (int fn : {0, 3, 4, 5, 6, 7, 8})
         cases.push_back(shadow_array_case(format, "linear", "nearest", wrap, "lequal", fn));
+  // 1D textures, 1D arrays (functions 0 to 9) and 3D textures.
   for (const char* format : {"GL_RGBA8", "GL_RGBA32F", "GL_SRGB8_ALPHA8"})
     for (const char* min : {"nearest", "linear", "nearest_mipmap_nearest", "linear_mipmap_nearest", "nearest_mipmap_linear",
                             "linear_mipmap_linear"})
       for (const char* mag : {"nearest", "linear"})
         for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge", "clamp_to_border", "mirror_clamp_to_edge"})
-          for (int fn = 0; fn <= 10; ++fn)
-            if (fn != 9 || std::string(wrap) == "repeat")
-              for (bool array : {false, true})
-                if (!array || fn < 10) cases.push_back(one_d_case(array, format, min, mag, wrap, fn));
-  for (const char* format : {"GL_RGBA8", "GL_RGBA32F", "GL_SRGB8_ALPHA8"})
-    for (const char* min : {"nearest", "linear", "nearest_mipmap_nearest", "linear_mipmap_nearest", "nearest_mipmap_linear",
-                            "linear_mipmap_linear"})
-      for (const char* mag : {"nearest", "linear"})
-        for (const char* wrap : {"repeat", "mirrored_repeat", "clamp_to_edge", "clamp_to_border", "mirror_clamp_to_edge"})
-          for (int fn = 0; fn <= 10; ++fn)
-            if (fn != 9 || std::string(wrap) == "repeat") cases.push_back(three_d_case(format, min, mag, wrap, fn));
+          for (int fn = 0; fn <= 10; ++fn) {
+            if (fn == 9 && std::string(wrap) != "repeat") continue;
+            cases.push_back(one_d_case(false, format, min, mag, wrap, fn));
+            if (fn < 10) cases.push_back(one_d_case(true, format, min, mag, wrap, fn));
+            cases.push_back(three_d_case(format, min, mag, wrap, fn));
+          }
   for (const auto& [file, format] : std::vector<std::pair<std::string, std::string>>{
            {"noise_24x10.png", "GL_RGBA8"}, {"noise_64x64.png", "GL_RGBA8"}, {"noise_64x64.exr", "GL_RGBA32F"},
            {"noise_24x10.png", "GL_RGBA32F"}, {"noise_64x64.png", "GL_SRGB8_ALPHA8"}})
