@@ -3,8 +3,6 @@
 #include <epoxy/gl.h>
 
 #include "glref/gl_error.h"
-#include <algorithm>
-
 #include "render/buffer_load.h"
 #include "render/texture_load.h"
 
@@ -199,17 +197,17 @@ GlTextures::GlTextures(const Scene& scene, const ShaderSettings& shaders) : shad
     targets_[k] = target;
     glBindTexture(target, ids_[k]);
     if (tex.target == texture::Target::kBuffer) {
-      // The buffer object as the application made it, and the range the scene names.
-      const std::vector<draw::Buffer> buffers = load_buffers(scene);
-      const auto source = std::find_if(buffers.begin(), buffers.end(), [&](const draw::Buffer& b) { return b.name == t.buffer; });
+      // The buffer object as the application made it (load_texture checked the name and range), and
+      // the range the scene names.
+      const draw::Buffer source = load_buffer(scene.source, find_buffer(scene, t.buffer, t.buffer));
       GLuint buffer = 0;
       glGenBuffers(1, &buffer);
       buffers_.push_back(buffer);
       glBindBuffer(GL_TEXTURE_BUFFER, buffer);
-      glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(source->bytes.size()), source->bytes.data(), GL_STATIC_DRAW);
+      glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(source.bytes.size()), source.bytes.data(), GL_STATIC_DRAW);
       glBindBuffer(GL_TEXTURE_BUFFER, 0);
       glTexBufferRange(GL_TEXTURE_BUFFER, f.internal, buffer, GLintptr(t.buffer_offset),
-                       GLsizeiptr(t.buffer_size.value_or(source->bytes.size() - t.buffer_offset)));
+                       GLsizeiptr(t.buffer_size.value_or(source.bytes.size() - t.buffer_offset)));
       continue;
     }
     // glTexStorage*: the levels given, or every level down to 1 (x 1) for glGenerateMipmap.

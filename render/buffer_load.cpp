@@ -8,6 +8,15 @@
 
 namespace tessref {
 
+const BufferSetting& find_buffer(const Scene& scene, const std::string& name, const std::string& key) {
+  std::string names;
+  for (const BufferSetting& b : scene.buffers) {
+    if (b.name == name) return b;
+    names += (names.empty() ? "" : ", ") + b.name;
+  }
+  throw InputError(key + ": no buffer named \"" + name + "\" (buffers: " + (names.empty() ? "none" : names) + ")");
+}
+
 draw::Buffer load_buffer(const std::string& source, const BufferSetting& b) {
   draw::Buffer buffer{b.name, b.data};
   if (b.file.empty()) return buffer;

@@ -7,6 +7,9 @@
 
 namespace tessref {
 
+// The scene's buffer called `name`. InputError naming `key` (the key that gave the name) and the
+// buffers there are when it has none.
+const BufferSetting& find_buffer(const Scene& scene, const std::string& name, const std::string& key);
 // One buffer's bytes. InputError naming `source`: buffers.NAME.file when it cannot be read.
 draw::Buffer load_buffer(const std::string& source, const BufferSetting& b);
 // Every buffer of the scene, in its order.

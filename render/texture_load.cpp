@@ -159,15 +159,7 @@ texture::Level level_of_layers(texture::TexelFormat f, std::vector<ImageTexels> 
 // A buffer texture's one image (GL 4.6 8.9): the whole texels of its range, at most
 // GL_MAX_TEXTURE_BUFFER_SIZE of them.
 texture::Level buffer_texels(const TextureSetting& t, texture::TexelFormat f, const Scene& scene, const std::string& key) {
-  const BufferSetting* setting = nullptr;
-  std::string names;
-  for (const BufferSetting& b : scene.buffers) {
-    if (b.name == t.buffer) setting = &b;
-    names += (names.empty() ? "" : ", ") + b.name;
-  }
-  if (!setting)
-    throw InputError(key + ".buffer: no buffer named \"" + t.buffer + "\" (buffers: " + (names.empty() ? "none" : names) + ")");
-  const draw::Buffer buffer = load_buffer(scene.source, *setting);
+  const draw::Buffer buffer = load_buffer(scene.source, find_buffer(scene, t.buffer, key + ".buffer"));
   const std::size_t bytes = buffer.bytes.size();
   const std::string range = "buffers." + t.buffer + " has " + std::to_string(bytes) + " bytes";
   if (t.buffer_offset >= bytes)

@@ -307,7 +307,7 @@ void Runner::texture(const XIns& x) {
     const texture::Texture* t = bound(l);
     return t && t->target == op.target ? *t : kUnbound;
   };
-  // Coordinates within a layer (1 or 2), and where an array's layer coordinate is.
+  // Coordinates within a layer (1 to 3); an array's layer coordinate comes after them.
   const std::uint32_t dims = std::uint32_t(texture::dimensions(op.target));
   const bool arrayed = texture::is_array(op.target);
   auto irow = [&](std::uint32_t r, std::uint32_t c, int l) { return std::int32_t(row<std::uint32_t>(r, c)[l]); };

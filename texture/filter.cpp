@@ -213,8 +213,14 @@ void texelf(const LevelSlice& l, const std::array<float, 4>& border, i32 i, i32 
   for (int c = 0; c < 4; ++c) out[c] = p[c];
 }
 
-}  // namespace
-
+// Along one axis of `size` texels (a 3D texture's r): the texels a lookup reads, -1 for the
+// border colour, and the second one's weight. GL_NEAREST reads k0 alone; GL_LINEAR in float gives
+// `weight`, on the 8-bit path `weight8` (in 256ths), as for s and t.
+struct AxisTexels {
+  i32 k0 = 0, k1 = 0;
+  float weight = 0.0f;
+  i32 weight8 = 0;
+};
 AxisTexels axis_texels(float c, int size, int offset, Wrap wrap, bool pot, bool linear, bool unorm8) {
   AxisTexels a;
   if (!linear) {
@@ -228,6 +234,8 @@ AxisTexels axis_texels(float c, int size, int offset, Wrap wrap, bool pot, bool 
   }
   return a;
 }
+
+}  // namespace
 
 void filter_unorm8(TexelFormat format, const LevelSlice& level, const Axes& axes, bool linear, float s, float t,
                    int offset_s, int offset_t, std::uint8_t out[4]) {
@@ -322,6 +330,43 @@ void gather_float(const LevelSlice& level, const Axes& axes, const std::array<fl
     texelf(level, border, corners[k][0], corners[k][1], texel);
     out[k] = compare ? (passes(*compare, texel[0]) ? 1.0f : 0.0f) : texel[channel];
   }
+}
+
+void filter_level_unorm8(TexelFormat format, bool three_d, const Level& level, const Axes& axes, bool linear,
+                         const Coords& at, std::uint8_t out[4]) {
+  if (!three_d) {
+    filter_unorm8(format, level.slice(at.layer), axes, linear, at.s, at.t, at.offset_s, at.offset_t, out);
+    return;
+  }
+  const AxisTexels r = axis_texels(at.r, level.layers, at.offset_r, axes.wrap[2], axes.pot[2], linear, true);
+  filter_unorm8(format, level.slice(r.k0), axes, linear, at.s, at.t, at.offset_s, at.offset_t, out);
+  if (!linear) return;
+  std::uint8_t second[4];
+  filter_unorm8(format, level.slice(r.k1), axes, linear, at.s, at.t, at.offset_s, at.offset_t, second);
+  for (int c = 0; c < 4; ++c) out[c] = fixed::unorm8_lerp(r.weight8, out[c], second[c]);
+}
+
+void filter_level_float(bool three_d, const Level& level, const Axes& axes, const std::array<float, 4>& border,
+                        FloatFilter filter, const Coords& at, const DepthCompare* compare, float out[4]) {
+  if (!three_d) {
+    filter_float(level.slice(at.layer), axes, border, filter, at.s, at.t, at.offset_s, at.offset_t, compare, out);
+    return;
+  }
+  const bool linear = filter != FloatFilter::Nearest;
+  AxisTexels r = axis_texels(at.r, level.layers, at.offset_r, axes.wrap[2], axes.pot[2], linear, false);
+  if (filter == FloatFilter::NearestByWeights) r.weight = r.weight > 0.5f ? 1.0f : 0.0f;
+  auto slice = [&](i32 k, float texel[4]) {
+    if (k < 0) {
+      for (int c = 0; c < 4; ++c) texel[c] = border[std::size_t(c)];
+      return;
+    }
+    filter_float(level.slice(k), axes, border, filter, at.s, at.t, at.offset_s, at.offset_t, compare, texel);
+  };
+  slice(r.k0, out);
+  if (!linear) return;
+  float second[4];
+  slice(r.k1, second);
+  for (int c = 0; c < 4; ++c) out[c] = lerp(r.weight, out[c], second[c]);
 }
 
 std::array<float, 4> border_color(const Texture& t) {

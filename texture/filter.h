@@ -12,7 +12,7 @@ namespace tessref::texture {
 // The wrap mode of s, t and r, and whether level 0's width, height and depth are powers of two
 // (llvmpipe wraps REPEAT with a mask then, and through the coordinate's fraction otherwise). A 1D
 // texture (dims 1) is filtered along s alone: its one row, t and its wrap unused; the filters
-// below take one slice, and a 3D texture's r is resolved by axis_texels.
+// below take one slice, and filter_level_* resolve a 3D texture's r.
 struct Axes {
   std::array<Wrap, 3> wrap;
   std::array<bool, 3> pot;
@@ -20,16 +20,13 @@ struct Axes {
   bool normalized = true;  // false: a rectangle texture's coordinates, in texels (clamp wraps only)
 };
 
-// Along one axis of `size` texels (a 3D texture's r): the texels a lookup reads, -1 for the
-// border colour, and the second one's weight. GL_NEAREST reads k0 alone (weight 0); GL_LINEAR in
-// float gives `weight`, on the 8-bit path `weight8` (in 256ths), as the filters below compute
-// them for s and t.
-struct AxisTexels {
-  std::int32_t k0 = 0, k1 = 0;
-  float weight = 0.0f;
-  std::int32_t weight8 = 0;
+// Where a lookup samples: s, t and r (those the target has; already divided for Proj forms), the
+// layer of an array (array_layer; 0 otherwise), and textureOffset's texel offsets.
+struct Coords {
+  float s = 0.0f, t = 0.0f, r = 0.0f;
+  int layer = 0;
+  int offset_s = 0, offset_t = 0, offset_r = 0;
 };
-AxisTexels axis_texels(float c, int size, int offset, Wrap wrap, bool pot, bool linear, bool unorm8);
 
 // Formats of 8-bit normalized channels, filtered in 8-bit fixed point (repeat and clamp-to-edge
 // only): the channels, four per texel (missing green and blue 0, missing alpha 255).
@@ -62,6 +59,15 @@ void filter_float(const LevelSlice& level, const Axes& axes, const std::array<fl
 // (i1, j1), (i1, j0), (i0, j0): channel `channel` of each, or with a comparison its 1 or 0.
 void gather_float(const LevelSlice& level, const Axes& axes, const std::array<float, 4>& border, float s, float t,
                   int offset_s, int offset_t, int channel, const DepthCompare* compare, float out[4]);
+
+// One level filtered at `at`: its layer at.layer (0 unless an array) as above, or for a 3D texture
+// (three_d) the two slices nearest r, each filtered so, interpolated by r's weight
+// (lp_build_lerp_3d: s, then t, then r); a slice outside a GL_CLAMP_TO_BORDER texture reads
+// `border`. On the 8-bit path, r's wrap must be repeat or clamp-to-edge too.
+void filter_level_unorm8(TexelFormat format, bool three_d, const Level& level, const Axes& axes, bool linear,
+                         const Coords& at, std::uint8_t out[4]);
+void filter_level_float(bool three_d, const Level& level, const Axes& axes, const std::array<float, 4>& border,
+                        FloatFilter filter, const Coords& at, const DepthCompare* compare, float out[4]);
 
 // GL_TEXTURE_BORDER_COLOR as the sampler uses it: clamped to [0, 1] for normalized formats.
 std::array<float, 4> border_color(const Texture& t);

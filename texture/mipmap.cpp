@@ -9,7 +9,6 @@
 #include "common/fixed_point.h"
 #include "common/srgb.h"
 #include "texture/filter.h"
-#include "texture/sampler_ops.h"
 
 namespace tessref::texture {
 namespace {
@@ -63,33 +62,20 @@ Level downsample(TexelFormat format, Target target, const Level& src, int w, int
   const int layers = three_d ? std::max(1, src.layers / 2) : src.layers;
   std::vector<float> rgba(std::size_t(w) * std::size_t(h) * std::size_t(layers) * 4);
   for (int layer = 0; layer < layers; ++layer) {
-    // The source slices and the second one's weight (an array: the layer itself).
-    const AxisTexels r = three_d ? axis_texels((float(layer) + 0.5f) / float(layers), src.layers, 0, Wrap::ClampToEdge,
-                                               false, true, unorm8)
-                                 : AxisTexels{layer, layer, 0.0f, 0};
-    const LevelSlice from0 = src.slice(r.k0), from1 = src.slice(r.k1);
     float* to = rgba.data() + std::size_t(layer) * std::size_t(w) * std::size_t(h) * 4;
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) {
-        const float s = (float(x) + 0.5f) / float(w), t = (float(y) + 0.5f) / float(h);
+        // An array's layer is itself; a 3D texture's new slice samples r at its centre.
+        const Coords at{(float(x) + 0.5f) / float(w), (float(y) + 0.5f) / float(h),
+                        three_d ? (float(layer) + 0.5f) / float(layers) : 0.0f, three_d ? 0 : layer};
         float* out = to + (std::size_t(y) * std::size_t(w) + std::size_t(x)) * 4;
         if (unorm8) {
           std::uint8_t texel[4];
-          filter_unorm8(format, from0, clamp, true, s, t, 0, 0, texel);
-          if (three_d) {
-            std::uint8_t second[4];
-            filter_unorm8(format, from1, clamp, true, s, t, 0, 0, second);
-            for (int c = 0; c < 4; ++c) texel[c] = fixed::unorm8_lerp(r.weight8, texel[c], second[c]);
-          }
+          filter_level_unorm8(format, three_d, src, clamp, true, at, texel);
           for (int c = 0; c < 4; ++c) out[c] = fixed::unorm8_to_float(texel[c]);  // exact k / 255: encodes to k
           continue;
         }
-        filter_float(from0, clamp, no_border, FloatFilter::Linear, s, t, 0, 0, nullptr, out);
-        if (three_d) {
-          float second[4];
-          filter_float(from1, clamp, no_border, FloatFilter::Linear, s, t, 0, 0, nullptr, second);
-          for (int c = 0; c < 4; ++c) out[c] = ops::lerp(r.weight, out[c], second[c]);
-        }
+        filter_level_float(three_d, src, clamp, no_border, FloatFilter::Linear, at, nullptr, out);
         for (int c = 0; c < 4; ++c) out[c] = render_target_value(type, c, out[c]);
       }
   }

@@ -235,46 +235,6 @@ Axes axes_of(const Texture& t) {
           dimensions(t.target), t.target != Target::kRectangle};
 }
 
-// A level filtered at `at` on the 8-bit path: one slice, or a 3D texture's slices along r
-// interpolated (lp_build_lerp_3d: each slice's 2D result, then r).
-void filter_level8(const Texture& t, const Level& level, const Axes& axes, bool linear, const Coords& at,
-                   std::uint8_t out[4]) {
-  if (t.target != Target::k3D) {
-    filter_unorm8(t.format, level.slice(at.layer), axes, linear, at.s, at.t, at.offset_s, at.offset_t, out);
-    return;
-  }
-  const AxisTexels r = axis_texels(at.r, level.layers, at.offset_r, axes.wrap[2], axes.pot[2], linear, true);
-  filter_unorm8(t.format, level.slice(r.k0), axes, linear, at.s, at.t, at.offset_s, at.offset_t, out);
-  if (!linear) return;
-  std::uint8_t second[4];
-  filter_unorm8(t.format, level.slice(r.k1), axes, linear, at.s, at.t, at.offset_s, at.offset_t, second);
-  for (int c = 0; c < 4; ++c) out[c] = fixed::unorm8_lerp(r.weight8, out[c], second[c]);
-}
-
-// The same in float: a slice at r outside a GL_CLAMP_TO_BORDER texture reads the border colour.
-void filter_level_float(const Texture& t, const Level& level, const Axes& axes, const std::array<float, 4>& border,
-                        FloatFilter filter, const Coords& at, const DepthCompare* cmp, float out[4]) {
-  if (t.target != Target::k3D) {
-    filter_float(level.slice(at.layer), axes, border, filter, at.s, at.t, at.offset_s, at.offset_t, cmp, out);
-    return;
-  }
-  const bool linear = filter != FloatFilter::Nearest;
-  AxisTexels r = axis_texels(at.r, level.layers, at.offset_r, axes.wrap[2], axes.pot[2], linear, false);
-  if (filter == FloatFilter::NearestByWeights) r.weight = r.weight > 0.5f ? 1.0f : 0.0f;
-  auto slice = [&](std::int32_t k, float texel[4]) {
-    if (k < 0) {
-      for (int c = 0; c < 4; ++c) texel[c] = border[std::size_t(c)];
-      return;
-    }
-    filter_float(level.slice(k), axes, border, filter, at.s, at.t, at.offset_s, at.offset_t, cmp, texel);
-  };
-  slice(r.k0, out);
-  if (!linear) return;
-  float second[4];
-  slice(r.k1, second);
-  for (int c = 0; c < 4; ++c) out[c] = lerp(r.weight, out[c], second[c]);
-}
-
 }  // namespace
 
 bool linear_in_vector(const Texture& t, const LodInput& lod) {
@@ -300,12 +260,12 @@ void sample(const Texture& t, const Coords& at, const LodInput& lod, const float
   float texel[4];
   if (fixed_point_path(t, lod)) {
     std::uint8_t r0[4];
-    filter_level8(t, l0, axes, c.linear, at, r0);
+    filter_level_unorm8(t.format, t.target == Target::k3D, l0, axes, c.linear, at, r0);
     // The levels' weight in 8 bits, truncated (lp_build_sample_mipmap's lod_fpart.fixed16).
     const i32 w = fptosi(c.fpart * 256.0f);
     if (w > 0) {
       std::uint8_t r1[4];
-      filter_level8(t, t.levels[std::size_t(c.level1)], axes, c.linear, at, r1);
+      filter_level_unorm8(t.format, t.target == Target::k3D, t.levels[std::size_t(c.level1)], axes, c.linear, at, r1);
       for (int k = 0; k < 4; ++k) r0[k] = fixed::unorm8_lerp(w, r0[k], r1[k]);
     }
     for (int k = 0; k < 4; ++k) texel[k] = fixed::unorm8_texel_to_float(r0[k]);
@@ -315,10 +275,10 @@ void sample(const Texture& t, const Coords& at, const LodInput& lod, const float
                                : vector_linear && linear_image(t.sampler.min_filter) != linear_image(t.sampler.mag_filter)
                                    ? FloatFilter::NearestByWeights
                                    : FloatFilter::Nearest;
-    filter_level_float(t, l0, axes, border, filter, at, cmp, texel);
+    filter_level_float(t.target == Target::k3D, l0, axes, border, filter, at, cmp, texel);
     if (c.fpart > 0.0f) {
       float t1[4];
-      filter_level_float(t, t.levels[std::size_t(c.level1)], axes, border, filter, at, cmp, t1);
+      filter_level_float(t.target == Target::k3D, t.levels[std::size_t(c.level1)], axes, border, filter, at, cmp, t1);
       for (int k = 0; k < 4; ++k) texel[k] = lerp(c.fpart, texel[k], t1[k]);
     }
   }

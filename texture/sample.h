@@ -5,6 +5,7 @@
 // implementation (the LOD's log2 and its rounding, filter weight precision, how coordinates
 // become texel indices), this is llvmpipe's arithmetic operation for operation, as read from Mesa
 // 22.3.6's gallivm sampler and measured bit for bit (docs/textures.md lists each rule).
+#include "texture/filter.h"
 #include "texture/texture.h"
 
 namespace tessref::texture {
@@ -30,14 +31,6 @@ struct LodInput {
 // exactly (llvmpipe rounds ties to even instead: docs/textures.md); NaN reads layer 0. 0 for a
 // texture that is not an array.
 int array_layer(const Texture& t, float r);
-
-// Where a lookup samples: s, t and r (those the target has; already divided for Proj forms), the
-// layer of an array (array_layer; 0 otherwise), and textureOffset's texel offsets.
-struct Coords {
-  float s = 0.0f, t = 0.0f, r = 0.0f;
-  int layer = 0;
-  int offset_s = 0, offset_t = 0, offset_r = 0;
-};
 
 // texture(), textureLod(), textureGrad(), the Offset and Proj forms at `at`: the filtered,
 // swizzled texel. `dref`: a shadow sampler's reference depth (already divided for
