@@ -579,6 +579,13 @@ TEST(TextureScene, RectangleTexturesAreCheckedByKey) {
                "other than 0: GL_INVALID_OPERATION)");
   expect_error(rect(R"(, "sampler": {"min_filter": "nearest"})"),
                "draws.0.shaders.textures.u_tex.sampler: on a GL_TEXTURE_RECTANGLE, tessref takes a sampler object");
+  // GL_TEXTURE_MAX_ANISOTROPY: 1 is GL's isotropic default; above it refused by name, below it GL's error.
+  EXPECT_EQ(error_of(rect(R"(, "max_anisotropy": 1)")), "no error");
+  expect_error(rect(R"(, "max_anisotropy": 16)"),
+               "draws.0.shaders.textures.u_tex.max_anisotropy: tessref does not filter anisotropically "
+               "(GL_TEXTURE_MAX_ANISOTROPY 16); llvmpipe does");
+  expect_error(rect(R"(, "sampler": {"min_filter": "linear", "wrap": "clamp_to_edge", "max_anisotropy": 0.5})"),
+               "draws.0.shaders.textures.u_tex.sampler.max_anisotropy: GL_TEXTURE_MAX_ANISOTROPY below 1 is GL_INVALID_VALUE");
   // Its default wrap is GL's clamp_to_edge, not the scene's repeat.
   const Scene scene = load_scene(kSweep, {"draws.0.shaders.textures.u_tex={\"target\": \"GL_TEXTURE_RECTANGLE\", "
                                           "\"generate_mipmap\": false, \"min_filter\": \"linear\", \"wrap\": null}"});
