@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <utility>
+#include <vector>
 
 namespace tessref {
 namespace {
@@ -100,12 +101,18 @@ std::string buffer_texture_formats() {
   return out;
 }
 
+// The keys read_sampler_state reads (glTexParameter's and glSamplerParameter's state).
+constexpr std::array<const char*, 14> kSamplerStateKeys{
+    "filter", "min_filter", "mag_filter", "wrap", "wrap_s", "wrap_t", "wrap_r", "border_color", "min_lod", "max_lod",
+    "lod_bias", "compare_mode", "compare_func", "max_anisotropy"};
+
 // GL_TEXTURE_BUFFER: a range of one of the scene's buffers, read as texels of a format of table
 // 8.18 (glTexBufferRange). It has no images, levels or sampler state.
 void read_buffer_texture(JsonObject& o, TextureSetting& t) {
-  for (const char* key : {"path", "levels", "layers", "raw_size", "generate_mipmap", "filter", "min_filter", "mag_filter",
-                          "wrap", "wrap_s", "wrap_t", "wrap_r", "border_color", "min_lod", "max_lod", "lod_bias", "compare_mode",
-                          "compare_func", "sampler", "base_level", "max_level", "swizzle"})
+  std::vector<const char*> keys{"path", "levels", "layers", "raw_size", "generate_mipmap", "sampler", "base_level", "max_level",
+                                 "swizzle"};
+  keys.insert(keys.end(), kSamplerStateKeys.begin(), kSamplerStateKeys.end());
+  for (const char* key : keys)
     if (o.has(key))
       o.fail(key, "a GL_TEXTURE_BUFFER texture has no images, levels or sampler state (GL 4.6 8.9): its texels are "
                   "the bytes of `buffer` from `offset`, read by texelFetch");
