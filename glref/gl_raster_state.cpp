@@ -64,6 +64,7 @@ void apply_raster_state(const RasterState& s, int width, int height) {
   glBlendColor(s.blend.constant.r, s.blend.constant.g, s.blend.constant.b, s.blend.constant.a);
   glColorMask(s.color_mask.r, s.color_mask.g, s.color_mask.b, s.color_mask.a);
   enable(GL_FRAMEBUFFER_SRGB, s.framebuffer_srgb);
+  enable(GL_TEXTURE_CUBE_MAP_SEAMLESS, s.cube_map_seamless);
   enable(GL_DEPTH_CLAMP, s.depth_clamp);
 }
 

@@ -176,6 +176,8 @@ GLenum gl_target(texture::Target t) {
     case texture::Target::kBuffer: return GL_TEXTURE_BUFFER;
     case texture::Target::k3D: return GL_TEXTURE_3D;
     case texture::Target::kRectangle: return GL_TEXTURE_RECTANGLE;
+    case texture::Target::kCube: return GL_TEXTURE_CUBE_MAP;
+    case texture::Target::kCubeArray: return GL_TEXTURE_CUBE_MAP_ARRAY;
   }
   return GL_TEXTURE_2D;
 }
@@ -218,7 +220,7 @@ GlTextures::GlTextures(const Scene& scene, const ShaderSettings& shaders) : shad
     switch (tex.target) {
       case texture::Target::k1D: glTexStorage1D(target, levels, f.internal, level0.width); break;
       case texture::Target::k1DArray: glTexStorage2D(target, levels, f.internal, level0.width, level0.layers); break;
-      case texture::Target::k2DArray: case texture::Target::k3D:
+      case texture::Target::k2DArray: case texture::Target::k3D: case texture::Target::kCubeArray:
         glTexStorage3D(target, levels, f.internal, level0.width, level0.height, level0.layers);
         break;
       default: glTexStorage2D(target, levels, f.internal, level0.width, level0.height); break;
@@ -232,8 +234,13 @@ GlTextures::GlTextures(const Scene& scene, const ShaderSettings& shaders) : shad
         case texture::Target::k1DArray:  // the layers are the image's rows
           glTexSubImage2D(target, l, 0, 0, level.width, level.layers, f.format, f.type, bytes);
           break;
-        case texture::Target::k2DArray: case texture::Target::k3D:
+        case texture::Target::k2DArray: case texture::Target::k3D: case texture::Target::kCubeArray:
           glTexSubImage3D(target, l, 0, 0, 0, level.width, level.height, level.layers, f.format, f.type, bytes);
+          break;
+        case texture::Target::kCube:  // face by face, +X to -Z (GL_TEXTURE_CUBE_MAP_POSITIVE_X + face)
+          for (int face = 0; face < 6; ++face)
+            glTexSubImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), l, 0, 0, level.width, level.height, f.format,
+                            f.type, level.stored.data() + std::size_t(face) * (level.stored.size() / 6));
           break;
         default: glTexSubImage2D(target, l, 0, 0, level.width, level.height, f.format, f.type, bytes); break;
       }

@@ -90,6 +90,9 @@ struct RasterState {
   // glEnable(GL_DEPTH_CLAMP) (GL 4.6 13.7.1): the near and far planes do not clip; the window z of
   // each fragment is clamped to the depth range instead.
   bool depth_clamp = false;
+  // glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS) (GL 4.6 8.14.2): cube maps filtered across face edges.
+  // Texture state rather than the rasterizer's, kept with the draw's other capabilities.
+  bool cube_map_seamless = false;
   // glViewport(x, y, width, height); none: the whole framebuffer. glDepthRange(near, far), kept
   // as GL keeps it (a double).
   std::optional<ViewportRect> viewport;

@@ -203,6 +203,7 @@ void SceneDraws::for_each_call(std::size_t end, const std::function<void(const P
     add_bindings(scene_, d.storage_buffers, buffers_, storage_bindings);
     bind_blocks(scene_, d, uniform_bindings, false, program);
     bind_blocks(scene_, d, storage_bindings, true, program);
+    program.set_cube_map_seamless(d.raster.cube_map_seamless);
     const std::vector<draw::VertexArray> arrays = resolve_arrays(scene_, d, program);
     for (std::size_t k = 0; k < d.calls.size(); ++k) {
       const draw::DrawCall& c = d.calls[k];

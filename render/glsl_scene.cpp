@@ -176,6 +176,8 @@ std::optional<texture::Target> sampler_target(const std::string& dims) {
   if (dims == "sampler3D") return texture::Target::k3D;
   if (dims == "sampler2DRect") return texture::Target::kRectangle;
   if (dims == "samplerBuffer") return texture::Target::kBuffer;
+  if (dims == "samplerCube") return texture::Target::kCube;
+  if (dims == "samplerCubeArray") return texture::Target::kCubeArray;
   return std::nullopt;
 }
 
@@ -196,7 +198,8 @@ void bind_textures(const Scene& scene, const ShaderSettings& shaders, glsl::Glsl
     const std::optional<texture::Target> target = sampler_target(shadow ? dims.substr(0, dims.size() - 6) : dims);
     if (!target)
       throw InputError(key + ": the uniform is " + with_article(type) + ", and tessref's textures are GL_TEXTURE_1D, "
-                       "GL_TEXTURE_2D, their arrays, GL_TEXTURE_3D, GL_TEXTURE_RECTANGLE and GL_TEXTURE_BUFFER; GL draws "
+                       "GL_TEXTURE_2D, GL_TEXTURE_CUBE_MAP, their arrays, GL_TEXTURE_3D, GL_TEXTURE_RECTANGLE and "
+                       "GL_TEXTURE_BUFFER; GL draws "
                        "nothing from a sampler whose unit holds a texture of another target");
     auto tex = std::make_unique<texture::Texture>(load_texture(t, key, scene));
     if (tex->target != *target)

@@ -201,6 +201,10 @@ texture::Texture load_texture(const TextureSetting& t, const std::string& key, c
                          std::to_string(layers[k].height) + ", and layer 0 is " + std::to_string(layers[0].width) + "x" +
                          std::to_string(layers[0].height) + " (an array's layers are one size)");
     }
+    // GL 4.6 8.5.3: GL_INVALID_VALUE for a cube map whose width is not its height.
+    if (texture::is_cube(t.target) && layers[0].width != layers[0].height)
+      throw InputError(key + ".layers.0: " + t.layers[0].string() + " is " + std::to_string(layers[0].width) + "x" +
+                       std::to_string(layers[0].height) + ", and a cube map's faces are square");
     tex.levels.push_back(level_of_layers(tex.format, std::move(layers)));
   }
   const bool one_d = texture::dimensions(t.target) == 1, rows_are_layers = t.target == texture::Target::k1DArray;

@@ -81,10 +81,10 @@ BlendState read_blend(JsonObject& b) {
 RasterState read_raster_state(JsonObject& o) {
   RasterState r = gl_initial_state();
   bool cull = false, scissor = false, blend = false;
-  o.describe("enable", "an array of GL capabilities glEnable turns on: GL_DEPTH_TEST, GL_CULL_FACE, GL_SCISSOR_TEST, GL_BLEND, GL_FRAMEBUFFER_SRGB, GL_DEPTH_CLAMP");
+  o.describe("enable", "an array of GL capabilities glEnable turns on: GL_DEPTH_TEST, GL_CULL_FACE, GL_SCISSOR_TEST, GL_BLEND, GL_FRAMEBUFFER_SRGB, GL_DEPTH_CLAMP, GL_TEXTURE_CUBE_MAP_SEAMLESS");
   if (o.has("enable")) {
     const json& e = o.value("enable");
-    if (!e.is_array()) o.fail("enable", "expected an array of GL_DEPTH_TEST, GL_CULL_FACE, GL_SCISSOR_TEST, GL_BLEND, GL_FRAMEBUFFER_SRGB, GL_DEPTH_CLAMP, got " + describe_json(e));
+    if (!e.is_array()) o.fail("enable", "expected an array of GL_DEPTH_TEST, GL_CULL_FACE, GL_SCISSOR_TEST, GL_BLEND, GL_FRAMEBUFFER_SRGB, GL_DEPTH_CLAMP, GL_TEXTURE_CUBE_MAP_SEAMLESS, got " + describe_json(e));
     for (const json& cap : e) {
       if (cap == "GL_DEPTH_TEST") r.depth_test = true;
       else if (cap == "GL_CULL_FACE") cull = true;
@@ -92,9 +92,10 @@ RasterState read_raster_state(JsonObject& o) {
       else if (cap == "GL_BLEND") blend = true;
       else if (cap == "GL_FRAMEBUFFER_SRGB") r.framebuffer_srgb = true;
       else if (cap == "GL_DEPTH_CLAMP") r.depth_clamp = true;
+      else if (cap == "GL_TEXTURE_CUBE_MAP_SEAMLESS") r.cube_map_seamless = true;
       else if (cap == "GL_PRIMITIVE_RESTART" || cap == "GL_PRIMITIVE_RESTART_FIXED_INDEX")
         o.fail("enable", "primitive restart is the key primitive_restart (with its index)");
-      else o.fail("enable", "expected GL_DEPTH_TEST, GL_CULL_FACE, GL_SCISSOR_TEST, GL_BLEND, GL_FRAMEBUFFER_SRGB or GL_DEPTH_CLAMP, got " + describe_json(cap));
+      else o.fail("enable", "expected GL_DEPTH_TEST, GL_CULL_FACE, GL_SCISSOR_TEST, GL_BLEND, GL_FRAMEBUFFER_SRGB, GL_DEPTH_CLAMP or GL_TEXTURE_CUBE_MAP_SEAMLESS, got " + describe_json(cap));
     }
   }
   o.describe("depth_func", "glDepthFunc: GL_LESS (default), GL_LEQUAL, GL_EQUAL, GL_GREATER, GL_GEQUAL, GL_NOTEQUAL, GL_ALWAYS, GL_NEVER");

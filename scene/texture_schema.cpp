@@ -60,7 +60,7 @@ Enum choice(JsonObject& o, const std::string& key, const std::array<std::pair<co
   o.fail(key, "expected one of " + names(table, count) + ", got \"" + s + "\"");
 }
 
-constexpr std::array<std::pair<const char*, texture::Target>, 7> kTargets{{
+constexpr std::array<std::pair<const char*, texture::Target>, 9> kTargets{{
     {"GL_TEXTURE_1D", texture::Target::k1D},
     {"GL_TEXTURE_2D", texture::Target::k2D},
     {"GL_TEXTURE_3D", texture::Target::k3D},
@@ -68,6 +68,8 @@ constexpr std::array<std::pair<const char*, texture::Target>, 7> kTargets{{
     {"GL_TEXTURE_1D_ARRAY", texture::Target::k1DArray},
     {"GL_TEXTURE_2D_ARRAY", texture::Target::k2DArray},
     {"GL_TEXTURE_BUFFER", texture::Target::kBuffer},
+    {"GL_TEXTURE_CUBE_MAP", texture::Target::kCube},
+    {"GL_TEXTURE_CUBE_MAP_ARRAY", texture::Target::kCubeArray},
 }};
 
 void read_internalformat(JsonObject& o, TextureSetting& t) {
@@ -243,18 +245,21 @@ TextureSetting read_texture_setting(const std::string& name, const nlohmann::jso
     read_buffer_texture(o, t);
     return t;
   }
-  // Targets whose level 0 is several images: a 2D array's layers, a 3D texture's slices.
-  const bool stacked = t.target == texture::Target::k2DArray || t.target == texture::Target::k3D;
+  // Targets whose level 0 is several images: a 2D array's layers, a 3D texture's slices, a cube
+  // map's faces.
+  const bool cube = texture::is_cube(t.target), cube_array = t.target == texture::Target::kCubeArray;
+  const bool stacked = t.target == texture::Target::k2DArray || t.target == texture::Target::k3D || cube;
   const bool three_d = t.target == texture::Target::k3D;
   const bool array = texture::is_array(t.target), one_d = texture::dimensions(t.target) == 1;
   const bool has_path = o.has("path"), has_levels = o.has("levels"), has_layers = o.has("layers");
   o.describe("path", "an image file: level 0");
   o.describe("levels", "an array of image files: levels 0, 1, ... (glTexSubImage* per level)");
   o.describe("layers", "a GL_TEXTURE_2D_ARRAY's (or GL_TEXTURE_3D's) level 0: an array of image files, one per layer "
-                       "(depth slice)");
+                       "(depth slice); a GL_TEXTURE_CUBE_MAP's six faces, +X, -X, +Y, -Y, +Z, -Z (a "
+                       "GL_TEXTURE_CUBE_MAP_ARRAY's: six per cube)");
   if (has_layers && !stacked)
-    o.fail("layers", std::string("layers are a 2D array texture's (or a 3D texture's slices): give \"target\": "
-                                 "\"GL_TEXTURE_2D_ARRAY\" or \"GL_TEXTURE_3D\"") +
+    o.fail("layers", std::string("layers are a 2D array texture's (a 3D texture's slices, a cube map's faces): give "
+                                 "\"target\": \"GL_TEXTURE_2D_ARRAY\", \"GL_TEXTURE_3D\" or \"GL_TEXTURE_CUBE_MAP\"") +
                          (t.target == texture::Target::k1DArray ? " (a 1D array's layers are the rows of its path or levels images)" : ""));
   if (int(has_path) + int(has_levels) + int(has_layers) != 1)
     o.fail(has_path ? "levels" : "path", stacked ? std::string("give one of layers (level 0's ") + (three_d ? "slices" : "layers") +
@@ -273,7 +278,14 @@ TextureSetting read_texture_setting(const std::string& name, const nlohmann::jso
     }
     return out;
   };
-  if (has_layers) t.layers = files("layers", std::size_t(texture::kMaxArrayLayers), " (GL_MAX_ARRAY_TEXTURE_LAYERS)");
+  if (has_layers) {
+    t.layers = files("layers", std::size_t(texture::kMaxArrayLayers), " (GL_MAX_ARRAY_TEXTURE_LAYERS)");
+    // A cube map's faces in GL's order (GL 4.6 table 8.20's layer numbers); a cube map array's, six
+    // per cube (glTexStorage3D refuses a depth that is not a multiple of 6: GL_INVALID_VALUE).
+    if (cube && (cube_array ? t.layers.size() % 6 != 0 : t.layers.size() != 6))
+      o.fail("layers", std::string(cube_array ? "a GL_TEXTURE_CUBE_MAP_ARRAY's layers come six per cube" : "a GL_TEXTURE_CUBE_MAP has six faces") +
+                           " (+X, -X, +Y, -Y, +Z, -Z), and this gives " + std::to_string(t.layers.size()) + " image files");
+  }
   else if (has_path) t.levels.push_back(resolve(o.string("path")));
   else t.levels = files("levels", 16, "");
   read_internalformat(o, t);
@@ -291,7 +303,8 @@ TextureSetting read_texture_setting(const std::string& name, const nlohmann::jso
                 : "whole numbers from 1 to " + std::to_string(texture::kMaxTextureSize) + " (GL_MAX_TEXTURE_SIZE)" +
                       (array ? " and layers from 1 to " + std::to_string(texture::kMaxArrayLayers) + " (GL_MAX_ARRAY_TEXTURE_LAYERS)" : "");
     o.describe("raw_size", shape + ": the files are raw texel bytes of internalformat" +
-                               (array ? ", every layer of a level" : three_d ? ", every slice of a level" : "") + ", level 0 this size");
+                               (cube ? ", every face of a level" : array ? ", every layer of a level" : three_d ? ", every slice of a level" : "") +
+                               ", level 0 this size");
     const nlohmann::json& size = o.value("raw_size");
     if (has_layers) o.fail("raw_size", "raw bytes come in path or levels (every layer of a level in one file), not layers");
     bool ok = size.is_array() && size.size() == sides.size();
@@ -301,11 +314,22 @@ TextureSetting read_texture_setting(const std::string& name, const nlohmann::jso
     if (!ok) o.fail("raw_size", "expected " + shape + ", " + limits + ", got " + describe_json(size));
     if (!t.format) o.fail("raw_size", "raw texel bytes need the internalformat that lays them out");
     t.raw_size = std::array<int, 3>{size[0].get<int>(), one_d ? 1 : size[1].get<int>(),
-                                    array || three_d ? size[sides.size() - 1].get<int>() : 1};
+                                    array || three_d ? size[sides.size() - 1].get<int>() : cube ? 6 : 1};
+    const auto [width, height, layers] = *t.raw_size;
+    if (cube && width != height)
+      o.fail("raw_size", "a cube map's faces are square (glTexStorage refuses a width that is not the height: "
+                         "GL_INVALID_VALUE), got " + std::to_string(width) + "x" + std::to_string(height));
+    if (cube_array && layers % 6 != 0)
+      o.fail("raw_size", "a GL_TEXTURE_CUBE_MAP_ARRAY's layers come six per cube (glTexStorage3D: GL_INVALID_VALUE), got " +
+                             std::to_string(layers));
   }
   if (t.target == texture::Target::k2DArray && !has_layers && !t.raw_size)
     o.fail(has_path ? "path" : "levels", "a GL_TEXTURE_2D_ARRAY's image files are its layers: give layers (level 0's), "
                                          "or raw bytes of every layer with raw_size [width, height, layers]");
+  if (cube && !has_layers && !t.raw_size)
+    o.fail(has_path ? "path" : "levels", std::string("a ") + texture::gl_name(t.target) + "'s image files are its faces: give layers "
+                                         "(level 0's faces, +X, -X, +Y, -Y, +Z, -Z" + (cube_array ? ", six per cube" : "") +
+                                         "), or raw bytes of every face with raw_size");
   if (three_d && !has_layers && !t.raw_size)
     o.fail(has_path ? "path" : "levels", "a GL_TEXTURE_3D's image files are its depth slices: give layers (level 0's "
                                          "slices), or raw bytes of every slice with raw_size [width, height, depth]");

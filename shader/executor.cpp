@@ -307,8 +307,9 @@ void Runner::texture(const XIns& x) {
     const texture::Texture* t = bound(l);
     return t && t->target == op.target ? *t : kUnbound;
   };
-  // Coordinates within a layer (1 to 3); an array's layer coordinate comes after them.
-  const std::uint32_t dims = std::uint32_t(texture::dimensions(op.target));
+  // Coordinates within a layer (1 to 3; a cube map's direction); an array's layer coordinate comes after them.
+  const std::uint32_t dims = std::uint32_t(texture::lookup_dimensions(op.target));
+  const bool cube = texture::is_cube(op.target);
   const bool arrayed = texture::is_array(op.target);
   auto irow = [&](std::uint32_t r, std::uint32_t c, int l) { return std::int32_t(row<std::uint32_t>(r, c)[l]); };
   auto frow = [&](std::uint32_t r, std::uint32_t c, int l) { return row<float>(r, c)[l]; };
@@ -373,13 +374,14 @@ void Runner::texture(const XIns& x) {
         // lowers it (nir_lower_tex's tg4 offsets).
         for (int k = 0; k < 4; ++k) {
           float one[4];
-          texture::gather(tex(l), s[l], t[l], layer[l], irow(op.offsets, std::uint32_t(2 * k), l),
-                          irow(op.offsets, std::uint32_t(2 * k + 1), l), component, shadow ? &dref[l] : nullptr, one);
+          const texture::Coords at{s[l], t[l], r[l], layer[l], irow(op.offsets, std::uint32_t(2 * k), l),
+                                   irow(op.offsets, std::uint32_t(2 * k + 1), l)};
+          texture::gather(tex(l), at, component, shadow ? &dref[l] : nullptr, inv.seamless_cube_, one);
           texel[k] = one[3];
         }
       } else {
-        texture::gather(tex(l), s[l], t[l], layer[l], offset(0, l), offset(1, l), component, shadow ? &dref[l] : nullptr,
-                        texel);
+        const texture::Coords at{s[l], t[l], r[l], layer[l], offset(0, l), offset(1, l)};
+        texture::gather(tex(l), at, component, shadow ? &dref[l] : nullptr, inv.seamless_cube_, texel);
       }
       for (std::uint32_t c = 0; c < x.n; ++c) row<float>(x.dst, c)[l] = texel[c];
     }
@@ -388,9 +390,11 @@ void Runner::texture(const XIns& x) {
   // Each lane's LOD input: the explicit LOD or gradients; for an implicit LOD in a fragment shader
   // the quad's derivatives, from its top-left pixel (lane 4q, whose right and upper neighbours
   // are lanes 4q + 1 and 4q + 2), one LOD for the quad as llvmpipe computes it; elsewhere LOD 0
-  // plus the bias (GLSL 4.60 8.9: no implicit derivatives outside fragment shaders).
+  // plus the bias (GLSL 4.60 8.9: no implicit derivatives outside fragment shaders). A cube map
+  // with a mip filter or a bias takes each lane's own (fine) derivatives instead, as llvmpipe.
   auto lod_input = [&](int l) {
     texture::LodInput in;
+    in.cube_dir[0] = s[l], in.cube_dir[1] = t[l], in.cube_dir[2] = r[l];
     if (op.lod != kNone) {
       in.lod = frow(op.lod, 0, l);
     } else if (op.grad_x != kNone) {
@@ -403,17 +407,21 @@ void Runner::texture(const XIns& x) {
       in.dtdy = dims >= 2 ? frow(op.grad_y, 1, l) : 0.0f;
       in.drdy = dims == 3 ? frow(op.grad_y, 2, l) : 0.0f;
     } else if (p.fragment && (l | 3) < n) {
-      const int q = l & ~3;
-      in.from = texture::LodInput::From::Derivatives;
-      in.dsdx = s[q + 1] - s[q];
-      in.dtdx = t[q + 1] - t[q];
-      in.dsdy = s[q + 2] - s[q];
-      in.dtdy = t[q + 2] - t[q];
-      in.drdx = r[q + 1] - r[q];
-      in.drdy = r[q + 2] - r[q];
       in.has_bias = op.bias != kNone;
       in.bias = in.has_bias ? frow(op.bias, 0, l) : 0.0f;
-      in.per_quad = !in.has_bias;
+      const bool own = cube && texture::cube_lod_per_invocation(tex(l), in.has_bias);
+      // The differences along x and y from lanes (x0, y) and (x, y0) of the quad: the lane's own
+      // row and column, or the top-left lane's.
+      const int q = l & ~3, x0 = own ? q + (l & 2) : q, y0 = own ? q + (l & 1) : q;
+      in.from = texture::LodInput::From::Derivatives;
+      in.dsdx = s[x0 + 1] - s[x0];
+      in.dtdx = t[x0 + 1] - t[x0];
+      in.drdx = r[x0 + 1] - r[x0];
+      in.dsdy = s[y0 + 2] - s[y0];
+      in.dtdy = t[y0 + 2] - t[y0];
+      in.drdy = r[y0 + 2] - r[y0];
+      in.per_quad = !in.has_bias && !own;
+      if (!own) in.cube_dir[0] = s[q], in.cube_dir[1] = t[q], in.cube_dir[2] = r[q];
     } else {
       in.lod = op.bias != kNone ? 0.0f + frow(op.bias, 0, l) : 0.0f;
     }
@@ -430,12 +438,26 @@ void Runner::texture(const XIns& x) {
   };
   texture::LodInput lods[L];
   for (int l = 0; l < n; ++l) lods[l] = lod_input(l);
-  bool linear_lane[L] = {}, vector_linear[L] = {};
+  texture::SampleContext context[L];
   if (op.kind == Kind::Sample) {
-    for (int l = 0; l < n; ++l) linear_lane[l] = texture::linear_in_vector(tex(l), lods[l]);
+    bool linear_lane[L] = {};
+    for (int l = 0; l < n; ++l) {
+      linear_lane[l] = texture::linear_in_vector(tex(l), lods[l], inv.seamless_cube_);
+      context[l].seamless_cube = inv.seamless_cube_;
+    }
     for (int l = 0; l < n; ++l)  // a vector's lanes are adjacent: at most 8
-      for (int k = std::max(0, l - 7); k < std::min(n, l + 8) && !vector_linear[l]; ++k)
-        vector_linear[l] = linear_lane[k] && vector_of(k) == vector_of(l);
+      for (int k = std::max(0, l - 7); k < std::min(n, l + 8) && !context[l].vector_linear; ++k)
+        context[l].vector_linear = linear_lane[k] && vector_of(k) == vector_of(l);
+    // A seamless cube map's corners: one lane's changes how its whole vector is filtered.
+    if (cube && inv.seamless_cube_) {
+      texture::CubeCorners corners[L];
+      for (int l = 0; l < n; ++l)
+        corners[l] = texture::cube_corners(tex(l), texture::Coords{s[l], t[l], r[l], layer[l]}, lods[l], context[l]);
+      for (int l = 0; l < n; ++l)
+        for (int k = std::max(0, l - 7); k < std::min(n, l + 8); ++k)
+          if (vector_of(k) == vector_of(l))
+            for (int level = 0; level < 2; ++level) context[l].vector_corner[level] |= corners[k].level[level];
+    }
   }
   for (int l = 0; l < n; ++l) {
     if (!mask[l]) continue;
@@ -448,7 +470,7 @@ void Runner::texture(const XIns& x) {
     }
     float texel[4];
     const texture::Coords at{s[l], t[l], r[l], layer[l], offset(0, l), offset(1, l), offset(2, l)};
-    texture::sample(tex(l), at, in, shadow ? &dref[l] : nullptr, texel, vector_linear[l]);
+    texture::sample(tex(l), at, in, shadow ? &dref[l] : nullptr, texel, context[l]);
     for (std::uint32_t c = 0; c < x.n; ++c) row<float>(x.dst, c)[l] = texel[c];
   }
 }

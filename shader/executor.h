@@ -102,6 +102,8 @@ class Invocations {
   // The texture a sampler whose value is `binding` (its texture unit) reads; null: none, which
   // reads as an incomplete texture.
   void bind_texture(std::uint32_t binding, const texture::Texture* t);
+  // glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS): cube maps are filtered across their faces' edges.
+  void set_cube_map_seamless(bool on) { seamless_cube_ = on; }
   // Which lanes a GL driver would sample together (llvmpipe: a vector of two fragment quads),
   // one key per lane, for the current batch; lanes with equal keys must be adjacent. Without a
   // call after begin(), each fragment quad (other stages: each lane) is its own vector.
@@ -125,6 +127,7 @@ class Invocations {
   std::vector<std::uint32_t> staging_;  // phi values between reading and writing
   std::vector<std::uint32_t> phi_doubles_;  // scratch for Runner::run_phis
   std::vector<const texture::Texture*> textures_;
+  bool seamless_cube_ = false;
   std::uint32_t sampling_vector_[kMaxLanes] = {};
   bool has_sampling_vectors_ = false;
   int lanes_ = 0;

@@ -14,8 +14,8 @@ namespace {
 
 // The samplers the executor reads, for messages.
 const std::string kSamplers =
-    "sampler1D, sampler2D, their Array and Shadow forms, sampler3D, sampler2DRect and sampler2DRectShadow, "
-    "samplerBuffer, and the isampler and usampler forms of each";
+    "sampler1D, sampler2D, samplerCube, their Array and Shadow forms, sampler3D, sampler2DRect and "
+    "sampler2DRectShadow, samplerBuffer, and the isampler and usampler forms of each";
 
 [[noreturn]] void unsupported(const Module& m, const Instruction& ins, const std::string& what) {
   std::string where = ins.line > 0 ? " (line " + std::to_string(ins.line) + ")" : "";
@@ -272,6 +272,7 @@ struct Decoder {
       case spv::Dim3D: t.target = texture::Target::k3D; break;
       case spv::DimRect: t.target = texture::Target::kRectangle; break;
       case spv::DimBuffer: t.target = texture::Target::kBuffer; break;
+      case spv::DimCube: t.target = arrayed ? texture::Target::kCubeArray : texture::Target::kCube; break;
       default: unsupported(m, ins, (name[0] == 'i' ? "an " : "a ") + name + " (tessref samples " + kSamplers + " only)");
     }
     t.image = value(ins, o[0]);

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "common/fixed_point.h"
+#include "texture/cube.h"
 #include "texture/filter.h"
 #include "texture/sampler_ops.h"
 
@@ -30,6 +31,13 @@ bool linear_image(Filter f) {
   return f == Filter::Linear || f == Filter::LinearMipmapNearest || f == Filter::LinearMipmapLinear;
 }
 
+// The mip filter as llvmpipe samples with it: none for a view of one level whose LOD range ends
+// at 0 (level_zero_only).
+Mip effective_mip(const Texture& t) {
+  if (t.last_level == t.base_level && t.sampler.max_lod <= 0.0f) return Mip::None;
+  return mip_mode(t.sampler.min_filter);
+}
+
 // Whether the sampler computes a LOD at all: for mipmaps, or to choose between minification and
 // magnification filters that differ.
 bool needs_lod(const SamplerState& s, Mip mip) {
@@ -42,6 +50,9 @@ struct LevelChoice {
   bool linear = false;  // the image filter: min or mag
   i32 level0 = 0, level1 = 0;
   float fpart = 0.0f;  // weight of level1 (mip LINEAR); 0: level0 alone
+  // The second level llvmpipe filters when its vector blends two: level0 + 1, or level0 where
+  // the LOD is clamped to the first or last level (level1 is level0 then when fpart is 0).
+  i32 level1_filtered = 0;
 };
 
 // The sampler's LOD state as Gallium keeps it: GL_TEXTURE_MIN_LOD no lower than 0, the bias
@@ -146,12 +157,10 @@ LodValue compute_lod(const Texture& t, const LodInput& in, Mip mip, const Galliu
 
 LevelChoice choose_levels(const Texture& t, const LodInput& in) {
   const SamplerState& s = t.sampler;
-  Mip mip = mip_mode(s.min_filter);
-  // A view of one level whose LOD range ends at 0 samples level 0 only (level_zero_only).
-  if (t.last_level == t.base_level && s.max_lod <= 0.0f) mip = Mip::None;
+  const Mip mip = effective_mip(t);
   const bool min_linear = linear_image(s.min_filter), mag_linear = linear_image(s.mag_filter);
   LevelChoice c;
-  c.level0 = c.level1 = t.base_level;
+  c.level0 = c.level1 = c.level1_filtered = t.base_level;
   if (!needs_lod(s, mip)) {
     c.linear = min_linear;
     return c;
@@ -163,17 +172,18 @@ LevelChoice choose_levels(const Texture& t, const LodInput& in) {
   const i32 first = t.base_level, last = t.last_level;
   if (mip == Mip::Nearest) {
     const i32 ipart = v.shortcut ? v.ipart : iround(v.lod);
-    c.level0 = c.level1 = std::clamp(add(ipart, first), first, last);
+    c.level0 = c.level1 = c.level1_filtered = std::clamp(add(ipart, first), first, last);
     return c;
   }
   const float fl = std::floor(v.lod);
   i32 level0 = add(fptosi(fl), first);
   float fpart = v.lod - fl;
+  c.level1_filtered = add(level0, 1);
   if (level0 < first) {
-    level0 = first;
+    level0 = c.level1_filtered = first;
     fpart = 0.0f;
   } else if (level0 >= last) {
-    level0 = last;
+    level0 = c.level1_filtered = last;
     fpart = 0.0f;
   }
   c.level0 = level0;
@@ -182,17 +192,64 @@ LevelChoice choose_levels(const Texture& t, const LodInput& in) {
   return c;
 }
 
+// The wraps, and whether level 0's sides are powers of two. A seamless cube map's wraps are
+// ignored (GL 4.6 8.14.2): clamped to the face's edge, whose neighbours are read where GL_LINEAR
+// falls off it.
+Axes axes_of(const Texture& t, bool seamless_cube) {
+  const Level& level_zero = t.levels[0];
+  const bool clamped = seamless_cube && is_cube(t.target);
+  return {{clamped ? Wrap::ClampToEdge : t.sampler.wrap_s, clamped ? Wrap::ClampToEdge : t.sampler.wrap_t,
+           t.sampler.wrap_r},
+          {std::has_single_bit(unsigned(level_zero.width)), std::has_single_bit(unsigned(level_zero.height)),
+           std::has_single_bit(unsigned(level_zero.layers))},
+          dimensions(t.target), t.target != Target::kRectangle};
+}
+
 // The 8-bit fixed-point path (lp_build_sample_aos) serves formats of 8-bit unsigned normalized
 // channels (not sRGB) with repeat or clamp-to-edge wraps, when the quad has one LOD or the
-// minification and magnification filters agree.
-bool fixed_point_path(const Texture& t, const LodInput& in) {
+// minification and magnification filters agree; not a seamless cube map filtered with GL_LINEAR.
+bool fixed_point_path(const Texture& t, const LodInput& in, bool seamless_cube) {
   const TexelFormatInfo& f = info(t.format);
   const SamplerState& s = t.sampler;
+  if (seamless_cube && is_cube(t.target) && (linear_image(s.min_filter) || linear_image(s.mag_filter))) return false;
   auto simple = [](Wrap w) { return w == Wrap::Repeat || w == Wrap::ClampToEdge; };
-  const int dims = dimensions(t.target);  // the wraps of the axes the target has
-  return f.type == ChannelType::kUnorm8 && simple(s.wrap_s) && (dims < 2 || simple(s.wrap_t)) &&
-         (dims < 3 || simple(s.wrap_r)) &&
+  const Axes axes = axes_of(t, seamless_cube);
+  return f.type == ChannelType::kUnorm8 && simple(axes.wrap[0]) && (axes.dims < 2 || simple(axes.wrap[1])) &&
+         (axes.dims < 3 || simple(axes.wrap[2])) &&
          (in.per_quad || linear_image(s.min_filter) == linear_image(s.mag_filter));
+}
+
+// A cube map lookup's LOD input on its face: the derivatives of lod.cube_dir carried onto its face
+// when llvmpipe computes a LOD from derivatives (for mipmaps or differing filters, unless the LOD
+// range is one value), and ρ² then taken as from textureGrad's (infinite or NaN: 0). A query
+// always carries them.
+bool cube_derivatives(const Texture& t, const LodInput& in, bool query) {
+  const SamplerState& s = t.sampler;
+  const Mip mip = effective_mip(t);
+  return in.from == LodInput::From::Derivatives &&
+         (query || (needs_lod(s, mip) && !gallium_lod(s, true).min_max_equal));
+}
+LodInput lod_on_face(const Texture& t, const LodInput& in, bool query) {
+  if (!cube_derivatives(t, in, query)) return in;
+  const float dx[3] = {in.dsdx, in.dtdx, in.drdx}, dy[3] = {in.dsdy, in.dtdy, in.drdy};
+  float d[4];
+  cube_face_with_derivatives(in.cube_dir, dx, dy, d);
+  LodInput out = in;
+  out.dsdx = d[0];
+  out.dtdx = d[1];
+  out.dsdy = d[2];
+  out.dtdy = d[3];
+  out.drdx = out.drdy = 0.0f;
+  out.gradients = true;
+  return out;
+}
+// The face and coordinates on it of a cube map lookup at direction (at.s, at.t, at.r): by the
+// derivative path's arithmetic when it is taken (the two differ in the scale's rounding).
+CubeFace face_of_lookup(const Texture& t, const Coords& at, const LodInput& in) {
+  if (!cube_derivatives(t, in, false)) return cube_face(at.s, at.t, at.r);
+  const float dir[3] = {at.s, at.t, at.r}, zero[3] = {0.0f, 0.0f, 0.0f};
+  float unused[4];
+  return cube_face_with_derivatives(dir, zero, zero, unused);
 }
 
 // 1 as format f's texels hold it: the integer 1 for integer formats.
@@ -226,39 +283,57 @@ std::optional<DepthCompare> depth_compare(const Texture& t, const float* dref) {
   return DepthCompare{t.sampler.compare_func, ref};
 }
 
-// The wraps, and whether level 0's sides are powers of two.
-Axes axes_of(const Texture& t) {
-  const Level& level_zero = t.levels[0];
-  return {{t.sampler.wrap_s, t.sampler.wrap_t, t.sampler.wrap_r},
-          {std::has_single_bit(unsigned(level_zero.width)), std::has_single_bit(unsigned(level_zero.height)),
-           std::has_single_bit(unsigned(level_zero.layers))},
-          dimensions(t.target), t.target != Target::kRectangle};
-}
-
 }  // namespace
 
-bool linear_in_vector(const Texture& t, const LodInput& lod) {
-  if (!t.complete || fixed_point_path(t, lod)) return false;
+bool linear_in_vector(const Texture& t, const LodInput& lod_in, bool seamless_cube) {
+  if (!t.complete) return false;
+  const LodInput lod = is_cube(t.target) ? lod_on_face(t, lod_in, false) : lod_in;
+  if (fixed_point_path(t, lod, seamless_cube)) return false;
   if (linear_image(t.sampler.min_filter) == linear_image(t.sampler.mag_filter)) return false;
   return choose_levels(t, lod).linear;
 }
 
+CubeCorners cube_corners(const Texture& t, const Coords& at, const LodInput& lod_in, const SampleContext& context) {
+  CubeCorners r;
+  if (!is_cube(t.target) || !context.seamless_cube || !t.complete) return r;
+  const LodInput lod = lod_on_face(t, lod_in, false);
+  if (fixed_point_path(t, lod, true)) return r;
+  const LevelChoice c = choose_levels(t, lod);
+  // GL_NEAREST lanes go through the linear filter too when their vector has a GL_LINEAR one.
+  const bool differ = linear_image(t.sampler.min_filter) != linear_image(t.sampler.mag_filter);
+  if (!c.linear && !(differ && context.vector_linear)) return r;
+  const CubeFace face = face_of_lookup(t, at, lod_in);
+  r.level[0] = cube_corner(t.levels[std::size_t(c.level0)].width, face);
+  r.level[1] = cube_corner(t.levels[std::size_t(c.level1_filtered)].width, face);
+  return r;
+}
+
+bool cube_lod_per_invocation(const Texture& t, bool has_bias) { return has_bias || effective_mip(t) != Mip::None; }
+
 int array_layer(const Texture& t, float r) {
   if (!is_array(t.target) || !t.complete) return 0;
   const double layer = std::floor(double(r) + 0.5);  // exact: r + 0.5 in double
-  const int last = t.levels[std::size_t(t.base_level)].layers - 1;
+  const int last = t.levels[std::size_t(t.base_level)].layers / (is_cube(t.target) ? 6 : 1) - 1;
   return layer >= double(last) ? last : layer > 0.0 ? int(layer) : 0;  // NaN: 0
 }
 
-void sample(const Texture& t, const Coords& at, const LodInput& lod, const float* dref, float out[4], bool vector_linear) {
+void sample(const Texture& t, const Coords& at_in, const LodInput& lod_in, const float* dref, float out[4],
+            const SampleContext& context) {
   if (!t.complete) return incomplete(t, out);
+  // A cube map is sampled on the face its direction points at, a layer of 6 per cube.
+  const bool cube = is_cube(t.target);
+  const CubeFace face = cube ? face_of_lookup(t, at_in, lod_in) : CubeFace{};
+  const int first_face = 6 * at_in.layer;
+  const Coords at = cube ? Coords{face.s, face.t, 0.0f, first_face + face.face} : at_in;
+  const LodInput lod = cube ? lod_on_face(t, lod_in, false) : lod_in;
+  const bool seamless = cube && context.seamless_cube;
   const LevelChoice c = choose_levels(t, lod);
   const Level& l0 = t.levels[std::size_t(c.level0)];
-  const Axes axes = axes_of(t);
+  const Axes axes = axes_of(t, seamless);
   const std::optional<DepthCompare> compare = depth_compare(t, dref);
   const DepthCompare* cmp = compare ? &*compare : nullptr;
   float texel[4];
-  if (fixed_point_path(t, lod)) {
+  if (fixed_point_path(t, lod, seamless)) {
     std::uint8_t r0[4];
     filter_level_unorm8(t.format, t.target == Target::k3D, l0, axes, c.linear, at, r0);
     // The levels' weight in 8 bits, truncated (lp_build_sample_mipmap's lod_fpart.fixed16).
@@ -271,14 +346,22 @@ void sample(const Texture& t, const Coords& at, const LodInput& lod, const float
     for (int k = 0; k < 4; ++k) texel[k] = fixed::unorm8_texel_to_float(r0[k]);
   } else {
     const std::array<float, 4> border = border_color(t);
-    const FloatFilter filter = c.linear ? FloatFilter::Linear
-                               : vector_linear && linear_image(t.sampler.min_filter) != linear_image(t.sampler.mag_filter)
-                                   ? FloatFilter::NearestByWeights
-                                   : FloatFilter::Nearest;
-    filter_level_float(t.target == Target::k3D, l0, axes, border, filter, at, cmp, texel);
+    const FloatFilter filter =
+        c.linear ? FloatFilter::Linear
+        : context.vector_linear && linear_image(t.sampler.min_filter) != linear_image(t.sampler.mag_filter)
+            ? FloatFilter::NearestByWeights
+            : FloatFilter::Nearest;
+    // The first (k = 0) or second level.
+    auto filter_level = [&](int k, const Level& level, float result[4]) {
+      if (seamless && filter != FloatFilter::Nearest)
+        filter_cube_seamless(level, first_face, face, filter, cmp, context.vector_corner[k], result);
+      else
+        filter_level_float(t.target == Target::k3D, level, axes, border, filter, at, cmp, result);
+    };
+    filter_level(0, l0, texel);
     if (c.fpart > 0.0f) {
       float t1[4];
-      filter_level_float(t.target == Target::k3D, t.levels[std::size_t(c.level1)], axes, border, filter, at, cmp, t1);
+      filter_level(1, t.levels[std::size_t(c.level1)], t1);
       for (int k = 0; k < 4; ++k) texel[k] = lerp(c.fpart, texel[k], t1[k]);
     }
   }
@@ -289,8 +372,7 @@ void sample(const Texture& t, const Coords& at, const LodInput& lod, const float
   apply_swizzle(t, texel, out);
 }
 
-void gather(const Texture& t, float s, float tc, int layer, int offset_s, int offset_t, int component, const float* dref,
-            float out[4]) {
+void gather(const Texture& t, const Coords& at, int component, const float* dref, bool seamless_cube, float out[4]) {
   const Swizzle sw = t.swizzle[std::size_t(component & 3)];
   if (!t.complete) {  // the four texels of the 1 x 1 (0, 0, 0, 1) texture
     float texel[4], swizzled[4];
@@ -305,8 +387,19 @@ void gather(const Texture& t, float s, float tc, int layer, int offset_s, int of
     return;
   }
   // GL_LINEAR's footprint on the base level whatever the filters (llvmpipe: linear, no mipmap).
-  gather_float(t.levels[std::size_t(t.base_level)].slice(layer), axes_of(t), border_color(t), s, tc, offset_s, offset_t,
-               int(sw), compare ? &*compare : nullptr, out);
+  const Level& base = t.levels[std::size_t(t.base_level)];
+  const DepthCompare* cmp = compare ? &*compare : nullptr;
+  if (is_cube(t.target)) {  // on the face the direction points at; no offsets
+    const CubeFace face = cube_face(at.s, at.t, at.r);
+    if (seamless_cube)
+      gather_cube_seamless(base, 6 * at.layer, face, int(sw), cmp, !info(t.format).integer(), out);
+    else
+      gather_float(base.slice(6 * at.layer + face.face), axes_of(t, false), border_color(t), face.s, face.t, 0, 0, int(sw),
+                   cmp, out);
+    return;
+  }
+  gather_float(base.slice(at.layer), axes_of(t, false), border_color(t), at.s, at.t, at.offset_s, at.offset_t, int(sw), cmp,
+               out);
 }
 
 void fetch(const Texture& t, int i, int j, int layer, int lod, float out[4]) {
@@ -336,16 +429,17 @@ void level_size(const Texture& t, int lod, int out[3]) {
   int k = 0;
   out[k++] = l.width;
   if (dimensions(t.target) >= 2) out[k++] = l.height;
-  if (is_array(t.target) || t.target == Target::k3D) out[k++] = l.layers;
+  if (is_array(t.target) || t.target == Target::k3D) out[k++] = is_cube(t.target) ? l.layers / 6 : l.layers;
 }
 
 int query_levels(const Texture& t) { return t.complete ? t.last_level - t.base_level + 1 : 1; }
 
-void query_lod(const Texture& t, const LodInput& in, float out[2]) {
+void query_lod(const Texture& t, const LodInput& lod_in, float out[2]) {
   if (!t.complete) {
     out[0] = out[1] = 0.0f;
     return;
   }
+  const LodInput in = is_cube(t.target) ? lod_on_face(t, lod_in, true) : lod_in;
   const Mip mip = mip_mode(t.sampler.min_filter);
   const LodValue v = compute_lod(t, in, mip, gallium_lod(t.sampler, needs_lod(t.sampler, mip)), true);
   float level = 0.0f;

@@ -25,9 +25,24 @@ struct LodInput {
   // One LOD for the quad: an implicit LOD without bias in a fragment shader. llvmpipe filters
   // 8-bit normalized textures in fixed point only then (or when min and mag filters agree).
   bool per_quad = false;
+  // A cube map's: the direction whose derivatives these are (ds.. dr are then d/dx and d/dy of its
+  // x, y and z), the invocation's own or, for the quad's LOD, its first invocation's. They are
+  // carried onto that direction's face (cube_face_with_derivatives) before ρ is taken.
+  float cube_dir[3] = {0.0f, 0.0f, 0.0f};
 };
 
-// An array texture's layer for its layer coordinate r (t of a 1D array, r of a 2D one; GL 4.6 8.14.2): clamp(floor(r + 0.5), 0, d - 1),
+// What a lookup's context and llvmpipe's vector of invocations (sampled together) change.
+struct SampleContext {
+  bool seamless_cube = false;  // glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS)
+  // Whether another invocation of the vector is filtered with GL_LINEAR (linear_in_vector).
+  bool vector_linear = false;
+  // Seamless cube maps: whether an invocation of the vector has a corner footprint on the first
+  // and on the second level filtered (cube_corners).
+  bool vector_corner[2] = {false, false};
+};
+
+// An array texture's layer for its layer coordinate r (t of a 1D array, r of a 2D one, q of a
+// cube map array, whose layers are its cubes; GL 4.6 8.14.2): clamp(floor(r + 0.5), 0, d - 1),
 // exactly (llvmpipe rounds ties to even instead: docs/textures.md); NaN reads layer 0. 0 for a
 // texture that is not an array.
 int array_layer(const Texture& t, float r);
@@ -35,23 +50,36 @@ int array_layer(const Texture& t, float r);
 // texture(), textureLod(), textureGrad(), the Offset and Proj forms at `at`: the filtered,
 // swizzled texel. `dref`: a shadow sampler's reference depth (already divided for
 // Proj forms), compared when the texture's compare mode is on; every channel of the result is
-// then the filtered comparisons. `vector_linear`: whether another invocation sampled together with
-// this one (llvmpipe runs a vector of them at once) is filtered with GL_LINEAR, which changes how
-// llvmpipe filters the others with GL_NEAREST (see linear_in_vector).
+// then the filtered comparisons. A cube map's (s, t, r) is the direction. `context`: see
+// SampleContext (llvmpipe runs a vector of invocations at once, and some of its choices are the
+// vector's).
 void sample(const Texture& t, const Coords& at, const LodInput& lod, const float* dref, float out[4],
-            bool vector_linear = false);
+            const SampleContext& context = {});
 
 // textureGather() and textureGatherOffset(): the four texels GL_LINEAR would read on the base
 // level (i0 j1, i1 j1, i1 j0, i0 j0), component `component` (0..3) through the swizzle; with
-// `dref` (the shadow forms), each texel's comparison as 1 or 0.
-void gather(const Texture& t, float s, float tc, int layer, int offset_s, int offset_t, int component, const float* dref,
-            float out[4]);
+// `dref` (the shadow forms), each texel's comparison as 1 or 0. `at`: s and t (a cube map's
+// direction in s, t, r), the layer and the offsets.
+void gather(const Texture& t, const Coords& at, int component, const float* dref, bool seamless_cube, float out[4]);
 
 // Whether this lookup counts as GL_LINEAR for the invocations sampled with it: true when the
 // texture's minification and magnification filters differ, it is filtered in float and this
 // lookup uses GL_LINEAR. When one invocation of llvmpipe's vector does, the others that use
 // GL_NEAREST are filtered by rounded linear weights (texture/filter.h, NearestByWeights).
-bool linear_in_vector(const Texture& t, const LodInput& lod);
+bool linear_in_vector(const Texture& t, const LodInput& lod, bool seamless_cube = false);
+
+// A seamless cube map lookup's share in its vector's choices (SampleContext::vector_corner):
+// whether its GL_LINEAR footprint has a corner on the first and on the second level that
+// llvmpipe filters for it (the second is filtered for the whole vector when one invocation blends
+// two levels, even for those that do not). False for other lookups.
+struct CubeCorners {
+  bool level[2] = {false, false};
+};
+CubeCorners cube_corners(const Texture& t, const Coords& at, const LodInput& lod, const SampleContext& context);
+
+// Whether a cube map lookup with an implicit LOD takes its LOD from its own derivatives rather
+// than from its quad's first invocation's: with a mip filter, or with a bias (llvmpipe).
+bool cube_lod_per_invocation(const Texture& t, bool has_bias);
 
 // texelFetch(): texel (i, j) of layer `layer` (an array's; a 3D texture's slice; else 0) of level base_level + lod; zero
 // outside the level or its layers, or for a level outside base_level .. last_level (GL 4.6
@@ -65,7 +93,8 @@ void level_size(const Texture& t, int lod, int out[3]);
 // textureQueryLevels(): last_level - base_level + 1 (1 for an incomplete texture, as above).
 int query_levels(const Texture& t);
 // textureQueryLod() (GLSL 4.60 8.9.2): (the level that would be accessed relative to
-// base_level, as a float; the LOD after both biases and before the LOD range clamp).
+// base_level, as a float; the LOD after both biases and before the LOD range clamp). A cube map's
+// from the derivatives carried onto the face of lod.cube_dir.
 void query_lod(const Texture& t, const LodInput& lod, float out[2]);
 
 }  // namespace tessref::texture

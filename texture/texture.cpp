@@ -27,6 +27,8 @@ const char* gl_name(Target t) {
     case Target::kBuffer: return "GL_TEXTURE_BUFFER";
     case Target::k3D: return "GL_TEXTURE_3D";
     case Target::kRectangle: return "GL_TEXTURE_RECTANGLE";
+    case Target::kCube: return "GL_TEXTURE_CUBE_MAP";
+    case Target::kCubeArray: return "GL_TEXTURE_CUBE_MAP_ARRAY";
   }
   return "?";
 }

@@ -1,5 +1,6 @@
 #pragma once
-// A GL texture as the sampler sees it: a 1D, 2D or 3D image (or an array of 1D or 2D ones) with its mip levels, or a buffer
+// A GL texture as the sampler sees it: a 1D, 2D or 3D image, a cube map (or an array of 1D or 2D
+// images or of cube maps) with its mip levels, or a buffer
 // texture's texels, in the internal format its texels were converted to, with the texture's and sampler object's
 // state (GL 4.6 8.10 and 8.14).
 // Plain data: the scene loader fills it, the executor reads it through texture/sample.h.
@@ -13,14 +14,19 @@
 namespace tessref::texture {
 
 // The texture targets tessref samples (GL 4.6 8.1).
-enum class Target : std::uint8_t { k1D, k2D, k1DArray, k2DArray, kBuffer, k3D, kRectangle };
+enum class Target : std::uint8_t { k1D, k2D, k1DArray, k2DArray, kBuffer, k3D, kRectangle, kCube, kCubeArray };
 const char* gl_name(Target t);
+inline bool is_cube(Target t) { return t == Target::kCube || t == Target::kCubeArray; }
 // The coordinates that address a texel within a layer: 1 (1D textures and their arrays, buffer
-// textures), 2 or 3.
+// textures), 2 (a cube map's within a face) or 3.
 inline int dimensions(Target t) {
-  return t == Target::k3D ? 3 : t == Target::k2D || t == Target::k2DArray || t == Target::kRectangle ? 2 : 1;
+  return t == Target::k3D                                                                       ? 3
+         : t == Target::k2D || t == Target::k2DArray || t == Target::kRectangle || is_cube(t) ? 2
+                                                                                                : 1;
 }
-inline bool is_array(Target t) { return t == Target::k1DArray || t == Target::k2DArray; }
+// The coordinates a lookup gives before an array's layer: a cube map's direction has 3.
+inline int lookup_dimensions(Target t) { return is_cube(t) ? 3 : dimensions(t); }
+inline bool is_array(Target t) { return t == Target::k1DArray || t == Target::k2DArray || t == Target::kCubeArray; }
 
 // GL_TEXTURE_MIN_FILTER / GL_TEXTURE_MAG_FILTER (the magnification filter is Nearest or Linear).
 enum class Filter {
@@ -38,8 +44,10 @@ enum class Swizzle : std::uint8_t { Red, Green, Blue, Alpha, Zero, One };
 inline constexpr int kMaxTextureSize = 16384;
 // GL_MAX_3D_TEXTURE_SIZE on llvmpipe.
 inline constexpr int kMax3DTextureSize = 2048;
-// GL_MAX_ARRAY_TEXTURE_LAYERS on llvmpipe.
+// GL_MAX_ARRAY_TEXTURE_LAYERS on llvmpipe (a cube map array's layer-faces too).
 inline constexpr int kMaxArrayLayers = 2048;
+// GL_MAX_CUBE_MAP_TEXTURE_SIZE on llvmpipe.
+inline constexpr int kMaxCubeMapTextureSize = 16384;
 // GL_MAX_TEXTURE_BUFFER_SIZE on llvmpipe (texels): a buffer texture's range holds at most this many.
 inline constexpr std::int64_t kMaxTextureBufferSize = 134217728;
 
@@ -73,7 +81,8 @@ struct LevelSlice {
 };
 
 // One mip level: `layers` images of width x height texels (1 layer unless an array; a 3D
-// texture's depth slices; height 1 for 1D targets and buffer textures), row 0 at the bottom (GL),
+// texture's depth slices; a cube map's 6 faces, +X, -X, +Y, -Y, +Z, -Z, and 6 per cube of a cube
+// map array; height 1 for 1D targets and buffer textures), row 0 at the bottom (GL),
 // layer after layer. `stored` holds them in the format's own layout (what a driver
 // is given); `texels` as the sampler reads them, four floats each (k / 255 for 8-bit normalized
 // channels, linear values for sRGB ones, missing green and blue 0, missing alpha 1; integer

@@ -262,6 +262,7 @@ shader::Invocations& StageProgram::prepare(int groups) const {
     std::copy_n(uniforms.begin() + first, n, inv.shared_words() + first);
   if (textures)
     for (std::uint32_t unit = 0; unit < textures->size(); ++unit) inv.bind_texture(unit, (*textures)[unit]);
+  inv.set_cube_map_seamless(cube_map_seamless && *cube_map_seamless);
   for (const auto& [word, binding, offset] : counters) {
     const std::vector<std::uint32_t>& buffer = (*counter_buffers)[binding];
     inv.shared_words()[word] = offset < buffer.size() ? buffer[offset] : 0u;
@@ -299,6 +300,7 @@ GlslProgram::GlslProgram(const shader::CompiledProgram& compiled, shader::ExecLi
   for (StageProgram* s : {vs_.get(), tcs_.get(), tes_.get(), fs_.get()})
     if (s) {
       s->textures = &textures_;
+      s->cube_map_seamless = &cube_map_seamless_;
       s->counter_buffers = &counter_buffers_;
     }
   // Varyings handed to the rasterizer: every word the last geometry stage writes past gl_Position.

@@ -36,6 +36,7 @@ struct StageProgram {
   std::vector<std::uint32_t> uniforms;  // an image of the shared words holding uniforms
   std::vector<std::pair<std::uint32_t, std::uint32_t>> uniform_ranges;  // (first word, words)
   const std::vector<const texture::Texture*>* textures = nullptr;  // the program's, by unit
+  const bool* cube_map_seamless = nullptr;  // the program's GL_TEXTURE_CUBE_MAP_SEAMLESS
   // Atomic counters: (shared word, binding, word offset in the binding's buffer), and the
   // program's buffers (binding -> words), which every run reads and writes back.
   std::vector<std::array<std::uint32_t, 3>> counters;
@@ -108,6 +109,8 @@ class GlslProgram final : public DrawProgram {
   std::optional<UniformBlock> unbound_storage_block() const;
   // Binds a texture to a sampler's binding (texture unit). The texture must outlive the draws.
   void bind_texture(std::uint32_t unit, const texture::Texture* texture);
+  // glEnable / glDisable(GL_TEXTURE_CUBE_MAP_SEAMLESS) for the draws that follow (off by default).
+  void set_cube_map_seamless(bool on) { cube_map_seamless_ = on; }
   // Atomic counter buffers (binding -> 32-bit counters). A program that uses atomic counters is
   // drawn on one thread, in patch and tile order, so the counts and the values each invocation
   // sees do not depend on the thread count.
@@ -149,6 +152,7 @@ class GlslProgram final : public DrawProgram {
   void map_patch_locations();
   std::unique_ptr<StageProgram> vs_, tcs_, tes_, fs_;
   std::vector<const texture::Texture*> textures_;
+  bool cube_map_seamless_ = false;
   std::map<std::uint32_t, std::vector<std::uint32_t>> counter_buffers_;
   std::set<std::uint32_t> bound_storage_;  // bindings bind_storage_buffer filled
   int num_varyings_ = 0;

@@ -38,10 +38,12 @@ struct Outcome {
   std::string first;            // the first difference, for the failure message
 };
 
-// Draws both with `sets` (keys under draws.0.shaders) and compares draw buffer 0 bit for bit.
+// Draws both with `sets` (keys under draws.0.shaders, or under draws.0 when they begin with
+// "draw.") and compares draw buffer 0 bit for bit.
 Outcome compare(GlContext& ctx, const std::vector<std::string>& sets, float tolerance) {
   std::vector<std::string> full;
-  for (const std::string& s : sets) full.push_back("draws.0.shaders." + s);
+  for (const std::string& s : sets)
+    full.push_back(s.starts_with("draw.") ? "draws.0." + s.substr(5) : "draws.0.shaders." + s);
   const Scene scene = load_scene(kScene, full);
   std::vector<std::string> warnings;
   const Mesh mesh = build_mesh(scene.mesh, warnings);
@@ -326,6 +328,45 @@ Case buffer_case(const std::string& format, std::size_t offset, std::size_t size
                "uniforms={\"u_size_lod\": null, \"u_count\": " + std::to_string(texels) + "}", function(fn)}};
 }
 
+// A cube map (lookup_cube.frag; lookup_cube_array.frag for a cube map array of two cubes) of 16 x
+// 16 faces with glGenerateMipmap, stored in `format`, GL_TEXTURE_CUBE_MAP_SEAMLESS on or off; or a
+// samplerCubeShadow (lookup_cube_shadow.frag) on gray faces stored in a depth format, one level.
+// The wraps are clamp-to-edge: llvmpipe ignores them on cube maps, where GL applies them to each
+// face when seamless filtering is off (docs/textures.md). What it must show follows make_case; and
+// where seamless GL_LINEAR filtering meets a corner, llvmpipe sums the whole vector's texels by
+// weight (texture::cube_corners), which tessref decides for the quads of the vector that the
+// triangle covers, as for differing filters: at most that share differs.
+Case cube_case(bool array, const std::string& format, const std::string& min, const std::string& mag, bool seamless, int fn,
+               const std::string& compare_func = "") {
+  const bool shadow = !compare_func.empty();
+  std::string layers;
+  for (int k = 0; k < (array ? 12 : 6); ++k)
+    layers += std::string(k ? ", " : "") + "\"sampling/cube_16_" + (shadow ? "depth" : "face") + std::to_string(k) + ".png\"";
+  Case c;
+  if (format.find("SRGB") != std::string::npos) c.tolerance = 0.0089f;  // as make_case says
+  // Differing filters as make_case: the 8-bit path with one LOD a quad (no mip filter: a cube map
+  // with one takes a LOD per invocation) is exact.
+  const bool fixed_point = format == "GL_RGBA8" && !(seamless && (linear_image(min) || linear_image(mag)));
+  const bool one_lod_a_quad = fn == 0 && min.find("mipmap") == std::string::npos;
+  if (fn <= 3 && linear_image(min) != linear_image(mag) && !(fixed_point && one_lod_a_quad)) c.max_differing = 0.005;
+  c.sets = {std::string("fragment=\"sampling/lookup_cube") + (shadow ? "_shadow" : array ? "_array" : "") + ".frag\"",
+            "textures.u_tex={\"path\": null, \"target\": \"" + std::string(array ? "GL_TEXTURE_CUBE_MAP_ARRAY" : "GL_TEXTURE_CUBE_MAP") +
+                "\", \"layers\": [" + layers + "], \"internalformat\": \"" + format + "\", \"generate_mipmap\": " +
+                (shadow ? "false" : "true") + ", \"min_filter\": \"" + min + "\", \"mag_filter\": \"" + mag +
+                "\", \"wrap\": \"clamp_to_edge\"" +
+                (shadow ? ", \"compare_mode\": \"compare_ref_to_texture\", \"compare_func\": \"" + compare_func + "\"" : "") + "}",
+            function(fn)};
+  // textureQueryLod at (x, y, 0): llvmpipe's LOD query passes no r for a cube map (its layer slot),
+  // so the two agree but where the quad's x and y do not change: there llvmpipe's ρ comes from an
+  // r it was not given. At most this share (measured: 2 of 16,384).
+  if (fn == 7) c.max_differing = 0.0005;
+  if (seamless) {
+    c.sets.push_back("draw.enable=[\"GL_TEXTURE_CUBE_MAP_SEAMLESS\"]");
+    if (fn <= 3 && (linear_image(min) || linear_image(mag))) c.max_differing = 0.005;
+  }
+  return c;
+}
+
 // The suite's cases: each lookup function on the fixed-point path (RGBA8, repeat) and on the
 // float path (RGBA32F, mirrored repeat); every wrap and filter on both; a size that is not a
 // power of two; each format; and the sampler state keys.
@@ -463,6 +504,23 @@ std::vector<Case> suite_cases() {
   }
   cases.push_back(buffer_case("GL_RGBA32UI", 0, 65536, 0));
   cases.push_back(buffer_case("GL_RGB32F", 0, 16384, 9));
+  // Cube maps and cube map arrays: every lookup on the 8-bit and the float path, seamless or not;
+  // differing filters; shadow lookups.
+  for (int fn : {0, 1, 2, 3, 4, 5, 7})  // 6, textureQueryLod of a direction with z, differs (docs/textures.md)
+    for (bool seamless : {false, true})
+      for (bool array : {false, true}) {
+        cases.push_back(cube_case(array, "GL_RGBA8", "linear_mipmap_linear", "linear", seamless, fn));
+        cases.push_back(cube_case(array, "GL_RGBA32F", "linear_mipmap_linear", "linear", seamless, fn));
+      }
+  for (bool seamless : {false, true})
+    for (const char* min : {"nearest_mipmap_nearest", "linear_mipmap_nearest", "nearest", "linear"})
+      for (const char* mag : {"nearest", "linear"}) {
+        cases.push_back(cube_case(false, "GL_RGBA8", min, mag, seamless, 0));
+        cases.push_back(cube_case(false, "GL_RGBA16F", min, mag, seamless, 2));
+      }
+  for (int fn : {0, 1, 3, 4, 5})
+    for (bool seamless : {false, true})
+      cases.push_back(cube_case(false, "GL_DEPTH_COMPONENT24", "linear", "linear", seamless, fn, "lequal"));
   return cases;
 }
 

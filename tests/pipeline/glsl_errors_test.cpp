@@ -373,12 +373,10 @@ TEST(GlslErrors, SamplersAndLanguageFeaturesOutsideTessrefAreRefusedByName) {
     std::string what;  // the reason, after "FILE:"
   };
   const std::vector<Case> cases = {
-      {"cube", "uniform samplerCube s;\nvoid main() { gl_Position = corner_mix() * texture(s, vec3(1.0)).x; }\n",
-       "tessellation evaluation shader: unsupported construct (line 27): a samplerCube (tessref samples sampler1D, sampler2D, their Array and Shadow forms, sampler3D, sampler2DRect and sampler2DRectShadow, samplerBuffer, and the isampler and usampler forms of each only) (OpImageSampleExplicitLod)"},
       {"multisample", "uniform sampler2DMS s;\nvoid main() { gl_Position = corner_mix() * texelFetch(s, ivec2(0), 1).x; }\n",
-       "tessellation evaluation shader: unsupported construct (line 27): a sampler2DMS (tessref samples sampler1D, sampler2D, their Array and Shadow forms, sampler3D, sampler2DRect and sampler2DRectShadow, samplerBuffer, and the isampler and usampler forms of each only) (OpImageFetch)"},
-      {"integer cube", "uniform usamplerCube s;\nvoid main() { gl_Position = corner_mix() * float(texture(s, vec3(0.5)).x); }\n",
-       "tessellation evaluation shader: unsupported construct (line 27): a usamplerCube (tessref samples sampler1D, sampler2D, their Array and Shadow forms, sampler3D, sampler2DRect and sampler2DRectShadow, samplerBuffer, and the isampler and usampler forms of each only) (OpImageSampleExplicitLod)"},
+       "tessellation evaluation shader: unsupported construct (line 27): a sampler2DMS (tessref samples sampler1D, sampler2D, samplerCube, their Array and Shadow forms, sampler3D, sampler2DRect and sampler2DRectShadow, samplerBuffer, and the isampler and usampler forms of each only) (OpImageFetch)"},
+      {"integer multisample array", "uniform usampler2DMSArray s;\nvoid main() { gl_Position = corner_mix() * float(texelFetch(s, ivec3(0), 1).x); }\n",
+       "tessellation evaluation shader: unsupported construct (line 27): a usampler2DMSArray (tessref samples sampler1D, sampler2D, samplerCube, their Array and Shadow forms, sampler3D, sampler2DRect and sampler2DRectShadow, samplerBuffer, and the isampler and usampler forms of each only) (OpImageFetch)"},
       {"umul", "uniform uint u;\nvoid main() {\n  uint hi, lo;\n  umulExtended(u, u, hi, lo);\n  gl_Position = corner_mix() * float(hi + lo);\n}\n",
        "tessellation evaluation shader: unsupported construct (line 29): this instruction is outside the executor's scope (OpUMulExtended)"},
       {"subroutine", "subroutine float F();\nsubroutine(F) float one() { return 1.0; }\nsubroutine uniform F f;\nvoid main() { gl_Position = corner_mix() * f(); }\n",

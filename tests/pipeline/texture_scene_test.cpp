@@ -303,8 +303,8 @@ TEST(TextureScene, ArrayTexturesAreCheckedByKey) {
     return "textures.u_tex={\"path\": null, \"target\": \"GL_TEXTURE_2D_ARRAY\", " + keys + "}";
   };
   expect_error({"textures.u_tex={\"path\": null, " + layers + "}"},
-               "draws.0.shaders.textures.u_tex.layers: layers are a 2D array texture's (or a 3D texture's slices): give "
-               "\"target\": \"GL_TEXTURE_2D_ARRAY\" or \"GL_TEXTURE_3D\"");
+               "draws.0.shaders.textures.u_tex.layers: layers are a 2D array texture's (a 3D texture's slices, a cube "
+               "map's faces): give \"target\": \"GL_TEXTURE_2D_ARRAY\", \"GL_TEXTURE_3D\" or \"GL_TEXTURE_CUBE_MAP\"");
   expect_error({"textures.u_tex.target=\"GL_TEXTURE_2D_ARRAY\""},
                "draws.0.shaders.textures.u_tex.path: a GL_TEXTURE_2D_ARRAY's image files are its layers: give "
                "layers (level 0's), or raw bytes of every layer with raw_size [width, height, layers]");
@@ -417,9 +417,9 @@ TEST(TextureScene, OneDimensionalAndBufferTexturesAreCheckedByKey) {
                    "/tests/data/draws/sampling/noise_24x10.png is 24x10, and a GL_TEXTURE_1D level is one row (an image of "
                    "height 1)");
   expect_error({one_d("GL_TEXTURE_1D_ARRAY", R"("layers": ["sampling/noise_1d_256.png"])")},
-               "draws.0.shaders.textures.u_tex.layers: layers are a 2D array texture's (or a 3D texture's slices): give "
-               "\"target\": \"GL_TEXTURE_2D_ARRAY\" or \"GL_TEXTURE_3D\" (a 1D array's layers are the rows of its path or "
-               "levels images)");
+               "draws.0.shaders.textures.u_tex.layers: layers are a 2D array texture's (a 3D texture's slices, a cube "
+               "map's faces): give \"target\": \"GL_TEXTURE_2D_ARRAY\", \"GL_TEXTURE_3D\" or \"GL_TEXTURE_CUBE_MAP\" (a 1D "
+               "array's layers are the rows of its path or levels images)");
   expect_error({one_d("GL_TEXTURE_1D", R"("path": "sampling/depth_1d_256.raw", "internalformat": "GL_R32F", "raw_size": [256, 1])")},
                "draws.0.shaders.textures.u_tex.raw_size: expected [width], whole numbers from 1 to 16384 "
                "(GL_MAX_TEXTURE_SIZE), got an array of 2");
@@ -430,10 +430,10 @@ TEST(TextureScene, OneDimensionalAndBufferTexturesAreCheckedByKey) {
   expect_error({one_d("GL_TEXTURE_1D", R"("path": "sampling/noise_1d_256.png")")},
                "draws.0.shaders.textures.u_tex.target: the uniform is a sampler2D, which reads a GL_TEXTURE_2D texture, "
                "and this one is GL_TEXTURE_1D");
-  expect_error({"textures.u_tex.target=\"GL_TEXTURE_CUBE_MAP\""},
+  expect_error({"textures.u_tex.target=\"GL_TEXTURE_2D_MULTISAMPLE\""},
                "draws.0.shaders.textures.u_tex.target: expected one of GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, "
-               "GL_TEXTURE_RECTANGLE, GL_TEXTURE_1D_ARRAY, GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BUFFER, got "
-               "\"GL_TEXTURE_CUBE_MAP\"");
+               "GL_TEXTURE_RECTANGLE, GL_TEXTURE_1D_ARRAY, GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BUFFER, GL_TEXTURE_CUBE_MAP, "
+               "GL_TEXTURE_CUBE_MAP_ARRAY, got \"GL_TEXTURE_2D_MULTISAMPLE\"");
   // Buffer textures: a range of a scene buffer in a format of GL 4.6 table 8.18, no sampler state.
   auto buffer = [](const std::string& keys) {
     return std::vector<std::string>{"textures.u_tex={\"path\": null, \"generate_mipmap\": null, \"min_filter\": null, "

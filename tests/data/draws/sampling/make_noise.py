@@ -58,3 +58,9 @@ open(d + '/noise_halfs.raw', 'wb').write(struct.pack('<8192H', *[finite_half(h(i
 depths = [h(x * 7 + 13) % 65 for x in range(256)]
 open(d + '/depth_1d_256.raw', 'wb').write(struct.pack('<256f', *[k / 64.0 for k in depths]))
 open(d + '/depth16_1d_256.raw', 'wb').write(struct.pack('<256H', *[min(k * 1024, 65535) for k in depths]))
+# Cube maps: twelve 16 x 16 RGBA faces (a cube map's six, +X to -Z, are cube_16_face0..5; a cube
+# map array's two cubes all twelve), and six gray ones for the depth formats.
+for k in range(12):
+    png(d + '/cube_16_face%d.png' % k, 16, 16, 4, noise(20 + k))
+for k in range(6):
+    png(d + '/cube_16_depth%d.png' % k, 16, 16, 1, noise(40 + k))
