@@ -97,11 +97,15 @@ void run(const std::vector<std::uint32_t>& spirv, Stage stage, Words& words) {
   texture::Texture textures[2];
   for (texture::Texture& t : textures) {
     const std::uint32_t target = words.next();
-    t.target = static_cast<texture::Target>(target % 6);
-    // 1D targets and buffer textures are one row; arrays have 1 to 3 layers, 3D textures slices.
+    t.target = static_cast<texture::Target>(target % 9);
+    // 1D targets and buffer textures are one row; arrays have 1 to 3 layers, 3D textures slices;
+    // cube maps square faces, six per cube.
+    const bool cube = texture::is_cube(t.target);
     const int width = 1 + int(words.next() % 3), rows = 1 + int(words.next() % 3);
-    const int height = texture::dimensions(t.target) == 1 ? 1 : rows;
-    const int layers = texture::is_array(t.target) || t.target == texture::Target::k3D ? 1 + int(target / 6 % 3) : 1;
+    const int height = texture::dimensions(t.target) == 1 ? 1 : cube ? width : rows;
+    const int layers = cube ? 6 * (t.target == texture::Target::kCubeArray ? 1 + int(target / 9 % 2) : 1)
+                       : texture::is_array(t.target) || t.target == texture::Target::k3D ? 1 + int(target / 9 % 3)
+                                                                                          : 1;
     std::vector<float> rgba;
     for (int i = 0; i < 4 * width * height * layers; ++i) rgba.push_back(float(words.next() % 256) / 255.0f);
     const std::uint32_t mode = words.next();
@@ -119,6 +123,7 @@ void run(const std::vector<std::uint32_t>& spirv, Stage stage, Words& words) {
   }
   inv.bind_texture(0, &textures[0]);
   inv.bind_texture(1, &textures[1]);
+  inv.set_cube_map_seamless((words.next() & 1) != 0);
   inv.run();
 }
 

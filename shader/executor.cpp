@@ -391,7 +391,8 @@ void Runner::texture(const XIns& x) {
   // the quad's derivatives, from its top-left pixel (lane 4q, whose right and upper neighbours
   // are lanes 4q + 1 and 4q + 2), one LOD for the quad as llvmpipe computes it; elsewhere LOD 0
   // plus the bias (GLSL 4.60 8.9: no implicit derivatives outside fragment shaders). A cube map
-  // with a mip filter or a bias takes each lane's own (fine) derivatives instead, as llvmpipe.
+  // with a mip filter or a bias, or queried, takes each lane's own (fine) derivatives instead, as
+  // llvmpipe.
   auto lod_input = [&](int l) {
     texture::LodInput in;
     in.cube_dir[0] = s[l], in.cube_dir[1] = t[l], in.cube_dir[2] = r[l];
@@ -409,7 +410,7 @@ void Runner::texture(const XIns& x) {
     } else if (p.fragment && (l | 3) < n) {
       in.has_bias = op.bias != kNone;
       in.bias = in.has_bias ? frow(op.bias, 0, l) : 0.0f;
-      const bool own = cube && texture::cube_lod_per_invocation(tex(l), in.has_bias);
+      const bool own = cube && (op.kind == Kind::QueryLod || texture::cube_lod_per_invocation(tex(l), in.has_bias));
       // The differences along x and y from lanes (x0, y) and (x, y0) of the quad: the lane's own
       // row and column, or the top-left lane's.
       const int q = l & ~3, x0 = own ? q + (l & 2) : q, y0 = own ? q + (l & 1) : q;

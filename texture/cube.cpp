@@ -55,8 +55,11 @@ Footprint footprint(int size, const CubeFace& at) {
     w = c - fl;
   };
   // max(c, 0) with NaN to 0 (GALLIVM_NAN_RETURN_OTHER_SECOND_NONNAN), in texels, less half a texel.
-  floor_fract((std::fmax(at.s, 0.0f) * wf) - 0.5f, f.x0, f.ws);
-  floor_fract((std::fmax(at.t, 0.0f) * wf) - 0.5f, f.y0, f.wt);
+  // A face coordinate is at most 1 but where 0.5 / |m_a| overflows (a denormal m_a): kept to the
+  // face there, where llvmpipe would read outside the level.
+  auto texels = [&](float c) { return min_ps((std::fmax(c, 0.0f) * wf) - 0.5f, wf - 0.5f); };
+  floor_fract(texels(at.s), f.x0, f.ws);
+  floor_fract(texels(at.t), f.y0, f.wt);
   f.x1 = add(f.x0, 1);
   f.y1 = add(f.y0, 1);
   const i32 max = size - 1;

@@ -156,6 +156,40 @@ TEST(CubeSeamless, ConstantCubeMapFiltersToItsValue) {
     }
 }
 
+// Without seamless filtering GL 4.6 8.14.2 applies the wrap modes to each face (llvmpipe clamps to
+// the edge whatever they are: docs/textures.md); with it the wraps are ignored and the texels past
+// the edge are the neighbour's. Each texel holds (face, i, j, 1); the lookup is a quarter texel
+// inside +X's left edge (s = 1/32 on a 4 x 4 face: texels -1 and 0 with weights 0.375 and 0.625).
+TEST(CubeSeamless, WrapModesApplyPerFaceOnlyWithoutSeamlessFiltering) {
+  constexpr int n = 4;
+  std::vector<float> rgba;
+  for (int face = 0; face < 6; ++face)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) rgba.insert(rgba.end(), {float(face), float(i), float(j), 1.0f});
+  auto lookup = [&](texture::Wrap wrap, bool seamless, float out[4]) {
+    texture::Texture t;
+    t.target = texture::Target::kCube;
+    t.levels.push_back(texture::make_level(texture::TexelFormat::kRgba32F, n, n, rgba.data(), 6));
+    t.sampler.min_filter = t.sampler.mag_filter = texture::Filter::Linear;
+    t.sampler.wrap_s = t.sampler.wrap_t = wrap;
+    t.finalize();
+    texture::SampleContext context;
+    context.seamless_cube = seamless;
+    texture::sample(t, texture::Coords{1.0f, 0.0f, 0.9375f}, texture::LodInput{}, nullptr, out, context);
+  };
+  float out[4];
+  lookup(texture::Wrap::Repeat, false, out);  // texel 3 of the same face, then texel 0
+  EXPECT_EQ(out[0], 0.0f);
+  EXPECT_EQ(out[1], 1.125f);
+  lookup(texture::Wrap::ClampToEdge, false, out);  // texel 0 twice
+  EXPECT_EQ(out[0], 0.0f);
+  EXPECT_EQ(out[1], 0.0f);
+  for (texture::Wrap wrap : {texture::Wrap::Repeat, texture::Wrap::ClampToBorder}) {
+    lookup(wrap, true, out);  // +X's left neighbour is +Z (face 4): 0.375 of it
+    EXPECT_EQ(out[0], 1.5f);
+  }
+}
+
 std::string error_of(const std::vector<std::string>& sets) {
   try {
     std::vector<std::string> full;
