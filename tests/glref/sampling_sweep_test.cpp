@@ -386,6 +386,8 @@ std::vector<Case> suite_cases() {
     for (int f : {0, 3})
       cases.push_back(make_case(std::string(format) == "GL_RGBA16F" ? "noise_64x64.exr" : "noise_64x64.png", format,
                                 "linear_mipmap_linear", "linear", "clamp_to_edge", f));
+  // Generated levels of a size that is not a power of two, in float: where llvmpipe's blit samples.
+  for (int f : {0, 3}) cases.push_back(make_case("noise_24x10.png", "GL_RGBA32F", "linear_mipmap_linear", "linear", "repeat", f));
   cases.push_back(make_case("noise_64x64_gray.png", "GL_R8", "linear_mipmap_linear", "linear", "repeat", 0));
   cases.push_back(make_case("noise_64x64_rgb.png", "GL_RGB8", "linear_mipmap_nearest", "linear", "repeat", 1));
   // Sampler state: LOD bias (quantized to 1/256 on both) and range, base and max level, a range

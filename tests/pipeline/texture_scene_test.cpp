@@ -385,6 +385,36 @@ TEST(TextureMipmap, OddSizesAreBilinearAtTheNewTexelCentres) {
   EXPECT_EQ(t.last_level, 2);
 }
 
+// Level 1 of a GL_RGBA32F ramp (texel (i, j) holds (i, j)) as llvmpipe's glGenerateMipmap makes it,
+// read back from Mesa 22.3.6 (glGetTexImage): a linear lookup of a ramp returns its coordinate in
+// texels, so each value is where llvmpipe's blit sampled, a few ulps off the texel centre where
+// the size is not a power of two, and different on each side of the blit's diagonal.
+TEST(TextureMipmap, GeneratedLevelsSampleWhereLlvmpipesBlitDoes) {
+  struct Case {
+    int w, h, x, y;
+    float s, t;  // level 1's texel (x, y): its red and green
+  };
+  const Case cases[] = {
+      {24, 10, 0, 0, 0x1.ffffcp-2f, 0x1.ffffcp-2f},  {24, 10, 6, 0, 0x1.8ffffep+3f, 0x1.000004p-1f},
+      {24, 10, 3, 2, 0x1.9ffffcp+2f, 0x1.1ffffep+2f}, {24, 10, 11, 4, 0x1.68p+4f, 0x1.100002p+3f},
+      {7, 3, 0, 0, 0x1.55554cp-1f, 1.0f},             {7, 3, 1, 0, 0x1.7ffffep+1f, 1.0f},
+      {7, 3, 2, 0, 0x1.555554p+2f, 1.0f},             {100, 7, 0, 0, 0x1.0000a8p-1f, 0x1.55554cp-1f},
+      {100, 7, 49, 0, 0x1.8ap+6f, 0x1.555558p-1f},    {100, 7, 49, 2, 0x1.8ap+6f, 0x1.555556p+2f},
+  };
+  for (const Case& c : cases) {
+    texture::Texture t;
+    std::vector<float> rgba;
+    for (int j = 0; j < c.h; ++j)
+      for (int i = 0; i < c.w; ++i) rgba.insert(rgba.end(), {float(i), float(j), 0.0f, 1.0f});
+    t.levels.push_back(texture::make_level(texture::TexelFormat::kRgba32F, c.w, c.h, rgba.data()));
+    texture::generate_mipmaps(t);
+    const texture::Level& l = t.levels[1];
+    const float* texel = l.texels.data() + (std::size_t(c.y) * std::size_t(l.width) + std::size_t(c.x)) * 4;
+    EXPECT_EQ(texel[0], c.s) << c.w << "x" << c.h << " (" << c.x << ", " << c.y << ")";
+    EXPECT_EQ(texel[1], c.t) << c.w << "x" << c.h << " (" << c.x << ", " << c.y << ")";
+  }
+}
+
 // textureQueryLod's LOD is llvmpipe's 0.5 * fastlog2(ρ²): exact at powers of two, linear between.
 TEST(TextureLod, FastLog2IsExactAtPowersOfTwoAndLinearBetween) {
   texture::Texture t;
