@@ -608,6 +608,27 @@ std::vector<Case> full_cases() {
         const bool empty = size < std::size_t(texture::info(*texture::parse_texel_format(format)).bytes_per_texel());
         cases.push_back(buffer_case(format, offset, size, offset == 0 && !empty ? 9 : 0));
       }
+  // Cube maps and cube map arrays: every format class x filter pair x seamless x lookup; shadow
+  // cube maps in each depth format.
+  for (const char* format : {"GL_RGBA8", "GL_RGBA32F", "GL_SRGB8_ALPHA8"})
+    for (const char* min : {"nearest", "linear", "nearest_mipmap_nearest", "linear_mipmap_nearest", "nearest_mipmap_linear",
+                            "linear_mipmap_linear"})
+      for (const char* mag : {"nearest", "linear"})
+        for (bool seamless : {false, true})
+          for (int fn : {0, 1, 2, 3, 4, 5, 7}) {
+            if (fn == 5 && seamless) continue;  // sizes do not depend on it
+            // textureQueryLod where the filters need no LOD (no mip filter, equal filters): llvmpipe
+            // takes it from the quad's differences of face coordinates (docs/textures.md).
+            if (fn == 7 && std::string(min).find("mipmap") == std::string::npos && linear_image(min) == linear_image(mag))
+              continue;
+            cases.push_back(cube_case(false, format, min, mag, seamless, fn));
+            if (fn != 5) cases.push_back(cube_case(true, format, min, mag, seamless, fn));
+          }
+  for (const char* format : kDepthFormats)
+    for (const char* min : {"nearest", "linear"})
+      for (bool seamless : {false, true})
+        for (int fn : {0, 1, 3, 4})
+          for (const char* func : {"lequal", "notequal"}) cases.push_back(cube_case(false, format, min, "linear", seamless, fn, func));
   for (const char* format : kDepthFormats)
     for (const char* min : {"nearest", "linear"})
       for (const char* mag : {"nearest", "linear"})

@@ -69,11 +69,16 @@ TEST(CubeFace, DerivativesAreCarriedOntoTheFace) {
   EXPECT_EQ(d[3], 0.03125f);
 }
 
-// The direction a face's texel centre (i, j) of an n x n face points to: table 8.19 inverted.
-void texel_direction(int face, int i, int j, int n, float out[3]) {
-  const float sc = 2.0f * (float(i) + 0.5f) / float(n) - 1.0f, tc = 2.0f * (float(j) + 0.5f) / float(n) - 1.0f;
+// The direction to (s, t) on a face: table 8.19 inverted, with s_c = 2s - 1 and t_c = 2t - 1.
+void face_direction(int face, float s, float t, float out[3]) {
+  const float sc = 2.0f * s - 1.0f, tc = 2.0f * t - 1.0f;
   const float dirs[6][3] = {{1.0f, -tc, -sc}, {-1.0f, -tc, sc}, {sc, 1.0f, tc}, {sc, -1.0f, -tc}, {sc, -tc, 1.0f}, {-sc, -tc, -1.0f}};
   for (int c = 0; c < 3; ++c) out[c] = dirs[face][c];
+}
+
+// The direction to texel (i, j)'s centre on an n x n face.
+void texel_direction(int face, int i, int j, int n, float out[3]) {
+  face_direction(face, (float(i) + 0.5f) / float(n), (float(j) + 0.5f) / float(n), out);
 }
 
 float angle(const float a[3], const float b[3]) {
@@ -88,12 +93,11 @@ float angle(const float a[3], const float b[3]) {
 // face, up to its edges and corners; at a corner the missing texel is the mean of the other three.
 TEST(CubeSeamless, FootprintTexelsAreTheDirectionsNeighbours) {
   constexpr int n = 8;
-  texture::Level level;  // each texel holds (face, i, j, 1)
-  std::vector<float> rgba;
+  std::vector<float> rgba;  // each texel holds (face, i, j, 1)
   for (int face = 0; face < 6; ++face)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) rgba.insert(rgba.end(), {float(face), float(i), float(j), 1.0f});
-  level = texture::make_level(texture::TexelFormat::kRgba32F, n, n, rgba.data(), 6);
+  const texture::Level level = texture::make_level(texture::TexelFormat::kRgba32F, n, n, rgba.data(), 6);
   const float texel_angle = 2.0f / float(n);  // a texel's width at a face's centre, in radians
   int corners = 0, lookups = 0;
   for (int face = 0; face < 6; ++face)
@@ -102,9 +106,7 @@ TEST(CubeSeamless, FootprintTexelsAreTheDirectionsNeighbours) {
         // s and t from 0 to 1 in steps of a quarter texel: texel centres, edges and the face's edges.
         const float s = float(u) / float(4 * n), t = float(v) / float(4 * n);
         float dir[3];
-        const float sc = 2.0f * s - 1.0f, tc = 2.0f * t - 1.0f;
-        const float dirs[6][3] = {{1.0f, -tc, -sc}, {-1.0f, -tc, sc}, {sc, 1.0f, tc}, {sc, -1.0f, -tc}, {sc, -tc, 1.0f}, {-sc, -tc, -1.0f}};
-        for (int c = 0; c < 3; ++c) dir[c] = dirs[face][c];
+        face_direction(face, s, t, dir);
         const texture::CubeFace at = texture::cube_face(dir[0], dir[1], dir[2]);
         float f[4], i[4], j[4];
         texture::gather_cube_seamless(level, 0, at, 0, nullptr, true, f);
