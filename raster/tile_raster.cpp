@@ -273,7 +273,9 @@ struct Scanner {
       if (!has0 && !has1) continue;
       const int lo = !has1 ? span[0].lo : !has0 ? span[1].lo : std::min(span[0].lo, span[1].lo);
       const int hi = !has1 ? span[0].hi : !has0 ? span[1].hi : std::max(span[0].hi, span[1].hi);
-      for (int seg_x = lo & ~1; seg_x <= hi; seg_x += 2 * kFragmentQuads) {
+      // Segments start on 4-pixel columns, so that the two quads a texture lookup's vector holds
+      // (llvmpipe's 4 x 2 pixels, Invocations::set_sampling_vectors) share a segment and a batch.
+      for (int seg_x = lo & ~3; seg_x <= hi; seg_x += 2 * kFragmentQuads) {
         const int seg_quads = std::min(kFragmentQuads, (hi - seg_x) / 2 + 1);
         if (batch.quads + seg_quads > kFragmentQuads) sink.flush();
         const int base = 4 * batch.quads;
