@@ -58,6 +58,11 @@ struct FragmentProgram {
   // Whether shade_batch reads other lanes of a quad (derivatives). Only then do the lanes that
   // cover nothing need their own inputs (helper invocations); otherwise nothing can see them.
   virtual bool reads_quads() const { return false; }
+  // Whether the two quads llvmpipe shades as one vector (4 x 2 pixels, aligned) must reach
+  // shade_batch together, the one that covers nothing (or fails the depth test) as helper
+  // invocations while the other has a live lane: llvmpipe runs every lane of such a vector, and
+  // some texture lookups depend on all of them (Invocations::set_sampling_vectors).
+  virtual bool shades_whole_vectors() const { return false; }
 };
 
 // glPolygonMode(GL_FRONT_AND_BACK, GL_FILL / GL_LINE / GL_POINT).

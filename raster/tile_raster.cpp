@@ -193,7 +193,8 @@ FragmentSink::FragmentSink(const FragmentProgram& fs, Framebuffer& fb, int num_v
       depth_write_(state.depth_test && state.depth_write),
       depth_func_(state.depth_func),
       late_depth_(state.depth_test && fs.may_discard()),
-      helpers_(fs.reads_quads()),
+      helpers_(fs.reads_quads() || fs.shades_whole_vectors()),
+      vectors_(fs.shades_whole_vectors()),
       blend_(state.blend),
       color_mask_(state.color_mask),
       srgb_write_(state.framebuffer_srgb),
@@ -276,7 +277,8 @@ struct Scanner {
       // Segments start on 4-pixel columns, so that the two quads a texture lookup's vector holds
       // (llvmpipe's 4 x 2 pixels, Invocations::set_sampling_vectors) share a segment and a batch.
       for (int seg_x = lo & ~3; seg_x <= hi; seg_x += 2 * kFragmentQuads) {
-        const int seg_quads = std::min(kFragmentQuads, (hi - seg_x) / 2 + 1);
+        // Whole vectors (two quads) where the program shades them together.
+        const int seg_quads = std::min(kFragmentQuads, ((hi - seg_x) / 2 + 1 + int(sink.vectors_)) & ~int(sink.vectors_));
         if (batch.quads + seg_quads > kFragmentQuads) sink.flush();
         const int base = 4 * batch.quads;
         const int lanes = 4 * seg_quads;
@@ -337,12 +339,15 @@ struct Scanner {
         }
         for (int l = base; l < base + lanes; ++l) batch.front_facing[l] = t.front_facing;
 
-    // Keep only quads with a live lane.
+        // Keep only quads with a live lane, and their vector's other quad for shades_whole_vectors.
+        auto any_live = [&](int q) {
+          const int l = base + 4 * q;
+          return (batch.live[l] | batch.live[l + 1] | batch.live[l + 2] | batch.live[l + 3]) != 0;
+        };
         int kept = batch.quads;
         for (int q = 0; q < seg_quads; ++q) {
           const int src = base + 4 * q;
-          if (!(batch.live[src] | batch.live[src + 1] | batch.live[src + 2] | batch.live[src + 3]))
-            continue;
+          if (!any_live(q) && !(sink.vectors_ && any_live(q ^ 1))) continue;
           const int dst = 4 * kept++;
           if (dst != src) sink.move_quad(src, dst);
         }

@@ -47,6 +47,7 @@ class FragmentSink {
   DepthFunc depth_func_;
   bool late_depth_;  // depth written after shading (the program may discard)
   bool helpers_;     // lanes that cover nothing get their own inputs (the program reads quads)
+  bool vectors_;     // a vector's uncovered quad is shaded with its covered one (shades_whole_vectors)
   BlendState blend_;
   ColorMask color_mask_;
   bool srgb_write_;

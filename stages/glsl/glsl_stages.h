@@ -72,6 +72,7 @@ class GlslFragment final : public FragmentProgram {
   void shade_batch(FragmentBatch& batch) const override;
   bool may_discard() const override { return sp_.exe->may_discard(); }
   bool reads_quads() const override { return sp_.exe->reads_quads(); }
+  bool shades_whole_vectors() const override { return samples_textures_; }
 
  private:
   void shade_lanes(FragmentBatch& batch, int first, int n) const;  // lanes [first, first + n)

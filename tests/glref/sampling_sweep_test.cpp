@@ -95,11 +95,7 @@ struct Case {
   // encodes by GL's equation; a generated texel can then be one 8-bit step away, and a lookup by
   // at most the largest step of the decoded scale (0.0089, at k = 254).
   float tolerance = 0.0f;  // 0: bit-exact
-  // Minification and magnification filters that differ, filtered in float: llvmpipe decides how
-  // to filter the GL_NEAREST lanes for a vector of two quads (texture::linear_in_vector), tessref
-  // for the quads of the vector that the triangle covers: along the diagonal of the full-screen
-  // pair of triangles the other quad is the other triangle's. A lane differs there by one float
-  // ulp, or, at an exact texel edge, by reading the lower texel of the pair. At most this share.
+  // The share of lookups that may differ beyond the tolerance, where a case says why.
   double max_differing = 0.0;
 };
 
@@ -120,17 +116,14 @@ std::string function(int f) { return "uniforms.u_function=" + std::to_string(f);
 
 bool linear_image(const std::string& filter) { return filter.rfind("linear", 0) == 0; }
 
-// A case and what it must show (Case): bit-exact unless an sRGB format's generated levels or
-// filters that differ for minification and magnification on llvmpipe's float path apply.
+// A case and what it must show (Case): bit-exact unless an sRGB format's generated levels apply.
+// Filters that differ for minification and magnification are bit-exact too: llvmpipe filters the
+// GL_NEAREST lanes of a vector of two quads by the GL_LINEAR ones (texture::linear_in_vector), and
+// the rasterizer hands tessref's fragment stage the same vectors, an uncovered quad as helpers.
 Case make_case(const std::string& file, const std::string& format, const std::string& min, const std::string& mag,
                const std::string& wrap, int fn, const std::vector<std::string>& extra = {}) {
   Case c{with(with(texture(file, format, min, mag, wrap), {function(fn)}), extra)};
   if (format.find("SRGB") != std::string::npos) c.tolerance = 0.0089f;
-  const bool unorm8 = format == "GL_RGBA8" || format == "GL_RGB8" || format == "GL_RG8" || format == "GL_R8";
-  const bool fixed_point = unorm8 && (wrap == "repeat" || wrap == "clamp_to_edge");
-  const bool one_lod_a_quad = fn == 0 || fn == 4 || fn == 8;  // implicit LOD without bias
-  const bool filters = fn <= 5 || fn == 8;  // not texelFetch, the queries or textureGather
-  if (filters && linear_image(min) != linear_image(mag) && !(fixed_point && one_lod_a_quad)) c.max_differing = 0.005;
   return c;
 }
 
@@ -143,7 +136,6 @@ Case shadow_case(const std::string& format, const std::string& min, const std::s
                "textures.u_tex.compare_mode=\"compare_ref_to_texture\"", "textures.u_tex.compare_func=\"" + func + "\"",
                function(fn)})};
   c.sets = with(c.sets, extra);
-  if (fn <= 5 && linear_image(min) != linear_image(mag)) c.max_differing = 0.005;  // as make_case says
   return c;
 }
 
@@ -332,10 +324,9 @@ Case buffer_case(const std::string& format, std::size_t offset, std::size_t size
 // 16 faces with glGenerateMipmap, stored in `format`, GL_TEXTURE_CUBE_MAP_SEAMLESS on or off; or a
 // samplerCubeShadow (lookup_cube_shadow.frag) on gray faces stored in a depth format, one level.
 // The wraps are clamp-to-edge: llvmpipe ignores them on cube maps, where GL applies them to each
-// face when seamless filtering is off (docs/textures.md). What it must show follows make_case; and
+// face when seamless filtering is off (docs/textures.md). What it must show follows make_case;
 // where seamless GL_LINEAR filtering meets a corner, llvmpipe sums the whole vector's texels by
-// weight (texture::cube_corners), which tessref decides for the quads of the vector that the
-// triangle covers, as for differing filters: at most that share differs.
+// weight (texture::cube_corners), as tessref does for the same vectors.
 Case cube_case(bool array, const std::string& format, const std::string& min, const std::string& mag, bool seamless, int fn,
                const std::string& compare_func = "") {
   const bool shadow = !compare_func.empty();
@@ -344,11 +335,6 @@ Case cube_case(bool array, const std::string& format, const std::string& min, co
     layers += std::string(k ? ", " : "") + "\"sampling/cube_16_" + (shadow ? "depth" : "face") + std::to_string(k) + ".png\"";
   Case c;
   if (format.find("SRGB") != std::string::npos) c.tolerance = 0.0089f;  // as make_case says
-  // Differing filters as make_case: the 8-bit path with one LOD a quad (no mip filter: a cube map
-  // with one takes a LOD per invocation) is exact.
-  const bool fixed_point = format == "GL_RGBA8" && !(seamless && (linear_image(min) || linear_image(mag)));
-  const bool one_lod_a_quad = fn == 0 && min.find("mipmap") == std::string::npos;
-  if (fn <= 3 && linear_image(min) != linear_image(mag) && !(fixed_point && one_lod_a_quad)) c.max_differing = 0.005;
   c.sets = {std::string("fragment=\"sampling/lookup_cube") + (shadow ? "_shadow" : array ? "_array" : "") + ".frag\"",
             "textures.u_tex={\"path\": null, \"target\": \"" + std::string(array ? "GL_TEXTURE_CUBE_MAP_ARRAY" : "GL_TEXTURE_CUBE_MAP") +
                 "\", \"layers\": [" + layers + "], \"internalformat\": \"" + format + "\", \"generate_mipmap\": " +
@@ -360,10 +346,7 @@ Case cube_case(bool array, const std::string& format, const std::string& min, co
   // so the two agree but where the quad's x and y do not change: there llvmpipe's ρ comes from an
   // r it was not given. At most this share (measured: 2 of 16,384).
   if (fn == 7) c.max_differing = 0.0005;
-  if (seamless) {
-    c.sets.push_back("draw.enable=[\"GL_TEXTURE_CUBE_MAP_SEAMLESS\"]");
-    if (fn <= 3 && (linear_image(min) || linear_image(mag))) c.max_differing = 0.005;
-  }
+  if (seamless) c.sets.push_back("draw.enable=[\"GL_TEXTURE_CUBE_MAP_SEAMLESS\"]");
   return c;
 }
 

@@ -273,7 +273,7 @@ TEST(DrawsScene, BadFramebuffersNameTheKeyAndTheRule) {
   expect_error({"framebuffer.color.0.file=\"heightmap.pgm\""}, "is 32x32, the image 256x256");
   expect_error({"framebuffer.color.0.file=\"missing.png\""}, "framebuffer.color.0: ");
   expect_error({"draws.1.clear={}"}, "draws.1.clear.color: give color, depth or both");
-  expect_error({"draws.1.enable=[\"GL_FRAMEBUFFER_sRGB\"]"}, "GL_FRAMEBUFFER_SRGB or GL_DEPTH_CLAMP, got a string (\"GL_FRAMEBUFFER_sRGB\")");
+  expect_error({"draws.1.enable=[\"GL_FRAMEBUFFER_sRGB\"]"}, "GL_DEPTH_CLAMP or GL_TEXTURE_CUBE_MAP_SEAMLESS, got a string (\"GL_FRAMEBUFFER_sRGB\")");
   const std::string mesh = error_of("../../../scenes/default.json", {"framebuffer={\"color\": \"x.png\"}"});
   EXPECT_NE(mesh.find("framebuffer: takes a scene of draws"), std::string::npos) << mesh;
 }
