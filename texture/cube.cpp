@@ -45,6 +45,8 @@ struct Footprint {
   float ws, wt;
   bool off[4];
   bool corner() const { return (off[0] || off[1]) && (off[2] || off[3]); }
+  // Whether texel k (x0 y0, x1 y0, x0 y1, x1 y1) is the one a corner lacks.
+  bool missing(int k) const { return off[k & 1] && off[2 + (k >> 1)]; }
 };
 Footprint footprint(int size, const CubeFace& at) {
   Footprint f;
@@ -124,23 +126,21 @@ const float* texel(const Level& level, int first_layer, const TexelAt& at) {
 
 }  // namespace
 
-CubeFace cube_face(float x, float y, float z) {
+CubeFace cube_face(float x, float y, float z, bool derivative_path) {
   const float dir[3] = {x, y, z};
   const Major m = major_axis(dir);
   CubeFace f;
   f.face = face_of(m);
   const float a = std::fabs(dir[m.axis]);
-  const float half_over_ma = a > 0.0f ? 0.5f / a : 0.0f;
+  const float scale = derivative_path ? std::fabs(0.5f * (1.0f / dir[m.axis])) : a > 0.0f ? 0.5f / a : 0.0f;
   face_coords(m, dir, f.s, f.t);
-  f.s = f.s * half_over_ma + 0.5f;  // two roundings: a product, then a sum (no fused multiply-add)
-  f.t = f.t * half_over_ma + 0.5f;
+  f.s = f.s * scale + 0.5f;  // two roundings: a product, then a sum (no fused multiply-add)
+  f.t = f.t * scale + 0.5f;
   return f;
 }
 
 CubeFace cube_face_with_derivatives(const float dir[3], const float dx[3], const float dy[3], float d[4]) {
   const Major m = major_axis(dir);
-  CubeFace f;
-  f.face = face_of(m);
   const float ima = 1.0f / dir[m.axis];
   const float ima_half = 0.5f * ima;
   float sc, tc, sdx, tdx, sdy, tdy;
@@ -152,10 +152,7 @@ CubeFace cube_face_with_derivatives(const float dir[3], const float dx[3], const
   d[1] = (tdx - ma_dx * tc) * ima_half;
   d[2] = (sdy - ma_dy * sc) * ima_half;
   d[3] = (tdy - ma_dy * tc) * ima_half;
-  const float scale = std::fabs(ima_half);
-  f.s = sc * scale + 0.5f;
-  f.t = tc * scale + 0.5f;
-  return f;
+  return cube_face(dir[0], dir[1], dir[2], true);
 }
 
 bool cube_corner(int size, const CubeFace& at) { return footprint(size, at).corner(); }
@@ -186,12 +183,11 @@ void filter_cube_seamless(const Level& level, int first_layer, const CubeFace& a
   // The weights, the corner's (if any) split in thirds among the other three.
   const float wx0 = 1.0f - f.ws, wy0 = 1.0f - f.wt;
   float w[4] = {wx0 * wy0, f.ws * wy0, wx0 * f.wt, f.ws * f.wt};
-  const bool corner[4] = {f.off[0] && f.off[2], f.off[1] && f.off[2], f.off[0] && f.off[3], f.off[1] && f.off[3]};
   float share = 0.0f;
   for (int k = 0; k < 4; ++k)
-    if (corner[k]) share = w[k];
+    if (f.missing(k)) share = w[k];
   share = share * (1.0f / 3.0f);
-  for (int k = 0; k < 4; ++k) w[k] = corner[k] ? 0.0f : w[k] + share;
+  for (int k = 0; k < 4; ++k) w[k] = f.missing(k) ? 0.0f : w[k] + share;
   if (compare) {
     float sum = pass[0] ? w[0] : 0.0f;
     for (int k = 1; k < 4; ++k) sum = (pass[k] ? w[k] : 0.0f) + sum;
@@ -215,13 +211,12 @@ void gather_cube_seamless(const Level& level, int first_layer, const CubeFace& a
     const float* p = texel(level, first_layer, at4[std::size_t(k)]);
     v[k] = compare ? (passes(*compare, p[0]) ? 1.0f : 0.0f) : p[channel];
   }
-  const bool corner[4] = {f.off[0] && f.off[2], f.off[1] && f.off[2], f.off[0] && f.off[3], f.off[1] && f.off[3]};
   if (average_corner && f.corner()) {
     for (int k = 0; k < 4; ++k)
-      if (corner[k]) v[k] = 0.0f;
+      if (f.missing(k)) v[k] = 0.0f;
     const float mean = (1.0f / 3.0f) * ((v[0] + v[1]) + (v[2] + v[3]));
     for (int k = 0; k < 4; ++k)
-      if (corner[k]) v[k] = mean;
+      if (f.missing(k)) v[k] = mean;
   }
   out[0] = v[2];  // i0 j1
   out[1] = v[3];  // i1 j1

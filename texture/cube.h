@@ -18,12 +18,14 @@ struct CubeFace {
 
 // GL 4.6 table 8.19's selection: z when |r_z| >= max(|r_x|, |r_y|), else x when |r_x| > |r_y|,
 // else y; the major coordinate's sign bit picks the negative face. s = s_c * (0.5 / |m_a|) + 0.5
-// (0 in place of 0.5 / |m_a| when m_a is 0).
-CubeFace cube_face(float x, float y, float z);
+// (0 in place of 0.5 / |m_a| when m_a is 0); on llvmpipe's derivative path (`derivative_path`)
+// s = s_c * |0.5 * (1/m_a)| + 0.5, which can round differently.
+CubeFace cube_face(float x, float y, float z, bool derivative_path = false);
 
 // The same face with the derivatives of the direction (dx, dy: d/dx and d/dy of x, y and z)
 // carried onto it, for the LOD: ds = (ds_c - (dm_a * (1/m_a)) * s_c) * (0.5 * (1/m_a)), likewise
-// for t. The coordinates are then s_c * |0.5 * (1/m_a)| + 0.5. `d` gets ds/dx, dt/dx, ds/dy, dt/dy.
+// for t. The coordinates are cube_face's on the derivative path. `d` gets ds/dx, dt/dx, ds/dy,
+// dt/dy.
 CubeFace cube_face_with_derivatives(const float dir[3], const float dx[3], const float dy[3], float d[4]);
 
 // How one level of a cube map is filtered seamlessly: GL_LINEAR's four texels, those that fall

@@ -246,10 +246,7 @@ LodInput lod_on_face(const Texture& t, const LodInput& in, bool query) {
 // The face and coordinates on it of a cube map lookup at direction (at.s, at.t, at.r): by the
 // derivative path's arithmetic when it is taken (the two differ in the scale's rounding).
 CubeFace face_of_lookup(const Texture& t, const Coords& at, const LodInput& in) {
-  if (!cube_derivatives(t, in, false)) return cube_face(at.s, at.t, at.r);
-  const float dir[3] = {at.s, at.t, at.r}, zero[3] = {0.0f, 0.0f, 0.0f};
-  float unused[4];
-  return cube_face_with_derivatives(dir, zero, zero, unused);
+  return cube_face(at.s, at.t, at.r, cube_derivatives(t, in, false));
 }
 
 // 1 as format f's texels hold it: the integer 1 for integer formats.
