@@ -1,0 +1,191 @@
+#!/usr/bin/python3
+"""tessref import CAPTURE --out DIR [--event N]: an application's frame capture as a tessref scene.
+
+`tessref import` runs this script (installed with tessref). CAPTURE is an apitrace trace; N is a
+call number, by default the last GL_PATCHES draw of the capture's last frame. DIR receives
+scene.json (the frame's draws up to N, docs/draws.md), the buffers, shaders and textures it
+names, gpu.png (the driver's image after draw N, from retracing the capture) and report.txt
+(what could not be carried, by draw). DIR appears whole or not at all: the files are written to a
+sibling folder that is renamed at the end. Exit status 2, with one line on stderr, for a capture
+that cannot be imported.
+"""
+
+import argparse
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+from apitrace_reader import Call, read_calls  # noqa: E402
+from frame_scene import FrameScene, build_scene  # noqa: E402
+from gl_state import DRAW_CALLS, GlState  # noqa: E402
+from import_error import ImportFailure  # noqa: E402
+
+
+def capture_kind(path):
+    with open(path, "rb") as f:
+        head = f.read(8)
+    if head.startswith(b"RDOC"):
+        return "renderdoc"
+    if head.startswith(b"at") or head.startswith(b"\x1f\x8b"):
+        return "apitrace"
+    raise ImportFailure("%s is neither a RenderDoc capture (.rdc) nor an apitrace trace (.trace): its first bytes "
+                        "are %r" % (path, head))
+
+
+def is_patches_draw(call):
+    return call.name in DRAW_CALLS and call.arg("mode") == "GL_PATCHES"
+
+
+def import_apitrace(path, event, progress):
+    state = GlState()
+    frame = FrameScene(state, os.path.basename(path))
+    last_frame = None
+    calls = 0
+    target = None
+    for call in read_calls(path, event):
+        calls += 1
+        if progress and calls % 20000 == 0:
+            sys.stderr.write("\rtessref import: %d calls read" % calls)
+        state.apply(call)
+        if state.api == "gles":
+            raise ImportFailure("the trace is of an OpenGL ES context (call %d, %s): tessref replays desktop GL 4.x "
+                                "core draws" % (call.no, call.name))
+        if call.name == "glClear":
+            frame.clear(call)
+        elif call.name in DRAW_CALLS:
+            frame.draw(call)
+        if event is not None and call.no == event:
+            if call.name not in DRAW_CALLS:
+                raise ImportFailure("call %d is %s, not a draw call" % (event, call.name))
+            if not frame.draws or frame.draws[-1][0] != event:
+                reasons = "; ".join(text for no, text in frame.report if no == event)
+                raise ImportFailure("draw %d cannot be replayed: %s" % (event, reasons or "see the report"))
+            target = frame
+            break
+        if call.flags & Call.END_FRAME:
+            if frame.draws:
+                last_frame = frame
+            frame = FrameScene(state, os.path.basename(path))
+    if progress and calls >= 20000:
+        sys.stderr.write("\n")
+    if event is not None and target is None:
+        raise ImportFailure("the trace has no call %d (it ends after %d calls)" % (event, calls))
+    if target is None:
+        target = frame if frame.draws else last_frame
+        if target is None:
+            raise ImportFailure("the trace has no draw call")
+        patches = [i for i, (no, d, _, _) in enumerate(target.draws) if d["mode"] == "GL_PATCHES"]
+        if not patches:
+            raise ImportFailure("the trace's last frame has no GL_PATCHES draw that tessref can replay (%d other "
+                                "draws); name a draw with --event" % len(target.draws))
+        del target.draws[patches[-1] + 1:]
+    if state.unmodelled:
+        for name, (first, count) in sorted(state.unmodelled.items(), key=lambda kv: kv[1][0]):
+            target.note(first, "%s (%d call%s from call %d) changes state the importer does not model"
+                        % (name, count, "" if count == 1 else "s", first))
+    for no, text in state.notes:
+        target.note(no, text)
+    return target
+
+
+def retrace_image(path, call_no, out_dir, report):
+    """The driver's own image after the draw, by retracing the capture (apitrace's eglretrace)."""
+    retrace = shutil.which("eglretrace")
+    if retrace is None:
+        report.append((None, "eglretrace is missing: no gpu.png"))
+        return None
+    snap_dir = os.path.join(out_dir, ".snapshots")
+    os.mkdir(snap_dir)
+    env = dict(os.environ, WAFFLE_PLATFORM="surfaceless_egl")
+    result = subprocess.run([retrace, "-S", str(call_no), "-s", snap_dir + "/", path], env=env,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=600)
+    images = sorted(os.listdir(snap_dir))
+    name = None
+    if result.returncode == 0 and images:
+        os.replace(os.path.join(snap_dir, images[-1]), os.path.join(out_dir, "gpu.png"))
+        name = "gpu.png"
+    else:
+        tail = result.stderr.decode("utf-8", "replace").strip().splitlines()[-1:] or ["no image"]
+        report.append((None, "eglretrace could not give the image after call %d: %s" % (call_no, tail[0])))
+    shutil.rmtree(snap_dir)
+    return name
+
+
+def write_output(frame, scene, capture, capture_kind_name, target_no, out_dir, gpu):
+    for name, data in frame.files.contents.items():
+        path = os.path.join(out_dir, name)
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(path, "wb") as f:
+            f.write(data)
+    with open(os.path.join(out_dir, "scene.json"), "w") as f:
+        json.dump(scene, f, indent=1)
+        f.write("\n")
+    lines = ["capture: %s (%s)" % (os.path.abspath(capture), capture_kind_name), "draw: call %d" % target_no,
+             "draws in the scene: %d" % len(scene["draws"]), "gpu image: %s" % (gpu or "none"), ""]
+    if frame.report:
+        lines.append("not carried, or carried with a caveat:")
+        for no, text in frame.report:
+            lines.append("  %s%s" % ("call %d: " % no if no is not None else "", text))
+    else:
+        lines.append("everything the draws read was carried")
+    with open(os.path.join(out_dir, "report.txt"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def main():
+    parser = argparse.ArgumentParser(prog="tessref import", description=__doc__.split("\n\n")[0])
+    parser.add_argument("capture")
+    parser.add_argument("--out", required=True)
+    parser.add_argument("--event", type=int)
+    parser.add_argument("--quiet", action="store_true")
+    args = parser.parse_args()
+    out = os.path.abspath(args.out)
+    staging = None
+    try:
+        if not os.path.isfile(args.capture):
+            raise ImportFailure("%s is not a file" % args.capture)
+        if os.path.lexists(out) and (not os.path.isdir(out) or os.listdir(out)):
+            raise ImportFailure("%s already exists and is not an empty folder: choose another --out" % args.out)
+        if args.event is not None and args.event < 0:
+            raise ImportFailure("--event %d: call numbers start at 0" % args.event)
+        kind = capture_kind(args.capture)
+        if kind == "renderdoc":
+            raise ImportFailure("RenderDoc captures are not imported yet: capture the application with apitrace "
+                                "(docs/replay.md)")
+        frame = import_apitrace(args.capture, args.event, not args.quiet)
+        scene = build_scene(frame)
+        target_no = frame.draws[-1][0]
+        parent = os.path.dirname(out) or "."
+        os.makedirs(parent, exist_ok=True)
+        staging = tempfile.mkdtemp(prefix="." + os.path.basename(out) + ".partial-", dir=parent)
+        gpu = retrace_image(args.capture, target_no, staging, frame.report)
+        write_output(frame, scene, args.capture, kind, target_no, staging, gpu)
+        if os.path.isdir(out):
+            os.rmdir(out)
+        os.rename(staging, out)
+        staging = None
+        carried = len(scene["draws"])
+        print("tessref import: %s (%s), call %d -> %s: scene.json (%d draw%s), %s report.txt (%d note%s)"
+              % (args.capture, kind, target_no, args.out, carried, "" if carried == 1 else "s",
+                 "gpu.png," if gpu else "no gpu.png,", len(frame.report), "" if len(frame.report) == 1 else "s"))
+        for no, text in frame.report:
+            print("  %s%s" % ("call %d: " % no if no is not None else "", text))
+        return 0
+    except ImportFailure as e:
+        sys.stderr.write("tessref import: error: %s\n" % e)
+        return 2
+    except OSError as e:
+        sys.stderr.write("tessref import: error: %s\n" % e)
+        return 2
+    finally:
+        if staging is not None:
+            shutil.rmtree(staging, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
