@@ -18,6 +18,7 @@ void add_verify_command(CLI::App& app);  // cli/verify_command.cpp
 void add_compare_tessellators_command(CLI::App& app);  // cli/compare_tessellators_command.cpp
 void add_inspect_command(CLI::App& app);  // cli/inspect_command.cpp
 void add_stats_command(CLI::App& app);    // cli/stats_command.cpp
+void add_import_command(CLI::App& app);   // cli/import_command.cpp
 // The command line is stored in the capture's manifest.
 void add_capture_command(CLI::App& app, int argc, char** argv);  // cli/capture_command.cpp
 

@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   tessref::cli::add_compare_tessellators_command(app);
   tessref::cli::add_inspect_command(app);
   tessref::cli::add_stats_command(app);
+  tessref::cli::add_import_command(app);
 
   // The memory budget holds for every command; it is set once the command line is read, before
   // the command runs. Below 256 MiB the libraries tessref loads (OpenImageIO's codecs alone map

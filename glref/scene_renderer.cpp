@@ -286,6 +286,10 @@ SceneRenderer::~SceneRenderer() {
 // Uniforms the driver optimized away (e.g. the lights in normals.frag) are skipped.
 void SceneRenderer::set_uniforms(const Program& program, const ShaderSettings& shaders) const {
   program.use();
+  if (!shaders.scene_uniforms) {
+    for (const UniformSetting& u : shaders.uniforms) set_user_uniform(program, u);
+    return;
+  }
   auto loc = [&](const char* name) { return glGetUniformLocation(program.id(), name); };
   const auto vs = programs::TransformVertexShader::from(model_, view_projection_);
   const TessLevelSettings lv = level_settings(scene_, view_projection_);

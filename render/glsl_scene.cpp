@@ -319,7 +319,7 @@ SceneProgram build_scene_program(const Scene& scene, const ShaderSettings& shade
   if (shaders.program == ShaderProgram::Twins && program->has_tes())
     program->override_tes_layout(TessLayout{TessDomain::Triangles, scene.tessellation.spacing,
                                             scene.tessellation.winding, false});
-  set_scene_uniforms(scene, *program);
+  if (shaders.scene_uniforms) set_scene_uniforms(scene, *program);
   set_user_uniforms(scene, shaders, *program);
   SceneProgram out;
   bind_textures(scene, shaders, *program, out);

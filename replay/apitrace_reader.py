@@ -95,6 +95,9 @@ def read_calls(path, last_call=None):
         err = process.stderr.read().decode("utf-8", "replace")
         process.stderr.close()
         code = process.wait()
+    if "unexpected end of file" in err:
+        raise ImportFailure("%s is truncated: apitrace read %d calls, then the file ended in the middle of one"
+                            % (path, count))
     if code != 0 or (count == 0 and err.strip()):
         raise ImportFailure("apitrace cannot read %s: %s" % (path, err.strip().splitlines()[-1] if err.strip() else
                                                              "exit status %d" % code))

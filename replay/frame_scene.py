@@ -147,8 +147,9 @@ class FrameScene:
                     source = with_block_binding(source, kind, block, 0)
                     self.note(call.no, "%s block %s has no binding: GL's default 0, written as layout(binding = 0) "
                               "in the scene's copy of the %s shader" % (kind, block, stage))
-            labels = program.shader_labels.get(stage, [(None, None)])
-            shader_id, label = labels[0]
+            shader_ids = program.shader_labels.get(stage, [None])
+            shader_id = shader_ids[0]
+            label = s.shaders[shader_id].label if shader_id in s.shaders else None
             stem = "p%d" % s.program
             if label:
                 if not _SAFE_NAME.match(label) or ".." in label:
@@ -483,7 +484,7 @@ def build_scene(frame):
         "description": "imported from %s: %d draws of the frame up to call %d" % (frame.capture_name, len(draws), target_no),
         "image": {"width": size[0], "height": size[1]},
         "background": [0, 0, 0, 0],
-        "scene_uniforms": False,
+        "shaders": {"scene_uniforms": False},
         "buffers": frame.buffers,
         "framebuffer": {"color": color},
         "draws": draws,

@@ -96,7 +96,7 @@ class Program:
     def __init__(self):
         self.attached = []
         self.linked = None           # stage -> [sources], at the last glLinkProgram
-        self.shader_labels = {}      # stage -> [labels of the linked shader objects]
+        self.shader_labels = {}      # stage -> [ids of the linked shader objects, whose labels name files]
         self.bound_attribs = {}      # name -> index, from glBindAttribLocation (apitrace adds the linked ones)
         self.attribs = {}            # after link: name -> index
         self.recorded_attribs = {}   # apitrace's record of the next link's attribute locations
@@ -511,7 +511,7 @@ class GlState:
             if s is None:
                 continue
             p.linked.setdefault(s.stage, []).append(s.compiled if s.compiled is not None else s.source)
-            p.shader_labels.setdefault(s.stage, []).append((sid, s.label))
+            p.shader_labels.setdefault(s.stage, []).append(sid)
         p.uniform_names, p.uniform_values = {}, {}
         p.attribs, p.recorded_attribs = p.recorded_attribs, {}
         p.block_indices = {}

@@ -81,8 +81,9 @@ def import_apitrace(path, event, progress):
             raise ImportFailure("the trace has no draw call")
         patches = [i for i, (no, d, _, _) in enumerate(target.draws) if d["mode"] == "GL_PATCHES"]
         if not patches:
-            raise ImportFailure("the trace's last frame has no GL_PATCHES draw that tessref can replay (%d other "
-                                "draws); name a draw with --event" % len(target.draws))
+            raise ImportFailure("the trace's last frame has no GL_PATCHES draw that tessref can replay (it has %d "
+                                "draw%s of other modes); name a draw with --event"
+                                % (len(target.draws), "" if len(target.draws) == 1 else "s"))
         del target.draws[patches[-1] + 1:]
     if state.unmodelled:
         for name, (first, count) in sorted(state.unmodelled.items(), key=lambda kv: kv[1][0]):

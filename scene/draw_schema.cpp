@@ -327,6 +327,7 @@ ShaderSettings read_draw_shaders(JsonObject& o, const ShaderSettings& scene_shad
                  {"uniforms", json::object()},
                  {"attributes", json::object()},
                  {"patch_vertices", 3},
+                 {"scene_uniforms", scene_shaders.scene_uniforms},
                  {"batch_lanes", scene_shaders.batch_lanes},
                  {"max_instructions", scene_shaders.max_instructions}};
   merged.update(given);

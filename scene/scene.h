@@ -130,6 +130,10 @@ struct ShaderSettings {
   std::vector<std::pair<std::string, std::string>> attributes;
   std::vector<TextureSetting> textures;
   int patch_vertices = 3;  // GL_PATCH_VERTICES: the mesh's index list taken this many at a time
+  // The camera, lights, material and tessellation settings set the program's uniforms of the
+  // twins' names (u_model, u_view_proj, u_color, ...); an imported draw turns that off, since a
+  // uniform its application never set reads 0 on the driver.
+  bool scene_uniforms = true;
   int batch_lanes = 256;                        // shader::ExecLimits::batch_lanes
   std::uint64_t max_instructions = 50'000'000;  // shader::ExecLimits::max_instructions
 };

@@ -352,6 +352,7 @@ ShaderSettings read_shaders(JsonObject o, const JsonSource& source, const std::f
       s.textures.push_back(read_texture_setting(name, value, o.path_of("textures") + "." + name, source, base_dir));
   }
   s.patch_vertices = o.integer("patch_vertices", 1, 32);
+  s.scene_uniforms = o.boolean("scene_uniforms");
   s.batch_lanes = o.integer("batch_lanes", 1, shader::kMaxLanes);
   s.max_instructions = std::uint64_t(o.integer("max_instructions", 1, std::numeric_limits<int>::max()));
   o.finish();

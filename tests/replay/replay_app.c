@@ -2,7 +2,7 @@
  * frame into a framebuffer object over EGL surfaceless, then writes what glReadPixels gives to a
  * binary PPM (top row first).
  *
- *   replay_app OUT.ppm
+ *   replay_app [--untessellated | --gles | --label NAME] OUT.ppm
  *
  * The frame, in order:
  *   1. glClear of colour and depth;
@@ -13,6 +13,11 @@
  *      glBindBufferRange at offset 256, and a mip-mapped texture (glGenerateMipmap) on unit 1;
  *   4. one 16-vertex bicubic patch: glDrawArrays(GL_PATCHES, 0, 16).
  *
+ * --untessellated draws the plane alone; --gles makes an OpenGL ES 3.2 context and only clears;
+ * --label names the gem program's vertex shader object with glObjectLabel (the importer's file
+ * names come from labels, so a hostile one must be refused). These make the captures the import
+ * must refuse.
+ *
  * Under RenderDoc (renderdoccmd capture) the frame is bracketed by the in-app API's
  * StartFrameCapture / EndFrameCapture, the only way RenderDoc captures an application without a
  * window. Under apitrace nothing changes. */
@@ -20,7 +25,10 @@
 #include <dlfcn.h>
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
+#if __has_include(<renderdoc_app.h>)
 #include <renderdoc_app.h>
+#define HAVE_RENDERDOC_APP 1
+#endif
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -233,6 +241,7 @@ static void write_ppm(const char* path, const uint8_t* rgba) {
   if (fclose(f) != 0) fail("cannot write the output image");
 }
 
+#ifdef HAVE_RENDERDOC_APP
 static RENDERDOC_API_1_1_2* renderdoc(void) {
   void* lib = dlopen("librenderdoc.so", RTLD_NOW | RTLD_NOLOAD);
   if (!lib) return NULL;
@@ -241,14 +250,55 @@ static RENDERDOC_API_1_1_2* renderdoc(void) {
   if (!get || !get(eRENDERDOC_API_Version_1_1_2, (void**)&api)) return NULL;
   return api;
 }
+#endif
+
+/* --gles: an OpenGL ES 3.2 context that clears and reads back, nothing more. */
+static int gles_frame(EGLDisplay display, const char* out) {
+  const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_ES3_BIT, EGL_SURFACE_TYPE, 0, EGL_NONE};
+  EGLConfig config;
+  EGLint configs = 0;
+  if (!eglChooseConfig(display, config_attribs, &config, 1, &configs) || configs < 1) fail("no EGL ES config");
+  if (!eglBindAPI(EGL_OPENGL_ES_API)) fail("eglBindAPI(EGL_OPENGL_ES_API) failed");
+  const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 2, EGL_NONE};
+  EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, context_attribs);
+  if (context == EGL_NO_CONTEXT || !eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context))
+    fail("no OpenGL ES 3.2 context");
+  GLuint color, fbo;
+  glGenRenderbuffers(1, &color);
+  glBindRenderbuffer(GL_RENDERBUFFER, color);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, kSize, kSize);
+  glGenFramebuffers(1, &fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
+  glClearColor(0.2f, 0.4f, 0.6f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  static uint8_t pixels[kSize * kSize * 4];
+  glReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+  write_ppm(out, pixels);
+  eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  eglDestroyContext(display, context);
+  eglTerminate(display);
+  return 0;
+}
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    fprintf(stderr, "usage: replay_app OUT.ppm\n");
+  int untessellated = 0, gles = 0;
+  const char* label = NULL;
+  int arg = 1;
+  for (; arg < argc - 1; ++arg) {
+    if (strcmp(argv[arg], "--untessellated") == 0) untessellated = 1;
+    else if (strcmp(argv[arg], "--gles") == 0) gles = 1;
+    else if (strcmp(argv[arg], "--label") == 0 && arg + 1 < argc - 1) label = argv[++arg];
+    else break;
+  }
+  if (arg != argc - 1) {
+    fprintf(stderr, "usage: replay_app [--untessellated | --gles | --label NAME] OUT.ppm\n");
     return 2;
   }
+  const char* out = argv[arg];
   EGLDisplay display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL);
   if (display == EGL_NO_DISPLAY || !eglInitialize(display, NULL, NULL)) fail("no EGL surfaceless display");
+  if (gles) return gles_frame(display, out);
   const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE, 0, EGL_NONE};
   EGLConfig config;
   EGLint configs = 0;
@@ -259,7 +309,9 @@ int main(int argc, char** argv) {
   EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, context_attribs);
   if (context == EGL_NO_CONTEXT || !eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context))
     fail("no GL 4.5 core context");
+#ifdef HAVE_RENDERDOC_APP
   RENDERDOC_API_1_1_2* rdoc = renderdoc();
+#endif
 
   /* The framebuffer: RGBA8 colour and 24-bit depth. */
   GLuint color, depth, fbo;
@@ -277,6 +329,16 @@ int main(int argc, char** argv) {
 
   const GLuint plane_program = link(kPlaneVs, NULL, NULL, kPlaneFs);
   const GLuint gem_program = link(kGemVs, kGemTcs, kGemTes, kGemFs);
+  if (label) {
+    GLuint shaders[4];
+    GLsizei count = 0;
+    glGetAttachedShaders(gem_program, 4, &count, shaders);
+    for (GLsizei i = 0; i < count; ++i) {
+      GLint type = 0;
+      glGetShaderiv(shaders[i], GL_SHADER_TYPE, &type);
+      if (type == GL_VERTEX_SHADER) glObjectLabel(GL_SHADER, shaders[i], -1, label);
+    }
+  }
   const GLuint bicubic_program = link(kBicubicVs, kBicubicTcs, kBicubicTes, kBicubicFs);
 
   /* Ground plane. */
@@ -395,7 +457,9 @@ int main(int argc, char** argv) {
   glEnableVertexAttribArray(0);
 
   /* ---- the frame ---- */
+#ifdef HAVE_RENDERDOC_APP
   if (rdoc) rdoc->StartFrameCapture(NULL, NULL);
+#endif
   glViewport(0, 0, kSize, kSize);
   glClearColor(0.05f, 0.07f, 0.12f, 1.0f);
   glClearDepth(1.0);
@@ -408,6 +472,8 @@ int main(int argc, char** argv) {
   glUniform4f(glGetUniformLocation(plane_program, "u_tint"), 0.35f, 0.42f, 0.3f, 1.0f);
   glBindVertexArray(plane_vao);
   glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+
+  if (untessellated) goto read_back;
 
   glUseProgram(gem_program);
   glUniform1f(glGetUniformLocation(gem_program, "u_level"), 5.0f);
@@ -426,11 +492,14 @@ int main(int argc, char** argv) {
   glBindVertexArray(bicubic_vao);
   glDrawArrays(GL_PATCHES, 0, 16);
 
+read_back:;
   static uint8_t pixels[kSize * kSize * 4];
   glReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+#ifdef HAVE_RENDERDOC_APP
   if (rdoc) rdoc->EndFrameCapture(NULL, NULL);
+#endif
   if (glGetError() != GL_NO_ERROR) fail("a GL call failed");
-  write_ppm(argv[1], pixels);
+  write_ppm(out, pixels);
   eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   eglDestroyContext(display, context);
   eglTerminate(display);

@@ -1,0 +1,101 @@
+// `tessref import CAPTURE --out DIR [--event N]`: an application's frame capture as a scene of
+// draws (docs/replay.md). The importers are Python scripts installed with tessref (replay/): the
+// apitrace one reads `apitrace pickle`'s stream, the RenderDoc one its python module, which Debian
+// builds for /usr/bin/python3 only. This command finds the scripts and runs them; their exit
+// status (2: the capture cannot be imported, nothing written) is the command's.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cli/commands.h"
+#include "common/error.h"
+
+namespace tessref::cli {
+namespace {
+
+struct ImportArgs {
+  std::string capture, out;
+  long long event = -1;
+  bool quiet = false;
+};
+
+bool is_file(const std::filesystem::path& p) {
+  std::error_code ec;
+  return std::filesystem::is_regular_file(p, ec);
+}
+
+// TESSREF_REPLAY_DIR, else beside the installed binary (share/tessref/replay), else the
+// source tree this binary was built from.
+std::filesystem::path find_importer() {
+  const char* script = "tessref_import.py";
+  if (const char* env = std::getenv("TESSREF_REPLAY_DIR"); env && *env) {
+    const std::filesystem::path p = std::filesystem::path(env) / script;
+    if (!is_file(p)) throw InputError(std::string("TESSREF_REPLAY_DIR is ") + env + ", which holds no " + script);
+    return p;
+  }
+  std::vector<std::filesystem::path> tried;
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) tried.push_back((exe.parent_path() / TESSREF_REPLAY_EXE_RELATIVE / script).lexically_normal());
+  tried.push_back(std::filesystem::path(TESSREF_REPLAY_SOURCE_DIR) / script);
+  for (const auto& p : tried)
+    if (is_file(p)) return p;
+  std::string list;
+  for (const auto& p : tried) list += (list.empty() ? "" : ", ") + p.string();
+  throw InputError("cannot find the capture importer (tried " + list + "); set TESSREF_REPLAY_DIR to its folder");
+}
+
+int run_import(const ImportArgs& a) {
+  // Debian's python3: the RenderDoc module is built for it alone.
+  const std::string python = is_file("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+  const std::string script = find_importer().string();
+  std::vector<std::string> argv = {python, script, a.capture, "--out", a.out};
+  if (a.event >= 0) argv.insert(argv.end(), {"--event", std::to_string(a.event)});
+  if (a.quiet) argv.push_back("--quiet");
+  std::vector<char*> c_argv;
+  for (std::string& s : argv) c_argv.push_back(s.data());
+  c_argv.push_back(nullptr);
+  const pid_t pid = fork();
+  if (pid < 0) throw InputError(std::string("tessref import: cannot start python3: ") + std::strerror(errno));
+  if (pid == 0) {
+    execvp(c_argv[0], c_argv.data());
+    std::fprintf(stderr, "tessref import: error: cannot run %s: %s (install Debian's python3)\n", c_argv[0],
+                 std::strerror(errno));
+    _exit(2);
+  }
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) throw InputError(std::string("tessref import: waitpid: ") + std::strerror(errno));
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  std::fprintf(stderr, "tessref import: error: the importer was killed by signal %d\n", WTERMSIG(status));
+  return 3;
+}
+
+}  // namespace
+
+void add_import_command(CLI::App& app) {
+  auto args = std::make_shared<ImportArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "import",
+      "Turn a frame capture (an apitrace .trace) into a scene of draws: DIR/scene.json with its buffers, shaders "
+      "and textures, DIR/gpu.png (the driver's image after the draw) and DIR/report.txt (what could not be "
+      "carried). Exit 2, leaving no DIR, for a capture that cannot be imported (docs/replay.md)");
+  cmd->add_option("capture", args->capture, "the capture file")->required();
+  cmd->add_option("--out", args->out, "the folder to create (it must not exist, or be empty)")->required();
+  cmd->add_option("--event", args->event,
+                  "the draw: an apitrace call number (default: the last GL_PATCHES draw of the capture's last frame)")
+      ->check(kInteger)
+      ->check(CLI::Range(0LL, (1LL << 53)));
+  cmd->add_flag("--quiet", args->quiet, "no progress line");
+  cmd->callback([args] { set_exit_code(run_import(*args)); });
+}
+
+}  // namespace tessref::cli

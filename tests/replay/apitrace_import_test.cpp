@@ -1,0 +1,201 @@
+// tessref import of an apitrace trace of tests/replay/replay_app.c, captured here on the system's
+// GL driver (llvmpipe): the imported frame renders the application's own glReadPixels image, and
+// every capture the importer must refuse exits 2 with its reason and leaves no folder.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "../pipeline/test_util.h"
+
+namespace tessref::test {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+const std::string kApp = TESSREF_REPLAY_APP;
+const std::string kLyingBlob = std::string(TESSREF_SOURCE_DIR) + "/tests/replay/lying_blob.py";
+
+bool have(const char* tool) { return std::system((std::string("command -v ") + tool + " >/dev/null 2>&1").c_str()) == 0; }
+
+// One trace per application variant, captured once per test program into a shared folder.
+class ApitraceImport : public ::testing::Test {
+ protected:
+  static fs::path folder() {
+    static const fs::path dir = [] {
+      const fs::path d = fs::temp_directory_path() / ("tessref_replay_" + std::to_string(::getpid()));
+      fs::create_directories(d);
+      return d;
+    }();
+    return dir;
+  }
+  static void TearDownTestSuite() { fs::remove_all(folder()); }
+
+  // The trace of `replay_app FLAGS OUT.ppm` (apitrace trace --api egl), made on first use.
+  static fs::path trace(const std::string& name, const std::string& flags = "") {
+    const fs::path t = folder() / (name + ".trace");
+    if (!fs::exists(t)) {
+      const CliRun r = run_command("apitrace trace --api egl -o '" + t.string() + "' '" + kApp + "' " + flags + " '" +
+                                   (folder() / (name + ".ppm")).string() + "'");
+      EXPECT_EQ(r.exit_code, 0) << r.output;
+    }
+    return t;
+  }
+  static fs::path app_image(const std::string& name) { return folder() / (name + ".ppm"); }
+
+  void SetUp() override {
+    if (!have("apitrace") || !have("eglretrace")) GTEST_SKIP() << "apitrace is not installed (Debian package apitrace)";
+  }
+
+  // An import that must fail: exit 2, the reason on stderr, and no output folder (nor a staging one).
+  void expect_refused(const fs::path& capture, const std::string& extra, const std::string& reason) {
+    const fs::path parent = folder() / "refused";
+    fs::create_directories(parent);
+    const fs::path out = parent / "imported";
+    const CliRun r = run_cli("import '" + capture.string() + "' --out '" + out.string() + "' " + extra);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_THAT(r.output, HasSubstr(reason));
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_TRUE(fs::is_empty(parent)) << "a staging folder was left behind";
+  }
+};
+
+nlohmann::json read_json(const fs::path& p) {
+  std::ifstream in(p);
+  return nlohmann::json::parse(in);
+}
+
+// Pixels of two 8-bit images more than 1/255 apart, by `tessref diff --json`.
+long long pixels_over_one_step(const fs::path& a, const fs::path& b) {
+  const CliRun r = run_cli("diff --json --tolerance 1/255 '" + a.string() + "' '" + b.string() + "'");
+  EXPECT_LE(r.exit_code, 1) << r.output;
+  const auto j = nlohmann::json::parse(r.output.substr(r.output.find('{')));
+  return j.at("pixels_above_1_255").get<long long>();
+}
+
+TEST_F(ApitraceImport, TheImportedFrameRendersTheApplicationsImage) {
+  const fs::path t = trace("frame");
+  TempDir tmp;
+  const fs::path out = tmp.path() / "imported";
+  const CliRun import = run_cli("import --quiet '" + t.string() + "' --out '" + out.string() + "'");
+  ASSERT_EQ(import.exit_code, 0) << import.output;
+  EXPECT_THAT(import.output, HasSubstr("scene.json (3 draws), gpu.png"));
+  const CliRun render = run_cli("render '" + (out / "scene.json").string() + "' -o '" + (tmp.path() / "tessref.png").string() + "'");
+  ASSERT_EQ(render.exit_code, 0) << render.output;
+  // Measured: identical to the application's own read-back (0 of 65,536 pixels differ at all).
+  EXPECT_EQ(pixels_over_one_step(tmp.path() / "tessref.png", app_image("frame")), 0);
+  // The driver's image from retracing is the application's.
+  EXPECT_EQ(pixels_over_one_step(out / "gpu.png", app_image("frame")), 0);
+}
+
+TEST_F(ApitraceImport, TheSceneSaysWhatTheApplicationSaid) {
+  const fs::path t = trace("frame");
+  TempDir tmp;
+  const fs::path out = tmp.path() / "imported";
+  ASSERT_EQ(run_cli("import --quiet '" + t.string() + "' --out '" + out.string() + "'").exit_code, 0);
+  const nlohmann::json scene = read_json(out / "scene.json");
+  ASSERT_EQ(scene.at("draws").size(), 3u);
+  EXPECT_EQ(scene.at("shaders").at("scene_uniforms"), false);
+  EXPECT_EQ(scene.at("framebuffer").at("color").at(0).at("internalformat"), "GL_RGBA8");
+  EXPECT_EQ(scene.at("framebuffer").at("depth").at("internalformat"), "GL_DEPTH_COMPONENT24");
+  const nlohmann::json& plane = scene.at("draws").at(0);
+  EXPECT_EQ(plane.at("mode"), "GL_TRIANGLE_STRIP");
+  EXPECT_EQ(plane.at("clear").at("depth"), 1.0);
+  EXPECT_EQ(plane.at("clear").at("color").at(0).get<double>(), double(0.05f));
+  const nlohmann::json& gems = scene.at("draws").at(1);
+  EXPECT_EQ(gems.at("mode"), "GL_PATCHES");
+  EXPECT_EQ(gems.at("instancecount"), 3);
+  EXPECT_EQ(gems.at("basevertex"), 3);
+  EXPECT_EQ(gems.at("elements").at("offset"), 10);
+  EXPECT_EQ(gems.at("elements").at("type"), "GL_UNSIGNED_SHORT");
+  const nlohmann::json& arrays = gems.at("vertex_arrays");
+  EXPECT_EQ(arrays.at("in_normal").at("type"), "GL_SHORT");
+  EXPECT_EQ(arrays.at("in_normal").at("normalized"), true);
+  EXPECT_EQ(arrays.at("in_normal").at("offset"), 12);
+  EXPECT_EQ(arrays.at("in_color").at("stride"), 24);
+  EXPECT_EQ(arrays.at("in_offset").at("divisor"), 1);
+  // The per-instance offsets were written through glMapBufferRange: the bytes are the memcpy's.
+  const std::string instance_file = scene.at("buffers").at(arrays.at("in_offset").at("buffer").get<std::string>()).at("file");
+  std::ifstream in(out / instance_file, std::ios::binary);
+  float offsets[9] = {};
+  in.read(reinterpret_cast<char*>(offsets), sizeof offsets);
+  EXPECT_EQ(offsets[0], -0.85f);
+  EXPECT_EQ(offsets[4], 0.25f);
+  const nlohmann::json block = gems.at("uniform_buffers").at(0);
+  EXPECT_EQ(block.at("binding"), 1);
+  EXPECT_EQ(block.at("offset"), 256);
+  EXPECT_EQ(block.at("size"), 128);
+  const nlohmann::json& texture = gems.at("shaders").at("textures").at("u_albedo");
+  EXPECT_EQ(texture.at("generate_mipmap"), true);
+  EXPECT_EQ(texture.at("min_filter"), "linear_mipmap_linear");
+  EXPECT_EQ(texture.at("wrap_t"), "mirrored_repeat");
+  EXPECT_EQ(gems.at("shaders").at("uniforms").count("u_albedo"), 0u) << "a sampler's unit is not a uniform value";
+  const nlohmann::json& bicubic = scene.at("draws").at(2);
+  EXPECT_EQ(bicubic.at("patch_vertices"), 16);
+  EXPECT_EQ(bicubic.at("count"), 16);
+  EXPECT_EQ(bicubic.at("shaders").at("uniforms").at("u_level").at(0), 8.0);
+  const std::string report = [&] {
+    std::ifstream r(out / "report.txt");
+    return std::string(std::istreambuf_iterator<char>(r), {});
+  }();
+  EXPECT_THAT(report, HasSubstr("everything the draws read was carried"));
+}
+
+TEST_F(ApitraceImport, AnEventPicksAnEarlierDrawAndItsImage) {
+  const fs::path t = trace("frame");
+  const CliRun dump = run_command("apitrace dump '" + t.string() + "' | grep glDrawElementsInstancedBaseVertex");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(dump.output, m, std::regex("^(\\d+) glDrawElementsInstancedBaseVertex"))) << dump.output;
+  TempDir tmp;
+  const fs::path out = tmp.path() / "imported";
+  const CliRun import = run_cli("import --quiet '" + t.string() + "' --out '" + out.string() + "' --event " + m[1].str());
+  ASSERT_EQ(import.exit_code, 0) << import.output;
+  EXPECT_EQ(read_json(out / "scene.json").at("draws").size(), 2u);
+  ASSERT_EQ(run_cli("render '" + (out / "scene.json").string() + "' -o '" + (tmp.path() / "t.png").string() + "'").exit_code, 0);
+  EXPECT_EQ(pixels_over_one_step(tmp.path() / "t.png", out / "gpu.png"), 0);
+  // Not the whole frame's image: the bicubic patch comes after this draw.
+  EXPECT_GT(pixels_over_one_step(out / "gpu.png", app_image("frame")), 1000);
+}
+
+TEST_F(ApitraceImport, BadCapturesExitTwoAndLeaveNothing) {
+  const fs::path t = trace("frame");
+  TempDir tmp;
+  {  // the first 30,000 bytes of the trace
+    std::ifstream in(t, std::ios::binary);
+    std::string bytes(30000, '\0');
+    in.read(bytes.data(), bytes.size());
+    tmp.write("truncated.trace", bytes);
+  }
+  expect_refused(tmp.path() / "truncated.trace", "", "is truncated");
+  expect_refused(app_image("frame"), "", "is neither a RenderDoc capture (.rdc) nor an apitrace trace");
+  expect_refused(tmp.path() / "missing.trace", "", "is not a file");
+  expect_refused(trace("untessellated", "--untessellated"), "", "has no GL_PATCHES draw");
+  expect_refused(t, "--event 0", "call 0 is ");
+  expect_refused(t, "--event 999999", "the trace has no call 999999");
+  expect_refused(trace("gles", "--gles"), "", "OpenGL ES context");
+  expect_refused(trace("label", "--label ../x"), "", "label '../x' names a path outside the output folder");
+  const fs::path lying = tmp.path() / "lying.trace";
+  const CliRun patch = run_command("python3 '" + kLyingBlob + "' '" + t.string() + "' '" + lying.string() + "'");
+  ASSERT_EQ(patch.exit_code, 0) << patch.output;
+  expect_refused(lying, "", "declares 400 bytes but the trace holds 384");
+}
+
+TEST_F(ApitraceImport, AnExistingFolderIsNotOverwritten) {
+  const fs::path t = trace("frame");
+  TempDir tmp;
+  tmp.write("keep.txt", "mine");
+  const CliRun r = run_cli("import '" + t.string() + "' --out '" + tmp.path().string() + "'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.output, HasSubstr("already exists and is not an empty folder"));
+  EXPECT_TRUE(fs::exists(tmp.path() / "keep.txt"));
+}
+
+}  // namespace
+}  // namespace tessref::test
