@@ -12,6 +12,7 @@
 #include "cli/commands.h"
 #include "cli/shard.h"
 #include "cli/verify_campaign.h"
+#include "cli/verify_gpu.h"
 #include "cli/verify_html.h"
 #include "common/error.h"
 #include "io/output_files.h"
@@ -21,7 +22,7 @@ namespace tessref::cli {
 namespace {
 
 struct VerifyArgs {
-  std::string scene, ref, json, heat, images, html, out, shard;
+  std::string scene, ref, gpu, json, heat, images, html, out, shard;
   std::vector<std::string> sets, merge;
   int threads = 0;
   VerifyLimits limits;
@@ -67,12 +68,20 @@ void run_campaign(const VerifyArgs& a) {
 void run(VerifyArgs a) {
   a.limits.cracks_fail = !a.allow_cracks;
   if (!a.merge.empty()) return run_merge(a);
+  if (!a.gpu.empty()) {
+    const std::string mode = "with --gpu (it compares the image alone)";
+    for (const auto& [value, option] : {std::pair{a.ref, "--ref"}, {a.json, "--json"}, {a.heat, "--heat"},
+                                        {a.images, "--images"}, {a.html, "--html"}, {a.out, "--out"}, {a.shard, "--shard"}})
+      refuse(value, option, mode);
+    return set_exit_code(run_verify_gpu(a.scene, a.sets, a.gpu, a.threads));
+  }
   std::error_code ec;
   if (!a.scene.empty() && std::filesystem::is_directory(a.scene, ec)) return run_campaign(a);
   const std::string mode = "to one scene (give a folder of scenes for a campaign)";
   refuse(a.out, "--out", mode);
   refuse(a.shard, "--shard", mode);
-  if (a.ref.empty()) throw InputError("--ref DIR is required: the capture folder (tessref capture)");
+  if (a.ref.empty())
+    throw InputError("--ref DIR is required: the capture folder (tessref capture); or --gpu DIR for an imported frame (tessref import)");
   OutputFiles outputs;
   std::filesystem::path json_tmp, heat_tmp;
   if (!a.json.empty()) json_tmp = outputs.add("--json", a.json);
@@ -131,6 +140,10 @@ void add_verify_command(CLI::App& app) {
                 "after its file, --out gets the reports). Exit 0 when every tolerance holds, 1 when one does not");
   add_scene_options(cmd, args->scene, args->sets);
   cmd->add_option("--ref", args->ref, "the capture folder (a campaign: the folder of capture folders)");
+  cmd->add_option("--gpu", args->gpu,
+                  "instead of --ref: the GPU's image of an imported frame (tessref import's DIR, for DIR/gpu.png, or "
+                  "an image file); names the first pixel beyond 1/255, the draw and patch tessref drew there and "
+                  "the inspect commands that open them");
   cmd->add_option("--json", args->json, "also write the report as JSON (with --merge: the merged report)");
   cmd->add_option("--html", args->html,
                   "also write an HTML report into this folder: index.html (with --merge or a campaign: an index "

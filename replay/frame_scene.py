@@ -54,6 +54,8 @@ class FrameScene:
         self.draws = []               # (call number, draw dict, framebuffer id, framebuffer description)
         self.report = []              # (call number or None, text)
         self.pending_clear = None
+        self.call_names = {}          # call number -> the draw call's name
+        self.draw_calls = []          # after build_scene: scene draw index -> capture call
 
     def note(self, call_no, text):
         self.report.append((call_no, text))
@@ -131,6 +133,7 @@ class FrameScene:
                               "the draw's: the scene clears with the draw's")
                 d["clear"] = {k: v for k, v in clear.items() if not k.startswith("_")}
         self.draws.append((call.no, d, s.draw_framebuffer, fb))
+        self.call_names[call.no] = call.name
 
     def _shaders(self, call, program, sources, declarations, d):
         s = self.state
@@ -457,6 +460,7 @@ def build_scene(frame):
     """The scene JSON of the frame's draws (those into the target draw's framebuffer)."""
     target_no, target, target_fb, fb = frame.draws[-1]
     draws = []
+    frame.draw_calls = []
     for no, d, fb_id, _ in frame.draws:
         if fb_id != target_fb:
             frame.note(no, "this draw renders into framebuffer %d, not into framebuffer %d where the chosen draw "
@@ -464,6 +468,7 @@ def build_scene(frame):
                        % (fb_id, target_fb))
             continue
         draws.append(d)
+        frame.draw_calls.append({"draw": len(draws) - 1, "call": no, "name": frame.call_names.get(no, "")})
     size = fb["size"]
     if not size or not size[0]:
         raise ImportFailure("the framebuffer of call %d has no size the trace gives" % target_no)

@@ -126,8 +126,13 @@ def write_output(frame, scene, capture, capture_kind_name, target_no, out_dir, g
     with open(os.path.join(out_dir, "scene.json"), "w") as f:
         json.dump(scene, f, indent=1)
         f.write("\n")
+    with open(os.path.join(out_dir, "draws.json"), "w") as f:
+        json.dump(frame.draw_calls, f, indent=1)
+        f.write("\n")
     lines = ["capture: %s (%s)" % (os.path.abspath(capture), capture_kind_name), "draw: call %d" % target_no,
-             "draws in the scene: %d" % len(scene["draws"]), "gpu image: %s" % (gpu or "none"), ""]
+             "gpu image: %s" % (gpu or "none"), "draws in the scene (draws.json):"]
+    lines += ["  draw %d: call %d, %s" % (d["draw"], d["call"], d["name"]) for d in frame.draw_calls]
+    lines.append("")
     if frame.report:
         lines.append("not carried, or carried with a caveat:")
         for no, text in frame.report:

@@ -187,6 +187,39 @@ TEST_F(ApitraceImport, BadCapturesExitTwoAndLeaveNothing) {
   expect_refused(lying, "", "declares 400 bytes but the trace holds 384");
 }
 
+// A region of the GPU's image altered where tessref draws a gem (draw 1): verify names the
+// region's first pixel, the draw (and its capture call) and the patch, and the inspect commands;
+// the named patch command opens the application's own source lines.
+TEST_F(ApitraceImport, VerifyNamesWhereTheGpusImagePartsFromTessrefs) {
+  const fs::path t = trace("frame");
+  TempDir tmp;
+  const fs::path out = tmp.path() / "imported";
+  ASSERT_EQ(run_cli("import --quiet '" + t.string() + "' --out '" + out.string() + "'").exit_code, 0);
+  const std::string scene = (out / "scene.json").string();
+  const CliRun same = run_cli("verify '" + scene + "' --gpu '" + out.string() + "'");
+  EXPECT_EQ(same.exit_code, 0) << same.output;
+  EXPECT_THAT(same.output, HasSubstr("PASS: colour within 1/255 at all 65,536 pixels"));
+  const fs::path altered = tmp.path() / "altered.png";
+  const CliRun fill = run_command("oiiotool '" + (out / "gpu.png").string() + "' --fill:color=1,0,0 6x6+128+120 -o '" +
+                                  altered.string() + "'");
+  ASSERT_EQ(fill.exit_code, 0) << fill.output;
+  const CliRun r = run_cli("verify '" + scene + "' --gpu '" + altered.string() + "'");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("FAIL: 36 of 65,536 pixels differ by more than 1/255"));
+  EXPECT_THAT(r.output, HasSubstr("within x 128..133, y 120..125"));
+  EXPECT_THAT(r.output, HasSubstr("first differing pixel (128, 120)"));
+  EXPECT_THAT(r.output, HasSubstr("draw 1 (capture call "));
+  EXPECT_THAT(r.output, HasSubstr("glDrawElementsInstancedBaseVertex), patch 11,"));
+  EXPECT_THAT(r.output, HasSubstr("--pixel 128,120 --trace"));
+  EXPECT_THAT(r.output, HasSubstr("--draw 1 --patch 11 --trace"));
+  // The command it names, run: the gem shaders' own lines, with the values they computed.
+  const CliRun inspect = run_cli("inspect '" + scene + "' --draw 1 --patch 11 --trace");
+  ASSERT_EQ(inspect.exit_code, 0) << inspect.output;
+  EXPECT_THAT(inspect.output, HasSubstr("c_position = in_position * 0.45 + in_offset;"));
+  EXPECT_THAT(inspect.output, HasSubstr("gl_TessLevelOuter[1] = u_level + 1.0;"));
+  EXPECT_THAT(inspect.output, HasSubstr("gl_TessLevelOuter[1] = 6"));
+}
+
 TEST_F(ApitraceImport, AnExistingFolderIsNotOverwritten) {
   const fs::path t = trace("frame");
   TempDir tmp;

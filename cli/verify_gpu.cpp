@@ -1,0 +1,134 @@
+// `tessref verify SCENE --gpu DIR`: tessref's image of an imported frame against the GPU's own
+// image of it (DIR/gpu.png from `tessref import`, or any image file). Where they part by more than
+// 1/255, it names the first such pixel (reading order: top row first), the draw and the patch
+// whose fragment tessref kept there (the pixel's fragments replayed by inspect/inspect_pixel.h),
+// and the inspect commands that open them.
+#include "cli/verify_gpu.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.h"
+#include "common/error.h"
+#include "inspect/inspect_pixel.h"
+#include "io/image_output.h"
+#include "mesh/camera.h"
+#include "mesh/mesh_source.h"
+#include "render/render.h"
+#include "scene/scene_loader.h"
+
+namespace tessref::cli {
+namespace {
+
+std::string with_commas(long long v) {
+  std::string s = std::to_string(v);
+  for (int i = int(s.size()) - 3; i > 0; i -= 3) s.insert(std::size_t(i), ",");
+  return s;
+}
+
+// The shell word for a path (single quotes unless it needs none).
+std::string shell_word(const std::string& s) {
+  if (!s.empty() && s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_./-+,=:") ==
+                        std::string::npos)
+    return s;
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+// draws.json beside the scene (written by tessref import): which capture call each draw was.
+std::string capture_call(const std::filesystem::path& scene_dir, std::size_t draw) {
+  std::ifstream in(scene_dir / "draws.json");
+  if (!in) return {};
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (!j.is_array() || draw >= j.size() || !j[draw].is_object()) return {};
+  const nlohmann::json& d = j[draw];
+  if (!d.contains("call") || !d["call"].is_number_integer() || !d.contains("name") || !d["name"].is_string()) return {};
+  return " (capture call " + std::to_string(d["call"].get<long long>()) + ", " + d["name"].get<std::string>() + ")";
+}
+
+}  // namespace
+
+int run_verify_gpu(const std::string& scene_path, const std::vector<std::string>& sets, const std::string& gpu,
+                   int threads) {
+  if (scene_path.empty()) throw InputError("--gpu needs the imported SCENE (DIR/scene.json)");
+  std::error_code ec;
+  const std::filesystem::path gpu_image =
+      std::filesystem::is_directory(gpu, ec) ? std::filesystem::path(gpu) / "gpu.png" : std::filesystem::path(gpu);
+  Scene scene = load_scene(scene_path, sets);
+  if (scene.draws.empty()) throw InputError(scene.source + ": --gpu compares a scene of draws (tessref import writes one)");
+  const Rgb8Image reference = read_rgb8_image(gpu_image);
+  if (reference.width != scene.width || reference.height != scene.height)
+    throw InputError("--gpu: " + gpu_image.string() + " is " + std::to_string(reference.width) + " x " +
+                     std::to_string(reference.height) + ", the scene's image " + std::to_string(scene.width) + " x " +
+                     std::to_string(scene.height));
+  std::vector<std::string> warnings;
+  const Mesh mesh = build_mesh(scene.mesh, warnings);
+  scene.camera = fitted_camera(scene, mesh);
+  const Parallel parallel(threads);
+  Framebuffer fb;
+  render_scene(scene, mesh, parallel, fb, DrawOptions{});
+  const Rgb8Image ours = to_rgb8(fb);
+
+  long long differing = 0;
+  int largest = 0, first_x = -1, first_y = -1;
+  int box[4] = {scene.width, scene.height, -1, -1};  // x0, y0, x1, y1 (y from the top)
+  for (int y = 0; y < scene.height; ++y)
+    for (int x = 0; x < scene.width; ++x) {
+      const std::size_t at = (std::size_t(y) * std::size_t(scene.width) + std::size_t(x)) * 3;
+      int d = 0;
+      for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(int(ours.pixels[at + c]) - int(reference.pixels[at + c])));
+      if (d <= 1) continue;
+      if (differing++ == 0) first_x = x, first_y = y;
+      largest = std::max(largest, d);
+      box[0] = std::min(box[0], x), box[1] = std::min(box[1], y), box[2] = std::max(box[2], x), box[3] = std::max(box[3], y);
+    }
+  const long long pixels = (long long)scene.width * scene.height;
+  std::printf("tessref verify: %s against %s (%d x %d): ", scene_path.c_str(), gpu_image.string().c_str(), scene.width,
+              scene.height);
+  if (differing == 0) {
+    std::printf("PASS: colour within 1/255 at all %s pixels\n", with_commas(pixels).c_str());
+    return 0;
+  }
+  std::printf("FAIL: %s of %s pixels differ by more than 1/255 (largest %d/255), within x %d..%d, y %d..%d "
+              "(from the top-left)\n",
+              with_commas(differing).c_str(), with_commas(pixels).c_str(), largest, box[0], box[2], box[1], box[3]);
+  const std::size_t at = (std::size_t(first_y) * std::size_t(scene.width) + std::size_t(first_x)) * 3;
+  std::printf("  first differing pixel (%d, %d): tessref (%d, %d, %d), GPU (%d, %d, %d)\n", first_x, first_y,
+              ours.pixels[at], ours.pixels[at + 1], ours.pixels[at + 2], reference.pixels[at],
+              reference.pixels[at + 1], reference.pixels[at + 2]);
+  const std::string scene_word = shell_word(scene_path);
+  std::string patch_command;
+  try {
+    const PixelInspectResult r = inspect_draws_pixel(scene, first_x, first_y, parallel);
+    if (!r.winner) {
+      std::printf("  in tessref no draw's fragment stays there (the clear, or the framebuffer's first contents, "
+                  "show): the GPU drew something tessref did not\n");
+    } else {
+      const PixelFragment& f = r.fragments[*r.winner];
+      const std::size_t draw = f.draw.value_or(0);
+      const std::string call = capture_call(std::filesystem::path(scene_path).parent_path(), draw);
+      if (f.from_patch) {
+        std::printf("  tessref's fragment there: draw %zu%s, patch %zu, triangle %zu, gl_TessCoord (%g, %g, %g)\n", draw,
+                    call.c_str(), f.patch, f.triangle, f.tess_coord.x, f.tess_coord.y, f.tess_coord.z);
+        patch_command = "tessref inspect " + scene_word + " --draw " + std::to_string(draw) + " --patch " +
+                        std::to_string(f.patch) + " --trace";
+      } else {
+        std::printf("  tessref's fragment there: draw %zu%s, untessellated %s %zu\n", draw, call.c_str(),
+                    f.primitive.c_str(), f.triangle);
+      }
+    }
+  } catch (const InputError& e) {
+    std::printf("  (its fragments cannot be followed: %s)\n", e.what());
+  }
+  std::printf("  open it: tessref inspect %s --pixel %d,%d --trace\n", scene_word.c_str(), first_x, first_y);
+  if (!patch_command.empty()) std::printf("           %s\n", patch_command.c_str());
+  return 1;
+}
+
+}  // namespace tessref::cli
