@@ -41,15 +41,18 @@ std::string shell_word(const std::string& s) {
   return out + "'";
 }
 
-// draws.json beside the scene (written by tessref import): which capture call each draw was.
+// draws.json beside the scene (written by tessref import): which capture call or event each draw was.
 std::string capture_call(const std::filesystem::path& scene_dir, std::size_t draw) {
   std::ifstream in(scene_dir / "draws.json");
   if (!in) return {};
   const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
   if (!j.is_array() || draw >= j.size() || !j[draw].is_object()) return {};
   const nlohmann::json& d = j[draw];
-  if (!d.contains("call") || !d["call"].is_number_integer() || !d.contains("name") || !d["name"].is_string()) return {};
-  return " (capture call " + std::to_string(d["call"].get<long long>()) + ", " + d["name"].get<std::string>() + ")";
+  for (const char* unit : {"call", "event"})  // an apitrace call number, a RenderDoc event id
+    if (d.contains(unit) && d[unit].is_number_integer() && d.contains("name") && d["name"].is_string())
+      return std::string(" (capture ") + unit + " " + std::to_string(d[unit].get<long long>()) + ", " +
+             d["name"].get<std::string>() + ")";
+  return {};
 }
 
 }  // namespace

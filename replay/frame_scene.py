@@ -20,6 +20,17 @@ DEPTH_FORMATS = {"GL_DEPTH_COMPONENT24": "GL_DEPTH_COMPONENT24", "GL_DEPTH24_STE
 _SAFE_NAME = re.compile(r"^[A-Za-z0-9_][A-Za-z0-9_.-]{0,63}$")
 
 
+_TYPE_BYTES = {"GL_BYTE": 1, "GL_UNSIGNED_BYTE": 1, "GL_SHORT": 2, "GL_UNSIGNED_SHORT": 2, "GL_HALF_FLOAT": 2,
+               "GL_INT": 4, "GL_UNSIGNED_INT": 4, "GL_FLOAT": 4, "GL_FIXED": 4, "GL_DOUBLE": 8}
+
+
+def _element_bytes(size, gl_type):
+    """A vertex array element's bytes: what stride 0 (tightly packed) steps by."""
+    if gl_type not in _TYPE_BYTES:  # the packed 32-bit formats
+        return 4
+    return (4 if size == "GL_BGRA" else size) * _TYPE_BYTES[gl_type]
+
+
 def _gl_lower(value):
     return str(value).replace("GL_", "").lower()
 
@@ -55,6 +66,7 @@ class FrameScene:
         self.report = []              # (call number or None, text)
         self.pending_clear = None
         self.call_names = {}          # call number -> the draw call's name
+        self.unit = "call"            # what numbers a draw in the capture
         self.draw_calls = []          # after build_scene: scene draw index -> capture call
 
     def note(self, call_no, text):
@@ -343,7 +355,7 @@ class FrameScene:
                      "size": a.size if a.size != "GL_BGRA" else "GL_BGRA", "type": a.type}
             if a.normalized:
                 entry["normalized"] = True
-            if b.stride:
+            if b.stride and b.stride != _element_bytes(a.size, a.type):  # the packed stride is the scene's default
                 entry["stride"] = b.stride
             if b.offset + a.relative_offset:
                 entry["offset"] = b.offset + a.relative_offset
@@ -468,7 +480,7 @@ def build_scene(frame):
                        % (fb_id, target_fb))
             continue
         draws.append(d)
-        frame.draw_calls.append({"draw": len(draws) - 1, "call": no, "name": frame.call_names.get(no, "")})
+        frame.draw_calls.append({"draw": len(draws) - 1, frame.unit: no, "name": frame.call_names.get(no, "")})
     size = fb["size"]
     if not size or not size[0]:
         raise ImportFailure("the framebuffer of call %d has no size the trace gives" % target_no)

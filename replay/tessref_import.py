@@ -51,14 +51,19 @@ def import_apitrace(path, event, progress):
         calls += 1
         if progress and calls % 20000 == 0:
             sys.stderr.write("\rtessref import: %d calls read" % calls)
-        state.apply(call)
+        try:
+            state.apply(call)
+            if call.name == "glClear":
+                frame.clear(call)
+            elif call.name in DRAW_CALLS:
+                frame.draw(call)
+        except (KeyError, TypeError, ValueError, AttributeError, IndexError, OverflowError) as e:
+            # A call whose arguments are not what GL's signature says: a damaged or forged trace.
+            raise ImportFailure("call %d (%s): its arguments are not what GL takes (%s: %s)"
+                                % (call.no, call.name, type(e).__name__, e))
         if state.api == "gles":
             raise ImportFailure("the trace is of an OpenGL ES context (call %d, %s): tessref replays desktop GL 4.x "
                                 "core draws" % (call.no, call.name))
-        if call.name == "glClear":
-            frame.clear(call)
-        elif call.name in DRAW_CALLS:
-            frame.draw(call)
         if event is not None and call.no == event:
             if call.name not in DRAW_CALLS:
                 raise ImportFailure("call %d is %s, not a draw call" % (event, call.name))
@@ -129,14 +134,15 @@ def write_output(frame, scene, capture, capture_kind_name, target_no, out_dir, g
     with open(os.path.join(out_dir, "draws.json"), "w") as f:
         json.dump(frame.draw_calls, f, indent=1)
         f.write("\n")
-    lines = ["capture: %s (%s)" % (os.path.abspath(capture), capture_kind_name), "draw: call %d" % target_no,
+    unit = "event" if capture_kind_name == "renderdoc" else "call"
+    lines = ["capture: %s (%s)" % (os.path.abspath(capture), capture_kind_name), "draw: %s %d" % (unit, target_no),
              "gpu image: %s" % (gpu or "none"), "draws in the scene (draws.json):"]
-    lines += ["  draw %d: call %d, %s" % (d["draw"], d["call"], d["name"]) for d in frame.draw_calls]
+    lines += ["  draw %d: %s %d, %s" % (d["draw"], unit, d[unit], d["name"]) for d in frame.draw_calls]
     lines.append("")
     if frame.report:
         lines.append("not carried, or carried with a caveat:")
         for no, text in frame.report:
-            lines.append("  %s%s" % ("call %d: " % no if no is not None else "", text))
+            lines.append("  %s%s" % ("%s %d: " % (unit, no) if no is not None else "", text))
     else:
         lines.append("everything the draws read was carried")
     with open(os.path.join(out_dir, "report.txt"), "w") as f:
@@ -160,27 +166,36 @@ def main():
         if args.event is not None and args.event < 0:
             raise ImportFailure("--event %d: call numbers start at 0" % args.event)
         kind = capture_kind(args.capture)
+        images = None
         if kind == "renderdoc":
-            raise ImportFailure("RenderDoc captures are not imported yet: capture the application with apitrace "
-                                "(docs/replay.md)")
-        frame = import_apitrace(args.capture, args.event, not args.quiet)
+            from renderdoc_import import import_renderdoc
+            frame, images = import_renderdoc(args.capture, args.event)
+        else:
+            frame = import_apitrace(args.capture, args.event, not args.quiet)
         scene = build_scene(frame)
         target_no = frame.draws[-1][0]
         parent = os.path.dirname(out) or "."
         os.makedirs(parent, exist_ok=True)
         staging = tempfile.mkdtemp(prefix="." + os.path.basename(out) + ".partial-", dir=parent)
-        gpu = retrace_image(args.capture, target_no, staging, frame.report)
+        if images is not None:
+            for name in frame.gpu_images:
+                shutil.move(os.path.join(images, name), os.path.join(staging, name))
+            shutil.rmtree(images, ignore_errors=True)
+            gpu = "gpu.png" if "gpu.png" in frame.gpu_images else None
+        else:
+            gpu = retrace_image(args.capture, target_no, staging, frame.report)
         write_output(frame, scene, args.capture, kind, target_no, staging, gpu)
         if os.path.isdir(out):
             os.rmdir(out)
         os.rename(staging, out)
         staging = None
         carried = len(scene["draws"])
-        print("tessref import: %s (%s), call %d -> %s: scene.json (%d draw%s), %s report.txt (%d note%s)"
-              % (args.capture, kind, target_no, args.out, carried, "" if carried == 1 else "s",
+        unit = "event" if kind == "renderdoc" else "call"
+        print("tessref import: %s (%s), %s %d -> %s: scene.json (%d draw%s), %s report.txt (%d note%s)"
+              % (args.capture, kind, unit, target_no, args.out, carried, "" if carried == 1 else "s",
                  "gpu.png," if gpu else "no gpu.png,", len(frame.report), "" if len(frame.report) == 1 else "s"))
         for no, text in frame.report:
-            print("  %s%s" % ("call %d: " % no if no is not None else "", text))
+            print("  %s%s" % ("%s %d: " % (unit, no) if no is not None else "", text))
         return 0
     except ImportFailure as e:
         sys.stderr.write("tessref import: error: %s\n" % e)

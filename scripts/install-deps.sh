@@ -9,6 +9,7 @@ pkgs=("$@")
       libglm-dev libopenimageio-dev openimageio-tools libembree-dev libtbb-dev libassimp-dev
       assimp-testmodels libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
       libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri time faketime apitrace python3
+      renderdoc python3-renderdoc librenderdoc-dev
       glslang-dev glslang-tools spirv-tools spirv-headers chromium)
 missing=()
 for p in "${pkgs[@]}"; do

@@ -1,6 +1,7 @@
-// tessref import of an apitrace trace of tests/replay/replay_app.c, captured here on the system's
-// GL driver (llvmpipe): the imported frame renders the application's own glReadPixels image, and
-// every capture the importer must refuse exits 2 with its reason and leaves no folder.
+// tessref import of tests/replay/replay_app.c's frame, captured here on the system's GL driver
+// (llvmpipe) with apitrace and with RenderDoc: the imported frame renders the application's own
+// glReadPixels image, the two importers give the same scene, and every capture the importer must
+// refuse exits 2 with its reason and leaves no folder.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -22,6 +23,7 @@ using ::testing::HasSubstr;
 
 const std::string kApp = TESSREF_REPLAY_APP;
 const std::string kLyingBlob = std::string(TESSREF_SOURCE_DIR) + "/tests/replay/lying_blob.py";
+const std::string kSameScene = std::string(TESSREF_SOURCE_DIR) + "/tests/replay/same_scene.py";
 
 bool have(const char* tool) { return std::system((std::string("command -v ") + tool + " >/dev/null 2>&1").c_str()) == 0; }
 
@@ -228,6 +230,71 @@ TEST_F(ApitraceImport, AnExistingFolderIsNotOverwritten) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_THAT(r.output, HasSubstr("already exists and is not an empty folder"));
   EXPECT_TRUE(fs::exists(tmp.path() / "keep.txt"));
+}
+
+// RenderDoc captures the application only through its in-app API (StartFrameCapture /
+// EndFrameCapture), which replay_app calls when RenderDoc is loaded into it.
+class RenderDocImport : public ApitraceImport {
+ protected:
+  static fs::path capture(const std::string& name, const std::string& flags = "") {
+    const fs::path rdc = folder() / (name + "_capture.rdc");
+    if (!fs::exists(rdc)) {
+      const CliRun r = run_command("EGL_PLATFORM=surfaceless renderdoccmd capture -w -c '" + (folder() / name).string() +
+                                   "' '" + kApp + "' " + flags + " '" + (folder() / (name + "_rdc.ppm")).string() + "'");
+      EXPECT_EQ(r.exit_code, 0) << r.output;
+      EXPECT_TRUE(fs::exists(rdc)) << r.output;
+    }
+    return rdc;
+  }
+  void SetUp() override {
+    if (!have("renderdoccmd")) GTEST_SKIP() << "RenderDoc is not installed (Debian package renderdoc)";
+    if (run_command("/usr/bin/python3 -c 'import renderdoc'").exit_code != 0)
+      GTEST_SKIP() << "RenderDoc's python module is not installed (Debian package python3-renderdoc)";
+  }
+};
+
+TEST_F(RenderDocImport, TheImportedFrameRendersTheApplicationsImage) {
+  const fs::path rdc = capture("frame");
+  TempDir tmp;
+  const fs::path out = tmp.path() / "imported";
+  const CliRun import = run_cli("import '" + rdc.string() + "' --out '" + out.string() + "'");
+  ASSERT_EQ(import.exit_code, 0) << import.output;
+  EXPECT_THAT(import.output, HasSubstr("(renderdoc), event "));
+  EXPECT_THAT(import.output, HasSubstr("scene.json (3 draws), gpu.png"));
+  EXPECT_TRUE(fs::exists(out / "gpu_depth.exr"));
+  ASSERT_EQ(run_cli("render '" + (out / "scene.json").string() + "' -o '" + (tmp.path() / "t.png").string() + "'").exit_code, 0);
+  EXPECT_EQ(pixels_over_one_step(tmp.path() / "t.png", folder() / "frame_rdc.ppm"), 0);
+  EXPECT_EQ(pixels_over_one_step(out / "gpu.png", folder() / "frame_rdc.ppm"), 0);
+  const CliRun verify = run_cli("verify '" + (out / "scene.json").string() + "' --gpu '" + out.string() + "'");
+  EXPECT_EQ(verify.exit_code, 0) << verify.output;
+}
+
+TEST_F(RenderDocImport, BothImportersGiveTheSameScene) {
+  if (!have("apitrace")) GTEST_SKIP() << "apitrace is not installed (Debian package apitrace)";
+  TempDir tmp;
+  const fs::path from_trace = tmp.path() / "apitrace", from_rdc = tmp.path() / "renderdoc";
+  ASSERT_EQ(run_cli("import --quiet '" + trace("frame").string() + "' --out '" + from_trace.string() + "'").exit_code, 0);
+  ASSERT_EQ(run_cli("import '" + capture("frame").string() + "' --out '" + from_rdc.string() + "'").exit_code, 0);
+  const CliRun same = run_command("python3 '" + kSameScene + "' '" + (from_trace / "scene.json").string() + "' '" +
+                                  (from_rdc / "scene.json").string() + "'");
+  EXPECT_EQ(same.exit_code, 0) << same.output;
+  EXPECT_THAT(same.output, HasSubstr("same scene"));
+}
+
+TEST_F(RenderDocImport, BadCapturesExitTwoAndLeaveNothing) {
+  const fs::path rdc = capture("frame");
+  TempDir tmp;
+  {
+    std::ifstream in(rdc, std::ios::binary);
+    std::string bytes(3000, '\0');
+    in.read(bytes.data(), bytes.size());
+    tmp.write("truncated.rdc", bytes);
+  }
+  expect_refused(tmp.path() / "truncated.rdc", "", "RenderDoc cannot open");
+  expect_refused(capture("untessellated", "--untessellated"), "", "has no GL_PATCHES draw");
+  expect_refused(capture("label", "--label ../x"), "", "label '../x' names a path outside the output folder");
+  expect_refused(rdc, "--event 11", "event 11 is glBindVertexArray, not a draw call");
+  expect_refused(rdc, "--event 5000", "the capture has no event 5000");
 }
 
 }  // namespace
