@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstdio>
@@ -16,13 +17,14 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/shard.h"
 #include "common/error.h"
 
 namespace tessref::cli {
 namespace {
 
 struct ImportArgs {
-  std::string capture, out;
+  std::string capture, out, shard;
   long long event = -1;
   bool quiet = false;
 };
@@ -79,6 +81,41 @@ int run_import(const ImportArgs& a) {
   return 3;
 }
 
+// A folder of captures: each *.trace and *.rdc (name-sorted, those of the shard) into OUT/<stem>/.
+int run_import_folder(const ImportArgs& a) {
+  if (a.event >= 0) throw InputError("--event names a draw of one capture, not of a folder of captures");
+  const Shard shard = a.shard.empty() ? Shard{} : parse_shard(a.shard);
+  std::vector<std::filesystem::path> captures;
+  for (const auto& entry : std::filesystem::directory_iterator(a.capture)) {
+    const std::string ext = entry.path().extension().string();
+    if (entry.is_regular_file() && (ext == ".trace" || ext == ".rdc")) captures.push_back(entry.path());
+  }
+  std::sort(captures.begin(), captures.end());
+  if (captures.empty()) throw InputError(a.capture + ": no .trace or .rdc captures in the folder");
+  std::filesystem::create_directories(a.out);
+  int imported = 0, taken = 0;
+  std::vector<std::string> stems;
+  for (std::size_t i = 0; i < captures.size(); ++i) {
+    const std::string stem = captures[i].stem().string();
+    if (std::find(stems.begin(), stems.end(), stem) != stems.end())
+      throw InputError(a.capture + ": two captures are named " + stem + " (.trace and .rdc): their folders would meet");
+    stems.push_back(stem);
+    if (!shard.holds(i)) continue;
+    ++taken;
+    ImportArgs one = a;
+    one.capture = captures[i].string();
+    one.out = (std::filesystem::path(a.out) / stem).string();
+    one.quiet = true;
+    if (run_import(one) == 0)
+      ++imported;
+    else
+      std::fprintf(stderr, "tessref import: %s not imported (the reason is above)\n", one.capture.c_str());
+  }
+  std::printf("tessref import: %d of %d captures imported into %s (shard %d/%d of %zu captures)\n", imported, taken,
+              a.out.c_str(), shard.index, shard.count, captures.size());
+  return imported == taken ? 0 : 2;
+}
+
 }  // namespace
 
 void add_import_command(CLI::App& app) {
@@ -88,14 +125,21 @@ void add_import_command(CLI::App& app) {
       "Turn a frame capture (an apitrace .trace) into a scene of draws: DIR/scene.json with its buffers, shaders "
       "and textures, DIR/gpu.png (the driver's image after the draw) and DIR/report.txt (what could not be "
       "carried). Exit 2, leaving no DIR, for a capture that cannot be imported (docs/replay.md)");
-  cmd->add_option("capture", args->capture, "the capture file")->required();
+  cmd->add_option("capture", args->capture, "the capture file, or a folder of them (each into OUT/<stem>/)")->required();
   cmd->add_option("--out", args->out, "the folder to create (it must not exist, or be empty)")->required();
   cmd->add_option("--event", args->event,
                   "the draw: an apitrace call number (default: the last GL_PATCHES draw of the capture's last frame)")
       ->check(kInteger)
       ->check(CLI::Range(0LL, (1LL << 53)));
   cmd->add_flag("--quiet", args->quiet, "no progress line");
-  cmd->callback([args] { set_exit_code(run_import(*args)); });
+  cmd->add_option("--shard", args->shard,
+                  "with a folder of captures: shard I/N of its name-sorted .trace and .rdc files (or auto, as verify's)");
+  cmd->callback([args] {
+    std::error_code ec;
+    if (std::filesystem::is_directory(args->capture, ec)) return set_exit_code(run_import_folder(*args));
+    if (!args->shard.empty()) throw InputError("--shard takes a folder of captures");
+    set_exit_code(run_import(*args));
+  });
 }
 
 }  // namespace tessref::cli

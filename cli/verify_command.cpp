@@ -71,9 +71,16 @@ void run(VerifyArgs a) {
   if (!a.gpu.empty()) {
     const std::string mode = "with --gpu (it compares the image alone)";
     for (const auto& [value, option] : {std::pair{a.ref, "--ref"}, {a.json, "--json"}, {a.heat, "--heat"},
-                                        {a.images, "--images"}, {a.html, "--html"}, {a.out, "--out"}, {a.shard, "--shard"}})
+                                        {a.images, "--images"}, {a.html, "--html"}, {a.out, "--out"}})
       refuse(value, option, mode);
-    return set_exit_code(run_verify_gpu(a.scene, a.sets, a.gpu, a.threads));
+    std::error_code ec;
+    if (a.scene.empty() && !std::filesystem::exists(std::filesystem::path(a.gpu) / "scene.json", ec)) {
+      if (!a.sets.empty()) throw InputError("--set applies to one scene, not to a folder of imported frames");
+      return set_exit_code(run_verify_gpu_folder(a.gpu, a.shard, a.threads));
+    }
+    refuse(a.shard, "--shard", "to one imported frame (give a folder of them to --gpu)");
+    const std::string scene = a.scene.empty() ? (std::filesystem::path(a.gpu) / "scene.json").string() : a.scene;
+    return set_exit_code(run_verify_gpu(scene, a.sets, a.gpu, a.threads));
   }
   std::error_code ec;
   if (!a.scene.empty() && std::filesystem::is_directory(a.scene, ec)) return run_campaign(a);
@@ -141,9 +148,10 @@ void add_verify_command(CLI::App& app) {
   add_scene_options(cmd, args->scene, args->sets);
   cmd->add_option("--ref", args->ref, "the capture folder (a campaign: the folder of capture folders)");
   cmd->add_option("--gpu", args->gpu,
-                  "instead of --ref: the GPU's image of an imported frame (tessref import's DIR, for DIR/gpu.png, or "
-                  "an image file); names the first pixel beyond 1/255, the draw and patch tessref drew there and "
-                  "the inspect commands that open them");
+                  "instead of --ref: the GPU's image of an imported frame (tessref import's DIR, for DIR/gpu.png and, "
+                  "without SCENE, DIR/scene.json; or an image file); names the first pixel beyond 1/255, the draw and "
+                  "patch tessref drew there and the inspect commands that open them. A folder of imported frames "
+                  "(tessref import of a folder of captures) is a campaign, with --shard");
   cmd->add_option("--json", args->json, "also write the report as JSON (with --merge: the merged report)");
   cmd->add_option("--html", args->html,
                   "also write an HTML report into this folder: index.html (with --merge or a campaign: an index "

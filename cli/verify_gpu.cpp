@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
+#include "cli/shard.h"
 #include "common/error.h"
 #include "inspect/inspect_pixel.h"
 #include "io/image_output.h"
@@ -132,6 +133,28 @@ int run_verify_gpu(const std::string& scene_path, const std::vector<std::string>
   std::printf("  open it: tessref inspect %s --pixel %d,%d --trace\n", scene_word.c_str(), first_x, first_y);
   if (!patch_command.empty()) std::printf("           %s\n", patch_command.c_str());
   return 1;
+}
+
+int run_verify_gpu_folder(const std::string& folder, const std::string& shard_text, int threads) {
+  const Shard shard = shard_text.empty() ? Shard{} : parse_shard(shard_text);
+  std::vector<std::filesystem::path> imports;
+  for (const auto& entry : std::filesystem::directory_iterator(folder))
+    if (entry.is_directory() && std::filesystem::is_regular_file(entry.path() / "scene.json")) imports.push_back(entry.path());
+  std::sort(imports.begin(), imports.end());
+  if (imports.empty()) throw InputError(folder + ": neither scene.json nor folders holding one (tessref import's output)");
+  int passed = 0, taken = 0;
+  for (std::size_t i = 0; i < imports.size(); ++i) {
+    if (!shard.holds(i)) continue;
+    ++taken;
+    try {
+      if (run_verify_gpu((imports[i] / "scene.json").string(), {}, imports[i].string(), threads) == 0) ++passed;
+    } catch (const InputError& e) {
+      std::printf("tessref verify: %s: error: %s\n", imports[i].string().c_str(), e.what());
+    }
+  }
+  std::printf("tessref verify: %d of %d imported frames pass (shard %d/%d of %zu)\n", passed, taken, shard.index,
+              shard.count, imports.size());
+  return passed == taken ? 0 : 1;
 }
 
 }  // namespace tessref::cli

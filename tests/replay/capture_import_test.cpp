@@ -222,6 +222,30 @@ TEST_F(ApitraceImport, VerifyNamesWhereTheGpusImagePartsFromTessrefs) {
   EXPECT_THAT(inspect.output, HasSubstr("gl_TessLevelOuter[1] = 6"));
 }
 
+// A campaign: a folder of captures imported into one folder per capture, then verified as a folder,
+// whole and in shards; a capture that cannot be imported is named and fails the import.
+TEST_F(ApitraceImport, AFolderOfCapturesIsImportedAndVerifiedInShards) {
+  TempDir tmp;
+  const fs::path captures = tmp.path() / "captures", imports = tmp.path() / "imports";
+  fs::create_directories(captures);
+  fs::copy_file(trace("frame"), captures / "a_frame.trace");
+  fs::copy_file(trace("frame"), captures / "b_frame.trace");
+  fs::copy_file(trace("untessellated", "--untessellated"), captures / "c_plane.trace");
+  const CliRun import = run_cli("import '" + captures.string() + "' --out '" + imports.string() + "'");
+  EXPECT_EQ(import.exit_code, 2) << import.output;
+  EXPECT_THAT(import.output, HasSubstr("c_plane.trace not imported"));
+  EXPECT_THAT(import.output, HasSubstr("2 of 3 captures imported"));
+  EXPECT_TRUE(fs::exists(imports / "a_frame" / "scene.json"));
+  EXPECT_FALSE(fs::exists(imports / "c_plane"));
+  const CliRun all = run_cli("verify --gpu '" + imports.string() + "'");
+  EXPECT_EQ(all.exit_code, 0) << all.output;
+  EXPECT_THAT(all.output, HasSubstr("2 of 2 imported frames pass (shard 0/1 of 2)"));
+  const CliRun second = run_cli("verify --gpu '" + imports.string() + "' --shard 1/2");
+  EXPECT_EQ(second.exit_code, 0) << second.output;
+  EXPECT_THAT(second.output, HasSubstr("b_frame/gpu.png"));
+  EXPECT_THAT(second.output, ::testing::Not(HasSubstr("a_frame/gpu.png")));
+}
+
 TEST_F(ApitraceImport, AnExistingFolderIsNotOverwritten) {
   const fs::path t = trace("frame");
   TempDir tmp;
