@@ -12,6 +12,7 @@ import re
 from glsl_declarations import Declarations, sampler_target, with_block_binding
 from gl_state import CARRIED_CAPS, HARMLESS_CAPS
 from import_error import ImportFailure
+from texture_upload import level_data
 
 STAGE_FILES = {"vertex": "vert", "tess_control": "tesc", "tess_evaluation": "tese", "fragment": "frag"}
 COLOR_FORMATS = {"GL_RGBA8", "GL_SRGB8_ALPHA8", "GL_RGBA16F", "GL_RGBA32F"}
@@ -29,6 +30,13 @@ def _element_bytes(size, gl_type):
     if gl_type not in _TYPE_BYTES:  # the packed 32-bit formats
         return 4
     return (4 if size == "GL_BGRA" else size) * _TYPE_BYTES[gl_type]
+
+
+def gl_name(value, what):
+    """An object's GL name (a GLuint), which file names are made of."""
+    if isinstance(value, bool) or not isinstance(value, int) or not 0 <= value < 1 << 32:
+        raise ImportFailure("%s %r is not a GL object name" % (what, value))
+    return value
 
 
 def _gl_lower(value):
@@ -97,7 +105,7 @@ class FrameScene:
         if b is None:
             raise ImportFailure("call %d: %s reads buffer %s, which does not exist" % (call_no, what, buffer_id))
         data = bytes(b.data if size is None and offset == 0 else b.data[offset:offset + size if size else None])
-        stem = "b%d" % buffer_id + ("_at%d" % offset if offset else "")
+        stem = "b%d" % gl_name(buffer_id, "buffer") + ("_at%d" % offset if offset else "")
         name = self.files.add("buffers/" + stem, "bin", data)
         scene_name = name[len("buffers/"):-len(".bin")]
         self.buffers[scene_name] = {"file": name}
@@ -165,7 +173,7 @@ class FrameScene:
             shader_ids = program.shader_labels.get(stage, [None])
             shader_id = shader_ids[0]
             label = s.shaders[shader_id].label if shader_id in s.shaders else None
-            stem = "p%d" % s.program
+            stem = "p%d" % gl_name(s.program, "program")
             if label:
                 if not _SAFE_NAME.match(label) or ".." in label:
                     raise ImportFailure("shader %s's label %r names a path outside the output folder: refused"
@@ -272,10 +280,10 @@ class FrameScene:
                 self.note(call.no, "sampler %s: texture %d's level %d has another internal format (GL: incomplete)"
                           % (sampler, tid, level))
                 break
-            levels.append(b"".join(bytes(i["data"]) for i in images))
+            levels.append(b"".join(level_data(i) for i in images))
             level += 1
         generated = t.generated_after is not None and t.generated_after == t.uploads
-        stem = "textures/t%d" % tid
+        stem = "textures/t%d" % gl_name(tid, "texture")
         if generated:
             entry["path"] = self.files.add(stem + "_level0", "raw", levels[0])
             entry["generate_mipmap"] = True

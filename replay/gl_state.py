@@ -10,7 +10,7 @@ import re
 
 from import_error import ImportFailure
 
-MAX_BUFFER_BYTES = 1 << 30  # a buffer the trace declares larger is refused before allocation
+MAX_BUFFER_BYTES = 1 << 28  # a buffer the trace declares larger is refused before allocation
 
 STAGES = {
     "GL_VERTEX_SHADER": "vertex", "GL_TESS_CONTROL_SHADER": "tess_control",

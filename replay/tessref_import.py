@@ -42,12 +42,17 @@ def is_patches_draw(call):
 
 
 def import_apitrace(path, event, progress):
+    return import_calls(read_calls(path, event), os.path.basename(path), event, progress)
+
+
+def import_calls(stream, name, event, progress):
+    """The frame of a stream of calls (apitrace_reader.Call) up to the draw: the target frame."""
     state = GlState()
-    frame = FrameScene(state, os.path.basename(path))
+    frame = FrameScene(state, name)
     last_frame = None
     calls = 0
     target = None
-    for call in read_calls(path, event):
+    for call in stream:
         calls += 1
         if progress and calls % 20000 == 0:
             sys.stderr.write("\rtessref import: %d calls read" % calls)
@@ -75,7 +80,7 @@ def import_apitrace(path, event, progress):
         if call.flags & Call.END_FRAME:
             if frame.draws:
                 last_frame = frame
-            frame = FrameScene(state, os.path.basename(path))
+            frame = FrameScene(state, name)
     if progress and calls >= 20000:
         sys.stderr.write("\n")
     if event is not None and target is None:
@@ -97,6 +102,16 @@ def import_apitrace(path, event, progress):
     for no, text in state.notes:
         target.note(no, text)
     return target
+
+
+def scene_of(frame):
+    """build_scene, with a state no GL application can reach (a forged capture's) as an import error."""
+    try:
+        scene = build_scene(frame)
+        json.dumps(scene, allow_nan=False)
+        return scene
+    except (TypeError, ValueError, KeyError, AttributeError, IndexError, OverflowError) as e:
+        raise ImportFailure("the capture's state at the draw is not one GL reaches (%s: %s)" % (type(e).__name__, e))
 
 
 def retrace_image(path, call_no, out_dir, report):
@@ -172,7 +187,7 @@ def main():
             frame, images = import_renderdoc(args.capture, args.event)
         else:
             frame = import_apitrace(args.capture, args.event, not args.quiet)
-        scene = build_scene(frame)
+        scene = scene_of(frame)
         target_no = frame.draws[-1][0]
         parent = os.path.dirname(out) or "."
         os.makedirs(parent, exist_ok=True)

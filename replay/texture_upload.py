@@ -64,12 +64,27 @@ def _level_size(size, level, target):
     return (w, h, d)
 
 
-def _check_size(c, size):
+MAX_IMAGE_BYTES = 1 << 28  # one level of one texture; a trace that declares more is refused
+
+
+def image_bytes(image):
+    w, h, d = image["size"]
+    return w * h * d * FORMATS[image["internalformat"]][1]
+
+
+def level_data(image):
+    """A level's texels; one never written holds zeros (GL leaves them undefined)."""
+    return bytes(image["data"]) if image["data"] is not None else bytes(image_bytes(image))
+
+
+def _check_size(c, size, internalformat=None):
     for v in size:
         if not isinstance(v, int) or v < 1 or v > 16384:
             raise ImportFailure("call %d (%s): image size %r is not one GL takes" % (c.no, c.name, size))
-    if size[0] * size[1] * size[2] > (1 << 28):
-        raise ImportFailure("call %d (%s): an image of %r texels is larger than tessref takes" % (c.no, c.name, size))
+    texel = FORMATS[internalformat][1] if internalformat in FORMATS else 16
+    if size[0] * size[1] * size[2] * texel > MAX_IMAGE_BYTES:
+        raise ImportFailure("call %d (%s): an image of %r texels is more than the %d MiB a level may hold in an import"
+                            % (c.no, c.name, size, MAX_IMAGE_BYTES >> 20))
 
 
 def _faces(target):
@@ -77,7 +92,7 @@ def _faces(target):
 
 
 def allocate_storage(state, c, texture, levels, internalformat, size):
-    _check_size(c, size)
+    _check_size(c, size, internalformat)
     if internalformat not in FORMATS:
         raise ImportFailure("call %d (%s): internal format %s is not one tessref's scenes take" % (c.no, c.name, internalformat))
     if not isinstance(levels, int) or levels < 1 or levels > 16:
@@ -88,7 +103,7 @@ def allocate_storage(state, c, texture, levels, internalformat, size):
         w, h, d = _level_size(size, level, texture.target)
         for face in range(_faces(texture.target)):
             texture.images[(level, face)] = {"size": (w, h, d), "internalformat": internalformat,
-                                             "data": bytearray(w * h * d * texel), "written": False}
+                                             "data": None, "written": False}
 
 
 def _unpacked_rows(state, c, data, width, rows, texel):
@@ -119,12 +134,11 @@ def _check_layout(c, internalformat, format_, type_):
 
 
 def store_image(state, c, texture, level, face, internalformat, size, data, format_, type_):
-    _check_size(c, size)
     internalformat = _sized(c, internalformat, format_, type_)
+    _check_size(c, size, internalformat)
     texel = FORMATS[internalformat][1]
     w, h, d = size
-    image = {"size": size, "internalformat": internalformat, "data": bytearray(w * h * d * texel),
-             "written": data is not None}
+    image = {"size": size, "internalformat": internalformat, "data": None, "written": data is not None}
     if data is not None:
         _check_layout(c, internalformat, format_, type_)
         image["data"] = bytearray(_unpacked_rows(state, c, data, w, h * d, texel))
@@ -145,6 +159,8 @@ def store_sub_image(state, c, texture, level, face, offset, size, data, format_,
     if x < 0 or y < 0 or z < 0 or x + w > fw or y + h > fh or z + d > fd:
         raise ImportFailure("call %d (%s): the region lies outside level %d" % (c.no, c.name, level))
     rows = _unpacked_rows(state, c, data, w, h * d, texel)
+    if image["data"] is None:
+        image["data"] = bytearray(image_bytes(image))
     target = image["data"]
     for k in range(d):
         for r in range(h):

@@ -1,0 +1,144 @@
+#!/usr/bin/python3
+"""Fuzzes the apitrace importer's state tracker and scene writer (replay/) in process: a trace's
+calls, mutated at random (calls dropped, repeated, moved or renamed; arguments replaced by
+hostile values: negative, huge, NaN, wrong types, '../' names, short blobs), are imported and
+written out. Each input must either import or stop with the importer's error (exit 2 in the
+command); any other exception is a finding, and every file written must lie inside the output
+folder. Deterministic for a seed.
+
+    fuzz_import.py TRACE SECONDS [--seed N] [--artifacts DIR]
+    fuzz_import.py TRACE --executions N [--seed N]   # a fixed number of inputs: the same every run
+
+Prints the executions, the imports that succeeded, the refusals and the findings (each with its
+traceback and the mutated calls pickled into DIR); exits 1 if there was a finding.
+"""
+import argparse
+import os
+import pickle
+import random
+import shutil
+import sys
+import tempfile
+import time
+import traceback
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "replay"))
+
+import gl_state  # noqa: E402
+import texture_upload  # noqa: E402
+from apitrace_reader import Call, Pointer, read_calls  # noqa: E402
+from import_error import ImportFailure  # noqa: E402
+from tessref_import import import_calls, scene_of, write_output  # noqa: E402
+
+# Small limits, so that a declared size is refused or allocated quickly (the logic is the same).
+gl_state.MAX_BUFFER_BYTES = 1 << 20
+texture_upload.MAX_IMAGE_BYTES = 1 << 20
+
+HOSTILE = [None, -1, 0, 1, 3, 16, 2 ** 31, 2 ** 63, -2 ** 63, 1e308, float("nan"), float("-inf"), "../x", "",
+           "GL_PATCHES", "GL_TEXTURE_2D", "GL_FLOAT", "GL_TRUE", b"", b"\x00" * 3, b"\xff" * 64, [], [0] * 20,
+           [1.5, -2.0], (), ("GL_COLOR_BUFFER_BIT",), Pointer(0x1234), "\x00", "a" * 300]
+
+
+def mutate(calls, rng, names):
+    calls = list(calls)
+    for _ in range(rng.randint(1, 4)):
+        if not calls:
+            break
+        i = rng.randrange(len(calls))
+        kind = rng.randrange(7)
+        if kind == 0:
+            del calls[i]
+        elif kind == 1:
+            calls.insert(rng.randrange(len(calls) + 1), calls[i])
+        elif kind == 2:
+            j = rng.randrange(len(calls))
+            calls[i], calls[j] = calls[j], calls[i]
+        elif kind == 3:
+            c = calls[i]
+            calls[i] = Call(c.no, rng.choice(names), dict(c.args), c.ret, c.flags)
+        else:
+            c = calls[i]
+            args = dict(c.args)
+            if args and kind != 6:
+                key = rng.choice(sorted(args))
+                value = args[key]
+                if isinstance(value, (bytes, bytearray)) and value and rng.random() < 0.5:
+                    args[key] = value[:rng.randrange(len(value))]
+                elif isinstance(value, int) and not isinstance(value, bool) and rng.random() < 0.5:
+                    args[key] = value + rng.choice([-1, 1, 256, -256, 1 << 20])
+                elif rng.random() < 0.2:
+                    del args[key]
+                else:
+                    args[key] = rng.choice(HOSTILE)
+            ret = rng.choice(HOSTILE + [c.ret]) if kind == 6 else c.ret
+            calls[i] = Call(c.no, c.name, args, ret, c.flags)
+    # Keep call numbers increasing, as a trace's are.
+    return [Call(n, c.name, c.args, c.ret, c.flags) for n, c in enumerate(calls)]
+
+
+def run_one(calls, out_root):
+    out = tempfile.mkdtemp(dir=out_root)
+    try:
+        frame = import_calls(iter(calls), "fuzz.trace", None, False)
+        scene = scene_of(frame)
+        write_output(frame, scene, "fuzz.trace", "apitrace", frame.draws[-1][0], out, None)
+        root = os.path.realpath(out)
+        for folder, _, files in os.walk(out):
+            for f in files:
+                if not os.path.realpath(os.path.join(folder, f)).startswith(root + os.sep):
+                    raise AssertionError("wrote %s outside the output folder" % os.path.join(folder, f))
+        return "imported"
+    except ImportFailure:
+        return "refused"
+    finally:
+        shutil.rmtree(out, ignore_errors=True)
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("trace")
+    parser.add_argument("seconds", type=float, nargs="?", default=float("inf"))
+    parser.add_argument("--executions", type=int)
+    parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--artifacts", default="out/fuzz/fuzz_import/artifacts")
+    args = parser.parse_args()
+    if args.executions is None and args.seconds == float("inf"):
+        parser.error("give SECONDS or --executions")
+    calls = list(read_calls(args.trace))
+    names = sorted({c.name for c in calls})
+    rng = random.Random(args.seed)
+    counts = {"imported": 0, "refused": 0, "finding": 0}
+    sites = {}
+    os.makedirs(args.artifacts, exist_ok=True)
+    out_root = tempfile.mkdtemp(prefix="tessref-fuzz-import-")
+    start = time.monotonic()
+    executions = 0
+    try:
+        assert run_one(calls, out_root) == "imported", "the unmutated trace must import"
+        while time.monotonic() - start < args.seconds and (args.executions is None or executions < args.executions):
+            mutated = mutate(calls, rng, names)
+            executions += 1
+            try:
+                counts[run_one(mutated, out_root)] += 1
+            except Exception:
+                counts["finding"] += 1
+                tb = traceback.format_exc()
+                site = tb.strip().splitlines()[-3] if len(tb.strip().splitlines()) >= 3 else tb
+                if site not in sites:
+                    sites[site] = tb
+                    path = os.path.join(args.artifacts, "finding-%d.pickle" % len(sites))
+                    with open(path, "wb") as f:
+                        pickle.dump([(c.no, c.name, c.args, c.ret, c.flags) for c in mutated], f)
+                    with open(path + ".txt", "w") as f:
+                        f.write(tb)
+    finally:
+        shutil.rmtree(out_root, ignore_errors=True)
+    print("fuzz_import: %d executions in %.0f s: %d imported, %d refused, %d findings (%d distinct)"
+          % (executions, time.monotonic() - start, counts["imported"], counts["refused"], counts["finding"], len(sites)))
+    for tb in sites.values():
+        print(tb)
+    return 1 if sites else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
