@@ -9,6 +9,7 @@ taken as they are (RenderDoc stores a texture's contents, not the glGenerateMipm
 levels).
 """
 
+import json
 import os
 import shutil
 import subprocess
@@ -497,6 +498,7 @@ def import_renderdoc(path, event):
         result, ctl = cap.OpenCapture(rd.ReplayOptions(), None)
         if result != rd.ResultCode.Succeeded:
             raise ImportFailure("RenderDoc cannot replay %s: %s" % (path, result))
+        images = None
         try:
             frame, event = _read_frame(rd, ctl, path, event)
             images = tempfile.mkdtemp(prefix="tessref-renderdoc-")
@@ -505,7 +507,12 @@ def import_renderdoc(path, event):
             color = fbo.colorAttachments[fbo.drawBuffers[0]].resourceId if fbo.drawBuffers[0] >= 0 else None
             depth = fbo.depthAttachment.resourceId if _rid(fbo.depthAttachment.resourceId) != "0" else None
             frame.gpu_images = save_gpu_images(rd, ctl, event, color, depth, images, frame.report)
+            frame.gpu_images += save_tes_outputs(rd, ctl, event, images)
             return frame, images
+        except BaseException:
+            if images is not None:
+                shutil.rmtree(images, ignore_errors=True)
+            raise
         finally:
             ctl.Shutdown()
     finally:
@@ -600,6 +607,35 @@ def _save_rgba8(ctl, rd, resource_id, path):
     converted = subprocess.run(["oiiotool", ppm, "-o", path], capture_output=True).returncode == 0
     os.remove(ppm)
     return converted
+
+
+def save_tes_outputs(rd, ctl, event, out_dir):
+    """What the driver's evaluation shader emitted for the draw (RenderDoc's post-tessellation
+    mesh data, which it records on GL by transform feedback): gpu_tes.bin, the vertices of every
+    instance's triangles in emission order, and gpu_tes.json, their layout."""
+    ctl.SetFrameEvent(event, True)
+    pipe = ctl.GetPipelineState()
+    tes = pipe.GetShaderReflection(rd.ShaderStage.Tess_Eval)
+    if tes is None:
+        return []
+    action = [a for a in _flatten(ctl.GetRootActions()) if a.eventId == event][0]
+    chunks, counts, stride = [], [], None
+    for instance in range(max(1, action.numInstances)):
+        mesh = ctl.GetPostVSData(instance, 0, rd.MeshDataStage.GSOut)
+        if mesh.vertexResourceId == rd.ResourceId.Null() or not mesh.numIndices:
+            return []
+        stride = mesh.vertexByteStride
+        chunks.append(bytes(ctl.GetBufferData(mesh.vertexResourceId, mesh.vertexByteOffset, mesh.numIndices * stride)))
+        counts.append(mesh.numIndices)
+    with open(os.path.join(out_dir, "gpu_tes.bin"), "wb") as f:
+        f.write(b"".join(chunks))
+    outputs = [{"name": s.varName, "components": s.compCount} for s in tes.outputSignature]
+    with open(os.path.join(out_dir, "gpu_tes.json"), "w") as f:
+        json.dump({"stride_bytes": stride, "vertices_per_instance": counts, "primitive": mesh.topology.name,
+                   "outputs": outputs, "note": "float32 vertices of the evaluation shader's emitted primitives, "
+                   "in the driver's emission order, instance after instance (RenderDoc GetPostVSData, GSOut)"},
+                  f, indent=1)
+    return ["gpu_tes.bin", "gpu_tes.json"]
 
 
 def save_gpu_images(rd, ctl, event, fbo_color, fbo_depth, out_dir, report):

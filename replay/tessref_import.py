@@ -17,6 +17,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import traceback
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
@@ -218,6 +219,10 @@ def main():
     except OSError as e:
         sys.stderr.write("tessref import: error: %s\n" % e)
         return 2
+    except Exception:  # a bug in the importer: say so, with where, and leave nothing behind
+        sys.stderr.write("tessref import: internal error (please report it with the capture):\n%s"
+                         % traceback.format_exc())
+        return 3
     finally:
         if staging is not None:
             shutil.rmtree(staging, ignore_errors=True)

@@ -403,9 +403,9 @@ int main(int argc, char** argv) {
   float shading[32];
   for (int i = 0; i < 32; ++i) shading[i] = -7.0f;
   memcpy(shading, kMvp, sizeof kMvp);
-  shading[16] = 0.36f;
-  shading[17] = 0.8f;
-  shading[18] = -0.48f;
+  shading[16] = 0.3f;
+  shading[17] = 0.55f;
+  shading[18] = 0.78f;
   shading[19] = 0.0f;
   shading[20] = 0.9f;
   shading[24] = 3.0f;
