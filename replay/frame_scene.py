@@ -43,6 +43,10 @@ def _gl_lower(value):
     return str(value).replace("GL_", "").lower()
 
 
+class GpuWritten(Exception):
+    """A draw reads what the GPU wrote: a trace holds the calls, not those bytes."""
+
+
 class Files:
     """The files a scene refers to, each written once: name -> bytes."""
 
@@ -73,6 +77,7 @@ class FrameScene:
         self.draws = []               # (call number, draw dict, framebuffer id, framebuffer description)
         self.report = []              # (call number or None, text)
         self.pending_clear = None
+        self.gpu_refusals = []        # (call number, what the draw read that the GPU wrote)
         self.call_names = {}          # call number -> the draw call's name
         self.unit = "call"            # what numbers a draw in the capture
         self.draw_calls = []          # after build_scene: scene draw index -> capture call
@@ -101,6 +106,9 @@ class FrameScene:
 
     # ---- buffers ----
     def buffer(self, call_no, buffer_id, what, offset=0, size=None):
+        written = self.state.gpu_written_buffers.get(buffer_id)
+        if written is not None:
+            raise GpuWritten("%s reads buffer %s, which was %s at call %d" % (what, buffer_id, written[1], written[0]))
         b = self.state.buffers.get(buffer_id)
         if b is None:
             raise ImportFailure("call %d: %s reads buffer %s, which does not exist" % (call_no, what, buffer_id))
@@ -134,13 +142,18 @@ class FrameScene:
         d = {}
         mode = call.arg("mode")
         d["mode"] = mode
-        shaders = self._shaders(call, program, sources, declarations, d)
-        if shaders is None:
-            return
-        d["shaders"] = shaders
-        if not self._vertex_input(call, program, d):
-            return
-        if not self._call(call, d):
+        try:
+            shaders = self._shaders(call, program, sources, declarations, d)
+            if shaders is None:
+                return
+            d["shaders"] = shaders
+            if not self._vertex_input(call, program, d):
+                return
+            if not self._call(call, d):
+                return
+        except GpuWritten as e:
+            self.gpu_refusals.append((call.no, str(e)))
+            self.note(call.no, "%s: %s: not carried" % (call.name, e))
             return
         self._fixed_function(call, d)
         fb = self._framebuffer(call)
@@ -248,6 +261,9 @@ class FrameScene:
                       "not carried" % (sampler, unit, target))
             return None
         entry = {"target": target}
+        if tid in s.gpu_written_textures:
+            at, how = s.gpu_written_textures[tid]
+            raise GpuWritten("sampler %s reads texture %d, which was %s at call %d" % (sampler, tid, how, at))
         if target == "GL_TEXTURE_BUFFER":
             if t.buffer is None:
                 self.note(call.no, "sampler %s: buffer texture %d has no buffer" % (sampler, tid))

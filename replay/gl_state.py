@@ -24,7 +24,7 @@ NO_EFFECT = re.compile(
     r"glFenceSync|glClientWaitSync|glWaitSync|glDeleteSync|glDebugMessage\w*|glPushDebugGroup|glPopDebugGroup|"
     r"glObjectPtrLabel|glValidateProgram\w*|glShaderBinary|glReleaseShaderCompiler|glHint|glBeginQuery|glEndQuery|glGenQueries|"
     r"glCreateQueries|glDeleteQueries|glQueryCounter|glFlushMappedBufferRange|glFlushMappedNamedBufferRange|glMemoryBarrier|"
-    r"glTextureBarrier|glInvalidate\w*|glBlitFramebuffer|glBlitNamedFramebuffer|glDetachShader|glDeleteShader|"
+    r"glTextureBarrier|glInvalidate\w*|glDetachShader|glDeleteShader|"
     r"glFrameTerminatorGREMEDY|glStringMarkerGREMEDY|glInsertEventMarkerEXT|glPushGroupMarkerEXT|glPopGroupMarkerEXT|"
     r"egl\w*|glX\w*|wgl\w*)$")
 
@@ -165,6 +165,9 @@ class GlState:
         self.patch_outer, self.patch_inner = [1.0] * 4, [1.0] * 2
         self.restart_index = 0
         self.unpack = {"GL_UNPACK_ALIGNMENT": 4}
+        # What the GPU wrote, which a trace's calls cannot rebuild: object id -> (call number, how).
+        self.gpu_written_buffers, self.gpu_written_textures = {}, {}
+        self.image_units = {}
         self.unmodelled = {}             # call name -> [first call number, count]
         self.notes = []                  # (call number, text): things carried with a caveat
         self.api = None                  # "gl" or "gles" from the EGL calls
@@ -179,11 +182,53 @@ class GlState:
         handler = self.handlers.get(call.name) or _vertex_attrib_handler(self, call.name)
         if handler is not None:
             handler(call)
-        elif call.name in DRAW_CALLS or NO_EFFECT.match(call.name):
-            pass
-        else:
+        elif call.name not in DRAW_CALLS and not NO_EFFECT.match(call.name):
             entry = self.unmodelled.setdefault(call.name, [call.no, 0])
             entry[1] += 1
+        if call.name in DRAW_CALLS or call.name == "glClear" or call.name.startswith("glClearBuffer"):
+            self._rendered_into(call, "rendered into")
+
+    # ---- what the GPU writes ----
+    def _rendered_into(self, c, how):
+        """The draw framebuffer's texture attachments now hold what the GPU drew."""
+        fb = self.framebuffers.get(self.draw_framebuffer)
+        for a in (fb.attachments.values() if fb else []):
+            if a[0] == "texture":
+                self.gpu_written_textures[a[1]] = (c.no, "%s by %s" % (how, c.name))
+
+    def _gpu_wrote(self, c, targets, how):
+        for (target, _), (buffer, _, _) in list(self.indexed.items()):
+            if target in targets and buffer:
+                self.gpu_written_buffers[buffer] = (c.no, how)
+
+    def glDispatchCompute(self, c):
+        self._gpu_wrote(c, ("GL_SHADER_STORAGE_BUFFER", "GL_ATOMIC_COUNTER_BUFFER"), "written by a compute shader (%s)" % c.name)
+        for unit, texture in self.image_units.items():
+            self.gpu_written_textures[texture] = (c.no, "written by a compute shader's images (%s)" % c.name)
+
+    glDispatchComputeIndirect = glDispatchCompute
+
+    def glBindImageTexture(self, c):
+        self.image_units[c.arg("unit")] = c.arg("texture")
+
+    def glBeginTransformFeedback(self, c):
+        self._gpu_wrote(c, ("GL_TRANSFORM_FEEDBACK_BUFFER",), "written by transform feedback (%s)" % c.name)
+
+    def glBlitFramebuffer(self, c):
+        self._rendered_into(c, "written")
+
+    glBlitNamedFramebuffer = glBlitFramebuffer
+
+    def glCopyTexSubImage2D(self, c):
+        target = c.arg("target")
+        tid = self.units.get((self.active_unit, "GL_TEXTURE_CUBE_MAP" if "CUBE_MAP_" in str(target) else target), 0)
+        if tid:
+            self.gpu_written_textures[tid] = (c.no, "copied from the framebuffer (%s)" % c.name)
+
+    glCopyTexImage2D = glCopyTexSubImage2D
+    glCopyTexSubImage1D = glCopyTexSubImage2D
+    glCopyTexSubImage3D = glCopyTexSubImage2D
+    glCopyTexImage1D = glCopyTexSubImage2D
 
     def unmodelled_call(self, call, why=""):
         entry = self.unmodelled.setdefault(call.name + why, [call.no, 0])
@@ -250,6 +295,7 @@ class GlState:
         if not isinstance(size, int) or size < 0 or size > MAX_BUFFER_BYTES:
             raise ImportFailure("call %d (%s): the buffer size %r is not one tessref takes (at most %d bytes)"
                                 % (c.no, c.name, size, MAX_BUFFER_BYTES))
+        self.gpu_written_buffers.pop(buffer, None)
         if isinstance(data, (bytes, bytearray)):
             if len(data) != size:
                 raise ImportFailure("call %d (%s): it declares %d bytes but the trace holds %d: the trace is damaged"
@@ -330,6 +376,8 @@ class GlState:
         if read_offset + size > len(src) or write_offset + size > len(dst):
             raise ImportFailure("call %d (%s): the copy runs past a buffer's end" % (c.no, c.name))
         dst[write_offset:write_offset + size] = bytes(src[read_offset:read_offset + size])
+        if read in self.gpu_written_buffers:
+            self.gpu_written_buffers[write] = self.gpu_written_buffers[read]
 
     def glCopyBufferSubData(self, c):
         self._copy(c, self._target_buffer(c, "readTarget"), self._target_buffer(c, "writeTarget"),

@@ -96,6 +96,12 @@ def import_calls(stream, name, event, progress):
                                 "draw%s of other modes); name a draw with --event"
                                 % (len(target.draws), "" if len(target.draws) == 1 else "s"))
         del target.draws[patches[-1] + 1:]
+    target_no = target.draws[-1][0] if target.draws else None
+    refused = [(no, why) for no, why in target.gpu_refusals if target_no is None or no <= target_no]
+    if refused:
+        no, why = refused[0]
+        raise ImportFailure("the draw at call %d: %s; a trace holds the calls, not what the GPU wrote (capture the "
+                            "application with RenderDoc, whose capture holds those bytes)" % (no, why))
     if state.unmodelled:
         for name, (first, count) in sorted(state.unmodelled.items(), key=lambda kv: kv[1][0]):
             target.note(first, "%s (%d call%s from call %d) changes state the importer does not model"

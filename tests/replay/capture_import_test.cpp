@@ -187,6 +187,9 @@ TEST_F(ApitraceImport, BadCapturesExitTwoAndLeaveNothing) {
   const CliRun patch = run_command("python3 '" + kLyingBlob + "' '" + t.string() + "' '" + lying.string() + "'");
   ASSERT_EQ(patch.exit_code, 0) << patch.output;
   expect_refused(lying, "", "declares 400 bytes but the trace holds 384");
+  // The instance offsets written by a compute shader: the trace holds the dispatch, not the bytes.
+  expect_refused(trace("compute", "--compute"), "",
+                 "input in_offset reads buffer 3, which was written by a compute shader (glDispatchCompute)");
 }
 
 // A region of the GPU's image altered where tessref draws a gem (draw 1): verify names the
@@ -291,6 +294,16 @@ TEST_F(RenderDocImport, TheImportedFrameRendersTheApplicationsImage) {
   EXPECT_EQ(pixels_over_one_step(out / "gpu.png", folder() / "frame_rdc.ppm"), 0);
   const CliRun verify = run_cli("verify '" + (out / "scene.json").string() + "' --gpu '" + out.string() + "'");
   EXPECT_EQ(verify.exit_code, 0) << verify.output;
+}
+
+// What a trace cannot rebuild, a RenderDoc capture holds: the buffer a compute shader wrote.
+TEST_F(RenderDocImport, ABufferTheGpuWroteIsCarried) {
+  const fs::path rdc = capture("compute", "--compute");
+  TempDir tmp;
+  const fs::path out = tmp.path() / "imported";
+  ASSERT_EQ(run_cli("import '" + rdc.string() + "' --out '" + out.string() + "'").exit_code, 0);
+  ASSERT_EQ(run_cli("render '" + (out / "scene.json").string() + "' -o '" + (tmp.path() / "t.png").string() + "'").exit_code, 0);
+  EXPECT_EQ(pixels_over_one_step(tmp.path() / "t.png", folder() / "compute_rdc.ppm"), 0);
 }
 
 TEST_F(RenderDocImport, BothImportersGiveTheSameScene) {

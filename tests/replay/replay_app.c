@@ -2,7 +2,7 @@
  * frame into a framebuffer object over EGL surfaceless, then writes what glReadPixels gives to a
  * binary PPM (top row first).
  *
- *   replay_app [--untessellated | --gles | --label NAME] OUT.ppm
+ *   replay_app [--untessellated | --gles | --label NAME | --compute] OUT.ppm
  *
  * The frame, in order:
  *   1. glClear of colour and depth;
@@ -15,8 +15,9 @@
  *
  * --untessellated draws the plane alone; --gles makes an OpenGL ES 3.2 context and only clears;
  * --label names the gem program's vertex shader object with glObjectLabel (the importer's file
- * names come from labels, so a hostile one must be refused). These make the captures the import
- * must refuse.
+ * names come from labels, so a hostile one must be refused); --compute has a compute shader write
+ * the per-instance offsets (the same values, the same image): a trace holds the dispatch, not
+ * what it wrote, while a RenderDoc capture holds the buffer's bytes.
  *
  * Under RenderDoc (renderdoccmd capture) the frame is bracketed by the in-app API's
  * StartFrameCapture / EndFrameCapture, the only way RenderDoc captures an application without a
@@ -168,6 +169,13 @@ static const char* kGemFs =
     "  frag = vec4(f_color.rgb * t.rgb * (0.3 + 0.7 * diffuse), 1.0);\n"
     "}\n";
 
+static const char* kOffsetsCs =
+    "#version 450 core\n"
+    "layout(local_size_x = 9) in;\n"
+    "layout(std430, binding = 0) buffer Offsets { float offsets[]; };\n"
+    "const float k[9] = float[9](-0.85, 0.1, 0.2, 0.0, 0.25, 0.0, 0.85, 0.1, -0.2);\n"
+    "void main() { offsets[gl_LocalInvocationIndex] = k[gl_LocalInvocationIndex]; }\n";
+
 static const char* kBicubicVs =
     "#version 450 core\n"
     "layout(location = 0) in vec3 in_position;\n"
@@ -282,17 +290,18 @@ static int gles_frame(EGLDisplay display, const char* out) {
 }
 
 int main(int argc, char** argv) {
-  int untessellated = 0, gles = 0;
+  int untessellated = 0, gles = 0, compute = 0;
   const char* label = NULL;
   int arg = 1;
   for (; arg < argc - 1; ++arg) {
     if (strcmp(argv[arg], "--untessellated") == 0) untessellated = 1;
     else if (strcmp(argv[arg], "--gles") == 0) gles = 1;
+    else if (strcmp(argv[arg], "--compute") == 0) compute = 1;
     else if (strcmp(argv[arg], "--label") == 0 && arg + 1 < argc - 1) label = argv[++arg];
     else break;
   }
   if (arg != argc - 1) {
-    fprintf(stderr, "usage: replay_app [--untessellated | --gles | --label NAME] OUT.ppm\n");
+    fprintf(stderr, "usage: replay_app [--untessellated | --gles | --label NAME | --compute] OUT.ppm\n");
     return 2;
   }
   const char* out = argv[arg];
@@ -387,7 +396,24 @@ int main(int argc, char** argv) {
   if (!offsets) fail("glMapBufferRange failed");
   const float instance_offsets[9] = {-0.85f, 0.1f, 0.2f, 0.0f, 0.25f, 0.0f, 0.85f, 0.1f, -0.2f};
   memcpy(offsets, instance_offsets, sizeof instance_offsets);
+  if (compute) memset(offsets, 0, sizeof instance_offsets);
   glUnmapBuffer(GL_ARRAY_BUFFER);
+  if (compute) {
+    GLuint cs = glCreateShader(GL_COMPUTE_SHADER);
+    glShaderSource(cs, 1, &kOffsetsCs, NULL);
+    glCompileShader(cs);
+    GLuint cp = glCreateProgram();
+    glAttachShader(cp, cs);
+    glLinkProgram(cp);
+    GLint ok = 0;
+    glGetProgramiv(cp, GL_LINK_STATUS, &ok);
+    if (!ok) fail("the compute program did not link");
+    glUseProgram(cp);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, instance_vbo);
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
+    glUseProgram(0);
+  }
   glVertexAttribPointer(3, 3, GL_FLOAT, GL_FALSE, 0, (void*)0);
   glVertexAttribDivisor(3, 1);
   glEnableVertexAttribArray(3);
