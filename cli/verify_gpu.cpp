@@ -6,7 +6,9 @@
 #include "cli/verify_gpu.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <cstdlib>
 #include <fstream>
 #include <string>
@@ -56,6 +58,78 @@ std::string capture_call(const std::filesystem::path& scene_dir, std::size_t dra
   return {};
 }
 
+// The evaluation shader's emitted triangles of one draw: each corner's gl_Position, and the patch
+// (gl_PrimitiveID) it belongs to, in emission order.
+struct EmittedVertices {
+  std::vector<glm::vec4> positions;
+  std::vector<std::uint32_t> patches;
+};
+
+// gpu_tes.bin / gpu_tes.json (tessref import of a RenderDoc capture): the driver's emitted
+// vertices, gl_Position first in each. Empty when the folder has none.
+std::vector<glm::vec4> read_gpu_tes(const std::filesystem::path& dir) {
+  std::ifstream layout_file(dir / "gpu_tes.json");
+  std::ifstream data(dir / "gpu_tes.bin", std::ios::binary);
+  if (!layout_file || !data) return {};
+  const nlohmann::json layout = nlohmann::json::parse(layout_file, nullptr, false);
+  if (!layout.is_object() || !layout.contains("stride_bytes") || !layout["stride_bytes"].is_number_unsigned() ||
+      !layout.contains("outputs") || !layout["outputs"].is_array() || layout["outputs"].empty() ||
+      layout["outputs"][0].value("name", "") != "gl_Position")
+    throw InputError((dir / "gpu_tes.json").string() + ": not the layout tessref import writes");
+  const std::size_t stride = layout["stride_bytes"].get<std::size_t>();
+  if (stride < 16 || stride % 4 != 0) throw InputError((dir / "gpu_tes.json").string() + ": stride_bytes " + std::to_string(stride));
+  const std::string bytes((std::istreambuf_iterator<char>(data)), std::istreambuf_iterator<char>());
+  if (bytes.size() % stride != 0)
+    throw InputError((dir / "gpu_tes.bin").string() + ": " + std::to_string(bytes.size()) + " bytes is not a whole number of " +
+                     std::to_string(stride) + "-byte vertices");
+  std::vector<glm::vec4> out(bytes.size() / stride);
+  for (std::size_t v = 0; v < out.size(); ++v) std::memcpy(&out[v], bytes.data() + v * stride, sizeof(glm::vec4));
+  return out;
+}
+
+// Compares the draw's emitted gl_Position with the GPU's, vertex by vertex in emission order. GL
+// fixes neither the rounding of a shader's arithmetic (a driver may fuse a multiply and an add
+// where the GLSL does not say precise; tessref never does) nor so the last bits of gl_Position:
+// a component within 2^-20 max(1, |w|) of the GPU's passes, and the identical ones are counted.
+bool compare_tes(const EmittedVertices& ours, const std::vector<glm::vec4>& gpu, std::size_t draw) {
+  std::printf("  evaluation outputs of draw %zu (gl_Position of each emitted triangle's corners): ", draw);
+  if (ours.positions.size() != gpu.size()) {
+    std::printf("FAIL: the GPU emitted %s vertices, tessref %s\n", with_commas((long long)gpu.size()).c_str(),
+                with_commas((long long)ours.positions.size()).c_str());
+    return false;
+  }
+  long long identical = 0;
+  std::size_t first = gpu.size(), first_beyond = gpu.size();
+  double largest = 0.0;  // relative to max(1, |w|)
+  for (std::size_t v = 0; v < gpu.size(); ++v) {
+    if (std::memcmp(&ours.positions[v], &gpu[v], sizeof(glm::vec4)) == 0) {
+      ++identical;
+      continue;
+    }
+    if (first == gpu.size()) first = v;
+    const double scale = std::max(1.0, double(std::fabs(gpu[v].w)));
+    double d = 0.0;
+    for (int c = 0; c < 4; ++c) d = std::max(d, double(std::fabs(ours.positions[v][c] - gpu[v][c])) / scale);
+    largest = std::max(largest, d);
+    if (!(d <= std::ldexp(1.0, -20)) && first_beyond == gpu.size()) first_beyond = v;
+  }
+  const std::string total = with_commas((long long)gpu.size());
+  if (first == gpu.size()) {
+    std::printf("PASS: %s of %s identical, in the same order\n", total.c_str(), total.c_str());
+    return true;
+  }
+  const std::size_t shown = first_beyond != gpu.size() ? first_beyond : first;
+  const glm::vec4 a = ours.positions[shown], b = gpu[shown];
+  const std::uint32_t patch = ours.patches[shown] - ours.patches.front();
+  std::printf("%s: %s of %s identical, the largest difference %.3g of max(1, |w|) (bound 2^-20); %s vertex %zu "
+              "(triangle %zu, patch %u): tessref (%.9g, %.9g, %.9g, %.9g), GPU (%.9g, %.9g, %.9g, %.9g)\n",
+              first_beyond == gpu.size() ? "PASS" : "FAIL", with_commas(identical).c_str(), total.c_str(), largest,
+              first_beyond == gpu.size() ? "the first that differs:" : "the first beyond the bound:", shown, shown / 3,
+              patch, double(a.x), double(a.y), double(a.z), double(a.w), double(b.x), double(b.y), double(b.z),
+              double(b.w));
+  return first_beyond == gpu.size();
+}
+
 }  // namespace
 
 int run_verify_gpu(const std::string& scene_path, const std::vector<std::string>& sets, const std::string& gpu,
@@ -75,9 +149,30 @@ int run_verify_gpu(const std::string& scene_path, const std::vector<std::string>
   const Mesh mesh = build_mesh(scene.mesh, warnings);
   scene.camera = fitted_camera(scene, mesh);
   const Parallel parallel(threads);
+  // The chosen draw is the scene's last: keep its evaluation shader's emitted vertices when the
+  // import holds the GPU's (gpu_tes.bin).
+  const std::filesystem::path gpu_dir = std::filesystem::is_directory(gpu, ec) ? std::filesystem::path(gpu) : std::filesystem::path();
+  const std::vector<glm::vec4> gpu_tes = gpu_dir.empty() ? std::vector<glm::vec4>{} : read_gpu_tes(gpu_dir);
+  EmittedVertices emitted;
+  std::size_t current_draw = 0;
+  DrawOptions options;
+  if (!gpu_tes.empty()) {
+    options.begin_draw = [&](std::size_t d) { current_draw = d; };
+    options.tess_surface = [&](const std::vector<TessDumpRecord>& records, const TriangleBatch& batch) {
+      if (current_draw + 1 != scene.draws.size()) return;
+      for (std::size_t t = 0; t < batch.triangle_count(); ++t)
+        for (int c = 0; c < 3; ++c) {
+          const std::size_t v = batch.vertex_index(t, c);
+          const float* p = batch.vertex_data(v);
+          emitted.positions.emplace_back(p[0], p[1], p[2], p[3]);
+          emitted.patches.push_back(v < records.size() ? records[v].patch_id : 0);
+        }
+    };
+  }
   Framebuffer fb;
-  render_scene(scene, mesh, parallel, fb, DrawOptions{});
+  render_scene(scene, mesh, parallel, fb, options);
   const Rgb8Image ours = to_rgb8(fb);
+  auto tes_pass = [&] { return gpu_tes.empty() || compare_tes(emitted, gpu_tes, scene.draws.size() - 1); };
 
   long long differing = 0;
   int largest = 0, first_x = -1, first_y = -1;
@@ -97,7 +192,7 @@ int run_verify_gpu(const std::string& scene_path, const std::vector<std::string>
               scene.height);
   if (differing == 0) {
     std::printf("PASS: colour within 1/255 at all %s pixels\n", with_commas(pixels).c_str());
-    return 0;
+    return tes_pass() ? 0 : 1;
   }
   std::printf("FAIL: %s of %s pixels differ by more than 1/255 (largest %d/255), within x %d..%d, y %d..%d "
               "(from the top-left)\n",
@@ -132,6 +227,7 @@ int run_verify_gpu(const std::string& scene_path, const std::vector<std::string>
   }
   std::printf("  open it: tessref inspect %s --pixel %d,%d --trace\n", scene_word.c_str(), first_x, first_y);
   if (!patch_command.empty()) std::printf("           %s\n", patch_command.c_str());
+  tes_pass();
   return 1;
 }
 

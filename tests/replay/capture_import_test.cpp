@@ -294,6 +294,16 @@ TEST_F(RenderDocImport, TheImportedFrameRendersTheApplicationsImage) {
   EXPECT_EQ(pixels_over_one_step(out / "gpu.png", folder() / "frame_rdc.ppm"), 0);
   const CliRun verify = run_cli("verify '" + (out / "scene.json").string() + "' --gpu '" + out.string() + "'");
   EXPECT_EQ(verify.exit_code, 0) << verify.output;
+  // The evaluation shader's outputs RenderDoc recorded: the bicubic patch's 128 triangles in the
+  // same order, each gl_Position within the bound (measured: 84 of 384 identical, the rest one
+  // float step apart, where llvmpipe's arithmetic rounds differently from the executor's).
+  EXPECT_THAT(verify.output, HasSubstr("evaluation outputs of draw 2 (gl_Position of each emitted triangle's corners): PASS: "));
+  EXPECT_THAT(verify.output, HasSubstr(" of 384 identical"));
+  // A GPU that emitted one vertex fewer fails.
+  fs::resize_file(out / "gpu_tes.bin", fs::file_size(out / "gpu_tes.bin") - 28);
+  const CliRun short_tes = run_cli("verify --gpu '" + out.string() + "'");
+  EXPECT_EQ(short_tes.exit_code, 1) << short_tes.output;
+  EXPECT_THAT(short_tes.output, HasSubstr("FAIL: the GPU emitted 383 vertices, tessref 384"));
 }
 
 // What a trace cannot rebuild, a RenderDoc capture holds: the buffer a compute shader wrote.
