@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <cstdio>
 #include <cstring>
@@ -26,6 +28,7 @@ namespace {
 struct ImportArgs {
   std::string capture, out, shard;
   long long event = -1;
+  double timeout = 600;
   bool quiet = false;
 };
 
@@ -55,6 +58,15 @@ std::filesystem::path find_importer() {
   throw InputError("cannot find the capture importer (tried " + list + "); set TESSREF_REPLAY_DIR to its folder");
 }
 
+// The importer's hidden staging folders beside DIR (.DIR.partial-*), left when it was killed.
+void remove_staging(const std::string& out) {
+  const std::filesystem::path dir = std::filesystem::absolute(out);
+  const std::string prefix = "." + dir.filename().string() + ".partial-";
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir.parent_path(), ec))
+    if (entry.path().filename().string().rfind(prefix, 0) == 0) std::filesystem::remove_all(entry.path(), ec);
+}
+
 int run_import(const ImportArgs& a) {
   // Debian's python3: the RenderDoc module is built for it alone.
   const std::string python = is_file("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
@@ -68,17 +80,48 @@ int run_import(const ImportArgs& a) {
   const pid_t pid = fork();
   if (pid < 0) throw InputError(std::string("tessref import: cannot start python3: ") + std::strerror(errno));
   if (pid == 0) {
+    setpgid(0, 0);  // its own group: --timeout stops it with apitrace and eglretrace under it
     execvp(c_argv[0], c_argv.data());
     std::fprintf(stderr, "tessref import: error: cannot run %s: %s (install Debian's python3)\n", c_argv[0],
                  std::strerror(errno));
     _exit(2);
   }
+  setpgid(pid, pid);
   int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) throw InputError(std::string("tessref import: waitpid: ") + std::strerror(errno));
+  const auto start = std::chrono::steady_clock::now();
+  bool stopped = false;
+  for (;;) {
+    const pid_t done = waitpid(pid, &status, WNOHANG);
+    if (done == pid) break;
+    if (done < 0 && errno != EINTR) throw InputError(std::string("tessref import: waitpid: ") + std::strerror(errno));
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!stopped && seconds > a.timeout) {
+      // A damaged capture can make RenderDoc's replay (or a retrace) run a draw of billions of
+      // vertices. SIGTERM lets the importer remove what it wrote; SIGKILL follows if it is stuck
+      // in native code, and the staging folder is removed here.
+      kill(-pid, SIGTERM);
+      for (int i = 0; i < 30 && waitpid(pid, &status, WNOHANG) == 0; ++i) usleep(100000);
+      kill(-pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      remove_staging(a.out);
+      std::fprintf(stderr,
+                   "tessref import: error: %s: reading it took more than %g s (--timeout), so it was stopped; a damaged "
+                   "capture can hold a draw the replay cannot finish; nothing was written\n",
+                   a.capture.c_str(), a.timeout);
+      return 2;
+    }
+    usleep(20000);
+  }
   if (WIFEXITED(status)) return WEXITSTATUS(status);
-  std::fprintf(stderr, "tessref import: error: the importer was killed by signal %d\n", WTERMSIG(status));
-  return 3;
+  remove_staging(a.out);
+  // RenderDoc's module reads an .rdc in the importer's process, and a damaged capture can crash
+  // it there (seen: SIGSEGV on a few changed bytes). The staging folder is only made after the
+  // capture is read, so nothing is left.
+  std::fprintf(stderr,
+               "tessref import: error: %s: the importer died of signal %d (%s) while reading it; a damaged capture "
+               "makes RenderDoc's reader crash, so the capture is probably damaged; nothing was written\n",
+               a.capture.c_str(), WTERMSIG(status), strsignal(WTERMSIG(status)));
+  return 2;
 }
 
 // A folder of captures: each *.trace and *.rdc (name-sorted, those of the shard) into OUT/<stem>/.
@@ -132,6 +175,11 @@ void add_import_command(CLI::App& app) {
       ->check(kInteger)
       ->check(CLI::Range(0LL, (1LL << 53)));
   cmd->add_flag("--quiet", args->quiet, "no progress line");
+  cmd->add_option("--timeout", args->timeout,
+                  "seconds after which reading a capture is stopped (exit 2, nothing written): a damaged capture can "
+                  "hold a draw its replay never finishes")
+      ->check(CLI::Range(1.0, 1e7))
+      ->capture_default_str();
   cmd->add_option("--shard", args->shard,
                   "with a folder of captures: shard I/N of its name-sorted .trace and .rdc files (or auto, as verify's)");
   cmd->callback([args] {

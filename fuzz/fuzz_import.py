@@ -8,6 +8,13 @@ folder. Deterministic for a seed.
 
     fuzz_import.py TRACE SECONDS [--seed N] [--artifacts DIR]
     fuzz_import.py TRACE --executions N [--seed N]   # a fixed number of inputs: the same every run
+    fuzz_import.py --rdc CAPTURE --tessref BIN (SECONDS | --executions N)
+
+With --rdc, a RenderDoc capture's bytes are changed at random (1 to 8 bytes) and each copy is
+imported by `tessref import` in its own process: exit 0 or 2 is expected; 3 (an importer bug) is
+a finding. RenderDoc's own reader crashing on a damaged file, or its replay running past
+--timeout (a damaged draw count), is counted apart: the command then exits 2 naming the signal or
+the timeout, and writes nothing.
 
 Prints the executions, the imports that succeeded, the refusals and the findings (each with its
 traceback and the mutated calls pickled into DIR); exits 1 if there was a finding.
@@ -17,6 +24,7 @@ import os
 import pickle
 import random
 import shutil
+import subprocess
 import sys
 import tempfile
 import time
@@ -94,9 +102,63 @@ def run_one(calls, out_root):
         shutil.rmtree(out, ignore_errors=True)
 
 
+def fuzz_rdc(args):
+    source = open(args.rdc, "rb").read()
+    rng = random.Random(args.seed)
+    counts = {"imported": 0, "refused": 0, "renderdoc crashed": 0, "stopped by --timeout": 0, "finding": 0}
+    work = tempfile.mkdtemp(prefix="tessref-fuzz-rdc-")
+    start, executions = time.monotonic(), 0
+    try:
+        while time.monotonic() - start < args.seconds and (args.executions is None or executions < args.executions):
+            data = bytearray(source)
+            for _ in range(rng.randint(1, 8)):
+                data[rng.randrange(len(data))] = rng.randrange(256)
+            capture = os.path.join(work, "input.rdc")
+            with open(capture, "wb") as f:
+                f.write(data)
+            out = os.path.join(work, "out")
+            executions += 1
+            try:
+                result = subprocess.run([args.tessref, "import", capture, "--out", out, "--timeout", str(args.timeout)],
+                                        capture_output=True, timeout=args.timeout + 60)
+            except subprocess.TimeoutExpired:
+                counts["finding"] += 1
+                os.makedirs(args.artifacts, exist_ok=True)
+                path = os.path.join(args.artifacts, "rdc-hang-%d.rdc" % counts["finding"])
+                shutil.copyfile(capture, path)
+                print("finding: the import ran past its --timeout of %d s by a minute, kept as %s" % (args.timeout, path))
+                shutil.rmtree(out, ignore_errors=True)
+                continue
+            stderr = result.stderr.decode("utf-8", "replace")
+            if result.returncode == 0:
+                counts["imported"] += 1
+            elif result.returncode == 2:
+                counts["renderdoc crashed" if "died of signal" in stderr else
+                       "stopped by --timeout" if "(--timeout)" in stderr else "refused"] += 1
+            else:
+                counts["finding"] += 1
+                os.makedirs(args.artifacts, exist_ok=True)
+                path = os.path.join(args.artifacts, "rdc-finding-%d.rdc" % counts["finding"])
+                shutil.copyfile(capture, path)
+                print("finding (exit %d), kept as %s:\n%s" % (result.returncode, path, stderr[-2000:]))
+            leftovers = [n for n in os.listdir(work) if n != "input.rdc"]
+            if result.returncode != 0 and leftovers:
+                counts["finding"] += 1
+                print("a refused import left %s behind" % leftovers)
+            shutil.rmtree(out, ignore_errors=True)
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+    print("fuzz_import --rdc: %d executions in %.0f s: %s" % (executions, time.monotonic() - start,
+                                                              ", ".join("%d %s" % (v, k) for k, v in counts.items())))
+    return 1 if counts["finding"] else 0
+
+
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("trace")
+    parser.add_argument("trace", nargs="?")
+    parser.add_argument("--rdc")
+    parser.add_argument("--tessref")
+    parser.add_argument("--timeout", type=int, default=60, help="--rdc: seconds after which an import is a hang")
     parser.add_argument("seconds", type=float, nargs="?", default=float("inf"))
     parser.add_argument("--executions", type=int)
     parser.add_argument("--seed", type=int, default=1)
@@ -104,6 +166,12 @@ def main():
     args = parser.parse_args()
     if args.executions is None and args.seconds == float("inf"):
         parser.error("give SECONDS or --executions")
+    if args.rdc:
+        if not args.tessref:
+            parser.error("--rdc needs --tessref BIN")
+        return fuzz_rdc(args)
+    if not args.trace:
+        parser.error("give TRACE or --rdc CAPTURE")
     calls = list(read_calls(args.trace))
     names = sorted({c.name for c in calls})
     rng = random.Random(args.seed)

@@ -14,8 +14,6 @@ import os
 import shutil
 import subprocess
 
-import tempfile
-
 from frame_scene import Files, _SAFE_NAME
 from glsl_declarations import Declarations, with_block_binding
 from import_error import ImportFailure
@@ -475,9 +473,8 @@ def _clear_values(ctl, action, state):
             state["depth"] = ch.GetChild(0).data.basic.d
 
 
-def import_renderdoc(path, event):
-    """The frame up to the draw, and a temporary folder with the driver's images after it (the
-    caller moves them and removes the folder)."""
+def import_renderdoc(path, event, images):
+    """The frame up to the draw; the driver's images after it are written into `images`."""
     os.environ.setdefault("EGL_PLATFORM", "surfaceless")
     try:
         import renderdoc as rd
@@ -498,21 +495,15 @@ def import_renderdoc(path, event):
         result, ctl = cap.OpenCapture(rd.ReplayOptions(), None)
         if result != rd.ResultCode.Succeeded:
             raise ImportFailure("RenderDoc cannot replay %s: %s" % (path, result))
-        images = None
         try:
             frame, event = _read_frame(rd, ctl, path, event)
-            images = tempfile.mkdtemp(prefix="tessref-renderdoc-")
             ctl.SetFrameEvent(event, True)
             fbo = ctl.GetGLPipelineState().framebuffer.drawFBO
             color = fbo.colorAttachments[fbo.drawBuffers[0]].resourceId if fbo.drawBuffers[0] >= 0 else None
             depth = fbo.depthAttachment.resourceId if _rid(fbo.depthAttachment.resourceId) != "0" else None
             frame.gpu_images = save_gpu_images(rd, ctl, event, color, depth, images, frame.report)
             frame.gpu_images += save_tes_outputs(rd, ctl, event, images)
-            return frame, images
-        except BaseException:
-            if images is not None:
-                shutil.rmtree(images, ignore_errors=True)
-            raise
+            return frame
         finally:
             ctl.Shutdown()
     finally:
@@ -572,7 +563,12 @@ def _read_frame(rd, ctl, path, event):
             if a.flags & rd.ActionFlags.ClearDepthStencil or "Depth" in a.GetName(structured):
                 pending["depth"] = clear_state.get("depth", 1.0)
         elif a.flags & rd.ActionFlags.Drawcall:
-            reader.draw(a, name, pending)
+            try:
+                reader.draw(a, name, pending)
+            except (AttributeError, TypeError, KeyError, IndexError, ValueError) as e:
+                # RenderDoc's replay answered with something no GL state has: a damaged capture.
+                raise ImportFailure("RenderDoc's replay of event %d (%s) gives a state GL does not reach (%s: %s): "
+                                    "the capture is damaged" % (a.eventId, name, type(e).__name__, e))
             pending = None
     if not frame.draws or frame.draws[-1][0] != event:
         reasons = "; ".join(text for no, text in frame.report if no == event)

@@ -14,6 +14,7 @@ import argparse
 import json
 import os
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -171,7 +172,12 @@ def write_output(frame, scene, capture, capture_kind_name, target_no, out_dir, g
         f.write("\n".join(lines) + "\n")
 
 
+def _stop(signum, frame):
+    raise SystemExit(2)
+
+
 def main():
+    signal.signal(signal.SIGTERM, _stop)  # tessref import's --timeout: the finally below still runs
     parser = argparse.ArgumentParser(prog="tessref import", description=__doc__.split("\n\n")[0])
     parser.add_argument("capture")
     parser.add_argument("--out", required=True)
@@ -188,23 +194,21 @@ def main():
         if args.event is not None and args.event < 0:
             raise ImportFailure("--event %d: call numbers start at 0" % args.event)
         kind = capture_kind(args.capture)
-        images = None
-        if kind == "renderdoc":
-            from renderdoc_import import import_renderdoc
-            frame, images = import_renderdoc(args.capture, args.event)
-        else:
-            frame = import_apitrace(args.capture, args.event, not args.quiet)
-        scene = scene_of(frame)
-        target_no = frame.draws[-1][0]
+        # Everything is written into a hidden sibling of DIR, renamed to DIR at the end; `tessref
+        # import` removes it if this process is stopped (--timeout) before it can.
         parent = os.path.dirname(out) or "."
         os.makedirs(parent, exist_ok=True)
         staging = tempfile.mkdtemp(prefix="." + os.path.basename(out) + ".partial-", dir=parent)
-        if images is not None:
-            for name in frame.gpu_images:
-                shutil.move(os.path.join(images, name), os.path.join(staging, name))
-            shutil.rmtree(images, ignore_errors=True)
+        if kind == "renderdoc":
+            from renderdoc_import import import_renderdoc
+            frame = import_renderdoc(args.capture, args.event, staging)
             gpu = "gpu.png" if "gpu.png" in frame.gpu_images else None
+            scene = scene_of(frame)
+            target_no = frame.draws[-1][0]
         else:
+            frame = import_apitrace(args.capture, args.event, not args.quiet)
+            scene = scene_of(frame)
+            target_no = frame.draws[-1][0]
             gpu = retrace_image(args.capture, target_no, staging, frame.report)
         write_output(frame, scene, args.capture, kind, target_no, staging, gpu)
         if os.path.isdir(out):
