@@ -352,7 +352,10 @@ ShaderSettings read_shaders(JsonObject o, const JsonSource& source, const std::f
       s.textures.push_back(read_texture_setting(name, value, o.path_of("textures") + "." + name, source, base_dir));
   }
   s.patch_vertices = o.integer("patch_vertices", 1, 32);
-  s.scene_uniforms = o.boolean("scene_uniforms");
+  // Optional, not in the default scene: captures' manifests hold the whole resolved scene, and a
+  // key added to the default would make every earlier capture's scene differ.
+  o.describe("scene_uniforms", "a boolean (default true): the camera, lights and material set the uniforms of the twins' names");
+  s.scene_uniforms = o.has("scene_uniforms") ? o.boolean("scene_uniforms") : true;
   s.batch_lanes = o.integer("batch_lanes", 1, shader::kMaxLanes);
   s.max_instructions = std::uint64_t(o.integer("max_instructions", 1, std::numeric_limits<int>::max()));
   o.finish();

@@ -28,4 +28,15 @@ step(${installed_tessref} ${args} -o ${WORK_DIR}/installed.png)
 step(${BINARY_DIR}/cli/tessref ${args} -o ${WORK_DIR}/build_tree.png)
 step(${CMAKE_COMMAND} -E compare_files ${WORK_DIR}/installed.png ${WORK_DIR}/build_tree.png)
 step(${CMAKE_COMMAND} -E compare_files ${WORK_DIR}/consumer.png ${WORK_DIR}/build_tree.png)
+# The capture importer's scripts are installed, and the installed `tessref import` runs them: a
+# file that is no capture is refused by the importer (exit 2, its message).
+if(NOT EXISTS ${prefix}/share/tessref/replay/tessref_import.py)
+  message(FATAL_ERROR "the capture importer was not installed under ${prefix}/share/tessref/replay")
+endif()
+unset(ENV{TESSREF_REPLAY_DIR})
+execute_process(COMMAND ${installed_tessref} import ${WORK_DIR}/installed.png --out ${WORK_DIR}/imported
+                RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_QUIET)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "is neither a RenderDoc capture")
+  message(FATAL_ERROR "the installed tessref import did not run the importer (exit ${rc}):\n${err}")
+endif()
 message(STATUS "consumer built and ran against the installed tessref")

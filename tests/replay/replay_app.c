@@ -240,6 +240,20 @@ struct GemVertex { /* 24 bytes, interleaved */
   uint8_t pad[2];
 };
 
+/* A vertex array with one float3 position array at location 0, of its own buffer. The stride is
+ * given either way (12 or 0: both tightly packed), as applications do. */
+static GLuint position_array(const float* data, GLsizeiptr bytes, GLsizei stride) {
+  GLuint vao, vbo;
+  glGenVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  glGenBuffers(1, &vbo);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo);
+  glBufferData(GL_ARRAY_BUFFER, bytes, data, GL_STATIC_DRAW);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, (void*)0);
+  glEnableVertexAttribArray(0);
+  return vao;
+}
+
 static void write_ppm(const char* path, const uint8_t* rgba) {
   FILE* f = fopen(path, "wb");
   if (!f) fail("cannot open the output image");
@@ -352,14 +366,7 @@ int main(int argc, char** argv) {
 
   /* Ground plane. */
   const float plane[] = {-1.6f, -1.0f, -1.2f, 1.6f, -1.0f, -1.2f, -1.6f, 1.0f, 1.4f, 1.6f, 1.0f, 1.4f};
-  GLuint plane_vao, plane_vbo;
-  glGenVertexArrays(1, &plane_vao);
-  glBindVertexArray(plane_vao);
-  glGenBuffers(1, &plane_vbo);
-  glBindBuffer(GL_ARRAY_BUFFER, plane_vbo);
-  glBufferData(GL_ARRAY_BUFFER, sizeof plane, plane, GL_STATIC_DRAW);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 12, (void*)0);
-  glEnableVertexAttribArray(0);
+  const GLuint plane_vao = position_array(plane, sizeof plane, 12);
 
   /* Gems: an octahedron's 8 faces as 3-vertex patches, behind 3 unused vertices (base vertex 3)
    * and 5 unused indices (index offset 10 bytes), drawn 3 times at per-instance offsets. */
@@ -473,14 +480,7 @@ int main(int argc, char** argv) {
       c[1] = -0.95f + 0.3f * (float)j;
       c[2] = ((i == 1 || i == 2) && (j == 1 || j == 2)) ? -0.9f : -0.2f;
     }
-  GLuint bicubic_vao, bicubic_vbo;
-  glGenVertexArrays(1, &bicubic_vao);
-  glBindVertexArray(bicubic_vao);
-  glGenBuffers(1, &bicubic_vbo);
-  glBindBuffer(GL_ARRAY_BUFFER, bicubic_vbo);
-  glBufferData(GL_ARRAY_BUFFER, sizeof bicubic, bicubic, GL_STATIC_DRAW);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, (void*)0);
-  glEnableVertexAttribArray(0);
+  const GLuint bicubic_vao = position_array(bicubic, sizeof bicubic, 0);
 
   /* ---- the frame ---- */
 #ifdef HAVE_RENDERDOC_APP
