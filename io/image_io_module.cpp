@@ -117,7 +117,12 @@ const char* read(const char* path, tessref_image_io_type type, int channels,
                  tessref_image_io_alloc_fn alloc, void* context) {
   return guarded(path, [&]() -> const char* {
     const std::string name = path;
-    auto in = OIIO::ImageInput::open(name);
+    // The values as stored: OpenImageIO premultiplies the colour of a file with straight alpha
+    // (PNG, TIFF) by default, which no GL upload does; a framebuffer saved by a driver would come
+    // back darker wherever its alpha is below 1.
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = OIIO::ImageInput::open(name, &config);
     if (!in) return fail(name + ": cannot read image: " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
     const int stored = channels > 0 ? channels : spec.nchannels;

@@ -459,7 +459,7 @@ class FrameScene:
         if s.draw_framebuffer == 0:
             size = s.largest_viewport or (0, 0)
             return {"size": size, "color": ["GL_RGBA8"], "depth": "GL_DEPTH_COMPONENT24", "default": True}
-        description = {"color": [], "depth": None, "size": None}
+        description = {"color": [], "depth": None, "size": None, "color_names": list(fb.draw_buffers)}
         for buf in fb.draw_buffers:
             if buf == "GL_NONE":
                 description["color"].append(None)
@@ -537,9 +537,26 @@ def build_scene(frame):
                        % fb["depth"])
             depth = "GL_DEPTH_COMPONENT32F"
         scene["framebuffer"]["depth"] = {"internalformat": depth}
+    # The framebuffer's contents before the frame's first draw matter unless that draw first
+    # clears all of colour and depth.
     first = draws[0] if draws else {}
-    if "clear" not in first or "color" not in first["clear"] or "depth" not in first["clear"]:
-        frame.note(None, "the frame's first draw is not preceded by a clear of colour and depth: the scene starts "
-                   "from (0, 0, 0, 0) and depth 1 (the contents before the frame are not in the calls)")
+    clear = first.get("clear", {})
+    whole = "scissor" not in first and first.get("color_mask", [True] * 4) == [True] * 4 and first.get("depth_mask", True)
+    frame.first_draw = None if ("color" in clear and "depth" in clear and whole) else \
+        next(no for no, d, fb_id, _ in frame.draws if d is first)
     return scene
+
+
+def set_initial_images(frame, scene, color_files, depth_file):
+    """The framebuffer's contents before the frame's first draw, as image files in DIR."""
+    if color_files:
+        for attachment, name in zip(scene["framebuffer"]["color"], color_files):
+            if name:
+                attachment["file"] = name
+    if depth_file and "depth" in scene["framebuffer"]:
+        scene["framebuffer"]["depth"]["file"] = depth_file
+    missing = [what for what, have in (("colour", color_files and all(color_files)), ("depth", depth_file)) if not have]
+    if missing:
+        frame.note(None, "the frame's first draw does not begin with a clear, and the capture does not give the %s "
+                   "before it: the scene starts from (0, 0, 0, 0) and depth 1 there" % " and ".join(missing))
 

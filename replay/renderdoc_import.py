@@ -503,6 +503,7 @@ def import_renderdoc(path, event, images):
             depth = fbo.depthAttachment.resourceId if _rid(fbo.depthAttachment.resourceId) != "0" else None
             frame.gpu_images = save_gpu_images(rd, ctl, event, color, depth, images, frame.report)
             frame.gpu_images += save_tes_outputs(rd, ctl, event, images)
+            frame.initial_images = save_initial_images(rd, ctl, frame, images)
             return frame
         finally:
             ctl.Shutdown()
@@ -521,6 +522,7 @@ def _read_frame(rd, ctl, path, event):
     frame = RenderDocFrame(os.path.basename(path))
     reader = _Reader(rd, ctl, frame)
     frame.gpu_images = []
+    frame.initial_images = None
     structured = ctl.GetStructuredFile()
     actions = [a for a in _flatten(ctl.GetRootActions())]
     draws = [a for a in actions if a.flags & rd.ActionFlags.Drawcall]
@@ -603,6 +605,36 @@ def _save_rgba8(ctl, rd, resource_id, path):
     converted = subprocess.run(["oiiotool", ppm, "-o", path], capture_output=True).returncode == 0
     os.remove(ppm)
     return converted
+
+
+def save_initial_images(rd, ctl, frame, out_dir):
+    """The colour and depth attachments before the frame's first draw (its first event, which
+    changes no pixel), when that draw does not begin by clearing them: (colour files, depth file)."""
+    first = frame.draws[0][0] if frame.draws else None
+    if first is None or "clear" in frame.draws[0][1] and {"color", "depth"} <= set(frame.draws[0][1]["clear"]):
+        return None
+    action = [a for a in _flatten(ctl.GetRootActions()) if a.eventId == first][0]
+    ctl.SetFrameEvent(action.events[0].eventId, True)
+    fbo = ctl.GetGLPipelineState().framebuffer.drawFBO
+    os.makedirs(os.path.join(out_dir, "initial"), exist_ok=True)
+    colors = []
+    for k, index in enumerate(fbo.drawBuffers):
+        if index < 0:
+            break
+        name = "initial/color%d.png" % k
+        ok = _save_rgba8(ctl, rd, fbo.colorAttachments[index].resourceId, os.path.join(out_dir, name))
+        colors.append(name if ok else None)
+    depth = None
+    if _rid(fbo.depthAttachment.resourceId) != "0":
+        save = rd.TextureSave()
+        save.resourceId = fbo.depthAttachment.resourceId
+        save.destType = rd.FileType.EXR
+        if ctl.SaveTexture(save, os.path.join(out_dir, "initial", "depth.exr")) == rd.ResultCode.Succeeded:
+            depth = "initial/depth.exr"
+            frame.note(first, "the depth before the frame's first draw is RenderDoc's replay's; RenderDoc 1.24 does not "
+                       "restore a depth renderbuffer's contents from before the capture (measured: its replay starts "
+                       "from depth 0), so its image, gpu.png and the scene may all differ from the application's")
+    return colors, depth
 
 
 def save_tes_outputs(rd, ctl, event, out_dir):

@@ -11,6 +11,7 @@ that cannot be imported.
 """
 
 import argparse
+import base64
 import json
 import os
 import shutil
@@ -23,7 +24,7 @@ import traceback
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from apitrace_reader import Call, read_calls  # noqa: E402
-from frame_scene import FrameScene, build_scene  # noqa: E402
+from frame_scene import FrameScene, build_scene, set_initial_images  # noqa: E402
 from gl_state import DRAW_CALLS, GlState  # noqa: E402
 from import_error import ImportFailure  # noqa: E402
 
@@ -122,6 +123,56 @@ def scene_of(frame):
         raise ImportFailure("the capture's state at the draw is not one GL reaches (%s: %s)" % (type(e).__name__, e))
 
 
+def retrace_initial_images(path, frame, scene, out_dir):
+    """The framebuffer before the frame's first draw, from eglretrace's state dump after the call
+    before it: colour attachments as PNG, depth (apitrace's float map) as EXR through oiiotool."""
+    color_files, depth_file = [], None
+    if frame.first_draw is None:
+        return  # the frame begins by clearing all of colour and depth
+    retrace = shutil.which("eglretrace")
+    if retrace is None:
+        return set_initial_images(frame, scene, color_files, depth_file)
+    env = dict(os.environ, WAFFLE_PLATFORM="surfaceless_egl")
+    result = subprocess.run([retrace, "-D", str(max(0, frame.first_draw - 1)), path], env=env,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=600)
+    try:
+        state = json.loads(result.stdout.decode("utf-8", "replace"), strict=False)
+        attachments = state.get("framebuffer", {})
+    except ValueError:
+        attachments = {}
+    names = frame.draws[-1][3].get("color_names") or ["GL_BACK"]
+    os.makedirs(os.path.join(out_dir, "initial"), exist_ok=True)
+    for k, name in enumerate(names[:len(scene["framebuffer"]["color"])]):
+        image = attachments.get(name, {})
+        data = base64.b64decode(image.get("__data__", "")) if isinstance(image, dict) else b""
+        if not data.startswith(b"\x89PNG"):
+            color_files.append(None)
+            continue
+        color_files.append("initial/color%d.png" % k)
+        with open(os.path.join(out_dir, color_files[-1]), "wb") as f:
+            f.write(data)
+    depth = attachments.get("GL_DEPTH_ATTACHMENT", {})
+    data = base64.b64decode(depth.get("__data__", "")) if isinstance(depth, dict) else b""
+    header = data.split(b"\n", 3)
+    if len(header) == 4 and header[0] == b"Pf" and shutil.which("oiiotool"):
+        # apitrace writes its float map little-endian but with scale 1, which says big-endian, and
+        # OpenImageIO takes its first row (GL's bottom row) as the top: the header is written again
+        # with -1 and the rows in reverse before OpenImageIO reads it.
+        width, height = (int(v) for v in header[1].split())
+        row = width * 4
+        if len(header[3]) != row * height:
+            return set_initial_images(frame, scene, color_files, None)
+        rows = b"".join(header[3][(height - 1 - y) * row:(height - y) * row] for y in range(height))
+        pfm = os.path.join(out_dir, "initial", "depth.pfm")
+        with open(pfm, "wb") as f:
+            f.write(b"Pf\n" + header[1] + b"\n-1.0\n" + rows)
+        if subprocess.run(["oiiotool", pfm, "-o", os.path.join(out_dir, "initial", "depth.exr")],
+                          capture_output=True).returncode == 0:
+            depth_file = "initial/depth.exr"
+        os.remove(pfm)
+    set_initial_images(frame, scene, color_files, depth_file)
+
+
 def retrace_image(path, call_no, out_dir, report):
     """The driver's own image after the draw, by retracing the capture (apitrace's eglretrace)."""
     retrace = shutil.which("eglretrace")
@@ -205,11 +256,15 @@ def main():
             gpu = "gpu.png" if "gpu.png" in frame.gpu_images else None
             scene = scene_of(frame)
             target_no = frame.draws[-1][0]
+            if frame.first_draw is not None:
+                colors, depth = frame.initial_images or ([], None)
+                set_initial_images(frame, scene, colors, depth)
         else:
             frame = import_apitrace(args.capture, args.event, not args.quiet)
             scene = scene_of(frame)
             target_no = frame.draws[-1][0]
             gpu = retrace_image(args.capture, target_no, staging, frame.report)
+            retrace_initial_images(args.capture, frame, scene, staging)
         write_output(frame, scene, args.capture, kind, target_no, staging, gpu)
         if os.path.isdir(out):
             os.rmdir(out)

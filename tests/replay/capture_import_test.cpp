@@ -249,6 +249,24 @@ TEST_F(ApitraceImport, AFolderOfCapturesIsImportedAndVerifiedInShards) {
   EXPECT_THAT(second.output, ::testing::Not(HasSubstr("a_frame/gpu.png")));
 }
 
+// A last frame that does not begin with a clear starts from what the frame before left: the
+// retrace's colour and depth before its first draw become the scene's framebuffer files.
+TEST_F(ApitraceImport, AFrameWithoutAClearStartsFromTheEarlierFramesPixels) {
+  const fs::path t = trace("two_frames", "--two-frames");
+  TempDir tmp;
+  const fs::path out = tmp.path() / "imported";
+  const CliRun import = run_cli("import --quiet '" + t.string() + "' --out '" + out.string() + "'");
+  ASSERT_EQ(import.exit_code, 0) << import.output;
+  const nlohmann::json scene = read_json(out / "scene.json");
+  EXPECT_EQ(scene.at("draws").size(), 2u) << "the plane was drawn in the earlier frame";
+  EXPECT_EQ(scene.at("framebuffer").at("color").at(0).at("file"), "initial/color0.png");
+  EXPECT_EQ(scene.at("framebuffer").at("depth").at("file"), "initial/depth.exr");
+  ASSERT_EQ(run_cli("render '" + (out / "scene.json").string() + "' -o '" + (tmp.path() / "t.png").string() + "'").exit_code, 0);
+  // Measured: identical (the plane's alpha of 0.75 in the colour read as stored, its depth occluding
+  // the bicubic patch's middle).
+  EXPECT_EQ(pixels_over_one_step(tmp.path() / "t.png", app_image("two_frames")), 0);
+}
+
 TEST_F(ApitraceImport, AnExistingFolderIsNotOverwritten) {
   const fs::path t = trace("frame");
   TempDir tmp;

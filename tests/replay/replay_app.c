@@ -2,7 +2,7 @@
  * frame into a framebuffer object over EGL surfaceless, then writes what glReadPixels gives to a
  * binary PPM (top row first).
  *
- *   replay_app [--untessellated | --gles | --label NAME | --compute] OUT.ppm
+ *   replay_app [--untessellated | --gles | --label NAME | --compute | --two-frames] OUT.ppm
  *
  * The frame, in order:
  *   1. glClear of colour and depth;
@@ -17,7 +17,9 @@
  * --label names the gem program's vertex shader object with glObjectLabel (the importer's file
  * names come from labels, so a hostile one must be refused); --compute has a compute shader write
  * the per-instance offsets (the same values, the same image): a trace holds the dispatch, not
- * what it wrote, while a RenderDoc capture holds the buffer's bytes.
+ * what it wrote, while a RenderDoc capture holds the buffer's bytes. --two-frames ends a frame
+ * (eglSwapBuffers on a pbuffer) after the clear and the plane, and captures with RenderDoc only
+ * what follows: the last frame then starts from what the earlier one left, colour and depth.
  *
  * Under RenderDoc (renderdoccmd capture) the frame is bracketed by the in-app API's
  * StartFrameCapture / EndFrameCapture, the only way RenderDoc captures an application without a
@@ -304,25 +306,28 @@ static int gles_frame(EGLDisplay display, const char* out) {
 }
 
 int main(int argc, char** argv) {
-  int untessellated = 0, gles = 0, compute = 0;
+  int untessellated = 0, gles = 0, compute = 0, two_frames = 0;
   const char* label = NULL;
   int arg = 1;
   for (; arg < argc - 1; ++arg) {
     if (strcmp(argv[arg], "--untessellated") == 0) untessellated = 1;
     else if (strcmp(argv[arg], "--gles") == 0) gles = 1;
     else if (strcmp(argv[arg], "--compute") == 0) compute = 1;
+    else if (strcmp(argv[arg], "--two-frames") == 0) two_frames = 1;
     else if (strcmp(argv[arg], "--label") == 0 && arg + 1 < argc - 1) label = argv[++arg];
     else break;
   }
   if (arg != argc - 1) {
-    fprintf(stderr, "usage: replay_app [--untessellated | --gles | --label NAME | --compute] OUT.ppm\n");
+    fprintf(stderr, "usage: replay_app [--untessellated | --gles | --label NAME | --compute | --two-frames] OUT.ppm\n");
     return 2;
   }
   const char* out = argv[arg];
   EGLDisplay display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL);
   if (display == EGL_NO_DISPLAY || !eglInitialize(display, NULL, NULL)) fail("no EGL surfaceless display");
   if (gles) return gles_frame(display, out);
-  const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE, 0, EGL_NONE};
+  /* --two-frames: a pbuffer, for eglSwapBuffers to end a frame (the drawing goes to the FBO). */
+  const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE,
+                                   two_frames ? EGL_PBUFFER_BIT : 0, EGL_NONE};
   EGLConfig config;
   EGLint configs = 0;
   if (!eglChooseConfig(display, config_attribs, &config, 1, &configs) || configs < 1) fail("no EGL config");
@@ -330,8 +335,13 @@ int main(int argc, char** argv) {
   const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
                                     EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
   EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, context_attribs);
-  if (context == EGL_NO_CONTEXT || !eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context))
-    fail("no GL 4.5 core context");
+  EGLSurface surface = EGL_NO_SURFACE;
+  if (two_frames) {
+    const EGLint pbuffer_attribs[] = {EGL_WIDTH, 16, EGL_HEIGHT, 16, EGL_NONE};
+    surface = eglCreatePbufferSurface(display, config, pbuffer_attribs);
+    if (surface == EGL_NO_SURFACE) fail("no pbuffer");
+  }
+  if (context == EGL_NO_CONTEXT || !eglMakeCurrent(display, surface, surface, context)) fail("no GL 4.5 core context");
 #ifdef HAVE_RENDERDOC_APP
   RENDERDOC_API_1_1_2* rdoc = renderdoc();
 #endif
@@ -484,8 +494,9 @@ int main(int argc, char** argv) {
 
   /* ---- the frame ---- */
 #ifdef HAVE_RENDERDOC_APP
-  if (rdoc) rdoc->StartFrameCapture(NULL, NULL);
+  if (rdoc && !two_frames) rdoc->StartFrameCapture(NULL, NULL);
 #endif
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glViewport(0, 0, kSize, kSize);
   glClearColor(0.05f, 0.07f, 0.12f, 1.0f);
   glClearDepth(1.0);
@@ -500,6 +511,12 @@ int main(int argc, char** argv) {
   glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
 
   if (untessellated) goto read_back;
+  if (two_frames) {
+    eglSwapBuffers(display, surface);
+#ifdef HAVE_RENDERDOC_APP
+    if (rdoc) rdoc->StartFrameCapture(NULL, NULL);
+#endif
+  }
 
   glUseProgram(gem_program);
   glUniform1f(glGetUniformLocation(gem_program, "u_level"), 5.0f);
@@ -528,6 +545,7 @@ read_back:;
 #endif
   write_ppm(out, pixels);
   eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  if (surface != EGL_NO_SURFACE) eglDestroySurface(display, surface);
   eglDestroyContext(display, context);
   eglTerminate(display);
   return 0;
