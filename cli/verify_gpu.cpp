@@ -130,6 +130,41 @@ bool compare_tes(const EmittedVertices& ours, const std::vector<glm::vec4>& gpu,
   return first_beyond == gpu.size();
 }
 
+// The depth the draws left against the GPU's (gpu_depth.exr from a RenderDoc import), pixel by
+// pixel. Window z is not fixed to the bit by GL: llvmpipe interpolates it with float plane
+// equations, tessref in double, and a fragment's z differs by some float steps, more on steep
+// triangles, where the plane's terms are far larger than z (measured: at most 3 steps of 2^-24
+// in docs/draws.md's G-buffer, 9 on the test application's bicubic patch); 16 steps pass.
+bool compare_depth(const Framebuffer& fb, const std::filesystem::path& file) {
+  const FloatImage gpu = read_float_image(file);
+  std::printf("  depth (%s): ", file.filename().string().c_str());
+  if (gpu.width != fb.width || gpu.height != fb.height || gpu.channels < 1) {
+    std::printf("FAIL: %d x %d, the scene's image %d x %d\n", gpu.width, gpu.height, fb.width, fb.height);
+    return false;
+  }
+  long long identical = 0, beyond = 0;
+  double largest = 0.0;
+  int first_x = -1, first_y = -1;
+  for (int y = 0; y < fb.height; ++y)
+    for (int x = 0; x < fb.width; ++x) {
+      const float ours = fb.depth[std::size_t(fb.height - 1 - y) * std::size_t(fb.width) + std::size_t(x)];
+      const float theirs = gpu.pixels[(std::size_t(y) * std::size_t(gpu.width) + std::size_t(x)) * std::size_t(gpu.channels)];
+      if (ours == theirs) {
+        ++identical;
+        continue;
+      }
+      const double d = std::fabs(double(ours) - double(theirs));
+      largest = std::max(largest, d);
+      if (d > 16.0 * std::ldexp(1.0, -24) && beyond++ == 0) first_x = x, first_y = y;
+    }
+  const long long pixels = (long long)fb.width * fb.height;
+  std::printf("%s: %s of %s pixels identical, the largest difference %.3g steps of 2^-24 (bound 16)", beyond ? "FAIL" : "PASS",
+              with_commas(identical).c_str(), with_commas(pixels).c_str(), largest * std::ldexp(1.0, 24));
+  if (beyond) std::printf("; %s beyond it, the first at (%d, %d)", with_commas(beyond).c_str(), first_x, first_y);
+  std::printf("\n");
+  return beyond == 0;
+}
+
 }  // namespace
 
 int run_verify_gpu(const std::string& scene_path, const std::vector<std::string>& sets, const std::string& gpu,
@@ -172,7 +207,12 @@ int run_verify_gpu(const std::string& scene_path, const std::vector<std::string>
   Framebuffer fb;
   render_scene(scene, mesh, parallel, fb, options);
   const Rgb8Image ours = to_rgb8(fb);
-  auto tes_pass = [&] { return gpu_tes.empty() || compare_tes(emitted, gpu_tes, scene.draws.size() - 1); };
+  auto tes_pass = [&] {
+    const bool tes = gpu_tes.empty() || compare_tes(emitted, gpu_tes, scene.draws.size() - 1);
+    const bool depth = gpu_dir.empty() || !std::filesystem::is_regular_file(gpu_dir / "gpu_depth.exr", ec) ||
+                       compare_depth(fb, gpu_dir / "gpu_depth.exr");
+    return tes && depth;
+  };
 
   long long differing = 0;
   int largest = 0, first_x = -1, first_y = -1;

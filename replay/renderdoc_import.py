@@ -11,6 +11,7 @@ levels).
 
 import json
 import os
+import struct
 import shutil
 import subprocess
 
@@ -626,10 +627,7 @@ def save_initial_images(rd, ctl, frame, out_dir):
         colors.append(name if ok else None)
     depth = None
     if _rid(fbo.depthAttachment.resourceId) != "0":
-        save = rd.TextureSave()
-        save.resourceId = fbo.depthAttachment.resourceId
-        save.destType = rd.FileType.EXR
-        if ctl.SaveTexture(save, os.path.join(out_dir, "initial", "depth.exr")) == rd.ResultCode.Succeeded:
+        if _save_depth(ctl, rd, fbo.depthAttachment.resourceId, os.path.join(out_dir, "initial", "depth.exr")):
             depth = "initial/depth.exr"
             frame.note(first, "the depth before the frame's first draw is RenderDoc's replay's; RenderDoc 1.24 does not "
                        "restore a depth renderbuffer's contents from before the capture (measured: its replay starts "
@@ -666,6 +664,33 @@ def save_tes_outputs(rd, ctl, event, out_dir):
     return ["gpu_tes.bin", "gpu_tes.json"]
 
 
+def _save_depth(ctl, rd, resource_id, path):
+    """A depth attachment's stored values as a one-channel float EXR (through a float map and
+    oiiotool: RenderDoc's own EXR export is half precision, 2^-11, coarser than 24-bit depth)."""
+    description = [t for t in ctl.GetTextures() if _rid(t.resourceId) == _rid(resource_id)][0]
+    fmt = internal_format(description.format)
+    w, h = description.width, description.height
+    data = bytes(ctl.GetTextureData(resource_id, rd.Subresource(0, 0, 0)))
+    if fmt in ("GL_DEPTH_COMPONENT24", "GL_DEPTH24_STENCIL8") and len(data) == w * h * 4:
+        # 32 bits a texel: the depth in the top 24 (measured on llvmpipe), the stencil below.
+        words = struct.unpack("<%dI" % (w * h), data)
+        values = [(v >> 8) / float((1 << 24) - 1) for v in words]
+    elif fmt == "GL_DEPTH_COMPONENT32F" and len(data) == w * h * 4:
+        values = list(struct.unpack("<%df" % (w * h), data))
+    else:
+        return False
+    if not shutil.which("oiiotool"):
+        return False
+    pfm = path + ".pfm"
+    with open(pfm, "wb") as f:
+        f.write(b"Pf\n%d %d\n-1.0\n" % (w, h))
+        # A float map's rows run bottom to top, as GL's do.
+        f.write(struct.pack("<%df" % (w * h), *values))
+    converted = subprocess.run(["oiiotool", pfm, "-d", "float", "-o", path], capture_output=True).returncode == 0
+    os.remove(pfm)
+    return converted
+
+
 def save_gpu_images(rd, ctl, event, fbo_color, fbo_depth, out_dir, report):
     """The colour (gpu.png) and depth (gpu_depth.exr) the driver left after the draw."""
     ctl.SetFrameEvent(event, True)
@@ -673,6 +698,9 @@ def save_gpu_images(rd, ctl, event, fbo_color, fbo_depth, out_dir, report):
     if fbo_color is not None and _save_rgba8(ctl, rd, fbo_color, os.path.join(out_dir, "gpu.png")):
         written.append("gpu.png")
         fbo_color = None
+    if fbo_depth is not None and _save_depth(ctl, rd, fbo_depth, os.path.join(out_dir, "gpu_depth.exr")):
+        written.append("gpu_depth.exr")
+        fbo_depth = None
     for resource_id, name, dest in ((fbo_color, "gpu.png", rd.FileType.PNG), (fbo_depth, "gpu_depth.exr", rd.FileType.EXR)):
         if resource_id is None:
             continue

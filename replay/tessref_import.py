@@ -156,7 +156,7 @@ def retrace_initial_images(path, frame, scene, out_dir):
     header = data.split(b"\n", 3)
     if len(header) == 4 and header[0] == b"Pf" and shutil.which("oiiotool"):
         # apitrace writes its float map little-endian but with scale 1, which says big-endian, and
-        # OpenImageIO takes its first row (GL's bottom row) as the top: the header is written again
+        # its rows top first where a float map's run bottom to top: the header is written again
         # with -1 and the rows in reverse before OpenImageIO reads it.
         width, height = (int(v) for v in header[1].split())
         row = width * 4
