@@ -18,7 +18,7 @@ STAGE_FILES = {"vertex": "vert", "tess_control": "tesc", "tess_evaluation": "tes
 COLOR_FORMATS = {"GL_RGBA8", "GL_SRGB8_ALPHA8", "GL_RGBA16F", "GL_RGBA32F"}
 DEPTH_FORMATS = {"GL_DEPTH_COMPONENT24": "GL_DEPTH_COMPONENT24", "GL_DEPTH24_STENCIL8": "GL_DEPTH_COMPONENT24",
                  "GL_DEPTH_COMPONENT32F": "GL_DEPTH_COMPONENT32F", "GL_DEPTH32F_STENCIL8": "GL_DEPTH_COMPONENT32F"}
-_SAFE_NAME = re.compile(r"^[A-Za-z0-9_][A-Za-z0-9_.-]{0,63}$")
+SAFE_NAME = re.compile(r"^[A-Za-z0-9_][A-Za-z0-9_.-]{0,63}$")
 
 
 _TYPE_BYTES = {"GL_BYTE": 1, "GL_UNSIGNED_BYTE": 1, "GL_SHORT": 2, "GL_UNSIGNED_SHORT": 2, "GL_HALF_FLOAT": 2,
@@ -188,7 +188,7 @@ class FrameScene:
             label = s.shaders[shader_id].label if shader_id in s.shaders else None
             stem = "p%d" % gl_name(s.program, "program")
             if label:
-                if not _SAFE_NAME.match(label) or ".." in label:
+                if not SAFE_NAME.match(label) or ".." in label:
                     raise ImportFailure("shader %s's label %r names a path outside the output folder: refused"
                                         % (shader_id, label))
                 stem = label.rsplit(".", 1)[0]
@@ -371,7 +371,7 @@ class FrameScene:
             if not b.buffer:
                 self.note(call.no, "input %s reads client memory: not carried" % name)
                 return False
-            if getattr(b, "explicit_stride", False) and b.stride == 0:
+            if b.explicit_stride and b.stride == 0:
                 self.note(call.no, "input %s: glBindVertexBuffer with stride 0 (every vertex reads one element) is "
                           "not in tessref's scenes: not carried" % name)
                 return False

@@ -44,13 +44,6 @@ DRAW_CALLS = {
 }
 
 
-def enum_list(value):
-    """A bitfield argument: apitrace writes it as a tuple of names (or 0)."""
-    if isinstance(value, (tuple, list)):
-        return set(value)
-    return set() if value in (0, None) else {value}
-
-
 class Buffer:
     def __init__(self):
         self.data = bytearray()
@@ -60,6 +53,7 @@ class Buffer:
 class Binding:
     def __init__(self):
         self.buffer, self.offset, self.stride, self.divisor = 0, 0, 16, 0
+        self.explicit_stride = False  # set by glBindVertexBuffer, where stride 0 means 0
 
 
 class Attrib:

@@ -15,7 +15,7 @@ import struct
 import shutil
 import subprocess
 
-from frame_scene import Files, _SAFE_NAME
+from frame_scene import Files, SAFE_NAME
 from glsl_declarations import Declarations, with_block_binding
 from import_error import ImportFailure
 
@@ -239,7 +239,7 @@ class _Reader:
             label = self._label(refl.resourceId)
             stem = "p%s" % _rid(self._stage_state(gl, stage).programResourceId)
             if label:
-                if not _SAFE_NAME.match(label) or ".." in label:
+                if not SAFE_NAME.match(label) or ".." in label:
                     raise ImportFailure("shader %s's label %r names a path outside the output folder: refused"
                                         % (_rid(refl.resourceId), label))
                 stem = label.rsplit(".", 1)[0]

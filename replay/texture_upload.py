@@ -97,7 +97,6 @@ def allocate_storage(state, c, texture, levels, internalformat, size):
         raise ImportFailure("call %d (%s): internal format %s is not one tessref's scenes take" % (c.no, c.name, internalformat))
     if not isinstance(levels, int) or levels < 1 or levels > 16:
         raise ImportFailure("call %d (%s): %r levels" % (c.no, c.name, levels))
-    texel = FORMATS[internalformat][1]
     texture.storage_levels = levels
     for level in range(levels):
         w, h, d = _level_size(size, level, texture.target)
