@@ -118,8 +118,9 @@ int run_import(const ImportArgs& a) {
   // it there (seen: SIGSEGV on a few changed bytes). The staging folder is only made after the
   // capture is read, so nothing is left.
   std::fprintf(stderr,
-               "tessref import: error: %s: the importer died of signal %d (%s) while reading it; a damaged capture "
-               "makes RenderDoc's reader crash, so the capture is probably damaged; nothing was written\n",
+               "tessref import: error: %s: the importer died of signal %d (%s) while reading it; RenderDoc's reader "
+               "crashes so on a damaged capture (run the import again to rule out a passing crash); nothing was "
+               "written\n",
                a.capture.c_str(), WTERMSIG(status), strsignal(WTERMSIG(status)));
   return 2;
 }

@@ -8,6 +8,7 @@ What a draw reads that the scene cannot say is put in the report, naming the dra
 
 import hashlib
 import re
+import struct
 
 from glsl_declarations import Declarations, sampler_target, with_block_binding
 from gl_state import CARRIED_CAPS, HARMLESS_CAPS
@@ -392,29 +393,89 @@ class FrameScene:
             d["vertex_arrays"] = arrays
         return True
 
+    def _indirect_commands(self, call, elements):
+        """The commands an indirect draw reads from GL_DRAW_INDIRECT_BUFFER: (count, instancecount,
+        first or firstIndex, basevertex, baseinstance) each, as GL 4.5 10.4 lays them out."""
+        s = self.state
+        buffer_id = s.bound.get("GL_DRAW_INDIRECT_BUFFER", 0)
+        if not buffer_id or buffer_id not in s.buffers:
+            raise ImportFailure("call %d (%s): no GL_DRAW_INDIRECT_BUFFER is bound" % (call.no, call.name))
+        if buffer_id in s.gpu_written_buffers:
+            at, how = s.gpu_written_buffers[buffer_id]
+            raise GpuWritten("its commands come from buffer %d, which was %s at call %d" % (buffer_id, how, at))
+        size = 20 if elements else 16
+        draws = call.arg("drawcount", 1)
+        stride = call.arg("stride", 0) or size
+        offset = int(call.arg("indirect") or 0)
+        data = s.buffers[buffer_id].data
+        if not isinstance(draws, int) or draws < 1 or draws > 1 << 16 or offset + stride * (draws - 1) + size > len(data):
+            raise ImportFailure("call %d (%s): %r commands from byte %d run past the indirect buffer's %d bytes"
+                                % (call.no, call.name, draws, offset, len(data)))
+        commands = []
+        for k in range(draws):
+            at = offset + k * stride
+            if elements:
+                count, instances, first, base_vertex, base_instance = struct.unpack_from("<IIIiI", data, at)
+            else:
+                count, instances, first, base_instance = struct.unpack_from("<IIII", data, at)
+                base_vertex = 0
+            commands.append((count, instances, first, base_vertex, base_instance))
+        return commands
+
+    def _commands(self, call, elements):
+        """Every command of a draw call: (count, instancecount, first or index byte offset,
+        basevertex, baseinstance), or None for a form not carried."""
+        name = call.name
+        if "Indirect" in name:
+            size = {"GL_UNSIGNED_BYTE": 1, "GL_UNSIGNED_SHORT": 2, "GL_UNSIGNED_INT": 4}.get(call.arg("type"), 1)
+            return [(n, i, f * size if elements else f, v, b) for n, i, f, v, b in self._indirect_commands(call, elements)]
+        if name.startswith("glMultiDraw"):
+            counts = list(call.arg("count") or [])
+            starts = list(call.arg("indices" if elements else "first") or [])
+            bases = list(call.arg("basevertex") or [0] * len(counts))
+            if not (len(counts) == len(starts) == len(bases)):
+                raise ImportFailure("call %d (%s): its arrays differ in length" % (call.no, name))
+            return [(n, 1, int(f or 0), v, 0) for n, f, v in zip(counts, starts, bases)]
+        return [(call.arg("count"), call.arg("instancecount", 1), int(call.arg("indices" if elements else "first") or 0),
+                 call.arg("basevertex", 0), call.arg("baseinstance", 0))]
+
     def _call(self, call, d):
         s = self.state
         name = call.name
-        if "Indirect" in name or name.startswith("glMultiDraw"):
-            self.note(call.no, "%s: indirect and multi-draw calls are not carried yet" % name)
-            return False
-        if "Elements" in name:
+        elements = "Elements" in name
+        commands = self._commands(call, elements)
+        if elements:
             vao = s.vertex_arrays.get(s.vao)
             if not vao.element_buffer:
                 self.note(call.no, "%s reads indices from client memory: not carried" % name)
                 return False
+            # One element offset a draw: commands that start elsewhere are not one draw of the scene.
+            if len({c[2] for c in commands}) != 1:
+                self.note(call.no, "%s: its commands start at different indices, which one draw of the scene cannot "
+                          "say: not carried" % name)
+                return False
             d["elements"] = {"buffer": self.buffer(call.no, vao.element_buffer, "the element array"),
-                             "type": call.arg("type"), "offset": int(call.arg("indices") or 0)}
+                             "type": call.arg("type"), "offset": commands[0][2]}
             if "GL_PRIMITIVE_RESTART_FIXED_INDEX" in s.caps:
                 d["primitive_restart"] = "fixed_index"
             elif "GL_PRIMITIVE_RESTART" in s.caps:
                 d["primitive_restart"] = s.restart_index
+        calls = []
+        for count, instances, first, base_vertex, base_instance in commands:
+            c = {"count": count}
+            if not elements:
+                c["first"] = first
+            if instances != 1:
+                c["instancecount"] = instances
+            if elements and base_vertex:
+                c["basevertex"] = base_vertex
+            if base_instance:
+                c["baseinstance"] = base_instance
+            calls.append(c)
+        if len(calls) == 1:
+            d.update(calls[0])
         else:
-            d["first"] = call.arg("first")
-        d["count"] = call.arg("count")
-        for key in ("instancecount", "basevertex", "baseinstance"):
-            if call.arg(key) not in (None, 0) or (key == "instancecount" and call.arg(key) == 0):
-                d[key] = call.arg(key)
+            d["calls"] = calls
         if d["mode"] == "GL_PATCHES":
             d["patch_vertices"] = s.patch_vertices
             d["patch_default_outer_level"] = list(s.patch_outer)

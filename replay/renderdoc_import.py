@@ -167,7 +167,9 @@ class _Reader:
         else:
             d["first"] = action.vertexOffset
         d["count"] = action.numIndices
-        if flags & rd.ActionFlags.Instanced or action.numInstances != 1:
+        # RenderDoc gives a multi-draw's commands as child actions with numInstances 0 and no
+        # Instanced flag: they draw one instance.
+        if flags & rd.ActionFlags.Instanced and action.numInstances != 1:
             d["instancecount"] = action.numInstances
         if flags & rd.ActionFlags.Indexed and action.baseVertex:
             d["basevertex"] = action.baseVertex

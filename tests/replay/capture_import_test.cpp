@@ -267,6 +267,24 @@ TEST_F(ApitraceImport, AFrameWithoutAClearStartsFromTheEarlierFramesPixels) {
   EXPECT_EQ(pixels_over_one_step(tmp.path() / "t.png", app_image("two_frames")), 0);
 }
 
+// glDrawElementsIndirect reads its command from the tracked GL_DRAW_INDIRECT_BUFFER bytes (after 8
+// unused ones), and glMultiDrawArrays of two commands becomes one draw with two calls.
+TEST_F(ApitraceImport, IndirectAndMultiDrawsBecomeTheirCalls) {
+  const fs::path t = trace("indirect", "--indirect");
+  TempDir tmp;
+  const fs::path out = tmp.path() / "imported";
+  ASSERT_EQ(run_cli("import --quiet '" + t.string() + "' --out '" + out.string() + "'").exit_code, 0);
+  const nlohmann::json scene = read_json(out / "scene.json");
+  const nlohmann::json& gems = scene.at("draws").at(1);
+  EXPECT_EQ(gems.at("elements").at("offset"), 10) << "firstIndex 5 of GL_UNSIGNED_SHORT";
+  EXPECT_EQ(gems.at("count"), 24);
+  EXPECT_EQ(gems.at("instancecount"), 3);
+  EXPECT_EQ(gems.at("basevertex"), 3);
+  EXPECT_EQ(scene.at("draws").at(2).at("calls").size(), 2u);
+  ASSERT_EQ(run_cli("render '" + (out / "scene.json").string() + "' -o '" + (tmp.path() / "t.png").string() + "'").exit_code, 0);
+  EXPECT_EQ(pixels_over_one_step(tmp.path() / "t.png", app_image("indirect")), 0);
+}
+
 TEST_F(ApitraceImport, AnExistingFolderIsNotOverwritten) {
   const fs::path t = trace("frame");
   TempDir tmp;
@@ -336,6 +354,17 @@ TEST_F(RenderDocImport, ABufferTheGpuWroteIsCarried) {
   EXPECT_EQ(pixels_over_one_step(tmp.path() / "t.png", folder() / "compute_rdc.ppm"), 0);
 }
 
+// RenderDoc gives a multi-draw's commands as child actions: each becomes a draw of the scene.
+TEST_F(RenderDocImport, IndirectAndMultiDrawsAreCarried) {
+  const fs::path rdc = capture("indirect", "--indirect");
+  TempDir tmp;
+  const fs::path out = tmp.path() / "imported";
+  ASSERT_EQ(run_cli("import '" + rdc.string() + "' --out '" + out.string() + "'").exit_code, 0);
+  EXPECT_EQ(read_json(out / "scene.json").at("draws").size(), 4u);
+  ASSERT_EQ(run_cli("render '" + (out / "scene.json").string() + "' -o '" + (tmp.path() / "t.png").string() + "'").exit_code, 0);
+  EXPECT_EQ(pixels_over_one_step(tmp.path() / "t.png", folder() / "indirect_rdc.ppm"), 0);
+}
+
 TEST_F(RenderDocImport, BothImportersGiveTheSameScene) {
   if (!have("apitrace")) GTEST_SKIP() << "apitrace is not installed (Debian package apitrace)";
   TempDir tmp;
@@ -360,7 +389,12 @@ TEST_F(RenderDocImport, BadCapturesExitTwoAndLeaveNothing) {
   expect_refused(tmp.path() / "truncated.rdc", "", "RenderDoc cannot open");
   expect_refused(capture("untessellated", "--untessellated"), "", "has no GL_PATCHES draw");
   expect_refused(capture("label", "--label ../x"), "", "label '../x' names a path outside the output folder");
-  expect_refused(rdc, "--event 11", "event 11 is glBindVertexArray, not a draw call");
+  // The event before the first draw's: a call of that draw's action, not a draw.
+  const fs::path out = tmp.path() / "whole";
+  ASSERT_EQ(run_cli("import '" + rdc.string() + "' --out '" + out.string() + "'").exit_code, 0);
+  const int first_draw = read_json(out / "draws.json").at(0).at("event").get<int>();
+  expect_refused(rdc, "--event " + std::to_string(first_draw - 1), "event " + std::to_string(first_draw - 1) + " is gl");
+  expect_refused(rdc, "--event " + std::to_string(first_draw - 1), ", not a draw call");
   expect_refused(rdc, "--event 5000", "the capture has no event 5000");
 }
 

@@ -2,7 +2,7 @@
  * frame into a framebuffer object over EGL surfaceless, then writes what glReadPixels gives to a
  * binary PPM (top row first).
  *
- *   replay_app [--untessellated | --gles | --label NAME | --compute | --two-frames] OUT.ppm
+ *   replay_app [--untessellated | --gles | --label NAME | --compute | --two-frames | --indirect] OUT.ppm
  *
  * The frame, in order:
  *   1. glClear of colour and depth;
@@ -20,6 +20,9 @@
  * what it wrote, while a RenderDoc capture holds the buffer's bytes. --two-frames ends a frame
  * (eglSwapBuffers on a pbuffer) after the clear and the plane, and captures with RenderDoc only
  * what follows: the last frame then starts from what the earlier one left, colour and depth.
+ * --indirect issues the gem draw as glDrawElementsIndirect (its command in a GL_DRAW_INDIRECT_BUFFER)
+ * and the bicubic patch as glMultiDrawArrays of two commands (the second draws it again, hidden by
+ * the depth test): the same image.
  *
  * Under RenderDoc (renderdoccmd capture) the frame is bracketed by the in-app API's
  * StartFrameCapture / EndFrameCapture, the only way RenderDoc captures an application without a
@@ -306,7 +309,7 @@ static int gles_frame(EGLDisplay display, const char* out) {
 }
 
 int main(int argc, char** argv) {
-  int untessellated = 0, gles = 0, compute = 0, two_frames = 0;
+  int untessellated = 0, gles = 0, compute = 0, two_frames = 0, indirect = 0;
   const char* label = NULL;
   int arg = 1;
   for (; arg < argc - 1; ++arg) {
@@ -314,11 +317,13 @@ int main(int argc, char** argv) {
     else if (strcmp(argv[arg], "--gles") == 0) gles = 1;
     else if (strcmp(argv[arg], "--compute") == 0) compute = 1;
     else if (strcmp(argv[arg], "--two-frames") == 0) two_frames = 1;
+    else if (strcmp(argv[arg], "--indirect") == 0) indirect = 1;
     else if (strcmp(argv[arg], "--label") == 0 && arg + 1 < argc - 1) label = argv[++arg];
     else break;
   }
   if (arg != argc - 1) {
-    fprintf(stderr, "usage: replay_app [--untessellated | --gles | --label NAME | --compute | --two-frames] OUT.ppm\n");
+    fprintf(stderr, "usage: replay_app [--untessellated | --gles | --label NAME | --compute | --two-frames | --indirect] "
+                    "OUT.ppm\n");
     return 2;
   }
   const char* out = argv[arg];
@@ -525,7 +530,17 @@ int main(int argc, char** argv) {
   glPatchParameteri(GL_PATCH_VERTICES, 3);
   glEnable(GL_CULL_FACE);
   glBindVertexArray(gem_vao);
-  glDrawElementsInstancedBaseVertex(GL_PATCHES, 24, GL_UNSIGNED_SHORT, (void*)10, 3, 3);
+  if (indirect) {
+    /* count, instancecount, firstIndex, basevertex, baseinstance (GL 4.5 10.4), after 8 unused bytes */
+    const GLuint command[2 + 5] = {0xdead, 0xbeef, 24, 3, 5, 3, 0};
+    GLuint indirect_buffer;
+    glGenBuffers(1, &indirect_buffer);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, indirect_buffer);
+    glBufferData(GL_DRAW_INDIRECT_BUFFER, sizeof command, command, GL_STATIC_DRAW);
+    glDrawElementsIndirect(GL_PATCHES, GL_UNSIGNED_SHORT, (void*)8);
+  } else {
+    glDrawElementsInstancedBaseVertex(GL_PATCHES, 24, GL_UNSIGNED_SHORT, (void*)10, 3, 3);
+  }
   glDisable(GL_CULL_FACE);
 
   glUseProgram(bicubic_program);
@@ -533,7 +548,13 @@ int main(int argc, char** argv) {
   glUniform1f(glGetUniformLocation(bicubic_program, "u_level"), 8.0f);
   glPatchParameteri(GL_PATCH_VERTICES, 16);
   glBindVertexArray(bicubic_vao);
-  glDrawArrays(GL_PATCHES, 0, 16);
+  if (indirect) {
+    const GLint firsts[2] = {0, 0};
+    const GLsizei counts[2] = {16, 16};
+    glMultiDrawArrays(GL_PATCHES, firsts, counts, 2);
+  } else {
+    glDrawArrays(GL_PATCHES, 0, 16);
+  }
 
 read_back:;
   static uint8_t pixels[kSize * kSize * 4];
