@@ -164,6 +164,12 @@ def main():
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--artifacts", default="out/fuzz/fuzz_import/artifacts")
     args = parser.parse_args()
+    if args.rdc and args.trace is not None and args.seconds == float("inf"):
+        # --rdc takes no trace: its one positional is SECONDS.
+        try:
+            args.seconds, args.trace = float(args.trace), None
+        except ValueError:
+            parser.error("--rdc takes SECONDS, not a trace")
     if args.executions is None and args.seconds == float("inf"):
         parser.error("give SECONDS or --executions")
     if args.rdc:
