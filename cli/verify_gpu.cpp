@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
+#include "cli/scene_name.h"
 #include "cli/shard.h"
 #include "common/error.h"
 #include "inspect/inspect_pixel.h"
@@ -32,16 +33,6 @@ std::string with_commas(long long v) {
   std::string s = std::to_string(v);
   for (int i = int(s.size()) - 3; i > 0; i -= 3) s.insert(std::size_t(i), ",");
   return s;
-}
-
-// The shell word for a path (single quotes unless it needs none).
-std::string shell_word(const std::string& s) {
-  if (!s.empty() && s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_./-+,=:") ==
-                        std::string::npos)
-    return s;
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
 }
 
 // draws.json beside the scene (written by tessref import): which capture call or event each draw was.
@@ -171,8 +162,9 @@ int run_verify_gpu(const std::string& scene_path, const std::vector<std::string>
                    int threads) {
   if (scene_path.empty()) throw InputError("--gpu needs the imported SCENE (DIR/scene.json)");
   std::error_code ec;
-  const std::filesystem::path gpu_image =
-      std::filesystem::is_directory(gpu, ec) ? std::filesystem::path(gpu) / "gpu.png" : std::filesystem::path(gpu);
+  // An import's folder (gpu.png, and from RenderDoc gpu_tes.bin and gpu_depth.exr), or an image.
+  const std::filesystem::path gpu_dir = std::filesystem::is_directory(gpu, ec) ? std::filesystem::path(gpu) : std::filesystem::path();
+  const std::filesystem::path gpu_image = gpu_dir.empty() ? std::filesystem::path(gpu) : gpu_dir / "gpu.png";
   Scene scene = load_scene(scene_path, sets);
   if (scene.draws.empty()) throw InputError(scene.source + ": --gpu compares a scene of draws (tessref import writes one)");
   const Rgb8Image reference = read_rgb8_image(gpu_image);
@@ -186,7 +178,6 @@ int run_verify_gpu(const std::string& scene_path, const std::vector<std::string>
   const Parallel parallel(threads);
   // The chosen draw is the scene's last: keep its evaluation shader's emitted vertices when the
   // import holds the GPU's (gpu_tes.bin).
-  const std::filesystem::path gpu_dir = std::filesystem::is_directory(gpu, ec) ? std::filesystem::path(gpu) : std::filesystem::path();
   const std::vector<glm::vec4> gpu_tes = gpu_dir.empty() ? std::vector<glm::vec4>{} : read_gpu_tes(gpu_dir);
   EmittedVertices emitted;
   std::size_t current_draw = 0;
@@ -207,7 +198,7 @@ int run_verify_gpu(const std::string& scene_path, const std::vector<std::string>
   Framebuffer fb;
   render_scene(scene, mesh, parallel, fb, options);
   const Rgb8Image ours = to_rgb8(fb);
-  auto tes_pass = [&] {
+  auto outputs_pass = [&] {  // the evaluation outputs and depth, where the import holds the GPU's
     const bool tes = gpu_tes.empty() || compare_tes(emitted, gpu_tes, scene.draws.size() - 1);
     const bool depth = gpu_dir.empty() || !std::filesystem::is_regular_file(gpu_dir / "gpu_depth.exr", ec) ||
                        compare_depth(fb, gpu_dir / "gpu_depth.exr");
@@ -232,7 +223,7 @@ int run_verify_gpu(const std::string& scene_path, const std::vector<std::string>
               scene.height);
   if (differing == 0) {
     std::printf("PASS: colour within 1/255 at all %s pixels\n", with_commas(pixels).c_str());
-    return tes_pass() ? 0 : 1;
+    return outputs_pass() ? 0 : 1;
   }
   std::printf("FAIL: %s of %s pixels differ by more than 1/255 (largest %d/255), within x %d..%d, y %d..%d "
               "(from the top-left)\n",
@@ -267,7 +258,7 @@ int run_verify_gpu(const std::string& scene_path, const std::vector<std::string>
   }
   std::printf("  open it: tessref inspect %s --pixel %d,%d --trace\n", scene_word.c_str(), first_x, first_y);
   if (!patch_command.empty()) std::printf("           %s\n", patch_command.c_str());
-  tes_pass();
+  outputs_pass();
   return 1;
 }
 
