@@ -57,6 +57,8 @@ class Files:
         self._versions = {}
 
     def add(self, stem, suffix, data):
+        if isinstance(data, str):
+            data = data.encode("utf-8")
         digest = hashlib.sha256(data).hexdigest()
         key = (stem, suffix, digest)
         if key in self._by_hash:
@@ -69,22 +71,38 @@ class Files:
         return name
 
 
-class FrameScene:
-    def __init__(self, state, capture_name):
-        self.state = state
+class Frame:
+    """What build_scene reads, from either importer: the frame's draws, the files they name, the report."""
+
+    def __init__(self, capture_name, unit):
         self.capture_name = capture_name
+        self.unit = unit              # what numbers a draw in the capture: "call" or "event"
         self.files = Files()
         self.buffers = {}             # scene buffer name -> file
         self.draws = []               # (call number, draw dict, framebuffer id, framebuffer description)
         self.report = []              # (call number or None, text)
-        self.pending_clear = None
-        self.gpu_refusals = []        # (call number, what the draw read that the GPU wrote)
         self.call_names = {}          # call number -> the draw call's name
-        self.unit = "call"            # what numbers a draw in the capture
         self.draw_calls = []          # after build_scene: scene draw index -> capture call
 
     def note(self, call_no, text):
         self.report.append((call_no, text))
+
+    def add_buffer(self, stem, data):
+        """A buffer's bytes as a file of the scene; the scene's name for it."""
+        name = self.files.add("buffers/" + stem, "bin", data)
+        scene_name = name[len("buffers/"):-len(".bin")]
+        self.buffers[scene_name] = {"file": name}
+        return scene_name
+
+
+class FrameScene(Frame):
+    """A frame of apitrace calls, each draw taken from the tracked GL state as it is issued."""
+
+    def __init__(self, state, capture_name):
+        super().__init__(capture_name, "call")
+        self.state = state
+        self.pending_clear = None
+        self.gpu_refusals = []        # (call number, what the draw read that the GPU wrote)
 
     # ---- clears ----
     def clear(self, call):
@@ -114,11 +132,7 @@ class FrameScene:
         if b is None:
             raise ImportFailure("call %d: %s reads buffer %s, which does not exist" % (call_no, what, buffer_id))
         data = bytes(b.data if size is None and offset == 0 else b.data[offset:offset + size if size else None])
-        stem = "b%d" % gl_name(buffer_id, "buffer") + ("_at%d" % offset if offset else "")
-        name = self.files.add("buffers/" + stem, "bin", data)
-        scene_name = name[len("buffers/"):-len(".bin")]
-        self.buffers[scene_name] = {"file": name}
-        return scene_name
+        return self.add_buffer("b%d" % gl_name(buffer_id, "buffer") + ("_at%d" % offset if offset else ""), data)
 
     # ---- one draw ----
     def draw(self, call):
@@ -193,7 +207,7 @@ class FrameScene:
                     raise ImportFailure("shader %s's label %r names a path outside the output folder: refused"
                                         % (shader_id, label))
                 stem = label.rsplit(".", 1)[0]
-            shaders[stage] = self.files.add("shaders/" + stem, STAGE_FILES[stage], source.encode("utf-8"))
+            shaders[stage] = self.files.add("shaders/" + stem, STAGE_FILES[stage], source)
         uniforms, textures = {}, {}
         names = dict(program.uniform_names)
         for location, name in declarations.uniform_locations.items():

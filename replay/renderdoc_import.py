@@ -15,7 +15,7 @@ import struct
 import shutil
 import subprocess
 
-from frame_scene import Files, SAFE_NAME
+from frame_scene import Frame, SAFE_NAME
 from glsl_declarations import Declarations, with_block_binding
 from import_error import ImportFailure
 
@@ -100,23 +100,6 @@ def attribute_format(fmt, float_cast):
     return size, gl_type, comp in ("UNorm", "SNorm"), "glVertexAttribPointer"
 
 
-class RenderDocFrame:
-    """What build_scene reads (frame_scene.build_scene): draws, buffers, files, the report."""
-
-    def __init__(self, capture_name):
-        self.capture_name = capture_name
-        self.files = Files()
-        self.buffers = {}
-        self.draws = []
-        self.report = []
-        self.call_names = {}
-        self.draw_calls = []
-        self.unit = "event"
-
-    def note(self, event, text):
-        self.report.append((event, text))
-
-
 class _Reader:
     def __init__(self, rd, ctl, frame):
         self.rd, self.ctl, self.frame = rd, ctl, frame
@@ -127,11 +110,7 @@ class _Reader:
         data = bytes(self.ctl.GetBufferData(resource_id, 0, 0))
         if offset or size is not None:
             data = data[offset:offset + size if size is not None else None]
-        stem = "b%s" % _rid(resource_id) + ("_at%d" % offset if offset else "")
-        name = self.frame.files.add("buffers/" + stem, "bin", data)
-        scene_name = name[len("buffers/"):-len(".bin")]
-        self.frame.buffers[scene_name] = {"file": name}
-        return scene_name
+        return self.frame.add_buffer("b%s" % _rid(resource_id) + ("_at%d" % offset if offset else ""), data)
 
     # ---- one draw, at its event ----
     def draw(self, action, name, clear):
@@ -245,7 +224,7 @@ class _Reader:
                     raise ImportFailure("shader %s's label %r names a path outside the output folder: refused"
                                         % (_rid(refl.resourceId), label))
                 stem = label.rsplit(".", 1)[0]
-            shaders[stage] = frame_files_add(self.frame, "shaders/" + stem, STAGE_FILES[stage], source)
+            shaders[stage] = self.frame.files.add("shaders/" + stem, STAGE_FILES[stage], source)
         if uniforms:
             shaders["uniforms"] = uniforms
         if textures:
@@ -294,7 +273,7 @@ class _Reader:
         for mip in range(description.mips):
             data = b"".join(bytes(self.ctl.GetTextureData(bound.resourceId, rd.Subresource(mip, s, 0)))
                             for s in range(max(1, layers) if target not in ("GL_TEXTURE_3D",) else 1))
-            levels.append(frame_files_add(frame, "textures/t%s_level%d" % (_rid(bound.resourceId), mip), "raw", data))
+            levels.append(frame.files.add("textures/t%s_level%d" % (_rid(bound.resourceId), mip), "raw", data))
         if len(levels) == 1:
             entry["path"] = levels[0]
         else:
@@ -439,10 +418,6 @@ class _Reader:
         return description
 
 
-def frame_files_add(frame, stem, suffix, data):
-    return frame.files.add(stem, suffix, data.encode("utf-8") if isinstance(data, str) else data)
-
-
 def _uniform_values(v, name, out):
     """Every leaf of a $Globals ShaderVariable, by the name glGetUniformLocation takes."""
     if v.members:
@@ -522,7 +497,7 @@ def _flatten(actions):
 
 
 def _read_frame(rd, ctl, path, event):
-    frame = RenderDocFrame(os.path.basename(path))
+    frame = Frame(os.path.basename(path), "event")
     reader = _Reader(rd, ctl, frame)
     frame.gpu_images = []
     frame.initial_images = None

@@ -123,18 +123,25 @@ def scene_of(frame):
         raise ImportFailure("the capture's state at the draw is not one GL reaches (%s: %s)" % (type(e).__name__, e))
 
 
+def eglretrace(arguments):
+    """apitrace's retracer on this machine's driver (it needs waffle's surfaceless EGL platform), or
+    None when apitrace is not installed."""
+    retrace = shutil.which("eglretrace")
+    if retrace is None:
+        return None
+    return subprocess.run([retrace] + arguments, env=dict(os.environ, WAFFLE_PLATFORM="surfaceless_egl"),
+                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=600)
+
+
 def retrace_initial_images(path, frame, scene, out_dir):
     """The framebuffer before the frame's first draw, from eglretrace's state dump after the call
     before it: colour attachments as PNG, depth (apitrace's float map) as EXR through oiiotool."""
     color_files, depth_file = [], None
     if frame.first_draw is None:
         return  # the frame begins by clearing all of colour and depth
-    retrace = shutil.which("eglretrace")
-    if retrace is None:
+    result = eglretrace(["-D", str(max(0, frame.first_draw - 1)), path])
+    if result is None:
         return set_initial_images(frame, scene, color_files, depth_file)
-    env = dict(os.environ, WAFFLE_PLATFORM="surfaceless_egl")
-    result = subprocess.run([retrace, "-D", str(max(0, frame.first_draw - 1)), path], env=env,
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=600)
     try:
         state = json.loads(result.stdout.decode("utf-8", "replace"), strict=False)
         attachments = state.get("framebuffer", {})
@@ -175,15 +182,13 @@ def retrace_initial_images(path, frame, scene, out_dir):
 
 def retrace_image(path, call_no, out_dir, report):
     """The driver's own image after the draw, by retracing the capture (apitrace's eglretrace)."""
-    retrace = shutil.which("eglretrace")
-    if retrace is None:
-        report.append((None, "eglretrace is missing: no gpu.png"))
-        return None
     snap_dir = os.path.join(out_dir, ".snapshots")
     os.mkdir(snap_dir)
-    env = dict(os.environ, WAFFLE_PLATFORM="surfaceless_egl")
-    result = subprocess.run([retrace, "-S", str(call_no), "-s", snap_dir + "/", path], env=env,
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=600)
+    result = eglretrace(["-S", str(call_no), "-s", snap_dir + "/", path])
+    if result is None:
+        os.rmdir(snap_dir)
+        report.append((None, "eglretrace is missing: no gpu.png"))
+        return None
     images = sorted(os.listdir(snap_dir))
     name = None
     if result.returncode == 0 and images:
