@@ -475,19 +475,27 @@ def import_renderdoc(path, event, images):
             raise ImportFailure("RenderDoc cannot replay %s: %s" % (path, result))
         try:
             frame, event = _read_frame(rd, ctl, path, event)
-            ctl.SetFrameEvent(event, True)
-            fbo = ctl.GetGLPipelineState().framebuffer.drawFBO
-            color = fbo.colorAttachments[fbo.drawBuffers[0]].resourceId if fbo.drawBuffers[0] >= 0 else None
-            depth = fbo.depthAttachment.resourceId if _rid(fbo.depthAttachment.resourceId) != "0" else None
-            frame.gpu_images = save_gpu_images(rd, ctl, event, color, depth, images, frame.report)
-            frame.gpu_images += save_tes_outputs(rd, ctl, event, images)
-            frame.initial_images = save_initial_images(rd, ctl, frame, images)
+            try:
+                _save_driver_images(rd, ctl, frame, event, images)
+            except (AttributeError, TypeError, KeyError, IndexError, ValueError) as e:
+                raise ImportFailure("RenderDoc's replay after event %d gives a framebuffer GL does not reach (%s: %s): "
+                                    "the capture is damaged" % (event, type(e).__name__, e))
             return frame
         finally:
             ctl.Shutdown()
     finally:
         cap.Shutdown()
         rd.ShutdownReplay()
+
+
+def _save_driver_images(rd, ctl, frame, event, images):
+    ctl.SetFrameEvent(event, True)
+    fbo = ctl.GetGLPipelineState().framebuffer.drawFBO
+    color = fbo.colorAttachments[fbo.drawBuffers[0]].resourceId if fbo.drawBuffers[0] >= 0 else None
+    depth = fbo.depthAttachment.resourceId if _rid(fbo.depthAttachment.resourceId) != "0" else None
+    frame.gpu_images = save_gpu_images(rd, ctl, event, color, depth, images, frame.report)
+    frame.gpu_images += save_tes_outputs(rd, ctl, event, images)
+    frame.initial_images = save_initial_images(rd, ctl, frame, images)
 
 
 def _flatten(actions):
@@ -564,10 +572,27 @@ def _name_values(action_name, key):
     return [float(x) for x in inner.split(",")]
 
 
+def _texture(ctl, resource_id):
+    """The description of a texture the pipeline state names; a damaged capture can name one its
+    resource list lacks."""
+    for t in ctl.GetTextures():
+        if _rid(t.resourceId) == _rid(resource_id):
+            return t
+    raise ImportFailure("the framebuffer names texture %s, which the capture's resource list lacks: the capture "
+                        "is damaged" % _rid(resource_id))
+
+
+def _action(ctl, event):
+    for a in _flatten(ctl.GetRootActions()):
+        if a.eventId == event:
+            return a
+    raise ImportFailure("event %d is not among the capture's actions on a second look: the capture is damaged" % event)
+
+
 def _save_rgba8(ctl, rd, resource_id, path):
     """An RGBA8 attachment's bytes as the application's glReadPixels gives them, as a PNG (through
     a binary PPM and OpenImageIO's oiiotool: RenderDoc's own PNG export is display-processed)."""
-    description = [t for t in ctl.GetTextures() if _rid(t.resourceId) == _rid(resource_id)][0]
+    description = _texture(ctl, resource_id)
     if internal_format(description.format) not in ("GL_RGBA8", "GL_SRGB8_ALPHA8"):
         return False
     w, h = description.width, description.height
@@ -591,7 +616,7 @@ def save_initial_images(rd, ctl, frame, out_dir):
     first = frame.draws[0][0] if frame.draws else None
     if first is None or "clear" in frame.draws[0][1] and {"color", "depth"} <= set(frame.draws[0][1]["clear"]):
         return None
-    action = [a for a in _flatten(ctl.GetRootActions()) if a.eventId == first][0]
+    action = _action(ctl, first)
     ctl.SetFrameEvent(action.events[0].eventId, True)
     fbo = ctl.GetGLPipelineState().framebuffer.drawFBO
     os.makedirs(os.path.join(out_dir, "initial"), exist_ok=True)
@@ -621,7 +646,7 @@ def save_tes_outputs(rd, ctl, event, out_dir):
     tes = pipe.GetShaderReflection(rd.ShaderStage.Tess_Eval)
     if tes is None:
         return []
-    action = [a for a in _flatten(ctl.GetRootActions()) if a.eventId == event][0]
+    action = _action(ctl, event)
     chunks, counts, stride = [], [], None
     for instance in range(max(1, action.numInstances)):
         mesh = ctl.GetPostVSData(instance, 0, rd.MeshDataStage.GSOut)
@@ -644,7 +669,7 @@ def save_tes_outputs(rd, ctl, event, out_dir):
 def _save_depth(ctl, rd, resource_id, path):
     """A depth attachment's stored values as a one-channel float EXR (through a float map and
     oiiotool: RenderDoc's own EXR export is half precision, 2^-11, coarser than 24-bit depth)."""
-    description = [t for t in ctl.GetTextures() if _rid(t.resourceId) == _rid(resource_id)][0]
+    description = _texture(ctl, resource_id)
     fmt = internal_format(description.format)
     w, h = description.width, description.height
     data = bytes(ctl.GetTextureData(resource_id, rd.Subresource(0, 0, 0)))
