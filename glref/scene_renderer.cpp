@@ -69,16 +69,19 @@ GLenum gl_stage(shader::Stage stage) {
     case shader::Stage::Vertex: return GL_VERTEX_SHADER;
     case shader::Stage::TessControl: return GL_TESS_CONTROL_SHADER;
     case shader::Stage::TessEval: return GL_TESS_EVALUATION_SHADER;
+    case shader::Stage::Geometry: return GL_GEOMETRY_SHADER;
     default: return GL_FRAGMENT_SHADER;
   }
 }
 
 // The user's files (shaders.program custom), as tessref's executor runs them; for capture the
-// evaluation shader is wrapped as the twins' is, and the fragment shader left out.
+// evaluation shader is wrapped as the twins' is, and the geometry and fragment shaders left out.
 std::vector<ShaderStage> custom_stages(const Scene& scene, const ShaderSettings& shaders, bool for_capture) {
   std::vector<ShaderStage> stages;
   for (const shader::ShaderSource& src : scene_sources(scene, shaders)) {
-    if (for_capture && src.stage == shader::Stage::Fragment) continue;
+    // The capture records the evaluation shader's outputs by transform feedback, which a geometry
+    // shader would replace with its own: the capture program ends at the evaluation shader.
+    if (for_capture && (src.stage == shader::Stage::Fragment || src.stage == shader::Stage::Geometry)) continue;
     std::string text = src.text;
     if (for_capture && src.stage == shader::Stage::TessEval) text = wrap_tes_for_capture(text);
     stages.push_back({gl_stage(src.stage), text, src.file});
@@ -87,11 +90,11 @@ std::vector<ShaderStage> custom_stages(const Scene& scene, const ShaderSettings&
 }
 
 // A draw's own stages for capture_draws_tess: the vertex and evaluation shaders wrapped
-// (glref/capture_wrap.h), the fragment shader left out.
+// (glref/capture_wrap.h), the geometry and fragment shaders left out.
 std::vector<ShaderStage> draw_capture_stages(const Scene& scene, const ShaderSettings& shaders) {
   std::vector<ShaderStage> stages;
   for (const shader::ShaderSource& src : scene_sources(scene, shaders)) {
-    if (src.stage == shader::Stage::Fragment) continue;
+    if (src.stage == shader::Stage::Fragment || src.stage == shader::Stage::Geometry) continue;
     std::string text = src.text;
     if (src.stage == shader::Stage::Vertex) text = capture_vertex_shader(text);
     if (src.stage == shader::Stage::TessEval) text = capture_evaluation_shader(text);

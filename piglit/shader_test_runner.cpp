@@ -104,7 +104,6 @@ std::string unmet_requirement(const ShaderTestFile& f) {
   }
   for (const RawLine& line : r.other) return "requirement '" + line.text + "'";
   for (const ShaderSection& s : f.shaders) {
-    if (s.stage == ShaderStage::Geometry) return "a geometry shader (tessref has no geometry stage)";
     if (s.stage == ShaderStage::Compute) return "a compute shader";
     if (s.language == ShaderLanguage::Spirv) return "SPIR-V assembly shaders";
     if (s.language == ShaderLanguage::ArbAssembly) return "ARB assembly programs";

@@ -22,6 +22,7 @@ const char* stage_key(shader::Stage s) {
     case shader::Stage::Vertex: return "vertex";
     case shader::Stage::TessControl: return "tess_control";
     case shader::Stage::TessEval: return "tess_evaluation";
+    case shader::Stage::Geometry: return "geometry";
     default: return "fragment";
   }
 }

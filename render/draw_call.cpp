@@ -27,13 +27,38 @@ RasterStats draw_batch(const PointBatch& b, const RasterState& s, const Fragment
   return draw_points(b, s, fs, fb, p);
 }
 
+// What the rasterizer draws of a batch the vertex or evaluation stage made: the batch itself, or
+// what the geometry shader emits for it (gl_PrimitiveIDIn counting on from `primitive_id`).
+template <class Batch>
+RasterStats draw_stage_batch(const GeometryProgram* gs, const Batch& b, std::uint32_t& primitive_id,
+                             const RasterState& s, const FragmentProgram& fs, Framebuffer& fb, const Parallel& p,
+                             DrawStats& stats) {
+  if (!gs) {
+    stats.triangles_generated += b.primitive_count();
+    return draw_batch(b, s, fs, fb, p);
+  }
+  GeometryOutput out;
+  run_geometry(*gs, b, primitive_id, p, out);
+  primitive_id += std::uint32_t(b.primitive_count());
+  RasterStats r;
+  const auto draw = [&](const auto& emitted) {
+    if (emitted.primitive_count() == 0) return;
+    stats.triangles_generated += emitted.primitive_count();
+    r += draw_batch(emitted, s, fs, fb, p);
+  };
+  draw(out.triangles);
+  draw(out.lines);
+  draw(out.points);
+  return r;
+}
+
 // Untessellated primitives: the vertex shader's gl_Position and outputs become the rasterizer's
 // vertices.
 template <class Batch>
 void draw_primitive_list(const DrawProgram& program, const std::vector<StageVertex>& shaded,
                          const DrawCall& call, const RasterState& state, const FragmentProgram& fs,
                          Framebuffer& fb, const Parallel& parallel, DrawStats& stats, const DrawOptions& options,
-                         int instance) {
+                         int instance, const GeometryProgram* gs, std::uint32_t& primitive_id) {
   constexpr std::size_t kCorners = Batch::kCorners;
   const std::size_t corners = call.indices.empty() ? call.count : call.indices.size();
   const std::size_t primitives = corners / kCorners;
@@ -54,14 +79,13 @@ void draw_primitive_list(const DrawProgram& program, const std::vector<StageVert
     }
     stats.vertex_seconds += seconds_since(t);
     t = Clock::now();
-    stats.triangles_generated += n;
     if constexpr (kCorners == 3)
       if (options.untessellated_triangles) options.untessellated_triangles(batch);
     if constexpr (kCorners == 2)
       if (options.line_batch) options.line_batch(batch, nullptr, nullptr);
     if constexpr (kCorners == 1)
       if (options.point_batch) options.point_batch(batch, nullptr, nullptr);
-    stats.raster += draw_batch(batch, state, fs, fb, parallel);
+    stats.raster += draw_stage_batch(gs, batch, primitive_id, state, fs, fb, parallel, stats);
     stats.raster_seconds += seconds_since(t);
     if (options.check) options.check->after_raster();
     if (options.progress)
@@ -74,7 +98,8 @@ template <class Batch>
 void draw_tess_primitives(std::vector<ClipVertex>& vertices, const TessEvalProgram& tes,
                           const RasterState& state, const FragmentProgram& fs, Framebuffer& fb,
                           const Parallel& parallel, DrawStats& stats, const DrawOptions& options,
-                          const std::vector<TessDumpRecord>& records, const std::vector<std::uint32_t>& emitted) {
+                          const std::vector<TessDumpRecord>& records, const std::vector<std::uint32_t>& emitted,
+                          const GeometryProgram* gs, std::uint32_t& primitive_id) {
   if (vertices.empty()) return;
   Batch batch;
   batch.num_varyings = tes.num_varyings();
@@ -84,8 +109,7 @@ void draw_tess_primitives(std::vector<ClipVertex>& vertices, const TessEvalProgr
     if (options.line_batch) options.line_batch(batch, &records, &emitted);
   if constexpr (Batch::kCorners == 1)
     if (options.point_batch) options.point_batch(batch, &records, &emitted);
-  stats.triangles_generated += batch.primitive_count();
-  stats.raster += draw_batch(batch, state, fs, fb, parallel);
+  stats.raster += draw_stage_batch(gs, batch, primitive_id, state, fs, fb, parallel, stats);
   batch.vertices.swap(vertices);
   vertices.clear();
 }
@@ -124,6 +148,16 @@ DrawStats run_draw(const DrawProgram& program, const std::vector<VertexAttribute
   const auto tcs = call.patches ? program.control(call.patch_vertices, call.default_outer, call.default_inner) : nullptr;
   const auto tes = call.patches ? program.evaluation() : nullptr;
   const auto program_fs = program.fragment();
+  const auto geometry = program.geometry();
+  const GeometryProgram* gs = geometry.get();
+  if (gs) {
+    int given = call.corners;
+    if (call.patches) {
+      const TessLayout layout = tes->layout();
+      given = layout.point_mode ? 1 : layout.domain == TessDomain::Isolines ? 2 : 3;
+    }
+    check_geometry_input(*gs, given);
+  }
   if (options.fragment_program) options.fragment_program(*program_fs);
   // --check: the fragment shader's outputs watched (check/check.h).
   const auto watched = options.check ? options.check->watch(*program_fs) : nullptr;
@@ -151,6 +185,7 @@ DrawStats run_draw(const DrawProgram& program, const std::vector<VertexAttribute
 
   for (int instance = 0; instance < call.instances; ++instance) {
     auto t0 = Clock::now();
+    std::uint32_t primitive_id = 0;  // gl_PrimitiveIDIn: counted per instance
     if (call.instance_attributes) {
       instance_attributes.resize(attributes.size());
       call.instance_attributes(instance, instance_attributes);
@@ -169,9 +204,9 @@ DrawStats run_draw(const DrawProgram& program, const std::vector<VertexAttribute
     if (!call.patches) {
       stats.triangles_in += (indexed ? call.indices.size() : call.count) / std::size_t(call.corners);
       switch (call.corners) {
-        case 1: draw_primitive_list<PointBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options, instance); break;
-        case 2: draw_primitive_list<LineBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options, instance); break;
-        default: draw_primitive_list<TriangleBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options, instance);
+        case 1: draw_primitive_list<PointBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options, instance, gs, primitive_id); break;
+        case 2: draw_primitive_list<LineBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options, instance, gs, primitive_id); break;
+        default: draw_primitive_list<TriangleBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options, instance, gs, primitive_id);
       }
       continue;
     }
@@ -193,10 +228,9 @@ DrawStats run_draw(const DrawProgram& program, const std::vector<VertexAttribute
       if (first_id)
         for (TessDumpRecord& r : records) r.patch_id += first_id;
       const auto r0 = Clock::now();
-      stats.triangles_generated += batch.triangle_count();
-      stats.raster += draw_triangles(batch, raster_state, *fs, fb, par);
-      draw_tess_primitives<LineBatch>(lines, *tes, raster_state, *fs, fb, par, stats, options, records, emitted);
-      draw_tess_primitives<PointBatch>(points, *tes, raster_state, *fs, fb, par, stats, options, records, emitted);
+      stats.raster += draw_stage_batch(gs, batch, primitive_id, raster_state, *fs, fb, par, stats);
+      draw_tess_primitives<LineBatch>(lines, *tes, raster_state, *fs, fb, par, stats, options, records, emitted, gs, primitive_id);
+      draw_tess_primitives<PointBatch>(points, *tes, raster_state, *fs, fb, par, stats, options, records, emitted, gs, primitive_id);
       stats.raster_seconds += seconds_since(r0);
       if (options.check) options.check->after_raster();
       options.hand_out_tess_chunk(records, batch, &emitted);

@@ -290,6 +290,7 @@ std::vector<shader::ShaderSource> scene_sources(const Scene& scene, const Shader
   file(Stage::Vertex, "vertex", s.vertex);
   file(Stage::TessControl, "tess_control", s.tess_control);
   file(Stage::TessEval, "tess_evaluation", s.tess_evaluation);
+  file(Stage::Geometry, "geometry", s.geometry);
   file(Stage::Fragment, "fragment", s.fragment);
   return out;
 }

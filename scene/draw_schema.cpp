@@ -301,7 +301,7 @@ draw::DrawCall read_call(JsonObject& o, bool elements) {
 // draws[].shaders: a custom program of the draw's own; stages it does not name are absent.
 ShaderSettings read_draw_shaders(JsonObject& o, const ShaderSettings& scene_shaders, const std::filesystem::path& base_dir) {
   const json& given = o.value("shaders");
-  if (!given.is_object()) o.fail("shaders", "expected an object {vertex, tess_control, tess_evaluation, fragment, uniforms, textures}, got " + describe_json(given));
+  if (!given.is_object()) o.fail("shaders", "expected an object {vertex, tess_control, tess_evaluation, geometry, fragment, uniforms, textures}, got " + describe_json(given));
   if (given.contains("program") && given["program"] != "custom")
     o.fail("shaders", "a draw's own program is a custom one: leave out program or set it to \"custom\"");
   for (const char* key : {"attributes", "patch_vertices"})
@@ -315,6 +315,7 @@ ShaderSettings read_draw_shaders(JsonObject& o, const ShaderSettings& scene_shad
            {"vertex", "a GLSL file (or twin:NAME), relative to the scene file"},
            {"tess_control", "a GLSL file; none: no control shader (the default patch levels apply)"},
            {"tess_evaluation", "a GLSL file; none: the draw is not tessellated"},
+           {"geometry", "a GLSL file; none: no geometry shader"},
            {"fragment", "a GLSL file"},
            {"uniforms", "an object of uniform name: value, as the scene's shaders.uniforms"},
            {"textures", "an object of sampler name: image file, as the scene's shaders.textures"}}) {
@@ -338,7 +339,7 @@ DrawSetting read_draw(JsonObject o, const std::vector<BufferSetting>& buffers, c
                       const std::filesystem::path& base_dir) {
   DrawSetting d;
   d.key = o.path();
-  o.describe("shaders", "an object {vertex, tess_control, tess_evaluation, fragment, uniforms, textures}: this draw's own program");
+  o.describe("shaders", "an object {vertex, tess_control, tess_evaluation, geometry, fragment, uniforms, textures}: this draw's own program");
   if (o.has("shaders")) d.shaders = read_draw_shaders(o, scene_shaders, base_dir);
   static constexpr const char* kModes =
       "GL_PATCHES, GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_LINES, GL_LINE_STRIP, GL_LINE_LOOP or GL_POINTS";

@@ -123,7 +123,7 @@ struct ShaderSettings {
   std::string key = "shaders";  // where the scene gives them ("draws.1.shaders"), for messages
   ShaderProgram program = ShaderProgram::Builtin;
   // Custom: GLSL files, resolved against the scene file's folder (tess_control may be empty).
-  std::filesystem::path vertex, tess_control, tess_evaluation, fragment;
+  std::filesystem::path vertex, tess_control, tess_evaluation, geometry, fragment;
   std::vector<UniformSetting> uniforms;
   // Vertex shader input (a name, or a location as digits) -> the mesh attribute that feeds it:
   // "position" or "normal".

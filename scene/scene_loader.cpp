@@ -109,7 +109,8 @@ json load_scene_json(const std::filesystem::path& file, const std::vector<std::s
   if (!scene.mesh.path.empty()) merged["mesh"]["path"] = scene.mesh.path.string();
   const std::pair<const char*, const std::filesystem::path*> shaders[] = {
       {"vertex", &scene.shaders.vertex}, {"tess_control", &scene.shaders.tess_control},
-      {"tess_evaluation", &scene.shaders.tess_evaluation}, {"fragment", &scene.shaders.fragment}};
+      {"tess_evaluation", &scene.shaders.tess_evaluation}, {"geometry", &scene.shaders.geometry},
+      {"fragment", &scene.shaders.fragment}};
   for (const auto& [key, path] : shaders)
     if (!path->empty()) merged["shaders"][key] = path->string();
   return merged;

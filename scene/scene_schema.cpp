@@ -281,6 +281,7 @@ ShaderSettings read_shaders(JsonObject o, const JsonSource& source, const std::f
   s.vertex = path("vertex");
   s.tess_control = path("tess_control");
   s.tess_evaluation = path("tess_evaluation");
+  s.geometry = path("geometry");
   s.fragment = path("fragment");
   if (s.program == ShaderProgram::Custom)
     for (const char* key : {"vertex", "fragment"})

@@ -807,6 +807,12 @@ void Runner::exec(const XIns& x) {
       for (int l = 0; l < n; ++l)
         if (mask[l]) inv.killed_[l] = 1;
       break;
+    case XOp::Emit:
+      // Lane by lane in increasing order: each lane's vertices stay in its own emission order.
+      if (inv.emit_)
+        for (int l = 0; l < n; ++l)
+          if (mask[l]) inv.emit_(l, int(x.aux), x.b != 0);
+      break;
   }
 }
 

@@ -18,6 +18,7 @@
 // value out of range gives INT_MIN (as x86 does; unsigned: 0 below the range and for NaN,
 // 0xffffffff above it): never undefined behaviour (docs/executor.md).
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -109,6 +110,11 @@ class Invocations {
   // call after begin(), each fragment quad (other stages: each lane) is its own vector.
   void set_sampling_vectors(const std::uint32_t* keys);
 
+  // A geometry shader's EmitVertex / EndPrimitive (EmitStreamVertex, EndStreamPrimitive): called
+  // for each lane that runs one, with its stream, while the lane's outputs hold what it wrote
+  // (row() reads them). Without a handler the calls do nothing.
+  void on_emit(std::function<void(int lane, int stream, bool end)> handler) { emit_ = std::move(handler); }
+
   // Runs main() for lanes 0 .. lanes() - 1. Throws ShaderRuntimeError.
   void run();
   // After run(): lanes that executed OpKill (discard).
@@ -124,6 +130,7 @@ class Invocations {
   std::uint32_t group_base_[kMaxLanes] = {};  // each lane's group block (first word in shared_)
   int groups_ = 1;
   std::vector<std::uint8_t> killed_;
+  std::function<void(int, int, bool)> emit_;
   std::vector<std::uint32_t> staging_;  // phi values between reading and writing
   std::vector<std::uint32_t> phi_doubles_;  // scratch for Runner::run_phis
   std::vector<const texture::Texture*> textures_;

@@ -350,6 +350,17 @@ struct Decoder {
       case spv::OpLine:
       case spv::OpNoLine:
         return;
+      case spv::OpEmitVertex:
+      case spv::OpEndPrimitive:
+      case spv::OpEmitStreamVertex:
+      case spv::OpEndStreamPrimitive: {
+        XIns x = base(ins, XOp::Emit);
+        const bool stream = ins.opcode == spv::OpEmitStreamVertex || ins.opcode == spv::OpEndStreamPrimitive;
+        x.aux = stream ? m.constants.at(o.at(0)).at(0) : 0u;  // GLSL: a constant integral expression
+        x.b = ins.opcode == spv::OpEndPrimitive || ins.opcode == spv::OpEndStreamPrimitive;
+        emit(x);
+        return;
+      }
       case spv::OpControlBarrier:  // lanes run in lock step (executor.h): a mark for the source trace
         emit(base(ins, XOp::Nop));
         return;

@@ -32,6 +32,7 @@ enum class XOp : std::uint16_t {
   Texture,  // aux = DecodedProgram::textures index
   AtomicInc, AtomicDec, AtomicLoad, AtomicAdd, AtomicSub, AtomicStore,
   Kill,
+  Emit,  // EmitVertex / EndPrimitive (and the stream forms): aux = stream, b = 1 for an end
 };
 
 struct XIns {

@@ -17,7 +17,7 @@ bool produces(XOp op) {
   switch (op) {
     case XOp::Nop: case XOp::Copy: case XOp::Undef: case XOp::Composite: case XOp::ExtractDyn:
     case XOp::InsertDyn: case XOp::Load: case XOp::Store: case XOp::AccessChain:
-    case XOp::CopyMemory: case XOp::Select: case XOp::Kill:
+    case XOp::CopyMemory: case XOp::Select: case XOp::Kill: case XOp::Emit:
       return false;
     default:
       return true;

@@ -37,7 +37,7 @@ const char* stage_name(Stage stage) {
 namespace {
 
 constexpr std::array kPipeline = {Stage::Vertex, Stage::TessControl, Stage::TessEval,
-                                  Stage::Fragment};
+                                  Stage::Geometry, Stage::Fragment};
 
 // Like glslangValidator -G: OpenGL SPIR-V rules; debug info keeps the source text for OpSource.
 constexpr EShMessages kMessages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgDebugInfo);
@@ -122,7 +122,7 @@ void add_log_errors(const char* log, const std::vector<ShaderSource>& sources,
       located = message.substr(0, colon) + ": error: " + trim(message.substr(colon + 1));
     }
     if (located.empty()) {
-      for (Stage s : {Stage::Vertex, Stage::TessControl, Stage::TessEval, Stage::Fragment}) {
+      for (Stage s : kPipeline) {
         std::string linking = "Linking " + std::string(stage_name(s));
         linking.replace(linking.rfind(" shader"), 7, " stage: ");
         if (message.starts_with(linking))
@@ -534,17 +534,13 @@ void check_output_vertices(const ShaderSource& source, const glslang::TShader& s
 CompiledProgram compile_program(const std::vector<ShaderSource>& sources) {
   if (sources.empty()) throw CompileError("error: a program needs at least one shader");
   std::vector<std::string> errors;
-  for (const ShaderSource& s : sources)
-    if (s.stage == Stage::Geometry)
-      errors.push_back(s.file + ":" + std::to_string(s.first_line) +
-                       ": error: geometry shaders are not supported (tessref runs vertex, "
-                       "tessellation and fragment shaders)");
-  // GL 4.5 section 7.3: a (non-separable) program with tessellation shaders needs a vertex shader.
+  // GL 4.5 section 7.3: a (non-separable) program with tessellation or geometry shaders needs a
+  // vertex shader.
   const bool has_vertex = std::any_of(sources.begin(), sources.end(), [](const ShaderSource& s) {
     return s.stage == Stage::Vertex;
   });
   for (const ShaderSource& s : sources)
-    if (!has_vertex && (s.stage == Stage::TessControl || s.stage == Stage::TessEval)) {
+    if (!has_vertex && (s.stage == Stage::TessControl || s.stage == Stage::TessEval || s.stage == Stage::Geometry)) {
       errors.push_back(s.file + ":" + std::to_string(s.first_line) + ": error: link error: a " +
                        stage_name(s.stage) + " needs a vertex shader in the program");
       break;

@@ -254,7 +254,18 @@ Module read_module(std::span<const std::uint32_t> words, const StorageBufferSize
         need(2);
         switch (spv::ExecutionMode(w[1])) {
           case spv::ExecutionModeOutputVertices: need(3); m.modes.output_vertices = int(w[2]); break;
+          case spv::ExecutionModeInputPoints: m.modes.input_vertices = 1; break;
+          case spv::ExecutionModeInputLines: m.modes.input_vertices = 2; break;
+          case spv::ExecutionModeInputLinesAdjacency: m.modes.input_vertices = 4; break;
+          case spv::ExecutionModeInputTrianglesAdjacency: m.modes.input_vertices = 6; break;
+          case spv::ExecutionModeOutputPoints:
+          case spv::ExecutionModeOutputLineStrip:
+          case spv::ExecutionModeOutputTriangleStrip: m.modes.output_primitive = w[1]; break;
+          case spv::ExecutionModeInvocations: need(3); m.modes.invocations = int(w[2]); break;
           case spv::ExecutionModeTriangles:
+            m.modes.input_vertices = 3;  // a geometry shader's input; a TES's domain
+            m.modes.primitive = w[1];
+            break;
           case spv::ExecutionModeQuads:
           case spv::ExecutionModeIsolines: m.modes.primitive = w[1]; break;
           case spv::ExecutionModeSpacingEqual:

@@ -101,6 +101,12 @@ struct ExecutionModes {
   std::uint32_t spacing = 0;             // TES: SpacingEqual, SpacingFractionalEven/Odd
   std::uint32_t order = 0;               // TES: VertexOrderCw / VertexOrderCcw
   bool point_mode = false;
+  // Geometry shader: its input primitive's vertices (1 points, 2 lines, 3 triangles, 4 lines and
+  // 6 triangles with adjacency), its output (spv::ExecutionModeOutputPoints, OutputLineStrip or
+  // OutputTriangleStrip), max_vertices (output_vertices above) and invocations.
+  int input_vertices = 0;
+  std::uint32_t output_primitive = 0;
+  int invocations = 1;
   bool depth_replacing = false;          // FS writes gl_FragDepth
   bool origin_upper_left = false;
 };

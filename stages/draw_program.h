@@ -12,6 +12,7 @@
 #include "common/parallel.h"
 #include "raster/rasterizer.h"
 #include "shader/spirv_module.h"
+#include "stages/geometry_stage.h"
 #include "stages/tess_stage.h"
 
 namespace tessref {
@@ -66,6 +67,9 @@ class DrawProgram {
                                                             const glm::vec2& default_inner) const = 0;
   virtual std::shared_ptr<const TessEvalProgram> evaluation() const = 0;
   virtual std::shared_ptr<const FragmentProgram> fragment() const = 0;
+  // The geometry shader, if any: it takes the vertex or evaluation stage's primitives, and its
+  // output is what the rasterizer draws.
+  virtual std::shared_ptr<const GeometryProgram> geometry() const { return nullptr; }
   // The untessellated vertex's varyings and which are flat.
   virtual int varyings() const = 0;
   virtual VaryingMask flat_varyings() const { return {}; }

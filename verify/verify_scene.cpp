@@ -81,7 +81,7 @@ nlohmann::json without_folders(nlohmann::json scene) {
   if (scene.contains("mesh") && scene["mesh"].contains("path")) name_only(scene["mesh"]["path"]);
   if (scene.contains("shaders")) {
     nlohmann::json& s = scene["shaders"];
-    for (const char* stage : {"vertex", "tess_control", "tess_evaluation", "fragment"})
+    for (const char* stage : {"vertex", "tess_control", "tess_evaluation", "geometry", "fragment"})
       if (s.contains(stage)) name_only(s[stage]);
     if (s.contains("textures") && s["textures"].is_object())
       for (auto& [name, t] : s["textures"].items()) name_only(t.is_object() && t.contains("path") ? t["path"] : t);

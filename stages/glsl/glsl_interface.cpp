@@ -80,7 +80,8 @@ bool per_vertex_array(const Module& m, const shader::Variable& v, IoKind kind) {
   if (v.decorations.patch || m.type(v.type).kind != TypeKind::Array) return false;
   if (kind != IoKind::User && kind != IoKind::Position) return false;
   if (m.model == shader::ExecutionModel::TessControl) return true;
-  return m.model == shader::ExecutionModel::TessEval && v.storage == spv::StorageClassInput;
+  return (m.model == shader::ExecutionModel::TessEval || m.model == shader::ExecutionModel::Geometry) &&
+         v.storage == spv::StorageClassInput;
 }
 
 }  // namespace

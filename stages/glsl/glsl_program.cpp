@@ -8,6 +8,7 @@
 #include <spirv/unified1/spirv.hpp>
 
 #include "shader/buffer_layout.h"
+#include "stages/glsl/glsl_geometry.h"
 #include "stages/glsl/glsl_stages.h"
 
 namespace tessref::glsl {
@@ -291,29 +292,37 @@ GlslProgram::GlslProgram(const shader::CompiledProgram& compiled, shader::ExecLi
       case shader::Stage::Vertex: vs_ = make_stage(cs, limits, storage); break;
       case shader::Stage::TessControl: tcs_ = make_stage(cs, limits, storage); break;
       case shader::Stage::TessEval: tes_ = make_stage(cs, limits, storage); break;
+      case shader::Stage::Geometry: gs_ = make_stage(cs, limits, storage); break;
       case shader::Stage::Fragment: fs_ = make_stage(cs, limits, storage); break;
-      default: throw shader::SpirvError(std::string(shader::stage_name(cs.stage)) + "s are not supported");
     }
   }
   if (!vs_) throw shader::SpirvError("the program has no vertex shader");
   if (!fs_) throw shader::SpirvError("the program has no fragment shader");
-  for (StageProgram* s : {vs_.get(), tcs_.get(), tes_.get(), fs_.get()})
+  for (StageProgram* s : {vs_.get(), tcs_.get(), tes_.get(), gs_.get(), fs_.get()})
     if (s) {
       s->textures = &textures_;
       s->cube_map_seamless = &cube_map_seamless_;
       s->counter_buffers = &counter_buffers_;
     }
   // Varyings handed to the rasterizer: every word the last geometry stage writes past gl_Position.
-  const StageProgram& last = tes_ ? *tes_ : *vs_;
-  std::uint32_t used = 4;
-  for (const IoVariable& v : last.io.outputs)
-    for (const IoWord& w : v.words)
-      if (v.kind == IoKind::User) used = std::max(used, w.io_word + std::uint32_t(shader::scalar_words(w.scalar)));
-  if (used - 4 > std::uint32_t(kMaxVaryings))
-    throw shader::SpirvError("the " + std::string(shader::stage_name(last.stage)) + " writes " +
-                             std::to_string(used - 4) + " varying components; tessref's limit is " +
-                             std::to_string(kMaxVaryings));
-  num_varyings_ = int(used - 4);
+  // With a geometry shader, the stage before it hands its vertices on in the same form.
+  const auto varyings_of = [](const StageProgram& stage) {
+    std::uint32_t used = 4;
+    for (const IoVariable& v : stage.io.outputs)
+      for (const IoWord& w : v.words)
+        if (v.kind == IoKind::User) used = std::max(used, w.io_word + std::uint32_t(shader::scalar_words(w.scalar)));
+    if (used - 4 > std::uint32_t(kMaxVaryings))
+      throw shader::SpirvError("the " + std::string(shader::stage_name(stage.stage)) + " writes " +
+                               std::to_string(used - 4) + " varying components; tessref's limit is " +
+                               std::to_string(kMaxVaryings));
+    return int(used - 4);
+  };
+  if (gs_) {
+    if (gs_->exe->module().modes.input_vertices < 1 || gs_->exe->module().modes.output_primitive == 0)
+      throw shader::SpirvError("geometry shader: it declares no input or output primitive layout");
+    pre_geometry_varyings_ = varyings_of(tes_ ? *tes_ : *vs_);
+  }
+  num_varyings_ = varyings_of(gs_ ? *gs_ : tes_ ? *tes_ : *vs_);
   map_patch_locations();
   // gl_PrimitiveID in the fragment shader: the patch's, carried as one more (flat) varying.
   for (const IoVariable& v : fs_->io.inputs)
@@ -366,6 +375,7 @@ StageProgram* GlslProgram::find(shader::Stage s) {
     case shader::Stage::Vertex: return vs_.get();
     case shader::Stage::TessControl: return tcs_.get();
     case shader::Stage::TessEval: return tes_.get();
+    case shader::Stage::Geometry: return gs_.get();
     case shader::Stage::Fragment: return fs_.get();
     default: return nullptr;
   }
@@ -373,7 +383,7 @@ StageProgram* GlslProgram::find(shader::Stage s) {
 
 void GlslProgram::set_uniform(const std::string& name, const UniformValue& value) {
   bool found = false;
-  for (StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), fs_.get()}) {
+  for (StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), gs_.get(), fs_.get()}) {
     if (!sp) continue;
     const shader::Module& m = sp->exe->module();
     for (const shader::Variable& v : m.variables) {
@@ -409,7 +419,7 @@ void GlslProgram::set_uniform(const std::string& name, const UniformValue& value
 }
 
 std::optional<UniformShape> GlslProgram::uniform_shape(const std::string& name) const {
-  for (const StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), fs_.get()}) {
+  for (const StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), gs_.get(), fs_.get()}) {
     if (!sp) continue;
     const shader::Module& m = sp->exe->module();
     for (const shader::Variable& v : m.variables) {
@@ -508,17 +518,17 @@ bool bind_blocks(std::initializer_list<StageProgram*> stages, std::uint32_t bind
 }  // namespace
 
 std::vector<GlslProgram::UniformBlock> GlslProgram::uniform_blocks() const {
-  return blocks_of({vs_.get(), tcs_.get(), tes_.get(), fs_.get()}, false);
+  return blocks_of({vs_.get(), tcs_.get(), tes_.get(), gs_.get(), fs_.get()}, false);
 }
 std::vector<GlslProgram::UniformBlock> GlslProgram::storage_blocks() const {
-  return blocks_of({vs_.get(), tcs_.get(), tes_.get(), fs_.get()}, true);
+  return blocks_of({vs_.get(), tcs_.get(), tes_.get(), gs_.get(), fs_.get()}, true);
 }
 
 bool GlslProgram::bind_uniform_buffer(std::uint32_t binding, std::span<const std::byte> range) {
-  return bind_blocks({vs_.get(), tcs_.get(), tes_.get(), fs_.get()}, binding, range, false);
+  return bind_blocks({vs_.get(), tcs_.get(), tes_.get(), gs_.get(), fs_.get()}, binding, range, false);
 }
 bool GlslProgram::bind_storage_buffer(std::uint32_t binding, std::span<const std::byte> range) {
-  const bool found = bind_blocks({vs_.get(), tcs_.get(), tes_.get(), fs_.get()}, binding, range, true);
+  const bool found = bind_blocks({vs_.get(), tcs_.get(), tes_.get(), gs_.get(), fs_.get()}, binding, range, true);
   if (found) bound_storage_.insert(binding);
   return found;
 }
@@ -538,7 +548,7 @@ std::string GlslProgram::draw_refusal() const {
 
 std::vector<std::string> GlslProgram::uniform_names() const {
   std::vector<std::string> names;
-  for (const StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), fs_.get()})
+  for (const StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), gs_.get(), fs_.get()})
     if (sp) uniform_names_of(sp->exe->module(), names);
   std::sort(names.begin(), names.end());
   names.erase(std::unique(names.begin(), names.end()), names.end());
@@ -546,7 +556,7 @@ std::vector<std::string> GlslProgram::uniform_names() const {
 }
 
 bool GlslProgram::uses_atomic_counters() const {
-  for (const StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), fs_.get()})
+  for (const StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), gs_.get(), fs_.get()})
     if (sp && !sp->counters.empty()) return true;
   return false;
 }
@@ -583,8 +593,14 @@ std::shared_ptr<const TessControlProgram> GlslProgram::control(int patch_vertice
 
 std::shared_ptr<const TessEvalProgram> GlslProgram::evaluation() const {
   if (!tes_) throw std::logic_error("evaluation: no tessellation evaluation shader");
+  if (gs_) return std::make_unique<GlslEvaluation>(*tes_, tes_layout(), pre_geometry_varyings_, VaryingMask{}, -1);
   return std::make_unique<GlslEvaluation>(*tes_, tes_layout(), num_varyings_, flat_varyings_,
                                           primitive_id_varying_);
+}
+
+std::shared_ptr<const GeometryProgram> GlslProgram::geometry() const {
+  if (!gs_) return nullptr;
+  return std::make_unique<GlslGeometry>(*gs_, num_varyings_, flat_varyings_, primitive_id_varying_);
 }
 
 std::shared_ptr<const FragmentProgram> GlslProgram::fragment() const {

@@ -140,8 +140,12 @@ class GlslProgram final : public DrawProgram {
                                                     const glm::vec2& default_inner) const override;
   std::shared_ptr<const TessEvalProgram> evaluation() const override;
   std::shared_ptr<const FragmentProgram> fragment() const override;
-  int varyings() const override { return num_varyings_; }
-  VaryingMask flat_varyings() const override { return flat_varyings_; }
+  std::shared_ptr<const GeometryProgram> geometry() const override;
+  // The untessellated vertex's varyings: the fragment shader's, or with a geometry shader, the
+  // vertex shader's outputs that shader reads (it interpolates nothing).
+  int varyings() const override { return gs_ ? pre_geometry_varyings_ : num_varyings_; }
+  VaryingMask flat_varyings() const override { return gs_ ? VaryingMask{} : flat_varyings_; }
+  bool has_geometry() const { return gs_ != nullptr; }
   // Draw the tessellation evaluation shader's patches with this layout instead of the one it
   // declares (the GLSL twins take the scene's spacing and winding, as the real-GL runner rewrites
   // their layout line).
@@ -150,12 +154,13 @@ class GlslProgram final : public DrawProgram {
  private:
   StageProgram* find(shader::Stage s);
   void map_patch_locations();
-  std::unique_ptr<StageProgram> vs_, tcs_, tes_, fs_;
+  std::unique_ptr<StageProgram> vs_, tcs_, tes_, gs_, fs_;
   std::vector<const texture::Texture*> textures_;
   bool cube_map_seamless_ = false;
   std::map<std::uint32_t, std::vector<std::uint32_t>> counter_buffers_;
   std::set<std::uint32_t> bound_storage_;  // bindings bind_storage_buffer filled
-  int num_varyings_ = 0;
+  int num_varyings_ = 0;  // handed to the fragment shader
+  int pre_geometry_varyings_ = 0;  // with a geometry shader: what the stage before it writes
   VaryingMask flat_varyings_;  // TriangleBatch::flat_varyings
   int primitive_id_varying_ = -1;
   std::optional<TessLayout> tes_layout_override_;  // the varying carrying gl_PrimitiveID to the FS, -1: none

@@ -6,6 +6,8 @@
 
 #include <spirv/unified1/spirv.hpp>
 
+#include "stages/glsl/lane_words.h"
+
 namespace tessref::glsl {
 namespace {
 
@@ -26,28 +28,6 @@ float to_float(std::uint32_t u) {
   float f;
   std::memcpy(&f, &u, 4);
   return f;
-}
-
-// Copies one scalar (1 or 2 words) between a plain word array and a lane of a per-lane variable.
-void set_lane(Invocations& inv, const shader::VariableSlot& slot, std::uint32_t word, Scalar s, int lane,
-              const std::uint32_t* src) {
-  std::uint32_t* row = inv.row(slot, word);
-  if (s == Scalar::F64) {
-    row[2 * lane] = src[0];
-    row[2 * lane + 1] = src[1];
-  } else {
-    row[lane] = src[0];
-  }
-}
-void get_lane(Invocations& inv, const shader::VariableSlot& slot, std::uint32_t word, Scalar s, int lane,
-              std::uint32_t* dst) {
-  const std::uint32_t* row = inv.row(slot, word);
-  if (s == Scalar::F64) {
-    dst[0] = row[2 * lane];
-    dst[1] = row[2 * lane + 1];
-  } else {
-    dst[0] = row[lane];
-  }
 }
 
 // Shared (per-patch) variables from and to plain word arrays.

@@ -1,0 +1,90 @@
+#include "stages/geometry_stage.h"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace tessref {
+namespace {
+
+// Primitives per task: enough work to pay for a task, few enough to spread a chunk over threads.
+constexpr std::size_t kTaskPrimitives = 256;
+
+template <int Corners>
+void append_batch(PrimitiveBatch<Corners>& dst, const PrimitiveBatch<Corners>& src) {
+  const auto base = std::uint32_t(dst.vertex_count());
+  dst.vertices.insert(dst.vertices.end(), src.vertices.begin(), src.vertices.end());
+  for (const std::uint32_t i : src.indices) dst.indices.push_back(base + i);
+}
+
+const char* primitive_name(int vertices) {
+  switch (vertices) {
+    case 1: return "points";
+    case 2: return "lines";
+    case 3: return "triangles";
+    case 4: return "lines_adjacency";
+    default: return "triangles_adjacency";
+  }
+}
+
+}  // namespace
+
+void check_geometry_input(const GeometryProgram& gs, int vertices) {
+  if (gs.input_vertices() != vertices)
+    throw std::invalid_argument(std::string("draw: the geometry shader takes ") + primitive_name(gs.input_vertices()) +
+                                "; the draw hands it " + primitive_name(vertices) +
+                                " (GL: GL_INVALID_OPERATION at the draw)");
+}
+
+void append_strip(int corners, std::uint32_t first, std::uint32_t count, std::vector<std::uint32_t>& indices) {
+  if (corners == 1) {
+    for (std::uint32_t i = 0; i < count; ++i) indices.push_back(first + i);
+  } else if (corners == 2) {
+    for (std::uint32_t i = 0; i + 1 < count; ++i) indices.insert(indices.end(), {first + i, first + i + 1});
+  } else {
+    for (std::uint32_t i = 0; i + 2 < count; ++i) {
+      const bool odd = i % 2;
+      indices.insert(indices.end(), {first + (odd ? i + 1 : i), first + (odd ? i : i + 1), first + i + 2});
+    }
+  }
+}
+
+template <int Corners>
+void run_geometry(const GeometryProgram& gs, const PrimitiveBatch<Corners>& in, std::uint32_t first_id,
+                  const Parallel& parallel, GeometryOutput& out) {
+  check_geometry_input(gs, Corners);
+  const std::size_t primitives = in.primitive_count();
+  const std::size_t tasks = (primitives + kTaskPrimitives - 1) / kTaskPrimitives;
+  std::vector<GeometryOutput> parts(tasks);
+  std::vector<std::vector<const float*>> corners(tasks);
+  parallel.for_each(tasks, [&](std::size_t t) {
+    const std::size_t first = t * kTaskPrimitives, n = std::min(kTaskPrimitives, primitives - first);
+    std::vector<const float*>& c = corners[t];
+    c.resize(n * Corners);
+    for (std::size_t p = 0; p < n; ++p)
+      for (int k = 0; k < Corners; ++k) c[p * Corners + std::size_t(k)] = in.vertex_data(in.vertex_index(first + p, k));
+    GeometryOutput& o = parts[t];
+    o.triangles.num_varyings = o.lines.num_varyings = o.points.num_varyings = gs.num_varyings();
+    gs.run(c.data(), in.num_varyings, n, first_id + std::uint32_t(first), o);
+    c = {};
+  });
+  const auto prepare = [&](auto& batch) {
+    batch.indexed = true;
+    batch.num_varyings = gs.num_varyings();
+    batch.flat_varyings = gs.flat_varyings();
+  };
+  prepare(out.triangles);
+  prepare(out.lines);
+  prepare(out.points);
+  for (GeometryOutput& part : parts) {
+    append_batch(out.triangles, part.triangles);
+    append_batch(out.lines, part.lines);
+    append_batch(out.points, part.points);
+  }
+}
+
+template void run_geometry<1>(const GeometryProgram&, const PointBatch&, std::uint32_t, const Parallel&, GeometryOutput&);
+template void run_geometry<2>(const GeometryProgram&, const LineBatch&, std::uint32_t, const Parallel&, GeometryOutput&);
+template void run_geometry<3>(const GeometryProgram&, const TriangleBatch&, std::uint32_t, const Parallel&, GeometryOutput&);
+
+}  // namespace tessref

@@ -1,0 +1,127 @@
+#include "stages/glsl/glsl_geometry.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include <spirv/unified1/spirv.hpp>
+
+#include "stages/glsl/lane_words.h"
+
+namespace tessref::glsl {
+namespace {
+
+// What one lane emitted: its vertices (records each) and its primitives' corners as indices into
+// them, strips already cut into lists.
+struct LaneEmission {
+  std::vector<ClipVertex> vertices;
+  std::vector<std::uint32_t> indices;
+  std::uint32_t strip_first = 0;  // the first vertex of the open strip
+  int emitted = 0;                // vertices emitted on stream 0, kept or not (max_vertices)
+};
+
+}  // namespace
+
+GlslGeometry::GlslGeometry(const StageProgram& sp, int varyings, const VaryingMask& flat, int primitive_id_varying)
+    : sp_(sp), varyings_(varyings), flat_(flat), primitive_id_varying_(primitive_id_varying) {
+  const shader::ExecutionModes& modes = sp.exe->module().modes;
+  input_vertices_ = modes.input_vertices;
+  output_corners_ = modes.output_primitive == spv::ExecutionModeOutputPoints       ? 1
+                    : modes.output_primitive == spv::ExecutionModeOutputLineStrip ? 2
+                                                                                  : 3;
+  max_vertices_ = modes.output_vertices;
+  invocations_ = std::max(1, modes.invocations);
+}
+
+void GlslGeometry::run(const float* const* corners, int in_varyings, std::size_t count, std::uint32_t first_id,
+                       GeometryOutput& out) const {
+  const std::size_t lanes = count * std::size_t(invocations_);
+  const std::size_t step = std::size_t(std::clamp(sp_.exe->limits().batch_lanes, 1, shader::kMaxLanes));
+  for (std::size_t first = 0; first < lanes; first += step)
+    run_lanes(corners, in_varyings, first, int(std::min(step, lanes - first)), first_id, out);
+}
+
+void GlslGeometry::run_lanes(const float* const* corners, int in_varyings, std::size_t first, int n,
+                             std::uint32_t first_id, GeometryOutput& out) const {
+  shader::Invocations& inv = sp_.prepare();
+  inv.begin(n);
+  const auto primitive = [&](int lane) { return (first + std::size_t(lane)) / std::size_t(invocations_); };
+  const std::uint32_t in_words = 4 + std::uint32_t(in_varyings);
+  for (const IoVariable& v : sp_.io.inputs) {
+    if (!v.slot) continue;
+    for (int l = 0; l < n; ++l) {
+      const std::size_t p = primitive(l);
+      switch (v.kind) {
+        case IoKind::User:
+        case IoKind::Position:
+          for (std::uint32_t k = 0; k < std::min<std::uint32_t>(v.elements, std::uint32_t(input_vertices_)); ++k) {
+            const float* vertex = corners[p * std::size_t(input_vertices_) + k];
+            for (const IoWord& w : v.words) {
+              std::uint32_t value[2] = {0u, 0u};  // what the previous stage does not write reads 0
+              for (int h = 0; h < shader::scalar_words(w.scalar); ++h)
+                if (w.io_word + std::uint32_t(h) < in_words) std::memcpy(&value[h], vertex + w.io_word + h, 4);
+              set_lane(inv, *v.slot, k * v.element_words + w.var_word, w.scalar, l, value);
+            }
+          }
+          break;
+        case IoKind::PrimitiveId: inv.row(*v.slot, 0)[l] = first_id + std::uint32_t(p); break;
+        case IoKind::InvocationId: inv.row(*v.slot, 0)[l] = std::uint32_t((first + std::size_t(l)) % std::size_t(invocations_)); break;
+        default: break;
+      }
+    }
+  }
+  const int records = vertex_records(varyings_);
+  const std::uint32_t out_words = 4 + std::uint32_t(varyings_);
+  const IoVariable* primitive_id_out = nullptr;
+  for (const IoVariable& v : sp_.io.outputs)
+    if (v.kind == IoKind::PrimitiveId) primitive_id_out = &v;
+  std::vector<LaneEmission> emissions(std::size_t(n), LaneEmission{});
+  const auto end_strip = [&](LaneEmission& e) {
+    const auto count = std::uint32_t(e.vertices.size() / std::size_t(records));
+    append_strip(output_corners_, e.strip_first, count - e.strip_first, e.indices);
+    e.strip_first = count;
+  };
+  inv.on_emit([&](int lane, int stream, bool end) {
+    if (stream != 0) return;  // other streams feed only transform feedback, which is not drawn
+    LaneEmission& e = emissions[std::size_t(lane)];
+    if (end) return end_strip(e);
+    // GL leaves vertices past max_vertices undefined; like llvmpipe, they are dropped.
+    if (e.emitted++ >= max_vertices_) return;
+    const std::size_t at = e.vertices.size();
+    e.vertices.resize(at + std::size_t(records), ClipVertex{});
+    auto* floats = reinterpret_cast<std::uint32_t*>(e.vertices.data() + at);
+    for (const IoVariable& v : sp_.io.outputs) {
+      if (v.kind != IoKind::User && v.kind != IoKind::Position) continue;
+      for (const IoWord& w : v.words) {
+        std::uint32_t value[2];
+        get_lane(inv, *v.slot, w.var_word, w.scalar, lane, value);
+        for (int h = 0; h < shader::scalar_words(w.scalar); ++h)
+          if (w.io_word + std::uint32_t(h) < out_words) floats[w.io_word + std::uint32_t(h)] = value[h];
+      }
+    }
+    if (primitive_id_varying_ >= 0)
+      floats[4 + primitive_id_varying_] = primitive_id_out ? inv.row(*primitive_id_out->slot, 0)[lane]
+                                                           : first_id + std::uint32_t(primitive(lane));
+  });
+  try {
+    inv.run();
+  } catch (const shader::ShaderRuntimeError& e) {
+    inv.on_emit(nullptr);
+    sp_.rethrow(e, "primitive " + std::to_string(first_id + std::uint32_t(primitive(e.lane))) + ", invocation " +
+                       std::to_string((first + std::size_t(e.lane)) % std::size_t(invocations_)));
+  }
+  inv.on_emit(nullptr);
+  sp_.finish(inv);
+  const auto append = [&](auto& batch) {
+    for (LaneEmission& e : emissions) {
+      end_strip(e);  // the shader's end ends its last primitive
+      const auto base = std::uint32_t(batch.vertex_count());
+      batch.vertices.insert(batch.vertices.end(), e.vertices.begin(), e.vertices.end());
+      for (const std::uint32_t i : e.indices) batch.indices.push_back(base + i);
+    }
+  };
+  if (output_corners_ == 1) append(out.points);
+  else if (output_corners_ == 2) append(out.lines);
+  else append(out.triangles);
+}
+
+}  // namespace tessref::glsl
