@@ -14,6 +14,9 @@
 #                   llvmpipe's verdict from tests/data/piglit/llvmpipe_verdicts.txt (measured by
 #                   scripts/piglit-llvmpipe.sh).
 # --expect-pass N   fails unless exactly N files pass.
+# --expect-fail F   (repeatable) file F (relative, as printed) fails as it does on llvmpipe, where
+#                   piglit expects what the GL spec leaves open: its failure is the expected
+#                   verdict, and its passing is reported as a change.
 # Other arguments go to `tessref shader-test` as they are (e.g. --threads 2).
 # The binary is ${TESSREF_BIN:-build/cli/tessref}. Exit status 0 only when no file failed (and
 # the pass count is N, with --expect-pass).
@@ -30,13 +33,14 @@ usage() { sed -n '2,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "$0"; }
 
 table=""
 expect=""
+expect_fail=()
 suite=""
 pass_through=()
 while [ $# -gt 0 ]; do
   case $1 in
-    --table | --expect-pass | --suite)
+    --table | --expect-pass | --suite | --expect-fail)
       [ $# -ge 2 ] || die "$1 needs a value"
-      case $1 in --table) table=$2 ;; --suite) suite=$2 ;; *) expect=$2 ;; esac
+      case $1 in --table) table=$2 ;; --suite) suite=$2 ;; --expect-fail) expect_fail+=("$2") ;; *) expect=$2 ;; esac
       shift 2
       ;;
     --table=*) table=${1#--table=} && shift ;;
@@ -121,8 +125,20 @@ if [ -n "$table" ]; then
 fi
 
 status=0
-if [ "$failed" -ne 0 ]; then
-  log "$failed of ${#files[@]} files failed"
+mapfile -t failed_files < <(sed -n 's/^fail: \([^:]*\):.*/\1/p' "$work/out")
+unexpected=0
+for f in "${failed_files[@]}"; do
+  if [[ " ${expect_fail[*]} " == *" $f "* ]]; then
+    log "$f failed, as expected (--expect-fail: it fails on llvmpipe the same way)"
+  else
+    unexpected=$((unexpected + 1))
+  fi
+done
+for f in "${expect_fail[@]}"; do
+  [[ " ${failed_files[*]} " == *" $f "* ]] || { log "$f was expected to fail and did not"; status=1; }
+done
+if [ "$unexpected" -ne 0 ]; then
+  log "$unexpected of ${#files[@]} files failed"
   status=1
 fi
 if [ -n "$expect" ] && [ "$passed" -ne "$expect" ]; then

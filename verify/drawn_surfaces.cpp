@@ -33,6 +33,8 @@ std::string silhouette_rule(const Scene& scene, const DrawnSurfaces& drawn, bool
     if (d.mode == DrawMode::Lines || d.mode == DrawMode::LineStrip || d.mode == DrawMode::LineLoop ||
         d.mode == DrawMode::Points || drawn.lines_or_points[i])
       return why("draws lines or points into the depth image");
+    if (!(d.shaders ? *d.shaders : scene.shaders).geometry.empty())
+      return why("has a geometry shader: the depth image holds what it emits, the rays the evaluation stage's triangles");
     if (r.polygon_mode != PolygonMode::kFill) return why("draws with a polygon mode other than GL_FILL");
     if (r.scissor.enabled) return why("is scissored");
     if (r.viewport) return why("has a viewport other than the image (the ray caster frames the image)");

@@ -337,6 +337,10 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
   SilhouetteComparison s;
   if (of_draws && !drawn.silhouette_unavailable.empty()) {
     j["silhouette"] = {{"examined", false}, {"why", drawn.silhouette_unavailable}};
+  } else if (!of_draws && scene.shaders.program == ShaderProgram::Custom && !scene.shaders.geometry.empty()) {
+    j["silhouette"] = {{"examined", false},
+                       {"why", "shaders.geometry: the image holds what the geometry shader emits, the rays the "
+                               "evaluation stage's surface"}};
   } else {
     // Draws: the surfaces' space seen along -z (NDC's z flipped), every pixel's ray parallel.
     const glm::mat4 view_projection =

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstring>
 #include <fstream>
+#include <filesystem>
 #include <string>
 
 #include <gmock/gmock.h>
@@ -285,6 +286,21 @@ TEST_F(VerifyVsLlvmpipe, FacetNormalsFromDerivativesMatchOnEveryPixel) {
   const test::CliRun r = capture_and_verify(std::string(TESSREF_SOURCE_DIR) + "/scenes/facets.json", path("facets"));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("colour: 100.0000% of pixels within 1/255"));
+}
+
+// Geometry shaders (issue 23): faceted shading from each tessellated triangle's plane, facet
+// normals drawn as lines over their surface, and an instanced shader past max_vertices, all
+// coloured as llvmpipe colours them on every pixel.
+TEST_F(VerifyVsLlvmpipe, GeometryShadersMatchOnEveryPixel) {
+  const std::string draws = std::string(TESSREF_SOURCE_DIR) + "/tests/data/draws/";
+  for (const std::string& scene : {std::string(TESSREF_SOURCE_DIR) + "/scenes/gs_facets.json",
+                                   draws + "geometry_hedgehog.json", draws + "geometry_instanced.json"}) {
+    const std::string name = std::filesystem::path(scene).stem().string();
+    const test::CliRun r = capture_and_verify(scene, path(name));
+    EXPECT_EQ(r.exit_code, 0) << name << "\n" << r.output;
+    EXPECT_THAT(r.output, HasSubstr("colour: 100.0000% of pixels within 1/255")) << name;
+    EXPECT_THAT(r.output, HasSubstr("raster coverage: 0 pixels differ from the driver's")) << name;
+  }
 }
 
 // A capture that keeps the records of every k-th patch only (--tess-records) still compares every
