@@ -45,6 +45,10 @@ GLenum gl_mode(DrawMode m) {
     case DrawMode::LineStrip: return GL_LINE_STRIP;
     case DrawMode::LineLoop: return GL_LINE_LOOP;
     case DrawMode::Points: return GL_POINTS;
+    case DrawMode::LinesAdjacency: return GL_LINES_ADJACENCY;
+    case DrawMode::LineStripAdjacency: return GL_LINE_STRIP_ADJACENCY;
+    case DrawMode::TrianglesAdjacency: return GL_TRIANGLES_ADJACENCY;
+    case DrawMode::TriangleStripAdjacency: return GL_TRIANGLE_STRIP_ADJACENCY;
   }
   return GL_NONE;
 }

@@ -13,6 +13,7 @@
 #include <set>
 
 #include "render/draw_call.h"
+#include "render/draw_scene.h"
 #include "shader/glsl_compile.h"
 #include "stages/glsl/glsl_program.h"
 #include "texture/texture.h"
@@ -246,6 +247,38 @@ class Runner {
     call.patch_vertices = patch_vertices;
     call.default_outer = default_outer_;
     call.default_inner = default_inner_;
+    draw(c, attributes, call);
+  }
+
+  // glDrawArrays(Instanced) of points, lines or triangles (a program without tessellation).
+  void draw_primitives(const TestCommand& c, const std::vector<glsl::VertexAttribute>& attributes, std::size_t first,
+                       std::size_t count, int instances) {
+    static const std::pair<const char*, DrawMode> kModes[] = {
+        {"GL_POINTS", DrawMode::Points},       {"GL_LINES", DrawMode::Lines},
+        {"GL_LINE_STRIP", DrawMode::LineStrip}, {"GL_LINE_LOOP", DrawMode::LineLoop},
+        {"GL_TRIANGLES", DrawMode::Triangles}, {"GL_TRIANGLE_STRIP", DrawMode::TriangleStrip},
+        {"GL_TRIANGLE_FAN", DrawMode::TriangleFan},
+        {"GL_LINES_ADJACENCY", DrawMode::LinesAdjacency}, {"GL_LINE_STRIP_ADJACENCY", DrawMode::LineStripAdjacency},
+        {"GL_TRIANGLES_ADJACENCY", DrawMode::TrianglesAdjacency},
+        {"GL_TRIANGLE_STRIP_ADJACENCY", DrawMode::TriangleStripAdjacency}};
+    const std::string name = c.words.empty() ? "" : c.words[0];
+    const auto mode = std::find_if(std::begin(kModes), std::end(kModes), [&](const auto& m) { return name == m.first; });
+    if (mode == std::end(kModes))
+      fail(c, name == "GL_PATCHES" ? "GL_PATCHES needs a tessellation evaluation shader"
+                                   : "draw mode " + name + " is not drawn (quads and polygons are compatibility-profile modes)");
+    std::vector<std::uint32_t> run(count);
+    for (std::size_t i = 0; i < count; ++i) run[i] = std::uint32_t(first + i);
+    const std::vector<std::uint32_t> indices = assemble(mode->second, 3, {run});
+    DrawCall call;
+    call.patches = false;
+    call.corners = primitive_corners(mode->second);
+    call.indices = indices;
+    call.vertex_count = first + count;
+    call.instances = instances;
+    if (!indices.empty()) draw(c, attributes, call);
+  }
+
+  void draw(const TestCommand& c, const std::vector<glsl::VertexAttribute>& attributes, const DrawCall& call) {
     try {
       run_draw(*program_, attributes, call, state_, fb_, parallel_);
     } catch (const glsl::StageError& e) {
@@ -256,7 +289,8 @@ class Runner {
   }
 
   void draw_rect(const TestCommand& c) {
-    if (!c.patch) fail(c, "draw rect without 'patch' with a tessellation program is a GL error");
+    if (program_->has_tes() && !c.patch) fail(c, "draw rect without 'patch' with a tessellation program is a GL error");
+    if (!program_->has_tes() && c.patch) fail(c, "draw rect patch needs a tessellation evaluation shader");
     double x = c.numbers[0], y = c.numbers[1], w = c.numbers[2], h = c.numbers[3];
     if (c.ortho) {  // window pixels to normalized device coordinates
       x = 2.0 * x / fb_.width - 1.0;
@@ -283,7 +317,15 @@ class Runner {
       attributes.push_back(std::move(a));
     }
     const int instances = c.numbers.size() > 4 ? int(c.numbers[4]) : 1;
-    draw_patches(c, attributes, 0, 4, instances, 4);
+    if (c.patch) return draw_patches(c, attributes, 0, 4, instances, 4);
+    // glDrawArrays(GL_TRIANGLE_STRIP, 0, 4): its two triangles (GL 4.5, 10.1.8).
+    static constexpr std::uint32_t kStrip[6] = {0, 1, 2, 2, 1, 3};
+    DrawCall call;
+    call.patches = false;
+    call.indices = kStrip;
+    call.vertex_count = 4;
+    call.instances = instances;
+    draw(c, attributes, call);
   }
 
   // What glReadPixels(GL_UNSIGNED_BYTE) returns from the RGBA8 window.
@@ -329,9 +371,13 @@ class Runner {
       case CommandKind::PatchDefaultOuterLevel: default_outer_ = glm::vec4(n[0], n[1], n[2], n[3]); break;
       case CommandKind::PatchDefaultInnerLevel: default_inner_ = glm::vec2(n[0], n[1]); break;
       case CommandKind::DrawArrays: {
+        refuse_negative_draw_arguments(c);
+        if (!program_->has_tes()) {
+          draw_primitives(c, attributes_, std::size_t(n[0]), std::size_t(n[1]), n.size() > 2 ? int(n[2]) : 1);
+          break;
+        }
         if (c.words.empty() || c.words[0] != "GL_PATCHES")
           fail(c, "only GL_PATCHES draws are supported with a tessellation program");
-        refuse_negative_draw_arguments(c);
         // Vertices past the [vertex data] read GL's default attribute values (0, 0, 0, 1).
         const std::size_t first = std::size_t(n[0]), count = std::size_t(n[1]);
         draw_patches(c, attributes_, first, count, n.size() > 2 ? int(n[2]) : 1, patch_vertices_);

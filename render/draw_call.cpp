@@ -34,8 +34,12 @@ RasterStats draw_stage_batch(const GeometryProgram* gs, const Batch& b, std::uin
                              const RasterState& s, const FragmentProgram& fs, Framebuffer& fb, const Parallel& p,
                              DrawStats& stats) {
   if (!gs) {
-    stats.triangles_generated += b.primitive_count();
-    return draw_batch(b, s, fs, fb, p);
+    if constexpr (Batch::kCorners > 3) {
+      throw std::logic_error("draw: adjacency primitives without a geometry shader");  // refused above
+    } else {
+      stats.triangles_generated += b.primitive_count();
+      return draw_batch(b, s, fs, fb, p);
+    }
   }
   GeometryOutput out;
   run_geometry(*gs, b, primitive_id, p, out);
@@ -157,6 +161,8 @@ DrawStats run_draw(const DrawProgram& program, const std::vector<VertexAttribute
       given = layout.point_mode ? 1 : layout.domain == TessDomain::Isolines ? 2 : 3;
     }
     check_geometry_input(*gs, given);
+  } else if (call.corners > 3) {
+    throw std::invalid_argument("draw: adjacency primitives need a geometry shader (GL: GL_INVALID_OPERATION)");
   }
   if (options.fragment_program) options.fragment_program(*program_fs);
   // --check: the fragment shader's outputs watched (check/check.h).
@@ -205,6 +211,8 @@ DrawStats run_draw(const DrawProgram& program, const std::vector<VertexAttribute
       stats.triangles_in += (indexed ? call.indices.size() : call.count) / std::size_t(call.corners);
       switch (call.corners) {
         case 1: draw_primitive_list<PointBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options, instance, gs, primitive_id); break;
+        case 6: draw_primitive_list<PrimitiveBatch<6>>(program, shaded, call, raster_state, *fs, fb, par, stats, options, instance, gs, primitive_id); break;
+        case 4: draw_primitive_list<PrimitiveBatch<4>>(program, shaded, call, raster_state, *fs, fb, par, stats, options, instance, gs, primitive_id); break;
         case 2: draw_primitive_list<LineBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options, instance, gs, primitive_id); break;
         default: draw_primitive_list<TriangleBatch>(program, shaded, call, raster_state, *fs, fb, par, stats, options, instance, gs, primitive_id);
       }

@@ -16,9 +16,38 @@ int primitive_corners(DrawMode mode) {
     case DrawMode::LineStrip:
     case DrawMode::LineLoop: return 2;
     case DrawMode::Points: return 1;
+    case DrawMode::LinesAdjacency:
+    case DrawMode::LineStripAdjacency: return 4;
+    case DrawMode::TrianglesAdjacency:
+    case DrawMode::TriangleStripAdjacency: return 6;
     default: return 3;
   }
 }
+
+namespace {
+
+// GL 4.5, 10.1.14, table 10.1: triangle i of a strip with adjacency, as the geometry shader
+// receives it (vertex 1, adjacent across 1-2, vertex 2, adjacent across 2-3, vertex 3, adjacent
+// across 3-1). Counted from 1 as the table counts: odd triangles swap their first two vertices
+// (the strip's winding kept); the first and last take their outer neighbours from the strip's ends.
+void append_triangle_strip_adjacency(const std::vector<std::uint32_t>& r, std::vector<std::uint32_t>& out) {
+  if (r.size() < 6) return;
+  const std::size_t triangles = (r.size() - 4) / 2;
+  for (std::size_t i = 0; i < triangles; ++i) {
+    const bool first = i == 0, last = i + 1 == triangles, odd = i % 2;
+    std::size_t v1 = 2 * i + 1, v2 = 2 * i + 3, v3 = 2 * i + 5;
+    std::size_t adj12 = first ? 2 : 2 * i - 1;
+    std::size_t adj23 = last ? 2 * i + 6 : 2 * i + 7;  // across the edge the next triangle shares
+    std::size_t adj31 = 2 * i + 4;
+    if (odd) {
+      std::swap(v1, v2);
+      std::swap(adj23, adj31);
+    }
+    for (const std::size_t k : {v1, adj12, v2, adj23, v3, adj31}) out.push_back(r[k - 1]);
+  }
+}
+
+}  // namespace
 
 std::vector<std::uint32_t> assemble(DrawMode mode, int patch_vertices,
                                     const std::vector<std::vector<std::uint32_t>>& runs) {
@@ -50,6 +79,13 @@ std::vector<std::uint32_t> assemble(DrawMode mode, int patch_vertices,
         if (mode == DrawMode::LineLoop && r.size() >= 2) out.insert(out.end(), {r.back(), r[0]});
         break;
       case DrawMode::Points: out.insert(out.end(), r.begin(), r.end()); break;
+      case DrawMode::LinesAdjacency: out.insert(out.end(), r.begin(), r.begin() + std::ptrdiff_t(r.size() / 4 * 4)); break;
+      case DrawMode::TrianglesAdjacency: out.insert(out.end(), r.begin(), r.begin() + std::ptrdiff_t(r.size() / 6 * 6)); break;
+      case DrawMode::LineStripAdjacency:
+        // GL 4.5, 10.1.12: segment i joins i+1 and i+2, with i and i+3 adjacent.
+        for (std::size_t i = 0; i + 3 < r.size(); ++i) out.insert(out.end(), {r[i], r[i + 1], r[i + 2], r[i + 3]});
+        break;
+      case DrawMode::TriangleStripAdjacency: append_triangle_strip_adjacency(r, out); break;
     }
   }
   return out;

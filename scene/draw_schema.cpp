@@ -342,18 +342,21 @@ DrawSetting read_draw(JsonObject o, const std::vector<BufferSetting>& buffers, c
   o.describe("shaders", "an object {vertex, tess_control, tess_evaluation, geometry, fragment, uniforms, textures}: this draw's own program");
   if (o.has("shaders")) d.shaders = read_draw_shaders(o, scene_shaders, base_dir);
   static constexpr const char* kModes =
-      "GL_PATCHES, GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_LINES, GL_LINE_STRIP, GL_LINE_LOOP or GL_POINTS";
+      "GL_PATCHES, GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_LINES, GL_LINE_STRIP, GL_LINE_LOOP, GL_POINTS, "
+      "or with a geometry shader GL_LINES_ADJACENCY, GL_LINE_STRIP_ADJACENCY, GL_TRIANGLES_ADJACENCY or "
+      "GL_TRIANGLE_STRIP_ADJACENCY";
   o.describe("mode", std::string("one of ") + kModes);
   const std::string mode = o.string("mode");
   static const std::pair<const char*, DrawMode> kNames[] = {
       {"GL_PATCHES", DrawMode::Patches},         {"GL_TRIANGLES", DrawMode::Triangles},
       {"GL_TRIANGLE_STRIP", DrawMode::TriangleStrip}, {"GL_TRIANGLE_FAN", DrawMode::TriangleFan},
       {"GL_LINES", DrawMode::Lines},             {"GL_LINE_STRIP", DrawMode::LineStrip},
-      {"GL_LINE_LOOP", DrawMode::LineLoop},      {"GL_POINTS", DrawMode::Points}};
+      {"GL_LINE_LOOP", DrawMode::LineLoop},      {"GL_POINTS", DrawMode::Points},
+      {"GL_LINES_ADJACENCY", DrawMode::LinesAdjacency}, {"GL_LINE_STRIP_ADJACENCY", DrawMode::LineStripAdjacency},
+      {"GL_TRIANGLES_ADJACENCY", DrawMode::TrianglesAdjacency},
+      {"GL_TRIANGLE_STRIP_ADJACENCY", DrawMode::TriangleStripAdjacency}};
   const auto named = std::find_if(std::begin(kNames), std::end(kNames), [&](const auto& n) { return mode == n.first; });
   if (named != std::end(kNames)) d.mode = named->second;
-  else if (mode.find("_ADJACENCY") != std::string::npos)
-    o.fail("mode", mode + " needs a geometry shader, which tessref does not run yet");
   else o.fail("mode", std::string("expected ") + kModes + ", got \"" + mode + "\"");
   if (o.has("patch_vertices")) {
     o.describe("patch_vertices", "GL_PATCH_VERTICES: 1..32 (GL_MAX_PATCH_VERTICES)");

@@ -146,7 +146,9 @@ struct BufferSetting {
 };
 
 // draws[].mode: the primitive type of glDraw*(mode, ...).
-enum class DrawMode { Patches, Triangles, TriangleStrip, TriangleFan, Lines, LineStrip, LineLoop, Points };
+enum class DrawMode { Patches, Triangles, TriangleStrip, TriangleFan, Lines, LineStrip, LineLoop, Points,
+                      // Only for a geometry shader, which receives the adjacent vertices too.
+                      LinesAdjacency, LineStripAdjacency, TrianglesAdjacency, TriangleStripAdjacency };
 
 // draws[].vertex_arrays.INPUT: a vertex shader input (its name, or a location as digits) and the
 // array that feeds it; the location is resolved against the program when drawn.

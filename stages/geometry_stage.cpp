@@ -85,6 +85,8 @@ void run_geometry(const GeometryProgram& gs, const PrimitiveBatch<Corners>& in, 
 
 template void run_geometry<1>(const GeometryProgram&, const PointBatch&, std::uint32_t, const Parallel&, GeometryOutput&);
 template void run_geometry<2>(const GeometryProgram&, const LineBatch&, std::uint32_t, const Parallel&, GeometryOutput&);
+template void run_geometry<4>(const GeometryProgram&, const PrimitiveBatch<4>&, std::uint32_t, const Parallel&, GeometryOutput&);
+template void run_geometry<6>(const GeometryProgram&, const PrimitiveBatch<6>&, std::uint32_t, const Parallel&, GeometryOutput&);
 template void run_geometry<3>(const GeometryProgram&, const TriangleBatch&, std::uint32_t, const Parallel&, GeometryOutput&);
 
 }  // namespace tessref

@@ -107,6 +107,16 @@ TEST(DrawsScene, AssemblesLineStripsLoopsAndPointsAsGlDoes) {
             (std::vector<std::uint32_t>{0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 4}));
   EXPECT_EQ(assemble(DrawMode::Lines, 3, runs), (std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5}));
   EXPECT_EQ(assemble(DrawMode::Points, 3, runs), (std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5, 6, 7}));
+  // With adjacency (GL 4.5, 10.1.11 to 10.1.14), for a geometry shader: lines take 4 vertices,
+  // triangles 6, in the shader's order (vertex, adjacent, vertex, adjacent, vertex, adjacent).
+  EXPECT_EQ(assemble(DrawMode::LineStripAdjacency, 3, {{0, 1, 2, 3, 4}}), (std::vector<std::uint32_t>{0, 1, 2, 3, 1, 2, 3, 4}));
+  EXPECT_EQ(assemble(DrawMode::LinesAdjacency, 3, {{0, 1, 2, 3, 4}}), (std::vector<std::uint32_t>{0, 1, 2, 3}));
+  EXPECT_EQ(assemble(DrawMode::TrianglesAdjacency, 3, {{0, 1, 2, 3, 4, 5, 6}}), (std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5}));
+  // Table 10.1's strip of 12 vertices (4 triangles: first, odd, even, last odd) and of 6 (only).
+  EXPECT_EQ(assemble(DrawMode::TriangleStripAdjacency, 3, {{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}}),
+            (std::vector<std::uint32_t>{0, 1, 2, 6, 4, 3, 4, 0, 2, 5, 6, 8, 4, 2, 6, 10, 8, 7, 8, 4, 6, 9, 10, 11}));
+  EXPECT_EQ(assemble(DrawMode::TriangleStripAdjacency, 3, {{0, 1, 2, 3, 4, 5}}), (std::vector<std::uint32_t>{0, 1, 2, 5, 4, 3}));
+  EXPECT_EQ(primitive_corners(DrawMode::TriangleStripAdjacency), 6);
   EXPECT_EQ(primitive_corners(DrawMode::LineLoop), 2);
   EXPECT_EQ(primitive_corners(DrawMode::Points), 1);
   EXPECT_EQ(primitive_corners(DrawMode::TriangleFan), 3);
@@ -204,7 +214,8 @@ TEST(DrawsScene, BadDrawsNameTheKeyAndTheRule) {
   EXPECT_NE(error_of(f, {"draws.0.basevertex=1"}).find("glDrawArrays* takes no basevertex"), std::string::npos);
   EXPECT_NE(error_of(f, {"draws.0.polygon_mode=\"GL_WIRE\""}).find("draws.0.polygon_mode: expected one of GL_FILL, GL_LINE, GL_POINT, got a string"),
             std::string::npos);
-  EXPECT_NE(error_of(f, {"draws.0.mode=\"GL_LINES_ADJACENCY\""}).find("needs a geometry shader"), std::string::npos);
+  const std::string adjacency = error_of("two_draws_depth.json", {"draws.0.mode=\"GL_LINES_ADJACENCY\""});
+  EXPECT_NE(adjacency.find("adjacency primitives need a geometry shader"), std::string::npos) << adjacency;
   EXPECT_NE(error_of(f, {"draws.0.viewport=[0, 0, -1, 8]"}).find("draws.0.viewport: glViewport refuses a negative width"),
             std::string::npos);
   EXPECT_NE(error_of(f, {"draws.0.viewport=[0, 0, 8]"}).find("draws.0.viewport: expected [x, y, width, height] as 4 integers"),

@@ -262,25 +262,26 @@ void main() {
 // ---------------------------------------------------------------------------------------------
 // Unsupported constructs are named
 
-TEST(GlslErrors, GeometryShadersAreSkippedOrRefusedByName) {
-  const char* geometry = R"(layout(triangles) in;
+// A geometry shader runs in shader tests: a pass-through one draws the rectangle, one that
+// emits no complete primitive draws nothing.
+TEST(GlslErrors, GeometryShadersRunInShaderTests) {
+  const char* through = R"([geometry shader]
+layout(triangles) in;
 layout(triangle_strip, max_vertices = 3) out;
-void main() { EmitVertex(); }
+void main() { for (int i = 0; i < 3; ++i) { gl_Position = gl_in[i].gl_Position; EmitVertex(); } }
+
 )";
-  const std::string text = std::string(kRequire) + kVertex + "[geometry shader]\n" + geometry + "\n" + kGreen +
-                           "[test]\ndraw rect -1 -1 2 2\n";
-  const ShaderTestResult r = run_text(text, "geometry.shader_test");
-  EXPECT_EQ(r.verdict, Verdict::Skip);
-  EXPECT_EQ(r.reason, "a geometry shader (tessref has no geometry stage)");
-  // The front end refuses it by name, at the section's first line.
-  try {
-    shader::compile_program({{shader::Stage::Vertex, "g.shader_test", 5, "void main() { gl_Position = vec4(0.0); }\n"},
-                             {shader::Stage::Geometry, "g.shader_test", 9, geometry}});
-    ADD_FAILURE() << "a geometry shader compiled";
-  } catch (const shader::CompileError& e) {
-    EXPECT_STREQ(e.what(), "g.shader_test:9: error: geometry shaders are not supported (tessref runs vertex, "
-                           "tessellation and fragment shaders)");
-  }
+  const char* probe = "[test]\nclear color 0.2 0.2 0.2 0.2\nclear\ndraw rect -1 -1 2 2\nprobe all rgba 0.0 1.0 0.0 1.0\n";
+  EXPECT_EQ(run_text(std::string(kRequire) + kVertex + through + kGreen + probe, "through.shader_test").verdict, Verdict::Pass);
+  const char* single = R"([geometry shader]
+layout(triangles) in;
+layout(triangle_strip, max_vertices = 3) out;
+void main() { gl_Position = gl_in[0].gl_Position; EmitVertex(); }
+
+)";
+  const ShaderTestResult r = run_text(std::string(kRequire) + kVertex + single + kGreen + probe, "single.shader_test");
+  EXPECT_EQ(r.verdict, Verdict::Fail);
+  EXPECT_NE(r.reason.find("expected (0, 255, 0, 255), observed (51, 51, 51, 51)"), std::string::npos) << r.reason;
 }
 
 TEST(GlslErrors, CompatibilityStateIsRefusedByName) {
@@ -790,9 +791,9 @@ void main() {
 )" + kGreen + kFourPatches + "[test]\nuniform int n 7\npatch parameter vertices 4\ndraw arrays GL_PATCHES 0 16\n";
   const std::string syntax_text = std::string(kRequire) + kVertex + kControl + kEvaluation +
                                   "[fragment shader]\nvoid main() {\n  gl_FragColor = vec4(1.0) +;\n}\n\n" + kDrawGreen;
-  const std::string geometry_text = std::string(kRequire) + kVertex +
-                                    "[geometry shader]\nlayout(triangles) in;\nlayout(triangle_strip, max_vertices = 3) "
-                                    "out;\nvoid main() { EmitVertex(); }\n\n" + kGreen + "[test]\ndraw rect -1 -1 2 2\n";
+  const std::string geometry_text = std::string(kRequire) + kVertex + kGreen +
+                                    "[compute shader]\n#version 430\nlayout(local_size_x = 1) in;\nvoid main() {}\n\n"
+                                    "[test]\ncompute 1 1 1\n";
   const auto good = dir.write("good.shader_test", good_text);
   const auto loop = dir.write("loop.shader_test", loop_text);
   const auto syntax = dir.write("syntax.shader_test", syntax_text);
@@ -806,7 +807,7 @@ void main() {
   EXPECT_THAT(r.output, HasSubstr("instruction budget of 5000 exceeded"));
   EXPECT_THAT(r.output, HasSubstr("fail: " + syntax.string() + ": " + syntax.string() + ":" +
                                   str(line_of(syntax_text, "vec4(1.0) +;")) + ": error: "));
-  EXPECT_THAT(r.output, HasSubstr("skip: " + geometry.string() + ": a geometry shader (tessref has no geometry stage)\n"));
+  EXPECT_THAT(r.output, HasSubstr("skip: " + geometry.string() + ": a compute shader\n"));
   EXPECT_THAT(r.output, HasSubstr("1 passed, 2 failed, 1 skipped\n"));
   // Alone, the good file passes with exit code 0.
   const CliRun ok = run_cli("shader-test " + good.string());

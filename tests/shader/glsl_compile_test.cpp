@@ -1,6 +1,7 @@
 // The GLSL front-end: compile + link + legalize, the source rewrites, the error messages, and
 // the project's own GLSL twins.
 #include "shader/glsl_compile.h"
+#include "shader/spirv_module.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -490,16 +491,24 @@ TEST(GlslCompile, TessellationWithoutVertexShaderIsALinkError) {
             "the program");
 }
 
-TEST(GlslCompile, GeometryShadersAreRefused) {
+TEST(GlslCompile, GeometryShadersCompileAndNeedAVertexShader) {
   const char* geometry = R"(#version 150
-layout(triangles) in;
+layout(triangles, invocations = 2) in;
 layout(triangle_strip, max_vertices = 3) out;
 void main() { EmitVertex(); }
 )";
-  EXPECT_EQ(error_of({{Stage::Vertex, "g.shader_test", 4, kPassThroughVertex},
-                      {Stage::Geometry, "g.shader_test", 9, geometry}}),
-            "g.shader_test:9: error: geometry shaders are not supported (tessref runs vertex, "
-            "tessellation and fragment shaders)");
+  const CompiledProgram program = compile_program({{Stage::Vertex, "g.shader_test", 4, kPassThroughVertex},
+                                                   {Stage::Geometry, "g.shader_test", 9, geometry}});
+  ASSERT_EQ(program.stages.size(), 2u);
+  EXPECT_EQ(program.stages[1].stage, Stage::Geometry);
+  const auto m = ::tessref::shader::read_module(program.stages[1].spirv, {});
+  EXPECT_EQ(m.modes.input_vertices, 3);
+  EXPECT_EQ(m.modes.output_vertices, 3);
+  EXPECT_EQ(m.modes.invocations, 2);
+  EXPECT_EQ(m.modes.output_primitive, std::uint32_t(spv::ExecutionModeOutputTriangleStrip));
+  // GL 4.5 section 7.3: a program with a geometry shader needs a vertex shader.
+  EXPECT_EQ(error_of({{Stage::Geometry, "g.shader_test", 9, geometry}}),
+            "g.shader_test:9: error: link error: a geometry shader needs a vertex shader in the program");
 }
 
 // GLSL 4.50 section 4.4.2.1: more output patch vertices than GL_MAX_PATCH_VERTICES is a compile
