@@ -8,7 +8,10 @@
 # tests/data/piglit/llvmpipe_verdicts.txt, or to the file given with -o. Prints one verdict line
 # per file and a closing count on stdout.
 #
-#   scripts/piglit-llvmpipe.sh [-o FILE]
+#   scripts/piglit-llvmpipe.sh [-o FILE] [--suite DIR --section NAME]
+#
+# --suite DIR --section NAME: the files under tests/spec/DIR that have a `[NAME]` section instead
+# (e.g. --suite glsl-1.50/execution/geometry --section 'geometry shader'), paths relative to DIR.
 #
 # Verdicts: pass, fail, skip, warn (shader_runner's own), timeout (over 60 s), crash (no
 # PIGLIT result line). Installs libwaffle-1-0, libegl-mesa0 and libgl1-mesa-dri if missing (as
@@ -27,18 +30,20 @@ die() {
 }
 usage() { sed -n '2,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "$0"; }
 
+suite=arb_tessellation_shader
+section="tessellation evaluation shader"
 while [ $# -gt 0 ]; do
   case $1 in
-    -o)
-      [ $# -ge 2 ] || die "-o needs a file name"
-      out=$2
+    -o | --suite | --section)
+      [ $# -ge 2 ] || die "$1 needs a value"
+      case $1 in -o) out=$2 ;; --suite) suite=$2 ;; *) section=$2 ;; esac
       shift 2
       ;;
     -h | --help)
       usage
       exit 0
       ;;
-    *) die "unknown argument '$1' (usage: $0 [-o FILE])" ;;
+    *) die "unknown argument '$1' (usage: $0 [-o FILE] [--suite DIR --section NAME])" ;;
   esac
 done
 out_dir=$(dirname "$out")
@@ -63,7 +68,7 @@ as_root() {
 
 # The test files, as piglit-tess.sh runs them.
 spec=$("$root/scripts/fetch-piglit.sh" | tail -n1) || die "scripts/fetch-piglit.sh failed"
-tess=$spec/arb_tessellation_shader
+tess=$spec/$suite
 [ -d "$tess" ] || die "$tess not found (fetch-piglit.sh printed '$spec')"
 tests_version=$(cat "$spec/../../version") || die "no version file beside $spec"
 
@@ -109,8 +114,8 @@ mesa_pkg=$(dpkg-query -W -f='${Version}' libgl1-mesa-dri)
 log "$renderer, GL $gl_version, libgl1-mesa-dri $mesa_pkg"
 
 mapfile -t files < <(cd "$tess" && find . -name '*.shader_test' -type f -print0 |
-  xargs -0 grep -lF '[tessellation evaluation shader]' | sed 's|^\./||' | LC_ALL=C sort)
-[ ${#files[@]} -gt 0 ] || die "no .shader_test with a [tessellation evaluation shader] in $tess"
+  xargs -0 grep -lF "[$section]" | sed 's|^\./||' | LC_ALL=C sort)
+[ ${#files[@]} -gt 0 ] || die "no .shader_test with a [$section] in $tess"
 
 start=$SECONDS
 results=$work/results
@@ -137,14 +142,14 @@ done
 
 tmp=$(mktemp "$out_dir/.llvmpipe_verdicts.XXXXXX")
 {
-  echo "# Mesa llvmpipe's verdicts on piglit's arb_tessellation_shader .shader_test files that have a"
-  echo "# [tessellation evaluation shader] section: piglit's shader_runner FILE -auto -fbo on"
+  echo "# Mesa llvmpipe's verdicts on piglit's $suite .shader_test files that have a"
+  echo "# [$section] section: piglit's shader_runner FILE -auto -fbo on"
   echo "# surfaceless EGL, $per_file_timeout s timeout per file. Written by scripts/piglit-llvmpipe.sh; do not edit."
   echo "# Date: $(date -u +%Y-%m-%d)"
   echo "# piglit: Debian package piglit $version"
   echo "# Mesa: libgl1-mesa-dri $mesa_pkg; GL_RENDERER = $renderer; GL_VERSION = $gl_version"
   echo "# Result: ${#files[@]} files: $summary"
-  echo "# Format: path relative to tests/spec/arb_tessellation_shader/, verdict"
+  echo "# Format: path relative to tests/spec/$suite/, verdict"
   cat "$results"
 } > "$tmp"
 chmod 644 "$tmp"

@@ -10,6 +10,9 @@
 # --suite DIR       another folder under tests/spec/ instead (e.g.
 #                   arb_enhanced_layouts/execution/component-layout): its files with a
 #                   tessellation control or evaluation shader.
+# --section NAME    with --suite: its files with a `[NAME]` section instead (e.g.
+#                   --suite glsl-1.50/execution/geometry --section 'geometry shader').
+# --verdicts FILE   llvmpipe's verdicts for --table (default tests/data/piglit/llvmpipe_verdicts.txt).
 # --table FILE      also writes a Markdown table: file, tessref's verdict and reason, and
 #                   llvmpipe's verdict from tests/data/piglit/llvmpipe_verdicts.txt (measured by
 #                   scripts/piglit-llvmpipe.sh).
@@ -35,12 +38,20 @@ table=""
 expect=""
 expect_fail=()
 suite=""
+section=""
 pass_through=()
 while [ $# -gt 0 ]; do
   case $1 in
-    --table | --expect-pass | --suite | --expect-fail)
+    --table | --expect-pass | --suite | --expect-fail | --section | --verdicts)
       [ $# -ge 2 ] || die "$1 needs a value"
-      case $1 in --table) table=$2 ;; --suite) suite=$2 ;; --expect-fail) expect_fail+=("$2") ;; *) expect=$2 ;; esac
+      case $1 in
+        --table) table=$2 ;;
+        --suite) suite=$2 ;;
+        --section) section=$2 ;;
+        --verdicts) verdicts_file=$2 ;;
+        --expect-fail) expect_fail+=("$2") ;;
+        *) expect=$2 ;;
+      esac
       shift 2
       ;;
     --table=*) table=${1#--table=} && shift ;;
@@ -55,6 +66,7 @@ done
 if [ -n "$expect" ] && ! [[ $expect =~ ^[0-9]+$ ]]; then
   die "--expect-pass needs a count, not '$expect'"
 fi
+[[ $verdicts_file == /* ]] || verdicts_file=$PWD/$verdicts_file
 if [ -n "$table" ]; then
   [ -d "$(dirname "$table")" ] || die "--table $table: folder $(dirname "$table") does not exist"
   table=$(cd "$(dirname "$table")" && pwd)/$(basename "$table")
@@ -70,6 +82,7 @@ tess=$spec/${suite:-arb_tessellation_shader}
 [ -d "$tess" ] || die "$tess not found (fetch-piglit.sh printed '$spec')"
 pattern='\[tessellation evaluation shader\]'
 [ -z "$suite" ] || pattern='\[tessellation (control|evaluation) shader\]'
+[ -z "$section" ] || pattern="\\[$section\\]"
 
 cd "$tess"
 mapfile -t files < <(find . -name '*.shader_test' -type f -print0 |
