@@ -10,6 +10,7 @@
 #include "inspect/fragment_tags.h"
 #include "inspect/inspect_pixel.h"
 #include "inspect/pixel_recorder.h"
+#include "inspect/tagged_draw.h"
 #include "render/draw_scene.h"
 #include "render/initial_images.h"
 #include "render/render.h"
@@ -98,6 +99,7 @@ std::optional<std::size_t> replay(const Scene& scene, const Framebuffer& initial
 
 PixelInspectResult inspect_draws_pixel(const Scene& scene, int x, int y, const Parallel& parallel, bool trace) {
   PixelInspectResult r = pixel_result_for(scene, x, y);
+  refuse_geometry_shaders(scene, "--pixel");
   r.program = "glsl, each draw's program (executor)";
   // The fragment shaders' sources, per draw, for --trace.
   std::vector<std::vector<shader::ShaderSource>> sources(scene.draws.size());

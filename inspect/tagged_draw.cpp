@@ -8,6 +8,16 @@
 
 namespace tessref {
 
+void refuse_geometry_shaders(const Scene& scene, const char* option) {
+  std::string key;
+  if (scene.shaders.program == ShaderProgram::Custom && !scene.shaders.geometry.empty()) key = "shaders.geometry";
+  for (const DrawSetting& d : scene.draws)
+    if (key.empty() && d.shaders && !d.shaders->geometry.empty()) key = d.key + ".shaders.geometry";
+  if (!key.empty())
+    throw InputError(std::string(option) + ": " + key + ": the program has a geometry shader, and inspect does not "
+                     "follow fragments through one yet (render and verify draw it)");
+}
+
 DrawStats draw_with_tagged_redraw(const Scene& scene, const Mesh& mesh, const Parallel& parallel,
                                   Framebuffer& fb, const TaggedRedraw& redraw, const char* option) {
   const auto no_patches = [&] {
@@ -15,6 +25,7 @@ DrawStats draw_with_tagged_redraw(const Scene& scene, const Mesh& mesh, const Pa
                       "there are no patches to name");
   };
   if (scene.shaders.program == ShaderProgram::Builtin && !scene.tessellation.enabled) throw no_patches();
+  refuse_geometry_shaders(scene, option);
   Framebuffer tagged_fb;
   tagged_fb.reset(scene.width, scene.height, scene.background, parallel);
   bool tessellated = false;

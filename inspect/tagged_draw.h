@@ -24,6 +24,10 @@ struct TaggedRedraw {
   std::function<void()> after_chunk;
 };
 
+// InputError naming `option` when a program of the scene has a geometry shader: the redraws tag
+// the evaluation or vertex stage's primitives, and do not follow fragments through one yet.
+void refuse_geometry_shaders(const Scene& scene, const char* option);
+
 // Draws the scene into fb as render_scene does (fb then holds the image `render` writes) and
 // redraws every chunk tagged into a framebuffer of its own. InputError (naming `option`) when the
 // scene does not tessellate: without patches there is nothing to tag.

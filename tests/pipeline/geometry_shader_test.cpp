@@ -10,6 +10,7 @@
 #include "mesh/mesh_source.h"
 #include "render/render.h"
 #include "scene/scene_loader.h"
+#include "test_util.h"
 
 namespace tessref {
 namespace {
@@ -88,6 +89,17 @@ TEST(GeometryShader, ADrawOfOtherPrimitivesIsRefused) {
     EXPECT_NE(std::string(e.what()).find("the geometry shader takes points; the draw hands it triangles"), std::string::npos)
         << e.what();
   }
+}
+
+// inspect's fragment views tag the evaluation stage's triangles: through a geometry shader they
+// would name the wrong ones, so they refuse (exit 2), naming the key.
+TEST(GeometryShader, InspectsFragmentViewsRefuseIt) {
+  const test::CliRun r = test::run_cli("inspect " + std::string(TESSREF_SOURCE_DIR) + "/scenes/gs_facets.json --pixel 300,500");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--pixel: shaders.geometry: the program has a geometry shader"), std::string::npos) << r.output;
+  const test::CliRun d = test::run_cli("inspect " + kDraws + "geometry_hedgehog.json --pixel 100,100");
+  EXPECT_EQ(d.exit_code, 2) << d.output;
+  EXPECT_NE(d.output.find("--pixel: draws.1.shaders.geometry: the program has a geometry shader"), std::string::npos) << d.output;
 }
 
 }  // namespace
