@@ -15,7 +15,7 @@ from gl_state import CARRIED_CAPS, HARMLESS_CAPS
 from import_error import ImportFailure
 from texture_upload import level_data
 
-STAGE_FILES = {"vertex": "vert", "tess_control": "tesc", "tess_evaluation": "tese", "fragment": "frag"}
+STAGE_FILES = {"vertex": "vert", "tess_control": "tesc", "tess_evaluation": "tese", "geometry": "geom", "fragment": "frag"}
 COLOR_FORMATS = {"GL_RGBA8", "GL_SRGB8_ALPHA8", "GL_RGBA16F", "GL_RGBA32F"}
 DEPTH_FORMATS = {"GL_DEPTH_COMPONENT24": "GL_DEPTH_COMPONENT24", "GL_DEPTH24_STENCIL8": "GL_DEPTH_COMPONENT24",
                  "GL_DEPTH_COMPONENT32F": "GL_DEPTH_COMPONENT32F", "GL_DEPTH32F_STENCIL8": "GL_DEPTH_COMPONENT32F"}

@@ -20,10 +20,12 @@ from glsl_declarations import Declarations, with_block_binding
 from import_error import ImportFailure
 
 STAGES = (("vertex", "Vertex"), ("tess_control", "Tess_Control"), ("tess_evaluation", "Tess_Eval"),
-          ("fragment", "Fragment"))
-STAGE_FILES = {"vertex": "vert", "tess_control": "tesc", "tess_evaluation": "tese", "fragment": "frag"}
+          ("geometry", "Geometry"), ("fragment", "Fragment"))
+STAGE_FILES = {"vertex": "vert", "tess_control": "tesc", "tess_evaluation": "tese", "geometry": "geom", "fragment": "frag"}
 _TOPOLOGY = {"PointList": "GL_POINTS", "LineList": "GL_LINES", "LineStrip": "GL_LINE_STRIP", "LineLoop": "GL_LINE_LOOP",
-             "TriangleList": "GL_TRIANGLES", "TriangleStrip": "GL_TRIANGLE_STRIP", "TriangleFan": "GL_TRIANGLE_FAN"}
+             "TriangleList": "GL_TRIANGLES", "TriangleStrip": "GL_TRIANGLE_STRIP", "TriangleFan": "GL_TRIANGLE_FAN",
+             "LineList_Adj": "GL_LINES_ADJACENCY", "LineStrip_Adj": "GL_LINE_STRIP_ADJACENCY",
+             "TriangleList_Adj": "GL_TRIANGLES_ADJACENCY", "TriangleStrip_Adj": "GL_TRIANGLE_STRIP_ADJACENCY"}
 _COMPARE = {"Never": "GL_NEVER", "AlwaysTrue": "GL_ALWAYS", "Less": "GL_LESS", "LessEqual": "GL_LEQUAL",
             "Greater": "GL_GREATER", "GreaterEqual": "GL_GEQUAL", "Equal": "GL_EQUAL", "NotEqual": "GL_NOTEQUAL"}
 _ADDRESS = {"Wrap": "repeat", "Mirror": "mirrored_repeat", "MirrorOnce": "mirror_clamp_to_edge",
@@ -179,9 +181,6 @@ class _Reader:
                 return None
             sources[stage] = files[0].contents
             reflections[stage] = refl
-        if pipe.GetShaderReflection(rd.ShaderStage.Geometry) is not None:
-            frame.note(event, "the program has a geometry shader, which tessref does not run yet: not carried")
-            return None
         declarations = Declarations(sources.values())
         shaders, uniforms, textures = {}, {}, {}
         ranges = {}
@@ -243,7 +242,7 @@ class _Reader:
     @staticmethod
     def _stage_state(gl, stage):
         return {"vertex": gl.vertexShader, "tess_control": gl.tessControlShader,
-                "tess_evaluation": gl.tessEvalShader, "fragment": gl.fragmentShader}[stage]
+                "tess_evaluation": gl.tessEvalShader, "geometry": gl.geometryShader, "fragment": gl.fragmentShader}[stage]
 
     def _label(self, resource_id):
         r = self.resources.get(_rid(resource_id))
@@ -644,7 +643,9 @@ def save_tes_outputs(rd, ctl, event, out_dir):
     ctl.SetFrameEvent(event, True)
     pipe = ctl.GetPipelineState()
     tes = pipe.GetShaderReflection(rd.ShaderStage.Tess_Eval)
-    if tes is None:
+    # With a geometry shader, RenderDoc's post-transform data is that shader's output, not the
+    # evaluation stage's that verify --gpu compares.
+    if tes is None or pipe.GetShaderReflection(rd.ShaderStage.Geometry) is not None:
         return []
     action = _action(ctl, event)
     chunks, counts, stride = [], [], None

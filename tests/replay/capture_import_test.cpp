@@ -285,6 +285,18 @@ TEST_F(ApitraceImport, IndirectAndMultiDrawsBecomeTheirCalls) {
   EXPECT_EQ(pixels_over_one_step(tmp.path() / "t.png", app_image("indirect")), 0);
 }
 
+// A program with a geometry shader is carried (shaders/*.geom) and renders the application's image.
+TEST_F(ApitraceImport, GeometryShadersAreCarried) {
+  const fs::path t = trace("geometry", "--geometry");
+  TempDir tmp;
+  const fs::path out = tmp.path() / "imported";
+  ASSERT_EQ(run_cli("import --quiet '" + t.string() + "' --out '" + out.string() + "'").exit_code, 0);
+  const nlohmann::json scene = read_json(out / "scene.json");
+  EXPECT_TRUE(scene.at("draws").at(2).at("shaders").contains("geometry")) << scene.at("draws").at(2).dump();
+  ASSERT_EQ(run_cli("render '" + (out / "scene.json").string() + "' -o '" + (tmp.path() / "t.png").string() + "'").exit_code, 0);
+  EXPECT_EQ(pixels_over_one_step(tmp.path() / "t.png", app_image("geometry")), 0);
+}
+
 TEST_F(ApitraceImport, AnExistingFolderIsNotOverwritten) {
   const fs::path t = trace("frame");
   TempDir tmp;
@@ -363,6 +375,18 @@ TEST_F(RenderDocImport, IndirectAndMultiDrawsAreCarried) {
   EXPECT_EQ(read_json(out / "scene.json").at("draws").size(), 4u);
   ASSERT_EQ(run_cli("render '" + (out / "scene.json").string() + "' -o '" + (tmp.path() / "t.png").string() + "'").exit_code, 0);
   EXPECT_EQ(pixels_over_one_step(tmp.path() / "t.png", folder() / "indirect_rdc.ppm"), 0);
+}
+
+TEST_F(RenderDocImport, GeometryShadersAreCarried) {
+  const fs::path rdc = capture("geometry", "--geometry");
+  TempDir tmp;
+  const fs::path out = tmp.path() / "imported";
+  ASSERT_EQ(run_cli("import '" + rdc.string() + "' --out '" + out.string() + "'").exit_code, 0);
+  EXPECT_TRUE(read_json(out / "scene.json").at("draws").at(2).at("shaders").contains("geometry"));
+  // RenderDoc's post-transform data is the geometry shader's then: no gpu_tes.bin to compare.
+  EXPECT_FALSE(fs::exists(out / "gpu_tes.bin"));
+  ASSERT_EQ(run_cli("render '" + (out / "scene.json").string() + "' -o '" + (tmp.path() / "t.png").string() + "'").exit_code, 0);
+  EXPECT_EQ(pixels_over_one_step(tmp.path() / "t.png", folder() / "geometry_rdc.ppm"), 0);
 }
 
 TEST_F(RenderDocImport, BothImportersGiveTheSameScene) {

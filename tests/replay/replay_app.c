@@ -2,7 +2,7 @@
  * frame into a framebuffer object over EGL surfaceless, then writes what glReadPixels gives to a
  * binary PPM (top row first).
  *
- *   replay_app [--untessellated | --gles | --label NAME | --compute | --two-frames | --indirect] OUT.ppm
+ *   replay_app [--untessellated | --gles | --label NAME | --compute | --two-frames | --indirect | --geometry] OUT.ppm
  *
  * The frame, in order:
  *   1. glClear of colour and depth;
@@ -22,7 +22,8 @@
  * what follows: the last frame then starts from what the earlier one left, colour and depth.
  * --indirect issues the gem draw as glDrawElementsIndirect (its command in a GL_DRAW_INDIRECT_BUFFER)
  * and the bicubic patch as glMultiDrawArrays of two commands (the second draws it again, hidden by
- * the depth test): the same image.
+ * the depth test): the same image. --geometry draws the bicubic patch through a geometry shader that
+ * gives each tessellated triangle the mean of its corners' normals (a faceted patch).
  *
  * Under RenderDoc (renderdoccmd capture) the frame is bracketed by the in-app API's
  * StartFrameCapture / EndFrameCapture, the only way RenderDoc captures an application without a
@@ -62,17 +63,22 @@ static GLuint compile(GLenum stage, const char* source) {
   return s;
 }
 
-static GLuint link(const char* vs, const char* tcs, const char* tes, const char* fs) {
+static GLuint link_with(const char* vs, const char* tcs, const char* tes, const char* gs, const char* fs) {
   GLuint p = glCreateProgram();
   glAttachShader(p, compile(GL_VERTEX_SHADER, vs));
   if (tcs) glAttachShader(p, compile(GL_TESS_CONTROL_SHADER, tcs));
   if (tes) glAttachShader(p, compile(GL_TESS_EVALUATION_SHADER, tes));
+  if (gs) glAttachShader(p, compile(GL_GEOMETRY_SHADER, gs));
   glAttachShader(p, compile(GL_FRAGMENT_SHADER, fs));
   glLinkProgram(p);
   GLint ok = 0;
   glGetProgramiv(p, GL_LINK_STATUS, &ok);
   if (!ok) fail("a program did not link");
   return p;
+}
+
+static GLuint link(const char* vs, const char* tcs, const char* tes, const char* fs) {
+  return link_with(vs, tcs, tes, NULL, fs);
 }
 
 /* ---- shaders ---- */
@@ -227,6 +233,25 @@ static const char* kBicubicTes =
     "  f_normal = normalize(cross(pu, pv));\n"
     "  gl_Position = u_mvp * vec4(p, 1.0);\n"
     "}\n";
+static const char* kBicubicGs =
+    "#version 450 core\n"
+    "layout(triangles) in;\n"
+    "layout(triangle_strip, max_vertices = 3) out;\n"
+    "in vec3 f_normal[];\n"
+    "out vec3 g_normal;\n"
+    "void main() {\n"
+    "  vec3 n = f_normal[0] + f_normal[1] + f_normal[2];\n"
+    "  for (int i = 0; i < 3; ++i) {\n"
+    "    gl_Position = gl_in[i].gl_Position;\n"
+    "    g_normal = n;\n"
+    "    EmitVertex();\n"
+    "  }\n"
+    "}\n";
+static const char* kBicubicGsFs =
+    "#version 450 core\n"
+    "in vec3 g_normal;\n"
+    "layout(location = 0) out vec4 frag;\n"
+    "void main() { frag = vec4(normalize(g_normal) * 0.5 + 0.5, 1.0); }\n";
 static const char* kBicubicFs =
     "#version 450 core\n"
     "in vec3 f_normal;\n"
@@ -309,7 +334,7 @@ static int gles_frame(EGLDisplay display, const char* out) {
 }
 
 int main(int argc, char** argv) {
-  int untessellated = 0, gles = 0, compute = 0, two_frames = 0, indirect = 0;
+  int untessellated = 0, gles = 0, compute = 0, two_frames = 0, indirect = 0, geometry = 0;
   const char* label = NULL;
   int arg = 1;
   for (; arg < argc - 1; ++arg) {
@@ -318,11 +343,12 @@ int main(int argc, char** argv) {
     else if (strcmp(argv[arg], "--compute") == 0) compute = 1;
     else if (strcmp(argv[arg], "--two-frames") == 0) two_frames = 1;
     else if (strcmp(argv[arg], "--indirect") == 0) indirect = 1;
+    else if (strcmp(argv[arg], "--geometry") == 0) geometry = 1;
     else if (strcmp(argv[arg], "--label") == 0 && arg + 1 < argc - 1) label = argv[++arg];
     else break;
   }
   if (arg != argc - 1) {
-    fprintf(stderr, "usage: replay_app [--untessellated | --gles | --label NAME | --compute | --two-frames | --indirect] "
+    fprintf(stderr, "usage: replay_app [--untessellated | --gles | --label NAME | --compute | --two-frames | --indirect | --geometry] "
                     "OUT.ppm\n");
     return 2;
   }
@@ -377,7 +403,8 @@ int main(int argc, char** argv) {
       if (type == GL_VERTEX_SHADER) glObjectLabel(GL_SHADER, shaders[i], -1, label);
     }
   }
-  const GLuint bicubic_program = link(kBicubicVs, kBicubicTcs, kBicubicTes, kBicubicFs);
+  const GLuint bicubic_program = geometry ? link_with(kBicubicVs, kBicubicTcs, kBicubicTes, kBicubicGs, kBicubicGsFs)
+                                          : link(kBicubicVs, kBicubicTcs, kBicubicTes, kBicubicFs);
 
   /* Ground plane. */
   const float plane[] = {-1.6f, -1.0f, -1.2f, 1.6f, -1.0f, -1.2f, -1.6f, 1.0f, 1.4f, 1.6f, 1.0f, 1.4f};
