@@ -55,18 +55,16 @@ void run_geometry(const GeometryProgram& gs, const PrimitiveBatch<Corners>& in, 
   check_geometry_input(gs, Corners);
   const std::size_t primitives = in.primitive_count();
   const std::size_t tasks = (primitives + kTaskPrimitives - 1) / kTaskPrimitives;
+  // Each task writes its own slot; the slots are joined in order below.
   std::vector<GeometryOutput> parts(tasks);
-  std::vector<std::vector<const float*>> corners(tasks);
   parallel.for_each(tasks, [&](std::size_t t) {
     const std::size_t first = t * kTaskPrimitives, n = std::min(kTaskPrimitives, primitives - first);
-    std::vector<const float*>& c = corners[t];
-    c.resize(n * Corners);
+    std::vector<const float*> corners(n * Corners);
     for (std::size_t p = 0; p < n; ++p)
-      for (int k = 0; k < Corners; ++k) c[p * Corners + std::size_t(k)] = in.vertex_data(in.vertex_index(first + p, k));
-    GeometryOutput& o = parts[t];
-    o.triangles.num_varyings = o.lines.num_varyings = o.points.num_varyings = gs.num_varyings();
-    gs.run(c.data(), in.num_varyings, n, first_id + std::uint32_t(first), o);
-    c = {};
+      for (int k = 0; k < Corners; ++k) corners[p * Corners + std::size_t(k)] = in.vertex_data(in.vertex_index(first + p, k));
+    GeometryOutput& part = parts[t];
+    part.triangles.num_varyings = part.lines.num_varyings = part.points.num_varyings = gs.num_varyings();
+    gs.run(corners.data(), in.num_varyings, n, first_id + std::uint32_t(first), part);
   });
   const auto prepare = [&](auto& batch) {
     batch.indexed = true;
