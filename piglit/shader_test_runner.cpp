@@ -14,6 +14,7 @@
 
 #include "render/draw_call.h"
 #include "render/draw_scene.h"
+#include "scene/draw_schema.h"
 #include "shader/glsl_compile.h"
 #include "stages/glsl/glsl_program.h"
 #include "texture/texture.h"
@@ -253,25 +254,16 @@ class Runner {
   // glDrawArrays(Instanced) of points, lines or triangles (a program without tessellation).
   void draw_primitives(const TestCommand& c, const std::vector<glsl::VertexAttribute>& attributes, std::size_t first,
                        std::size_t count, int instances) {
-    static const std::pair<const char*, DrawMode> kModes[] = {
-        {"GL_POINTS", DrawMode::Points},       {"GL_LINES", DrawMode::Lines},
-        {"GL_LINE_STRIP", DrawMode::LineStrip}, {"GL_LINE_LOOP", DrawMode::LineLoop},
-        {"GL_TRIANGLES", DrawMode::Triangles}, {"GL_TRIANGLE_STRIP", DrawMode::TriangleStrip},
-        {"GL_TRIANGLE_FAN", DrawMode::TriangleFan},
-        {"GL_LINES_ADJACENCY", DrawMode::LinesAdjacency}, {"GL_LINE_STRIP_ADJACENCY", DrawMode::LineStripAdjacency},
-        {"GL_TRIANGLES_ADJACENCY", DrawMode::TrianglesAdjacency},
-        {"GL_TRIANGLE_STRIP_ADJACENCY", DrawMode::TriangleStripAdjacency}};
     const std::string name = c.words.empty() ? "" : c.words[0];
-    const auto mode = std::find_if(std::begin(kModes), std::end(kModes), [&](const auto& m) { return name == m.first; });
-    if (mode == std::end(kModes))
-      fail(c, name == "GL_PATCHES" ? "GL_PATCHES needs a tessellation evaluation shader"
-                                   : "draw mode " + name + " is not drawn (quads and polygons are compatibility-profile modes)");
+    const std::optional<DrawMode> mode = draw_mode_named(name);
+    if (mode == DrawMode::Patches) fail(c, "GL_PATCHES needs a tessellation evaluation shader");
+    if (!mode) fail(c, "draw mode " + name + " is not drawn (quads and polygons are compatibility-profile modes)");
     std::vector<std::uint32_t> run(count);
     for (std::size_t i = 0; i < count; ++i) run[i] = std::uint32_t(first + i);
-    const std::vector<std::uint32_t> indices = assemble(mode->second, 3, {run});
+    const std::vector<std::uint32_t> indices = assemble(*mode, 3, {run});
     DrawCall call;
     call.patches = false;
-    call.corners = primitive_corners(mode->second);
+    call.corners = primitive_corners(*mode);
     call.indices = indices;
     call.vertex_count = first + count;
     call.instances = instances;

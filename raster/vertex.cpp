@@ -17,7 +17,8 @@ TriangleBatch expand_indices(const TriangleBatch& batch) {
   return out;
 }
 
-void append_triangles(TriangleBatch& dst, const TriangleBatch& src) {
+template <int Corners>
+void append_primitives(PrimitiveBatch<Corners>& dst, const PrimitiveBatch<Corners>& src) {
   dst.num_varyings = src.num_varyings;
   dst.flat_varyings = src.flat_varyings;
   if (!dst.indexed && !src.indexed) {
@@ -30,10 +31,14 @@ void append_triangles(TriangleBatch& dst, const TriangleBatch& src) {
     dst.indexed = true;
   }
   const auto base = std::uint32_t(dst.vertex_count());
-  const std::size_t n = 3 * src.triangle_count();
+  const std::size_t n = std::size_t(Corners) * src.primitive_count();
   for (std::size_t k = 0; k < n; ++k)
-    dst.indices.push_back(base + std::uint32_t(src.vertex_index(k / 3, int(k % 3))));
+    dst.indices.push_back(base + std::uint32_t(src.vertex_index(k / Corners, int(k % Corners))));
   dst.vertices.insert(dst.vertices.end(), src.vertices.begin(), src.vertices.end());
 }
+
+template void append_primitives<1>(PointBatch&, const PointBatch&);
+template void append_primitives<2>(LineBatch&, const LineBatch&);
+template void append_primitives<3>(TriangleBatch&, const TriangleBatch&);
 
 }  // namespace tessref

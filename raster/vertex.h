@@ -76,7 +76,9 @@ using PointBatch = PrimitiveBatch<1>;
 
 // The same triangles as consecutive triples (for tools and tests that walk corners in order).
 TriangleBatch expand_indices(const TriangleBatch& batch);
-// Appends src's triangles to dst (indexed if either is); both carry src.num_varyings varyings.
-void append_triangles(TriangleBatch& dst, const TriangleBatch& src);
+// Appends src's primitives to dst (indexed if either is); both carry src.num_varyings varyings.
+template <int Corners>
+void append_primitives(PrimitiveBatch<Corners>& dst, const PrimitiveBatch<Corners>& src);
+inline void append_triangles(TriangleBatch& dst, const TriangleBatch& src) { append_primitives(dst, src); }
 
 }  // namespace tessref

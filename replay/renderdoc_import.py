@@ -15,17 +15,18 @@ import struct
 import shutil
 import subprocess
 
-from frame_scene import Frame, SAFE_NAME
+from frame_scene import Frame, SAFE_NAME, STAGE_FILES
 from glsl_declarations import Declarations, with_block_binding
 from import_error import ImportFailure
 
 STAGES = (("vertex", "Vertex"), ("tess_control", "Tess_Control"), ("tess_evaluation", "Tess_Eval"),
           ("geometry", "Geometry"), ("fragment", "Fragment"))
-STAGE_FILES = {"vertex": "vert", "tess_control": "tesc", "tess_evaluation": "tese", "geometry": "geom", "fragment": "frag"}
 _TOPOLOGY = {"PointList": "GL_POINTS", "LineList": "GL_LINES", "LineStrip": "GL_LINE_STRIP", "LineLoop": "GL_LINE_LOOP",
              "TriangleList": "GL_TRIANGLES", "TriangleStrip": "GL_TRIANGLE_STRIP", "TriangleFan": "GL_TRIANGLE_FAN",
              "LineList_Adj": "GL_LINES_ADJACENCY", "LineStrip_Adj": "GL_LINE_STRIP_ADJACENCY",
              "TriangleList_Adj": "GL_TRIANGLES_ADJACENCY", "TriangleStrip_Adj": "GL_TRIANGLE_STRIP_ADJACENCY"}
+# What RenderDoc's replay raises when a damaged capture gives a state GL does not reach.
+_DAMAGED = (AttributeError, TypeError, KeyError, IndexError, ValueError)
 _COMPARE = {"Never": "GL_NEVER", "AlwaysTrue": "GL_ALWAYS", "Less": "GL_LESS", "LessEqual": "GL_LEQUAL",
             "Greater": "GL_GREATER", "GreaterEqual": "GL_GEQUAL", "Equal": "GL_EQUAL", "NotEqual": "GL_NOTEQUAL"}
 _ADDRESS = {"Wrap": "repeat", "Mirror": "mirrored_repeat", "MirrorOnce": "mirror_clamp_to_edge",
@@ -476,7 +477,7 @@ def import_renderdoc(path, event, images):
             frame, event = _read_frame(rd, ctl, path, event)
             try:
                 _save_driver_images(rd, ctl, frame, event, images)
-            except (AttributeError, TypeError, KeyError, IndexError, ValueError) as e:
+            except _DAMAGED as e:
                 raise ImportFailure("RenderDoc's replay after event %d gives a framebuffer GL does not reach (%s: %s): "
                                     "the capture is damaged" % (event, type(e).__name__, e))
             return frame
@@ -552,7 +553,7 @@ def _read_frame(rd, ctl, path, event):
         elif a.flags & rd.ActionFlags.Drawcall:
             try:
                 reader.draw(a, name, pending)
-            except (AttributeError, TypeError, KeyError, IndexError, ValueError) as e:
+            except _DAMAGED as e:
                 # RenderDoc's replay answered with something no GL state has: a damaged capture.
                 raise ImportFailure("RenderDoc's replay of event %d (%s) gives a state GL does not reach (%s: %s): "
                                     "the capture is damaged" % (a.eventId, name, type(e).__name__, e))

@@ -9,6 +9,21 @@
 #include "scene/scene_schema.h"
 
 namespace tessref {
+
+std::optional<DrawMode> draw_mode_named(const std::string& gl_name) {
+  static const std::pair<const char*, DrawMode> kNames[] = {
+      {"GL_PATCHES", DrawMode::Patches},         {"GL_TRIANGLES", DrawMode::Triangles},
+      {"GL_TRIANGLE_STRIP", DrawMode::TriangleStrip}, {"GL_TRIANGLE_FAN", DrawMode::TriangleFan},
+      {"GL_LINES", DrawMode::Lines},             {"GL_LINE_STRIP", DrawMode::LineStrip},
+      {"GL_LINE_LOOP", DrawMode::LineLoop},      {"GL_POINTS", DrawMode::Points},
+      {"GL_LINES_ADJACENCY", DrawMode::LinesAdjacency}, {"GL_LINE_STRIP_ADJACENCY", DrawMode::LineStripAdjacency},
+      {"GL_TRIANGLES_ADJACENCY", DrawMode::TrianglesAdjacency},
+      {"GL_TRIANGLE_STRIP_ADJACENCY", DrawMode::TriangleStripAdjacency}};
+  for (const auto& [name, mode] : kNames)
+    if (gl_name == name) return mode;
+  return std::nullopt;
+}
+
 namespace {
 
 using nlohmann::json;
@@ -347,16 +362,7 @@ DrawSetting read_draw(JsonObject o, const std::vector<BufferSetting>& buffers, c
       "GL_TRIANGLE_STRIP_ADJACENCY";
   o.describe("mode", std::string("one of ") + kModes);
   const std::string mode = o.string("mode");
-  static const std::pair<const char*, DrawMode> kNames[] = {
-      {"GL_PATCHES", DrawMode::Patches},         {"GL_TRIANGLES", DrawMode::Triangles},
-      {"GL_TRIANGLE_STRIP", DrawMode::TriangleStrip}, {"GL_TRIANGLE_FAN", DrawMode::TriangleFan},
-      {"GL_LINES", DrawMode::Lines},             {"GL_LINE_STRIP", DrawMode::LineStrip},
-      {"GL_LINE_LOOP", DrawMode::LineLoop},      {"GL_POINTS", DrawMode::Points},
-      {"GL_LINES_ADJACENCY", DrawMode::LinesAdjacency}, {"GL_LINE_STRIP_ADJACENCY", DrawMode::LineStripAdjacency},
-      {"GL_TRIANGLES_ADJACENCY", DrawMode::TrianglesAdjacency},
-      {"GL_TRIANGLE_STRIP_ADJACENCY", DrawMode::TriangleStripAdjacency}};
-  const auto named = std::find_if(std::begin(kNames), std::end(kNames), [&](const auto& n) { return mode == n.first; });
-  if (named != std::end(kNames)) d.mode = named->second;
+  if (const auto named = draw_mode_named(mode)) d.mode = *named;
   else o.fail("mode", std::string("expected ") + kModes + ", got \"" + mode + "\"");
   if (o.has("patch_vertices")) {
     o.describe("patch_vertices", "GL_PATCH_VERTICES: 1..32 (GL_MAX_PATCH_VERTICES)");

@@ -10,13 +10,6 @@ namespace {
 // Primitives per task: enough work to pay for a task, few enough to spread a chunk over threads.
 constexpr std::size_t kTaskPrimitives = 256;
 
-template <int Corners>
-void append_batch(PrimitiveBatch<Corners>& dst, const PrimitiveBatch<Corners>& src) {
-  const auto base = std::uint32_t(dst.vertex_count());
-  dst.vertices.insert(dst.vertices.end(), src.vertices.begin(), src.vertices.end());
-  for (const std::uint32_t i : src.indices) dst.indices.push_back(base + i);
-}
-
 const char* primitive_name(int vertices) {
   switch (vertices) {
     case 1: return "points";
@@ -55,6 +48,14 @@ void run_geometry(const GeometryProgram& gs, const PrimitiveBatch<Corners>& in, 
   check_geometry_input(gs, Corners);
   const std::size_t primitives = in.primitive_count();
   const std::size_t tasks = (primitives + kTaskPrimitives - 1) / kTaskPrimitives;
+  // The output's form: every batch of it, and of each task's part, indexed and with the
+  // shader's varyings.
+  const auto prepare = [&](GeometryOutput& o) {
+    o.triangles.indexed = o.lines.indexed = o.points.indexed = true;
+    o.triangles.num_varyings = o.lines.num_varyings = o.points.num_varyings = gs.num_varyings();
+    o.triangles.flat_varyings = o.lines.flat_varyings = o.points.flat_varyings = gs.flat_varyings();
+  };
+  prepare(out);
   // Each task writes its own slot; the slots are joined in order below.
   std::vector<GeometryOutput> parts(tasks);
   parallel.for_each(tasks, [&](std::size_t t) {
@@ -62,22 +63,13 @@ void run_geometry(const GeometryProgram& gs, const PrimitiveBatch<Corners>& in, 
     std::vector<const float*> corners(n * Corners);
     for (std::size_t p = 0; p < n; ++p)
       for (int k = 0; k < Corners; ++k) corners[p * Corners + std::size_t(k)] = in.vertex_data(in.vertex_index(first + p, k));
-    GeometryOutput& part = parts[t];
-    part.triangles.num_varyings = part.lines.num_varyings = part.points.num_varyings = gs.num_varyings();
-    gs.run(corners.data(), in.num_varyings, n, first_id + std::uint32_t(first), part);
+    prepare(parts[t]);
+    gs.run(corners.data(), in.num_varyings, n, first_id + std::uint32_t(first), parts[t]);
   });
-  const auto prepare = [&](auto& batch) {
-    batch.indexed = true;
-    batch.num_varyings = gs.num_varyings();
-    batch.flat_varyings = gs.flat_varyings();
-  };
-  prepare(out.triangles);
-  prepare(out.lines);
-  prepare(out.points);
-  for (GeometryOutput& part : parts) {
-    append_batch(out.triangles, part.triangles);
-    append_batch(out.lines, part.lines);
-    append_batch(out.points, part.points);
+  for (const GeometryOutput& part : parts) {
+    append_primitives(out.triangles, part.triangles);
+    append_primitives(out.lines, part.lines);
+    append_primitives(out.points, part.points);
   }
 }
 

@@ -17,11 +17,6 @@ struct GeometryOutput {
   TriangleBatch triangles;
   LineBatch lines;
   PointBatch points;
-  void clear() {
-    triangles.clear();
-    lines.clear();
-    points.clear();
-  }
 };
 
 class GeometryProgram {
@@ -29,8 +24,6 @@ class GeometryProgram {
   virtual ~GeometryProgram() = default;
   // The input primitive's vertices (1 points, 2 lines, 3 triangles; 4 and 6: with adjacency).
   virtual int input_vertices() const = 0;
-  // The output primitive's corners (1 points, 2 line strips, 3 triangle strips).
-  virtual int output_corners() const = 0;
   virtual int num_varyings() const = 0;  // of the output vertices
   virtual VaryingMask flat_varyings() const { return {}; }
   // Runs the shader for `count` primitives: primitive p's vertex k is the vertex data (gl_Position,

@@ -12,7 +12,6 @@ class GlslGeometry final : public GeometryProgram {
   // the varying that carries gl_PrimitiveID to the fragment shader (-1: none).
   GlslGeometry(const StageProgram& sp, int varyings, const VaryingMask& flat, int primitive_id_varying);
   int input_vertices() const override { return input_vertices_; }
-  int output_corners() const override { return output_corners_; }
   int num_varyings() const override { return varyings_; }
   VaryingMask flat_varyings() const override { return flat_; }
   void run(const float* const* corners, int in_varyings, std::size_t count, std::uint32_t first_id,

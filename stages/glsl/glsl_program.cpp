@@ -298,7 +298,7 @@ GlslProgram::GlslProgram(const shader::CompiledProgram& compiled, shader::ExecLi
   }
   if (!vs_) throw shader::SpirvError("the program has no vertex shader");
   if (!fs_) throw shader::SpirvError("the program has no fragment shader");
-  for (StageProgram* s : {vs_.get(), tcs_.get(), tes_.get(), gs_.get(), fs_.get()})
+  for (StageProgram* s : stages())
     if (s) {
       s->textures = &textures_;
       s->cube_map_seamless = &cube_map_seamless_;
@@ -383,7 +383,7 @@ StageProgram* GlslProgram::find(shader::Stage s) {
 
 void GlslProgram::set_uniform(const std::string& name, const UniformValue& value) {
   bool found = false;
-  for (StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), gs_.get(), fs_.get()}) {
+  for (StageProgram* sp : stages()) {
     if (!sp) continue;
     const shader::Module& m = sp->exe->module();
     for (const shader::Variable& v : m.variables) {
@@ -419,7 +419,7 @@ void GlslProgram::set_uniform(const std::string& name, const UniformValue& value
 }
 
 std::optional<UniformShape> GlslProgram::uniform_shape(const std::string& name) const {
-  for (const StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), gs_.get(), fs_.get()}) {
+  for (const StageProgram* sp : stages()) {
     if (!sp) continue;
     const shader::Module& m = sp->exe->module();
     for (const shader::Variable& v : m.variables) {
@@ -476,7 +476,7 @@ void for_each_block(const shader::Module& m, const Fn& fn, bool storage = false)
 
 namespace {
 
-std::vector<GlslProgram::UniformBlock> blocks_of(std::initializer_list<const StageProgram*> stages, bool storage) {
+std::vector<GlslProgram::UniformBlock> blocks_of(std::span<StageProgram* const> stages, bool storage) {
   std::vector<GlslProgram::UniformBlock> out;
   for (const StageProgram* sp : stages) {
     if (!sp) continue;
@@ -491,7 +491,7 @@ std::vector<GlslProgram::UniformBlock> blocks_of(std::initializer_list<const Sta
   return out;
 }
 
-bool bind_blocks(std::initializer_list<StageProgram*> stages, std::uint32_t binding, std::span<const std::byte> range,
+bool bind_blocks(std::span<StageProgram* const> stages, std::uint32_t binding, std::span<const std::byte> range,
                  bool storage) {
   bool found = false;
   for (StageProgram* sp : stages) {
@@ -518,17 +518,17 @@ bool bind_blocks(std::initializer_list<StageProgram*> stages, std::uint32_t bind
 }  // namespace
 
 std::vector<GlslProgram::UniformBlock> GlslProgram::uniform_blocks() const {
-  return blocks_of({vs_.get(), tcs_.get(), tes_.get(), gs_.get(), fs_.get()}, false);
+  return blocks_of(stages(), false);
 }
 std::vector<GlslProgram::UniformBlock> GlslProgram::storage_blocks() const {
-  return blocks_of({vs_.get(), tcs_.get(), tes_.get(), gs_.get(), fs_.get()}, true);
+  return blocks_of(stages(), true);
 }
 
 bool GlslProgram::bind_uniform_buffer(std::uint32_t binding, std::span<const std::byte> range) {
-  return bind_blocks({vs_.get(), tcs_.get(), tes_.get(), gs_.get(), fs_.get()}, binding, range, false);
+  return bind_blocks(stages(), binding, range, false);
 }
 bool GlslProgram::bind_storage_buffer(std::uint32_t binding, std::span<const std::byte> range) {
-  const bool found = bind_blocks({vs_.get(), tcs_.get(), tes_.get(), gs_.get(), fs_.get()}, binding, range, true);
+  const bool found = bind_blocks(stages(), binding, range, true);
   if (found) bound_storage_.insert(binding);
   return found;
 }
@@ -548,7 +548,7 @@ std::string GlslProgram::draw_refusal() const {
 
 std::vector<std::string> GlslProgram::uniform_names() const {
   std::vector<std::string> names;
-  for (const StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), gs_.get(), fs_.get()})
+  for (const StageProgram* sp : stages())
     if (sp) uniform_names_of(sp->exe->module(), names);
   std::sort(names.begin(), names.end());
   names.erase(std::unique(names.begin(), names.end()), names.end());
@@ -556,7 +556,7 @@ std::vector<std::string> GlslProgram::uniform_names() const {
 }
 
 bool GlslProgram::uses_atomic_counters() const {
-  for (const StageProgram* sp : {vs_.get(), tcs_.get(), tes_.get(), gs_.get(), fs_.get()})
+  for (const StageProgram* sp : stages())
     if (sp && !sp->counters.empty()) return true;
   return false;
 }

@@ -153,6 +153,8 @@ class GlslProgram final : public DrawProgram {
 
  private:
   StageProgram* find(shader::Stage s);
+  // Every stage in pipeline order, null where the program has none.
+  std::array<StageProgram*, 5> stages() const { return {vs_.get(), tcs_.get(), tes_.get(), gs_.get(), fs_.get()}; }
   void map_patch_locations();
   std::unique_ptr<StageProgram> vs_, tcs_, tes_, gs_, fs_;
   std::vector<const texture::Texture*> textures_;
