@@ -26,7 +26,11 @@ int first_bad(const float* v, int n) {
 const char* component(int c) { return c == 0 ? "x" : c == 1 ? "y" : c == 2 ? "z" : "w"; }
 
 std::string slot_name(int slot) {
-  return slot == 0 ? "gl_Position" : "location " + std::to_string(slot - 1);
+  if (slot == 0) return "gl_Position";
+  if (slot <= kMaxStageLocations) return "location " + std::to_string(slot - 1);
+  const int d = slot - 1 - kMaxStageLocations;  // the built-in slots after the locations
+  if (d >= 4) return "gl_PointSize";
+  return (d < 2 ? "gl_ClipDistance[" : "gl_CullDistance[") + std::to_string(4 * (d % 2)) + ".." + std::to_string(4 * (d % 2) + 3) + "]";
 }
 
 // Line `line` of the stage's file, leading blanks dropped ("" if the text does not hold it).

@@ -66,6 +66,7 @@ void apply_raster_state(const RasterState& s, int width, int height) {
   enable(GL_FRAMEBUFFER_SRGB, s.framebuffer_srgb);
   enable(GL_TEXTURE_CUBE_MAP_SEAMLESS, s.cube_map_seamless);
   enable(GL_DEPTH_CLAMP, s.depth_clamp);
+  for (int i = 0; i < 8; ++i) enable(GL_CLIP_DISTANCE0 + GLenum(i), (s.clip_distances >> i) & 1u);
 }
 
 void reset_raster_state(int width, int height) { apply_raster_state(gl_initial_state(), width, height); }

@@ -34,14 +34,17 @@ const std::map<std::string, long long>& limits() {
   static const std::map<std::string, long long> table = {
       {"GL_MAX_PATCH_VERTICES", kMaxPatchVertices},
       {"GL_MAX_TESS_GEN_LEVEL", 64},
-      {"GL_MAX_TESS_CONTROL_INPUT_COMPONENTS", 4 * (kMaxStageAttributes - 1)},
-      {"GL_MAX_TESS_CONTROL_OUTPUT_COMPONENTS", 4 * (kMaxStageAttributes - 1)},
-      {"GL_MAX_TESS_EVALUATION_INPUT_COMPONENTS", 4 * (kMaxStageAttributes - 1)},
-      {"GL_MAX_TESS_EVALUATION_OUTPUT_COMPONENTS", 4 * (kMaxStageAttributes - 1)},
+      {"GL_MAX_TESS_CONTROL_INPUT_COMPONENTS", 4 * kMaxStageLocations},
+      {"GL_MAX_TESS_CONTROL_OUTPUT_COMPONENTS", 4 * kMaxStageLocations},
+      {"GL_MAX_TESS_EVALUATION_INPUT_COMPONENTS", 4 * kMaxStageLocations},
+      {"GL_MAX_TESS_EVALUATION_OUTPUT_COMPONENTS", 4 * kMaxStageLocations},
       {"GL_MAX_TESS_PATCH_COMPONENTS", 4 * kMaxPatchAttributes},
-      {"GL_MAX_VERTEX_OUTPUT_COMPONENTS", 4 * (kMaxStageAttributes - 1)},
+      {"GL_MAX_VERTEX_OUTPUT_COMPONENTS", 4 * kMaxStageLocations},
       {"GL_MAX_FRAGMENT_INPUT_COMPONENTS", kMaxVaryings},
       {"GL_MAX_VARYING_COMPONENTS", kMaxVaryings},
+      {"GL_MAX_CLIP_DISTANCES", 8},
+      {"GL_MAX_CULL_DISTANCES", 8},
+      {"GL_MAX_COMBINED_CLIP_AND_CULL_DISTANCES", 8},
       {"GL_MAX_VARYING_FLOATS", kMaxVaryings},
       {"GL_MAX_VERTEX_ATTRIBS", 16},
       // Atomic counters: any stage, any binding (counter buffers are plain arrays here).
@@ -65,7 +68,7 @@ const std::set<std::string>& extensions() {
       "GL_ARB_enhanced_layouts", "GL_ARB_texture_rectangle", "GL_ARB_uniform_buffer_object",
       "GL_ARB_shader_bit_encoding", "GL_ARB_draw_instanced", "GL_ARB_instanced_arrays",
       "GL_ARB_fragment_coord_conventions", "GL_ARB_vertex_array_object",
-      "GL_ARB_shader_atomic_counters", "GL_EXT_shader_integer_mix"};
+      "GL_ARB_shader_atomic_counters", "GL_ARB_cull_distance", "GL_EXT_shader_integer_mix"};
   return names;
 }
 
@@ -79,6 +82,15 @@ bool compare(long long a, Comparison c, long long b) {
     case Comparison::GreaterEqual: return a >= b;
   }
   return false;
+}
+
+// GL_CLIP_DISTANCEi's (or GL_CLIP_PLANEi's, the same enum) i, 0 to 7; -1 for another name.
+int clip_plane_index(const std::string& name) {
+  for (const std::string prefix : {"GL_CLIP_DISTANCE", "GL_CLIP_PLANE"})
+    if (name.size() == prefix.size() + 1 && name.compare(0, prefix.size(), prefix) == 0 && name.back() >= '0' &&
+        name.back() <= '7')
+      return name.back() - '0';
+  return -1;
 }
 
 // Empty when tessref meets the file's [require] section; else the reason to skip.
@@ -454,8 +466,14 @@ class Runner {
         break;
       }
       case CommandKind::Enable: case CommandKind::Disable:
-        if (!c.words.empty() && c.words[0] == "GL_DEPTH_TEST") state_.depth_test = c.kind == CommandKind::Enable;
-        else fail(c, "unsupported GL capability");
+        if (!c.words.empty() && c.words[0] == "GL_DEPTH_TEST") {
+          state_.depth_test = c.kind == CommandKind::Enable;
+        } else if (const int plane = c.words.empty() ? -1 : clip_plane_index(c.words[0]); plane >= 0) {
+          const auto bit = std::uint8_t(1u << plane);
+          state_.clip_distances = c.kind == CommandKind::Enable ? state_.clip_distances | bit : state_.clip_distances & ~bit;
+        } else {
+          fail(c, "unsupported GL capability");
+        }
         break;
       case CommandKind::AtomicCounters:
         program_->counter_buffer(0).assign(std::size_t(n[0]), 0u);

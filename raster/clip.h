@@ -12,8 +12,46 @@
 
 namespace tessref::raster {
 
-// Three vertices, each of near, far and the four guard planes can add at most one more.
-inline constexpr int kMaxClipVertices = 3 + 6;
+// The user clip planes: gl_ClipDistance[0..7] (GL_MAX_CLIP_DISTANCES).
+inline constexpr int kMaxUserPlanes = 8;
+
+// Three vertices, each of near, far, the four guard planes and the user planes can add at most
+// one more.
+inline constexpr int kMaxClipVertices = 3 + 6 + kMaxUserPlanes;
+
+// The user clip planes a draw clips against: bit i of mask for gl_ClipDistance[i], which each
+// vertex carries as varying first + i (DistanceVaryings).
+struct UserPlanes {
+  std::uint32_t mask = 0;
+  int first = 0;
+};
+
+// The user-plane outcode bits of one vertex (its varyings): outside is a negative distance, and, as
+// Mesa's draw module tests it, an infinite or NaN one (such a primitive is then dropped whole).
+inline std::uint32_t user_outcode(const float* varyings, const UserPlanes& user) {
+  std::uint32_t code = 0;
+  for (std::uint32_t m = user.mask; m; m &= m - 1) {
+    const int i = __builtin_ctz(m);
+    const float d = varyings[user.first + i];
+    if (!(d >= 0.0f) || std::isinf(d)) code |= outcode::kUserPlane0 << i;
+  }
+  return code;
+}
+
+// gl_CullDistance (GL 4.6 13.7): a primitive is discarded when, for some cull distance, every
+// vertex's is negative (NaN and infinities count as negative, as Mesa's cull stage has them).
+template <int N>
+bool culled_by_distance(const float* const (&varyings)[N], int first, int count) {
+  for (int j = 0; j < count; ++j) {
+    bool all_out = true;
+    for (int k = 0; k < N && all_out; ++k) {
+      const float d = varyings[k][first + j];
+      all_out = !(d >= 0.0f) || std::isinf(d);
+    }
+    if (all_out) return true;
+  }
+  return false;
+}
 
 // A vertex of the clipped polygon: position and every varying a vertex can carry.
 struct ClipRecord {
@@ -95,8 +133,11 @@ inline bool outcode_projectable(std::uint32_t code) {
 // (TriangleBatch::vertex_data).
 // outcode_mask: the outcode bits that apply (Viewport::outcode_mask: without the near and far
 // planes under GL_DEPTH_CLAMP).
+// user: the user planes, clipped against after the six others, in order of i, as Mesa does; an
+// edge cut along a user plane stays a boundary edge (Mesa draws it in polygon mode line).
 ClipResult clip_triangle(const float* a, const float* b, const float* c, int num_varyings,
-                         float guard_x, float guard_y, ClipPolygon& out, std::uint32_t outcode_mask = ~0u);
+                         float guard_x, float guard_y, ClipPolygon& out, std::uint32_t outcode_mask = ~0u,
+                         const UserPlanes& user = {});
 inline ClipResult clip_triangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
                                 int num_varyings, float guard_x, float guard_y, ClipPolygon& out) {
   return clip_triangle(&a.position.x, &b.position.x, &c.position.x,
@@ -108,6 +149,7 @@ inline ClipResult clip_triangle(const ClipVertex& a, const ClipVertex& b, const 
 // from the unclipped ends; a cut end is a + t0 (b - a) or b + t1 (a - b). out[0], out[1] are the
 // kept ends, generated[k] whether end k was cut.
 ClipResult clip_line(const float* a, const float* b, int num_varyings, float guard_x,
-                     float guard_y, ClipRecord out[2], bool generated[2], std::uint32_t outcode_mask = ~0u);
+                     float guard_y, ClipRecord out[2], bool generated[2], std::uint32_t outcode_mask = ~0u,
+                     const UserPlanes& user = {});
 
 }  // namespace tessref::raster

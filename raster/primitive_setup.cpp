@@ -36,6 +36,7 @@ SetupOutcome setup_line(const LineBatch& batch, std::size_t index, const Project
   const float* d0 = batch.vertex_data(i0);
   const float* d1 = batch.vertex_data(i1);
   const VaryingMask* flat = flat_mask(batch.flat_varyings);
+  if (vp.culled({d0 + 4, d1 + 4})) return SetupOutcome::kCulled;
   const std::uint32_t c0 = projected[i0].code, c1 = projected[i1].code;
   if ((c0 | c1) & outcode::kNonFinite) return SetupOutcome::kClippedAway;
   if (c0 & c1 & ~outcode::kNonPositiveW) return SetupOutcome::kClippedAway;
@@ -47,7 +48,7 @@ SetupOutcome setup_line(const LineBatch& batch, std::size_t index, const Project
   }
   ClipRecord ends[2];
   bool generated[2];
-  switch (clip_line(d0, d1, nv, vp.guard_x(), vp.guard_y(), ends, generated, vp.outcode_mask())) {
+  switch (clip_line(d0, d1, nv, vp.guard_x(), vp.guard_y(), ends, generated, vp.outcode_mask(), vp.user)) {
     case ClipResult::kInvalid:
     case ClipResult::kRejected: return SetupOutcome::kClippedAway;
     case ClipResult::kKept: break;
@@ -64,6 +65,7 @@ SetupOutcome setup_point(const PointBatch& batch, std::size_t index,
                          int& pieces_out) {
   pieces_out = 0;
   const std::size_t i = batch.vertex_index(index, 0);
+  if (vp.culled({batch.vertex_data(i) + 4})) return SetupOutcome::kCulled;
   if (!outcode_projectable(projected[i].code)) return SetupOutcome::kClippedAway;
   const int nv = std::clamp(batch.num_varyings, 0, kMaxVaryings);
   if (setup_point(line_vertex(projected[i], batch.vertex_data(i) + 4), vp, nv, quads, varyings))
@@ -82,6 +84,7 @@ SetupOutcome setup_triangle_outline(const TriangleBatch& batch, std::size_t inde
   const int nv = std::clamp(batch.num_varyings, 0, kMaxVaryings);
   const float* d[3] = {batch.vertex_data(idx[0]), batch.vertex_data(idx[1]),
                        batch.vertex_data(idx[2])};
+  if (vp.culled({d[0] + 4, d[1] + 4, d[2] + 4})) return SetupOutcome::kCulled;
   const ClipTest test =
       classify_outcodes(projected[idx[0]].code, projected[idx[1]].code, projected[idx[2]].code);
   if (test == ClipTest::kInvalid || test == ClipTest::kRejected) return SetupOutcome::kClippedAway;
@@ -120,7 +123,7 @@ SetupOutcome setup_triangle_outline(const TriangleBatch& batch, std::size_t inde
     }
     poly.generated = {};
     poly.boundary.fill(true);
-  } else if (clip_triangle(d[0], d[1], d[2], nv, vp.guard_x(), vp.guard_y(), poly, vp.outcode_mask()) !=
+  } else if (clip_triangle(d[0], d[1], d[2], nv, vp.guard_x(), vp.guard_y(), poly, vp.outcode_mask(), vp.user) !=
              ClipResult::kKept) {
     return SetupOutcome::kClippedAway;
   }

@@ -21,8 +21,9 @@ struct ProjectedVertex {
 };
 
 // Outcode bits: planes that clip (the guard band sides, near, far; bits 0-5 in the order Mesa's
-// draw module clips in: x <= w first, then x >= -w, y <= w, y >= -w, near, far), the viewport
-// sides, which only reject, and two bits that make a vertex unusable.
+// draw module clips in: x <= w first, then x >= -w, y <= w, y >= -w, near, far; then the user
+// planes, bits 12-19), the viewport sides, which only reject, and two bits that make a vertex
+// unusable.
 namespace outcode {
 enum : std::uint32_t {
   kGuardRight = 1u << 0,
@@ -37,7 +38,11 @@ enum : std::uint32_t {
   kTop = 1u << 9,
   kNonFinite = 1u << 10,  // some coordinate is NaN or infinite (no other bit is then set)
   kNonPositiveW = 1u << 11,
-  kClipPlanes = (1u << 6) - 1,
+  // gl_ClipDistance[i] < 0 (or not finite) with GL_CLIP_DISTANCEi enabled: bit 12 + i. Mesa's draw
+  // module clips against these after the six planes above (its plane indices 6 + i).
+  kUserPlane0 = 1u << 12,
+  kUserPlanes = 0xffu << 12,
+  kClipPlanes = ((1u << 6) - 1) | kUserPlanes,
 };
 }  // namespace outcode
 

@@ -73,6 +73,14 @@ struct ViewportRect {
   int x = 0, y = 0, width = 0, height = 0;
 };
 
+// Where the vertices reaching the rasterizer carry gl_ClipDistance[] and gl_CullDistance[]: among
+// their varyings, after the fragment shader's inputs, so that clipping interpolates them like any
+// varying. clip_count, cull_count: the array sizes the last stage before the rasterizer writes.
+struct DistanceVaryings {
+  int clip_first = 0, clip_count = 0;
+  int cull_first = 0, cull_count = 0;
+};
+
 struct RasterState {
   // glEnable(GL_CULL_FACE) with glCullFace(GL_BACK) (and GL_FRONT: both set is GL_FRONT_AND_BACK);
   // front faces counter-clockwise in window space (glFrontFace(GL_CCW)) unless front_face_cw.
@@ -95,6 +103,10 @@ struct RasterState {
   // glEnable(GL_DEPTH_CLAMP) (GL 4.6 13.7.1): the near and far planes do not clip; the window z of
   // each fragment is clamped to the depth range instead.
   bool depth_clamp = false;
+  // glEnable(GL_CLIP_DISTANCEi) (GL 4.6 13.7): bit i clips against gl_ClipDistance[i].
+  std::uint8_t clip_distances = 0;
+  // The draw's program: where its vertices carry the distances (run_draw sets it).
+  DistanceVaryings distances;
   // glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS) (GL 4.6 8.14.2): cube maps filtered across face edges.
   // Texture state rather than the rasterizer's, kept with the draw's other capabilities.
   bool cube_map_seamless = false;

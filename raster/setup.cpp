@@ -227,17 +227,22 @@ void project_vertices(const ClipVertex* vertices, std::size_t count, int records
                                vp.vertex_z_lo(), vp.vertex_z_hi(), vp.outcode_mask()};
     project_vertices_avx2(reinterpret_cast<const float*>(vertices),
                           std::size_t(records) * sizeof(ClipVertex) / sizeof(float), count, params, out);
-    return;
+  } else {
+    for (std::size_t i = 0; i < count; ++i) {
+      ProjectedVertex& p = out[i];
+      const ClipVertex& v = vertices[i * std::size_t(records)];
+      const std::uint32_t code = clip_outcode(v.position, vp.guard_x(), vp.guard_y()) & vp.outcode_mask();
+      p.code = code;
+      if (!outcode_projectable(code)) continue;  // only clipped (or dropped) triangles use it
+      p = project_position(v.position, vp, false);
+      p.code = code;
+    }
   }
-  for (std::size_t i = 0; i < count; ++i) {
-    ProjectedVertex& p = out[i];
-    const ClipVertex& v = vertices[i * std::size_t(records)];
-    const std::uint32_t code = clip_outcode(v.position, vp.guard_x(), vp.guard_y()) & vp.outcode_mask();
-    p.code = code;
-    if (!outcode_projectable(code)) continue;  // only clipped (or dropped) triangles use it
-    p = project_position(v.position, vp, false);
-    p.code = code;
-  }
+  // The user planes' bits (a non-finite position has no other bit: the primitive is dropped).
+  if (vp.user.mask)
+    for (std::size_t i = 0; i < count; ++i)
+      if (!(out[i].code & outcode::kNonFinite))
+        out[i].code |= user_outcode(&vertices[i * std::size_t(records)].varyings[0], vp.user);
 }
 
 ProjectedVertex project_position(const glm::vec4& position, const Viewport& vp, bool generated) {
@@ -257,6 +262,7 @@ SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index,
   const float* d1 = batch.vertex_data(i1);
   const float* d2 = batch.vertex_data(i2);
   const FlatVaryings flat{batch.flat_varyings.any() ? &batch.flat_varyings : nullptr, d2 + 4};
+  if (vp.culled({d0 + 4, d1 + 4, d2 + 4})) return SetupOutcome::kCulled;
   switch (classify_outcodes(projected[i0].code, projected[i1].code, projected[i2].code)) {
     case ClipTest::kInvalid:
     case ClipTest::kRejected: return SetupOutcome::kClippedAway;
@@ -275,7 +281,7 @@ SetupOutcome setup_triangle(const TriangleBatch& batch, std::size_t index,
   }
 
   ClipPolygon poly;
-  ClipResult clipped = clip_triangle(d0, d1, d2, nv, vp.guard_x(), vp.guard_y(), poly, vp.outcode_mask());
+  ClipResult clipped = clip_triangle(d0, d1, d2, nv, vp.guard_x(), vp.guard_y(), poly, vp.outcode_mask(), vp.user);
   if (clipped != ClipResult::kKept) return SetupOutcome::kClippedAway;
 
   WindowVertex w[kMaxClipVertices];

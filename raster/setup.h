@@ -60,9 +60,23 @@ struct Viewport {
   float vertex_z_lo() const { return depth_clamp ? -INFINITY : depth_lo(); }
   float vertex_z_hi() const { return depth_clamp ? INFINITY : depth_hi(); }
   std::uint32_t outcode_mask() const { return depth_clamp ? ~(outcode::kNear | outcode::kFar) : ~0u; }
+  // The enabled user planes the program writes a distance for (GL leaves an enabled plane without
+  // one undefined: it does not clip), and the cull distances, which need no enable.
+  UserPlanes user;
+  int cull_first = 0, cull_count = 0;
+  template <int N>
+  bool culled(const float* const (&varyings)[N]) const {
+    return cull_count > 0 && culled_by_distance(varyings, cull_first, cull_count);
+  }
   static Viewport of(int fb_width, int fb_height, const RasterState& state) {
-    Viewport v{fb_width, fb_height, state.depth_range_near, state.depth_range_far};
+    Viewport v;
+    v.width = fb_width, v.height = fb_height;
+    v.depth_near = state.depth_range_near, v.depth_far = state.depth_range_far;
     v.depth_clamp = state.depth_clamp;
+    const DistanceVaryings& d = state.distances;
+    v.user = {state.clip_distances & ((1u << std::clamp(d.clip_count, 0, kMaxUserPlanes)) - 1u), d.clip_first};
+    v.cull_first = d.cull_first;
+    v.cull_count = std::clamp(d.cull_count, 0, kMaxUserPlanes);
     if (state.viewport) {
       v.x = state.viewport->x, v.y = state.viewport->y;
       v.w = state.viewport->width, v.h = state.viewport->height;

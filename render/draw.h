@@ -65,6 +65,9 @@ struct DrawOptions {
   // A scene of draws: the fragment program each call draws with, before its first primitive
   // (inspect --pixel redraws with it), on the calling thread.
   std::function<void(const FragmentProgram&)> fragment_program;
+  // Each call's rasterizer state as drawn: the GL state with where the program's vertices carry
+  // gl_ClipDistance and gl_CullDistance (RasterState::distances), on the calling thread.
+  std::function<void(const RasterState&)> raster_state;
   // A scene of draws, isolines and point mode: each chunk's records and the vertices its lines
   // or points emit, as indices into them, before dump_tess, on the calling thread.
   std::function<void(const std::vector<TessDumpRecord>&, const std::vector<std::uint32_t>&)> tess_lines_points;

@@ -121,8 +121,11 @@ void draw_tess_primitives(std::vector<ClipVertex>& vertices, const TessEvalProgr
 }  // namespace
 
 DrawStats run_draw(const DrawProgram& program, const std::vector<VertexAttribute>& attributes,
-                   const DrawCall& call, const RasterState& raster_state, Framebuffer& fb,
+                   const DrawCall& call, const RasterState& gl_state, Framebuffer& fb,
                    const Parallel& parallel, const DrawOptions& options) {
+  RasterState raster_state = gl_state;
+  raster_state.distances = program.distance_varyings();
+  if (options.raster_state) options.raster_state(raster_state);
   if (call.patches != program.has_tes())
     throw std::invalid_argument(call.patches
                                     ? "draw: GL_PATCHES needs a tessellation evaluation shader"

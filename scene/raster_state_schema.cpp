@@ -78,13 +78,23 @@ BlendState read_blend(JsonObject& b) {
 
 }  // namespace
 
+// GL_CLIP_DISTANCEi's i (0 to 7), or -1.
+int clip_distance_index(const json& cap) {
+  if (!cap.is_string()) return -1;
+  const std::string& name = cap.get_ref<const std::string&>();
+  const std::string prefix = "GL_CLIP_DISTANCE";
+  if (name.size() != prefix.size() + 1 || name.compare(0, prefix.size(), prefix) != 0) return -1;
+  const char c = name.back();
+  return c >= '0' && c <= '7' ? c - '0' : -1;
+}
+
 RasterState read_raster_state(JsonObject& o) {
   RasterState r = gl_initial_state();
   bool cull = false, scissor = false, blend = false;
-  o.describe("enable", "an array of GL capabilities glEnable turns on: GL_DEPTH_TEST, GL_CULL_FACE, GL_SCISSOR_TEST, GL_BLEND, GL_FRAMEBUFFER_SRGB, GL_DEPTH_CLAMP, GL_TEXTURE_CUBE_MAP_SEAMLESS");
+  o.describe("enable", "an array of GL capabilities glEnable turns on: GL_DEPTH_TEST, GL_CULL_FACE, GL_SCISSOR_TEST, GL_BLEND, GL_FRAMEBUFFER_SRGB, GL_DEPTH_CLAMP, GL_TEXTURE_CUBE_MAP_SEAMLESS, GL_CLIP_DISTANCE0 to GL_CLIP_DISTANCE7");
   if (o.has("enable")) {
     const json& e = o.value("enable");
-    if (!e.is_array()) o.fail("enable", "expected an array of GL_DEPTH_TEST, GL_CULL_FACE, GL_SCISSOR_TEST, GL_BLEND, GL_FRAMEBUFFER_SRGB, GL_DEPTH_CLAMP, GL_TEXTURE_CUBE_MAP_SEAMLESS, got " + describe_json(e));
+    if (!e.is_array()) o.fail("enable", "expected an array of GL_DEPTH_TEST, GL_CULL_FACE, GL_SCISSOR_TEST, GL_BLEND, GL_FRAMEBUFFER_SRGB, GL_DEPTH_CLAMP, GL_TEXTURE_CUBE_MAP_SEAMLESS, GL_CLIP_DISTANCE0 to GL_CLIP_DISTANCE7, got " + describe_json(e));
     for (const json& cap : e) {
       if (cap == "GL_DEPTH_TEST") r.depth_test = true;
       else if (cap == "GL_CULL_FACE") cull = true;
@@ -93,9 +103,10 @@ RasterState read_raster_state(JsonObject& o) {
       else if (cap == "GL_FRAMEBUFFER_SRGB") r.framebuffer_srgb = true;
       else if (cap == "GL_DEPTH_CLAMP") r.depth_clamp = true;
       else if (cap == "GL_TEXTURE_CUBE_MAP_SEAMLESS") r.cube_map_seamless = true;
+      else if (const int plane = clip_distance_index(cap); plane >= 0) r.clip_distances |= std::uint8_t(1u << plane);
       else if (cap == "GL_PRIMITIVE_RESTART" || cap == "GL_PRIMITIVE_RESTART_FIXED_INDEX")
         o.fail("enable", "primitive restart is the key primitive_restart (with its index)");
-      else o.fail("enable", "expected GL_DEPTH_TEST, GL_CULL_FACE, GL_SCISSOR_TEST, GL_BLEND, GL_FRAMEBUFFER_SRGB, GL_DEPTH_CLAMP or GL_TEXTURE_CUBE_MAP_SEAMLESS, got " + describe_json(cap));
+      else o.fail("enable", "expected GL_DEPTH_TEST, GL_CULL_FACE, GL_SCISSOR_TEST, GL_BLEND, GL_FRAMEBUFFER_SRGB, GL_DEPTH_CLAMP, GL_TEXTURE_CUBE_MAP_SEAMLESS or GL_CLIP_DISTANCE0 to GL_CLIP_DISTANCE7, got " + describe_json(cap));
     }
   }
   o.describe("depth_func", "glDepthFunc: GL_LESS (default), GL_LEQUAL, GL_EQUAL, GL_GREATER, GL_GEQUAL, GL_NOTEQUAL, GL_ALWAYS, GL_NEVER");

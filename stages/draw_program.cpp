@@ -9,12 +9,12 @@ void DrawProgram::rasterizer_vertex(const StageVertex& shaded, ClipVertex* recor
   // is varying 4L of the rasterizer's vertex.
   const auto* src = reinterpret_cast<const float*>(shaded.attr.data());
   auto* dst = reinterpret_cast<float*>(records);
-  std::copy_n(src, 4 + std::min(varyings(), 4 * (kMaxStageAttributes - 1)), dst);
+  std::copy_n(src, 4 + std::min(varyings(), 4 * kMaxStageLocations), dst);
 }
 
 std::vector<CheckedOutput> DrawProgram::checked_outputs() const {
   std::vector<CheckedOutput> out;
-  for (int s = 0; s < kMaxStageAttributes; ++s)
+  for (int s = 0; s <= kMaxStageLocations; ++s)
     out.push_back({s, s == 0 ? "gl_Position" : "location " + std::to_string(s - 1), 4});
   return out;
 }

@@ -73,6 +73,8 @@ class DrawProgram {
   // The untessellated vertex's varyings and which are flat.
   virtual int varyings() const = 0;
   virtual VaryingMask flat_varyings() const { return {}; }
+  // Where the rasterizer's vertices carry gl_ClipDistance and gl_CullDistance (none by default).
+  virtual DistanceVaryings distance_varyings() const { return {}; }
 
   // The primitive generator or uniform subdivision, and the work grain.
   virtual Tessellator tessellator() const { return Tessellator::PrimitiveGenerator; }

@@ -18,9 +18,11 @@
 namespace tessref {
 
 // Limits, at or above GL's minimums where GL names one (MAX_PATCH_VERTICES >= 32).
-// gl_Position and 32 locations (GL 4.5's minimum MAX_TESS_CONTROL_INPUT_COMPONENTS, 128): vec4 slots
-// in one stage's per-vertex out block.
-inline constexpr int kMaxStageAttributes = 33;
+// gl_Position, 32 locations (GL 4.5's minimum MAX_TESS_CONTROL_INPUT_COMPONENTS, 128), then
+// gl_ClipDistance[8] and gl_CullDistance[8] (two slots each) and gl_PointSize: vec4 slots in one
+// stage's per-vertex out block.
+inline constexpr int kMaxStageLocations = 32;
+inline constexpr int kMaxStageAttributes = 1 + kMaxStageLocations + 5;
 inline constexpr int kMaxPatchVertices = 32;    // GL_PATCH_VERTICES and layout(vertices = N)
 // 'patch out' vec4 slots written by a TCS: GL 4.5's minimum MAX_TESS_PATCH_COMPONENTS, 120.
 inline constexpr int kMaxPatchAttributes = 30;

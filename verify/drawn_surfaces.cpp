@@ -1,5 +1,7 @@
 #include "verify/drawn_surfaces.h"
 
+#include <algorithm>
+
 #include "io/tess_dump.h"
 
 namespace tessref {
@@ -33,6 +35,9 @@ std::string silhouette_rule(const Scene& scene, const DrawnSurfaces& drawn, bool
     if (d.mode == DrawMode::Lines || d.mode == DrawMode::LineStrip || d.mode == DrawMode::LineLoop ||
         d.mode == DrawMode::Points || drawn.lines_or_points[i])
       return why("draws lines or points into the depth image");
+    if (drawn.user_clipped[i])
+      return why("clips against gl_ClipDistance (GL_CLIP_DISTANCEi) or culls by gl_CullDistance: the rays see the "
+                 "surface whole");
     if (!(d.shaders ? *d.shaders : scene.shaders).geometry.empty())
       return why("has a geometry shader: the depth image holds what it emits, the rays the evaluation stage's triangles");
     if (r.polygon_mode != PolygonMode::kFill) return why("draws with a polygon mode other than GL_FILL");
@@ -59,7 +64,12 @@ void observe_draws(const Scene& scene, const std::vector<std::vector<CallPatches
   out.writes_depth.clear();
   for (const DrawSetting& d : scene.draws) out.writes_depth.push_back(d.raster.depth_test && d.raster.depth_write);
   out.lines_or_points.assign(scene.draws.size(), false);
+  out.user_clipped.assign(scene.draws.size(), false);
   options.begin_draw = [&out](std::size_t d) { out.draw = d; };
+  options.raster_state = [&out](const RasterState& r) {
+    const bool clips = (r.clip_distances & ((1u << std::min(r.distances.clip_count, 8)) - 1u)) != 0;
+    if ((clips || r.distances.cull_count > 0) && out.draw < out.user_clipped.size()) out.user_clipped[out.draw] = true;
+  };
   std::uint32_t patches = 0;
   for (const auto& draw : numbering)
     for (const CallPatches& c : draw) patches = std::max(patches, c.first_patch + c.per_instance * c.instances);

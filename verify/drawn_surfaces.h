@@ -35,6 +35,7 @@ struct DrawnSurfaces {
   // While drawing: the draw being drawn, which draws write depth, which emitted lines or points.
   std::size_t draw = 0;
   std::vector<bool> writes_depth, lines_or_points;
+  std::vector<bool> user_clipped;  // clipped against a user plane or culled by a cull distance
 };
 
 // The point of a clip-space position in the surfaces' space.

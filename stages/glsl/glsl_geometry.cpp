@@ -21,8 +21,9 @@ struct LaneEmission {
 
 }  // namespace
 
-GlslGeometry::GlslGeometry(const StageProgram& sp, int varyings, const VaryingMask& flat, int primitive_id_varying)
-    : sp_(sp), varyings_(varyings), flat_(flat), primitive_id_varying_(primitive_id_varying) {
+GlslGeometry::GlslGeometry(const StageProgram& sp, const VaryingLayout& inputs, const VaryingLayout& outputs,
+                           int varyings, const VaryingMask& flat, int primitive_id_varying)
+    : sp_(sp), inputs_(inputs), outputs_(outputs), varyings_(varyings), flat_(flat), primitive_id_varying_(primitive_id_varying) {
   const shader::ExecutionModes& modes = sp.exe->module().modes;
   input_vertices_ = modes.input_vertices;
   output_corners_ = modes.output_primitive == spv::ExecutionModeOutputPoints       ? 1
@@ -45,7 +46,7 @@ void GlslGeometry::run_lanes(const float* const* corners, int in_varyings, std::
   shader::Invocations& inv = sp_.prepare();
   inv.begin(n);
   const auto primitive = [&](int lane) { return (first + std::size_t(lane)) / std::size_t(invocations_); };
-  const std::uint32_t in_words = 4 + std::uint32_t(in_varyings);
+  const int in_floats = 4 + in_varyings;
   for (const IoVariable& v : sp_.io.inputs) {
     if (!v.slot) continue;
     for (int l = 0; l < n; ++l) {
@@ -58,7 +59,8 @@ void GlslGeometry::run_lanes(const float* const* corners, int in_varyings, std::
             for (const IoWord& w : v.words) {
               std::uint32_t value[2] = {0u, 0u};  // what the previous stage does not write reads 0
               for (int h = 0; h < shader::scalar_words(w.scalar); ++h)
-                if (w.io_word + std::uint32_t(h) < in_words) std::memcpy(&value[h], vertex + w.io_word + h, 4);
+                if (const int f = inputs_.float_of(w.io_word + std::uint32_t(h)); f >= 0 && f < in_floats)
+                  std::memcpy(&value[h], vertex + f, 4);
               set_lane(inv, *v.slot, k * v.element_words + w.var_word, w.scalar, l, value);
             }
           }
@@ -70,7 +72,6 @@ void GlslGeometry::run_lanes(const float* const* corners, int in_varyings, std::
     }
   }
   const int records = vertex_records(varyings_);
-  const std::uint32_t out_words = 4 + std::uint32_t(varyings_);
   const IoVariable* primitive_id_out = nullptr;
   for (const IoVariable& v : sp_.io.outputs)
     if (v.kind == IoKind::PrimitiveId) primitive_id_out = &v;
@@ -90,12 +91,12 @@ void GlslGeometry::run_lanes(const float* const* corners, int in_varyings, std::
     e.vertices.resize(at + std::size_t(records), ClipVertex{});
     auto* floats = reinterpret_cast<std::uint32_t*>(e.vertices.data() + at);
     for (const IoVariable& v : sp_.io.outputs) {
-      if (v.kind != IoKind::User && v.kind != IoKind::Position) continue;
+      if (!v.carries_words()) continue;
       for (const IoWord& w : v.words) {
         std::uint32_t value[2];
         get_lane(inv, *v.slot, w.var_word, w.scalar, lane, value);
         for (int h = 0; h < shader::scalar_words(w.scalar); ++h)
-          if (w.io_word + std::uint32_t(h) < out_words) floats[w.io_word + std::uint32_t(h)] = value[h];
+          if (const int f = outputs_.float_of(w.io_word + std::uint32_t(h)); f >= 0) floats[f] = value[h];
       }
     }
     if (primitive_id_varying_ >= 0)

@@ -8,9 +8,12 @@ namespace tessref::glsl {
 
 class GlslGeometry final : public GeometryProgram {
  public:
-  // varyings: the output vertices' varyings (the fragment shader's inputs); primitive_id_varying:
-  // the varying that carries gl_PrimitiveID to the fragment shader (-1: none).
-  GlslGeometry(const StageProgram& sp, int varyings, const VaryingMask& flat, int primitive_id_varying);
+  // inputs: where the input vertices carry what the stage before wrote; outputs: where the output
+  // vertices carry this stage's outputs; varyings: the output vertices' varyings (the fragment
+  // shader's inputs); primitive_id_varying: the varying that carries gl_PrimitiveID to the
+  // fragment shader (-1: none).
+  GlslGeometry(const StageProgram& sp, const VaryingLayout& inputs, const VaryingLayout& outputs, int varyings,
+               const VaryingMask& flat, int primitive_id_varying);
   int input_vertices() const override { return input_vertices_; }
   int num_varyings() const override { return varyings_; }
   VaryingMask flat_varyings() const override { return flat_; }
@@ -22,6 +25,7 @@ class GlslGeometry final : public GeometryProgram {
   void run_lanes(const float* const* corners, int in_varyings, std::size_t first, int n, std::uint32_t first_id,
                  GeometryOutput& out) const;
   const StageProgram& sp_;
+  VaryingLayout inputs_, outputs_;
   int varyings_;
   VaryingMask flat_;
   int primitive_id_varying_;

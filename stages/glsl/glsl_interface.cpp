@@ -20,6 +20,7 @@ IoKind kind_of_builtin(std::uint32_t b) {
     case spv::BuiltInInstanceId: case spv::BuiltInInstanceIndex: return IoKind::InstanceId;
     case spv::BuiltInPointSize: return IoKind::PointSize;
     case spv::BuiltInClipDistance: return IoKind::ClipDistance;
+    case spv::BuiltInCullDistance: return IoKind::CullDistance;
     case spv::BuiltInFragDepth: return IoKind::FragDepth;
     default: return IoKind::Other;
   }
@@ -76,6 +77,37 @@ struct Walker {
   }
 };
 
+// Whether the module reads or writes member `member` of block variable v (an access chain into it):
+// glslang declares gl_ClipDistance and gl_CullDistance in every gl_PerVertex block, used or not.
+bool member_used(const Module& m, const shader::Variable& v, std::uint32_t member) {
+  for (const shader::Block& block : m.blocks)
+    for (const shader::Instruction& ins : block.body) {
+      if (ins.opcode != spv::OpAccessChain && ins.opcode != spv::OpInBoundsAccessChain) continue;
+      if (ins.operands.at(0) != v.id) continue;
+      std::size_t first = 1;
+      if (m.type(v.type).kind == TypeKind::Array) ++first;  // gl_in[i].member
+      if (ins.operands.size() <= first) continue;
+      const auto c = m.constants.find(ins.operands[first]);
+      if (c != m.constants.end() && c->second.at(0) == member) return true;
+    }
+  return false;
+}
+
+std::uint32_t builtin_word(IoKind kind) {
+  return kind == IoKind::ClipDistance ? kClipDistanceWord : kind == IoKind::CullDistance ? kCullDistanceWord : kPointSizeWord;
+}
+
+// The words of gl_ClipDistance, gl_CullDistance or gl_PointSize (type t) at word `at` of its variable.
+void builtin_words(const Module& m, std::uint32_t type, std::uint32_t at, IoKind kind, std::vector<IoWord>& out) {
+  const Type& t = m.type(type);
+  const std::uint32_t n = t.kind == TypeKind::Array ? t.count : 1;
+  if (kind != IoKind::PointSize && n > kMaxDistances)
+    throw shader::SpirvError(std::string(kind == IoKind::ClipDistance ? "gl_ClipDistance" : "gl_CullDistance") + "[" +
+                             std::to_string(n) + "]: GL_MAX_CLIP_DISTANCES and GL_MAX_CULL_DISTANCES are " +
+                             std::to_string(kMaxDistances));
+  for (std::uint32_t k = 0; k < n; ++k) out.push_back({at + k, builtin_word(kind) + k, shader::Scalar::F32});
+}
+
 bool per_vertex_array(const Module& m, const shader::Variable& v, IoKind kind) {
   if (v.decorations.patch || m.type(v.type).kind != TypeKind::Array) return false;
   if (kind != IoKind::User && kind != IoKind::Position) return false;
@@ -114,12 +146,20 @@ StageInterface read_interface(const shader::Executable& exe, int max_slots) {
     if (io.kind == IoKind::Position) {
       const Type& st = m.type(element);
       if (per_vertex_block) {
-        for (std::size_t i = 0; i < v.member_decorations.size(); ++i)
-          if (v.member_decorations[i].builtin == std::uint32_t(spv::BuiltInPosition))
+        for (std::size_t i = 0; i < v.member_decorations.size(); ++i) {
+          const auto b = v.member_decorations[i].builtin;
+          if (b == std::uint32_t(spv::BuiltInPosition))
             for (std::uint32_t k = 0; k < 4; ++k) io.words.push_back({st.member_word[i] + k, k, shader::Scalar::F32});
+          const IoKind member = b ? kind_of_builtin(*b) : IoKind::Other;
+          if ((member == IoKind::ClipDistance || member == IoKind::CullDistance || member == IoKind::PointSize) &&
+              member_used(m, v, std::uint32_t(i)))
+            builtin_words(m, st.members[i], st.member_word[i], member, io.words);
+        }
       } else {
         for (std::uint32_t k = 0; k < 4; ++k) io.words.push_back({k, k, shader::Scalar::F32});
       }
+    } else if (io.kind == IoKind::ClipDistance || io.kind == IoKind::CullDistance) {
+      builtin_words(m, element, 0, io.kind, io.words);
     } else if (io.kind == IoKind::User) {
       if (!v.decorations.location)
         throw shader::SpirvError("'" + v.name + "' has no location (the front end assigns them)");

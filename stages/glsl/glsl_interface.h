@@ -21,8 +21,37 @@ struct IoWord {
 
 enum class IoKind { User, Position, TessLevelOuter, TessLevelInner, PrimitiveId, InvocationId,
                     PatchVertices, TessCoord, FragCoord, FrontFacing, HelperInvocation, VertexId, InstanceId,
-                    PointSize, ClipDistance, FragDepth, Other };
+                    PointSize, ClipDistance, CullDistance, FragDepth, Other };
 
+// gl_ClipDistance[i], gl_CullDistance[i] and gl_PointSize as I/O words: past the 32 locations, so
+// that they travel between stages (StageVertex) as the other outputs do. 8 distances each:
+// GL_MAX_CLIP_DISTANCES and GL_MAX_CULL_DISTANCES.
+inline constexpr std::uint32_t kMaxDistances = 8;
+inline constexpr std::uint32_t kClipDistanceWord = 4 + 4 * 32;
+inline constexpr std::uint32_t kCullDistanceWord = kClipDistanceWord + kMaxDistances;
+inline constexpr std::uint32_t kPointSizeWord = kCullDistanceWord + kMaxDistances;
+
+// Where a stage's outputs sit in the rasterizer's vertex (gl_Position, then varyings): the user
+// varyings at their I/O words, then the clip distances, the cull distances and gl_PointSize the
+// stage writes (the point size for a geometry shader's gl_in[]; the rasterizer draws 1-pixel points).
+struct VaryingLayout {
+  int user = 0;            // varyings up to the last location written
+  int clip = 0, cull = 0;  // gl_ClipDistance and gl_CullDistance elements written
+  int point_size = 0;      // 1: gl_PointSize written
+  int total() const { return user + clip + cull + point_size; }
+  // The vertex float holding I/O word io; -1 when the vertex does not carry it.
+  int float_of(std::uint32_t io) const {
+    if (io < 4 + std::uint32_t(user)) return int(io);
+    if (io >= kClipDistanceWord && io < kClipDistanceWord + std::uint32_t(clip)) return 4 + user + int(io - kClipDistanceWord);
+    if (io >= kCullDistanceWord && io < kCullDistanceWord + std::uint32_t(cull))
+      return 4 + user + clip + int(io - kCullDistanceWord);
+    if (io == kPointSizeWord && point_size) return 4 + user + clip + cull;
+    return -1;
+  }
+};
+
+// A variable's I/O words: User, Position (gl_PerVertex blocks, whose gl_ClipDistance and
+// gl_CullDistance members are carried with gl_Position) and the stand-alone distance arrays.
 struct IoVariable {
   const shader::Variable* variable = nullptr;
   const shader::VariableSlot* slot = nullptr;
@@ -31,7 +60,11 @@ struct IoVariable {
   bool patch = false;        // 'patch in' / 'patch out'
   std::uint32_t elements = 1;         // arrayed: the array length
   std::uint32_t element_words = 0;    // arrayed: words per element
-  std::vector<IoWord> words;          // User and Position words (per element)
+  std::vector<IoWord> words;          // User, Position and distance words (per element)
+  bool carries_words() const {
+    return kind == IoKind::User || kind == IoKind::Position || kind == IoKind::ClipDistance ||
+           kind == IoKind::CullDistance;
+  }
 };
 
 struct StageInterface {

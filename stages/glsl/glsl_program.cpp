@@ -18,7 +18,7 @@ using shader::Scalar;
 using shader::TypeKind;
 
 // tessref's I/O slot limits (see glsl_interface.h): slot 0 is gl_Position.
-constexpr int kVertexSlots = kMaxStageAttributes;                  // StageVertex::attr
+constexpr int kVertexSlots = 1 + kMaxStageLocations;               // StageVertex::attr
 constexpr int kVaryingSlots = 1 + kMaxVaryings / 4;                // ClipVertex varyings
 constexpr int kPatchSlots = 1 + kMaxPatchAttributes;               // PatchOutput::patch
 
@@ -42,8 +42,6 @@ void refuse_unsupported_io(const shader::Module& m, shader::Stage stage) {
                                " tessref's pipeline does not provide");
     if (v.storage != spv::StorageClassOutput) continue;
     const auto b = v.decorations.builtin;
-    if (b == std::uint32_t(spv::BuiltInClipDistance) || b == std::uint32_t(spv::BuiltInCullDistance))
-      throw shader::SpirvError("gl_ClipDistance and gl_CullDistance (user clip planes) are not supported");
     if (b == std::uint32_t(spv::BuiltInFragDepth) || m.modes.depth_replacing)
       throw shader::SpirvError("gl_FragDepth is not supported (the depth written is the interpolated one)");
     if (stage == shader::Stage::Fragment && v.decorations.location && *v.decorations.location >= kMaxDrawBuffers)
@@ -51,21 +49,6 @@ void refuse_unsupported_io(const shader::Module& m, shader::Stage stage) {
                                ": past GL_MAX_DRAW_BUFFERS (" + std::to_string(kMaxDrawBuffers) +
                                ", locations 0 to " + std::to_string(kMaxDrawBuffers - 1) + ")");
   }
-  // gl_ClipDistance inside gl_PerVertex: an access chain into that member.
-  for (const shader::Block& block : m.blocks)
-    for (const shader::Instruction& ins : block.body) {
-      if (ins.opcode != spv::OpAccessChain && ins.opcode != spv::OpInBoundsAccessChain) continue;
-      const shader::Variable* v = m.variable(ins.operands.at(0));
-      if (!v || v->storage != spv::StorageClassOutput || v->member_decorations.empty()) continue;
-      std::size_t first = 1;
-      if (m.type(v->type).kind == TypeKind::Array) ++first;  // gl_out[i].member
-      if (ins.operands.size() <= first) continue;
-      const auto c = m.constants.find(ins.operands[first]);
-      if (c == m.constants.end() || c->second.at(0) >= v->member_decorations.size()) continue;
-      const auto b = v->member_decorations[c->second[0]].builtin;
-      if (b == std::uint32_t(spv::BuiltInClipDistance) || b == std::uint32_t(spv::BuiltInCullDistance))
-        throw shader::SpirvError("gl_ClipDistance and gl_CullDistance (user clip planes) are not supported");
-    }
 }
 
 std::unique_ptr<StageProgram> make_stage(const shader::CompiledStage& cs, shader::ExecLimits limits,
@@ -317,12 +300,36 @@ GlslProgram::GlslProgram(const shader::CompiledProgram& compiled, shader::ExecLi
                                std::to_string(kMaxVaryings));
     return int(used - 4);
   };
+  // Then the gl_ClipDistance and gl_CullDistance elements it writes (glsl_interface.h).
+  const auto layout_of = [&](const StageProgram& stage) {
+    VaryingLayout l;
+    l.user = varyings_of(stage);
+    for (const IoVariable& v : stage.io.outputs)
+      for (const IoWord& w : v.words) {
+        const int d = int(w.io_word) - int(kClipDistanceWord);
+        if (d >= 0 && d < int(kMaxDistances)) l.clip = std::max(l.clip, d + 1);
+        else if (d >= int(kMaxDistances) && d < 2 * int(kMaxDistances)) l.cull = std::max(l.cull, d - int(kMaxDistances) + 1);
+        else if (w.io_word == kPointSizeWord) l.point_size = 1;
+      }
+    const std::string stage_name = shader::stage_name(stage.stage);
+    if (l.clip + l.cull > int(kMaxDistances))
+      throw shader::SpirvError("the " + stage_name + " writes " + std::to_string(l.clip) + " clip and " +
+                               std::to_string(l.cull) + " cull distances; GL_MAX_COMBINED_CLIP_AND_CULL_DISTANCES is " +
+                               std::to_string(kMaxDistances));
+    if (l.total() > kMaxVaryings)
+      throw shader::SpirvError("the " + stage_name + " writes " + std::to_string(l.user) + " varying components and " +
+                               std::to_string(l.total() - l.user) +
+                               " clip and cull distances and point size; tessref carries " + std::to_string(kMaxVaryings) +
+                               " in all");
+    return l;
+  };
   if (gs_) {
     if (gs_->exe->module().modes.input_vertices < 1 || gs_->exe->module().modes.output_primitive == 0)
       throw shader::SpirvError("geometry shader: it declares no input or output primitive layout");
-    pre_geometry_varyings_ = varyings_of(tes_ ? *tes_ : *vs_);
+    pre_geometry_layout_ = layout_of(tes_ ? *tes_ : *vs_);
   }
-  num_varyings_ = varyings_of(gs_ ? *gs_ : tes_ ? *tes_ : *vs_);
+  out_layout_ = layout_of(gs_ ? *gs_ : tes_ ? *tes_ : *vs_);
+  num_varyings_ = out_layout_.total();
   map_patch_locations();
   // gl_PrimitiveID in the fragment shader: the patch's, carried as one more (flat) varying.
   for (const IoVariable& v : fs_->io.inputs)
@@ -593,18 +600,35 @@ std::shared_ptr<const TessControlProgram> GlslProgram::control(int patch_vertice
 
 std::shared_ptr<const TessEvalProgram> GlslProgram::evaluation() const {
   if (!tes_) throw std::logic_error("evaluation: no tessellation evaluation shader");
-  if (gs_) return std::make_unique<GlslEvaluation>(*tes_, tes_layout(), pre_geometry_varyings_, VaryingMask{}, -1);
-  return std::make_unique<GlslEvaluation>(*tes_, tes_layout(), num_varyings_, flat_varyings_,
+  if (gs_) return std::make_unique<GlslEvaluation>(*tes_, tes_layout(), pre_geometry_layout_, pre_geometry_layout_.total(),
+                                                   VaryingMask{}, -1);
+  return std::make_unique<GlslEvaluation>(*tes_, tes_layout(), out_layout_, num_varyings_, flat_varyings_,
                                           primitive_id_varying_);
 }
 
 std::shared_ptr<const GeometryProgram> GlslProgram::geometry() const {
   if (!gs_) return nullptr;
-  return std::make_unique<GlslGeometry>(*gs_, num_varyings_, flat_varyings_, primitive_id_varying_);
+  return std::make_unique<GlslGeometry>(*gs_, pre_geometry_layout_, out_layout_, num_varyings_, flat_varyings_,
+                                        primitive_id_varying_);
 }
 
 std::shared_ptr<const FragmentProgram> GlslProgram::fragment() const {
-  return std::make_unique<GlslFragment>(*fs_, num_varyings_, primitive_id_varying_);
+  return std::make_unique<GlslFragment>(*fs_, out_layout_, num_varyings_, primitive_id_varying_);
+}
+
+void GlslProgram::rasterizer_vertex(const StageVertex& shaded, ClipVertex* records) const {
+  // The vertex shader's outputs as I/O words, placed as the layout of the stage's output says.
+  const VaryingLayout& layout = gs_ ? pre_geometry_layout_ : out_layout_;
+  const auto* src = reinterpret_cast<const float*>(shaded.attr.data());
+  auto* dst = reinterpret_cast<float*>(records);
+  std::copy_n(src, 4 + layout.user, dst);
+  std::copy_n(src + kClipDistanceWord, layout.clip, dst + 4 + layout.user);
+  std::copy_n(src + kCullDistanceWord, layout.cull, dst + 4 + layout.user + layout.clip);
+  std::copy_n(src + kPointSizeWord, layout.point_size, dst + 4 + layout.user + layout.clip + layout.cull);
+}
+
+DistanceVaryings GlslProgram::distance_varyings() const {
+  return {out_layout_.user, out_layout_.clip, out_layout_.user + out_layout_.clip, out_layout_.cull};
 }
 
 }  // namespace tessref::glsl

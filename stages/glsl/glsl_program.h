@@ -143,7 +143,9 @@ class GlslProgram final : public DrawProgram {
   std::shared_ptr<const GeometryProgram> geometry() const override;
   // The untessellated vertex's varyings: the fragment shader's, or with a geometry shader, the
   // vertex shader's outputs that shader reads (it interpolates nothing).
-  int varyings() const override { return gs_ ? pre_geometry_varyings_ : num_varyings_; }
+  int varyings() const override { return gs_ ? pre_geometry_layout_.total() : num_varyings_; }
+  void rasterizer_vertex(const StageVertex& shaded, ClipVertex* records) const override;
+  DistanceVaryings distance_varyings() const override;
   VaryingMask flat_varyings() const override { return gs_ ? VaryingMask{} : flat_varyings_; }
   bool has_geometry() const { return gs_ != nullptr; }
   // Draw the tessellation evaluation shader's patches with this layout instead of the one it
@@ -161,8 +163,9 @@ class GlslProgram final : public DrawProgram {
   bool cube_map_seamless_ = false;
   std::map<std::uint32_t, std::vector<std::uint32_t>> counter_buffers_;
   std::set<std::uint32_t> bound_storage_;  // bindings bind_storage_buffer filled
-  int num_varyings_ = 0;  // handed to the fragment shader
-  int pre_geometry_varyings_ = 0;  // with a geometry shader: what the stage before it writes
+  int num_varyings_ = 0;  // handed to the fragment shader: out_layout_, then gl_PrimitiveID's
+  VaryingLayout out_layout_;  // the last stage before the rasterizer's outputs
+  VaryingLayout pre_geometry_layout_;  // with a geometry shader: the outputs of the stage before it
   VaryingMask flat_varyings_;  // TriangleBatch::flat_varyings
   int primitive_id_varying_ = -1;
   std::optional<TessLayout> tes_layout_override_;  // the varying carrying gl_PrimitiveID to the FS, -1: none

@@ -217,12 +217,12 @@ void GlslEvaluation::evaluate_lanes(const PatchOutput& patch, int primitive_id, 
   for (int r = 0; r < varyings_; ++r) std::fill_n(batch.varyings[r] + first, n, 0.0f);
   for (int c = 0; c < 4; ++c) std::fill_n(batch.position[c] + first, n, 0.0f);
   for (const IoVariable& v : sp_.io.outputs) {
-    if (v.kind != IoKind::User && v.kind != IoKind::Position) continue;
+    if (!v.carries_words()) continue;
     for (const IoWord& w : v.words) {
       const std::uint32_t* row = inv.row(*v.slot, w.var_word);
       auto dst = [&](std::uint32_t io) -> float* {
-        float* r = io < 4 ? batch.position[io] : int(io - 4) < varyings_ ? batch.varyings[io - 4] : nullptr;
-        return r ? r + first : nullptr;
+        const int f = outputs_.float_of(io);
+        return f < 0 ? nullptr : f < 4 ? batch.position[f] + first : batch.varyings[f - 4] + first;
       };
       if (w.scalar == Scalar::F64) {  // a double's lanes are interleaved: two varying rows
         float* lo = dst(w.io_word);
@@ -305,11 +305,13 @@ void GlslFragment::shade_lanes(FragmentBatch& batch, int first, int n) const {
           std::memcpy(inv.row(*v.slot, 0), batch.varyings[primitive_id_varying_] + first, 4 * std::size_t(n));
         break;
       case IoKind::User:
+      case IoKind::ClipDistance:  // interpolated like the varyings (GL 4.6 15.2.2)
+      case IoKind::CullDistance:
         for (const IoWord& w : v.words) {
           std::uint32_t* row = inv.row(*v.slot, w.var_word);
-          const int k = int(w.io_word) - 4;
+          const int k = inputs_.float_of(w.io_word) - 4;
           const int nw = shader::scalar_words(w.scalar);
-          if (k + nw > batch.num_varyings) {
+          if (k < 0 || k + nw > batch.num_varyings) {
             std::fill_n(row, n * nw, 0u);
           } else if (w.scalar == Scalar::F64) {  // two varying rows into interleaved lanes
             for (int l = 0; l < n; ++l) {
@@ -351,8 +353,8 @@ void GlslFragment::shade_lanes(FragmentBatch& batch, int first, int n) const {
     if (killed[l]) batch.live[first + l] = 0;
 }
 
-GlslFragment::GlslFragment(const StageProgram& sp, int varyings, int primitive_id_varying)
-    : sp_(sp), varyings_(varyings), primitive_id_varying_(primitive_id_varying),
+GlslFragment::GlslFragment(const StageProgram& sp, const VaryingLayout& inputs, int varyings, int primitive_id_varying)
+    : sp_(sp), inputs_(inputs), varyings_(varyings), primitive_id_varying_(primitive_id_varying),
       samples_textures_(sp.exe->samples_textures()) {
   for (const IoVariable& v : sp_.io.outputs)
     if (v.kind == IoKind::User)
@@ -428,7 +430,7 @@ void run_vertex_stage(const StageProgram& sp, const std::vector<VertexAttribute>
     sp.finish(inv);
     for (int l = 0; l < n; ++l) out[start + std::size_t(l)] = StageVertex{};
     for (const IoVariable& v : sp.io.outputs) {
-      if (v.kind != IoKind::User && v.kind != IoKind::Position) continue;
+      if (!v.carries_words()) continue;
       for (const IoWord& w : v.words) {
         if (w.io_word + shader::scalar_words(w.scalar) > kVertexWords) continue;
         for (int l = 0; l < n; ++l) get_lane(inv, *v.slot, w.var_word, w.scalar, l, words_of(out[start + std::size_t(l)]) + w.io_word);

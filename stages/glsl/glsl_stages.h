@@ -43,9 +43,11 @@ class PassThroughControl final : public TessControlProgram {
 class GlslEvaluation final : public TessEvalProgram {
  public:
   // primitive_id_varying: the varying that carries gl_PrimitiveID to the fragment shader (-1: none).
-  GlslEvaluation(const StageProgram& sp, const TessLayout& layout, int varyings, const VaryingMask& flat,
-                 int primitive_id_varying)
-      : sp_(sp), layout_(layout), varyings_(varyings), flat_(flat), primitive_id_varying_(primitive_id_varying) {}
+  // outputs: where its outputs go in the rasterizer's vertex; varyings: that vertex's varyings.
+  GlslEvaluation(const StageProgram& sp, const TessLayout& layout, const VaryingLayout& outputs, int varyings,
+                 const VaryingMask& flat, int primitive_id_varying)
+      : sp_(sp), layout_(layout), outputs_(outputs), varyings_(varyings), flat_(flat),
+        primitive_id_varying_(primitive_id_varying) {}
   TessLayout layout() const override { return layout_; }
   int num_varyings() const override { return varyings_; }
   VaryingMask flat_varyings() const override { return flat_; }
@@ -59,6 +61,7 @@ class GlslEvaluation final : public TessEvalProgram {
   void evaluate_lanes(const PatchOutput& patch, int primitive_id, TessEvalBatch& batch, int first, int n) const;
   const StageProgram& sp_;
   TessLayout layout_;
+  VaryingLayout outputs_;
   int varyings_;
   VaryingMask flat_;
   int primitive_id_varying_;
@@ -67,7 +70,7 @@ class GlslEvaluation final : public TessEvalProgram {
 
 class GlslFragment final : public FragmentProgram {
  public:
-  GlslFragment(const StageProgram& sp, int varyings, int primitive_id_varying);
+  GlslFragment(const StageProgram& sp, const VaryingLayout& inputs, int varyings, int primitive_id_varying);
   FragmentOutput shade(const FragmentInput& in) const override;
   void shade_batch(FragmentBatch& batch) const override;
   bool may_discard() const override { return sp_.exe->may_discard(); }
@@ -77,6 +80,7 @@ class GlslFragment final : public FragmentProgram {
  private:
   void shade_lanes(FragmentBatch& batch, int first, int n) const;  // lanes [first, first + n)
   const StageProgram& sp_;
+  VaryingLayout inputs_;  // where the rasterizer's vertex carries what the fragment shader reads
   int varyings_;
   int primitive_id_varying_;
   bool samples_textures_;  // the lanes llvmpipe samples together then matter (shade_batch)

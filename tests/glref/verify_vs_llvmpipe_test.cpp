@@ -303,6 +303,19 @@ TEST_F(VerifyVsLlvmpipe, GeometryShadersMatchOnEveryPixel) {
   }
 }
 
+// User clip planes and cull distances (gl_ClipDistance, gl_CullDistance) written by the evaluation
+// shader, and handed on from gl_in[] by a geometry shader drawing outlines: llvmpipe's pixels,
+// the cut edges along the user planes drawn as Mesa draws them.
+TEST_F(VerifyVsLlvmpipe, UserClipPlanesMatchOnEveryPixel) {
+  const std::string draws = std::string(TESSREF_SOURCE_DIR) + "/tests/data/draws/";
+  for (const std::string name : {"clip_distances", "clip_distances_gs"}) {
+    const test::CliRun r = capture_and_verify(draws + name + ".json", path(name));
+    EXPECT_EQ(r.exit_code, 0) << name << "\n" << r.output;
+    EXPECT_THAT(r.output, HasSubstr("colour: 100.0000% of pixels within 1/255")) << name;
+    EXPECT_THAT(r.output, HasSubstr("raster coverage: 0 pixels differ from the driver's")) << name;
+  }
+}
+
 // A capture that keeps the records of every k-th patch only (--tess-records) still compares every
 // patch's coordinates, by digest: a patch outside the sample whose digest differs is named.
 TEST_F(VerifyVsLlvmpipe, SampledCapturesCompareEveryPatchByDigest) {

@@ -56,7 +56,7 @@ TEST(DrawsScene, SameBytesAtOneAndEightThreads) {
     EXPECT_EQ(one.framebuffer.depth, eight.framebuffer.depth) << f;
     ++scenes;
   }
-  EXPECT_EQ(scenes, 17);
+  EXPECT_EQ(scenes, 19);
 }
 
 // Each draw with its own program: a flat-coloured strip, then the patches depth-tested against it.
@@ -284,7 +284,9 @@ TEST(DrawsScene, BadFramebuffersNameTheKeyAndTheRule) {
   expect_error({"framebuffer.color.0.file=\"heightmap.pgm\""}, "is 32x32, the image 256x256");
   expect_error({"framebuffer.color.0.file=\"missing.png\""}, "framebuffer.color.0: ");
   expect_error({"draws.1.clear={}"}, "draws.1.clear.color: give color, depth or both");
-  expect_error({"draws.1.enable=[\"GL_FRAMEBUFFER_sRGB\"]"}, "GL_DEPTH_CLAMP or GL_TEXTURE_CUBE_MAP_SEAMLESS, got a string (\"GL_FRAMEBUFFER_sRGB\")");
+  expect_error({"draws.1.enable=[\"GL_FRAMEBUFFER_sRGB\"]"},
+               "GL_TEXTURE_CUBE_MAP_SEAMLESS or GL_CLIP_DISTANCE0 to GL_CLIP_DISTANCE7, got a string (\"GL_FRAMEBUFFER_sRGB\")");
+  expect_error({"draws.1.enable=[\"GL_CLIP_DISTANCE8\"]"}, "draws.1.enable: expected GL_DEPTH_TEST");
   const std::string mesh = error_of("../../../scenes/default.json", {"framebuffer={\"color\": \"x.png\"}"});
   EXPECT_NE(mesh.find("framebuffer: takes a scene of draws"), std::string::npos) << mesh;
 }

@@ -392,17 +392,20 @@ TEST(GlslErrors, SamplersAndLanguageFeaturesOutsideTessrefAreRefusedByName) {
   }
 }
 
-// docs/executor.md lists, under "Not supported (each refused with its name)", gl_ClipDistance,
-// fragment outputs past GL_MAX_DRAW_BUFFERS (location 8 on) and interpolateAt*.
-TEST(GlslErrors, ClipDistanceHighOutputsAndInterpolateAtAreRefusedByName) {
+// docs/executor.md lists, under "Not supported (each refused with its name)", fragment outputs
+// past GL_MAX_DRAW_BUFFERS (location 8 on) and interpolateAt*; more clip and cull distances than
+// GL_MAX_COMBINED_CLIP_AND_CULL_DISTANCES fail to link.
+TEST(GlslErrors, HighOutputsInterpolateAtAndTooManyDistancesAreRefusedByName) {
   struct Case {
     const char* name;
     std::string sections;  // evaluation main() and fragment shader
     std::string named;
   };
   const std::vector<Case> cases = {
-      {"clip", "void main() {\n  gl_Position = corner_mix();\n  gl_ClipDistance[0] = 1.0;\n}\n\n" + std::string(kGreen),
-       "gl_ClipDistance"},
+      {"distances", "out float gl_ClipDistance[6];\nout float gl_CullDistance[3];\nvoid main() {\n"
+                    "  gl_Position = corner_mix();\n  gl_ClipDistance[5] = 1.0;\n  gl_CullDistance[2] = 1.0;\n}\n\n" +
+                        std::string(kGreen),
+       "6 clip and 3 cull distances; GL_MAX_COMBINED_CLIP_AND_CULL_DISTANCES is 8"},
       {"location8", "void main() { gl_Position = corner_mix(); }\n\n[fragment shader]\nlayout(location = 8) out vec4 o;\n"
                     "void main() { o = vec4(0.0, 1.0, 0.0, 1.0); }\n\n",
        "location 8: past GL_MAX_DRAW_BUFFERS (8"},
