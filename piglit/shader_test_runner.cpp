@@ -12,10 +12,13 @@
 #include <new>
 #include <set>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "render/draw_call.h"
 #include "render/draw_scene.h"
 #include "scene/draw_schema.h"
 #include "shader/glsl_compile.h"
+#include "shader/glsl_rewrite.h"
 #include "stages/glsl/glsl_program.h"
 #include "texture/texture.h"
 
@@ -189,17 +192,20 @@ class Runner {
     const bool expect_link_error = std::any_of(f_.commands.begin(), f_.commands.end(), [](const TestCommand& c) {
       return c.kind == CommandKind::LinkError;
     });
+    // shader_runner's context is a compatibility-profile one unless the file asks for core.
+    const bool compatibility = !(f_.requirements.gl && f_.requirements.gl->profile == Profile::Core);
     std::vector<shader::ShaderSource> sources;
     for (const ShaderSection& s : f_.shaders) {
       if (s.language == ShaderLanguage::Passthrough)
-        sources.push_back({shader::Stage::Vertex, f_.file_name, 1, kPassthrough});
+        sources.push_back({shader::Stage::Vertex, f_.file_name, 1, kPassthrough, compatibility});
       else
-        sources.push_back({to_stage(s.stage), f_.file_name, s.first_line, s.source});
+        sources.push_back({to_stage(s.stage), f_.file_name, s.first_line, s.source, compatibility});
     }
     try {
       const shader::CompiledProgram compiled = shader::compile_program(sources);
       if (expect_link_error) return {Verdict::Fail, "the program linked, but the file expects a link error"};
       program_ = std::make_unique<glsl::GlslProgram>(compiled, options_.limits);
+      set_matrices();
     } catch (const shader::CompileError& e) {
       if (expect_link_error) return {Verdict::Pass, {}};
       return {Verdict::Fail, e.what()};
@@ -224,10 +230,26 @@ class Runner {
     throw Failure{std::to_string(c.line) + ": " + what + " [" + c.text + "]"};
   }
 
+  // The compatibility profile's matrices, where the program reads them (glsl_rewrite.h): the
+  // projection glOrtho set ('ortho'), the identity modelview.
+  void set_matrices() {
+    const glm::mat4 modelview(1.0f);
+    const glm::mat4 values[3] = {projection_ * modelview, modelview, projection_};
+    for (int i = 0; i < 3; ++i) {
+      const char* name = shader::kCompatibilityMatrices[i][1];
+      if (!program_->uniform_shape(name)) continue;
+      glsl::UniformValue v{shader::Scalar::F32, 4, 4, {}};
+      for (int col = 0; col < 4; ++col)
+        for (int row = 0; row < 4; ++row) v.words.push_back(float_bits(values[i][col][row]));
+      program_->set_uniform(name, v);
+    }
+  }
+
   void load_vertex_data() {
     if (!f_.vertex_data) return;
     for (const VertexColumn& col : f_.vertex_data->columns) {
-      const auto location = program_->attribute_location(col.name);
+      const auto location =
+          program_->attribute_location(col.name == "gl_Vertex" ? shader::kCompatibilityVertex : col.name);
       if (!location) continue;  // not an active input
       if (col.glsl_type.columns != 1)
         throw Failure{"[vertex data] matrix attribute '" + col.name + "' is not supported"};
@@ -304,14 +326,16 @@ class Runner {
     }
     const double px[4] = {x, x + w, x, x + w}, py[4] = {y, y, y + h, y + h};
     std::vector<glsl::VertexAttribute> attributes;
-    if (auto loc = program_->attribute_location("piglit_vertex")) {
-      glsl::VertexAttribute a;
-      a.location = *loc;
-      a.components = 4;
-      for (int i = 0; i < 4; ++i)
-        for (float v : {float(px[i]), float(py[i]), 0.0f, 1.0f}) a.words.push_back(float_bits(v));
-      attributes.push_back(std::move(a));
-    }
+    // piglit_draw_rect's corners: piglit_vertex, or gl_Vertex in the compatibility profile.
+    for (const char* name : {"piglit_vertex", shader::kCompatibilityVertex})
+      if (auto loc = program_->attribute_location(name)) {
+        glsl::VertexAttribute a;
+        a.location = *loc;
+        a.components = 4;
+        for (int i = 0; i < 4; ++i)
+          for (float v : {float(px[i]), float(py[i]), 0.0f, 1.0f}) a.words.push_back(float_bits(v));
+        attributes.push_back(std::move(a));
+      }
     if (auto loc = program_->attribute_location("piglit_texcoord")) {
       glsl::VertexAttribute a;
       a.location = *loc;
@@ -498,6 +522,13 @@ class Runner {
         break;
       }
       case CommandKind::LinkSuccess: break;
+      case CommandKind::Ortho: {  // glOrtho(l, r, b, t, -1, 1); without numbers the window's pixels
+        const bool pixels = c.numbers.size() < 4;
+        projection_ = glm::ortho(pixels ? 0.0f : float(n[0]), pixels ? float(fb_.width) : float(n[1]),
+                                 pixels ? 0.0f : float(n[2]), pixels ? float(fb_.height) : float(n[3]), -1.0f, 1.0f);
+        set_matrices();
+        break;
+      }
       default: fail(c, "command not supported by tessref's shader-test runner");
     }
   }
@@ -509,6 +540,7 @@ class Runner {
   Framebuffer fb_;
   RasterState state_;
   glm::vec4 clear_color_{0.0f};
+  glm::mat4 projection_{1.0f};  // the compatibility profile's GL_PROJECTION matrix
   glm::vec4 default_outer_{1.0f};
   glm::vec2 default_inner_{1.0f};
   int patch_vertices_ = 3;

@@ -26,6 +26,10 @@ struct ShaderSource {
   std::string file;    // for messages and OpLine
   int first_line = 1;  // the line of `file` where `text` starts (piglit sections start mid-file)
   std::string text;
+  // A compatibility-profile context (piglit's shader_runner without a core requirement): the
+  // fixed-function matrices, gl_Vertex and gl_FrontColor/gl_Color become declared variables
+  // (glsl_rewrite.h) that the caller feeds. Otherwise they are refused by name.
+  bool compatibility = false;
 };
 
 struct CompiledStage {

@@ -132,6 +132,7 @@ class Rewriter {
   }
 
   RewrittenSource run() {
+    if (source_.compatibility) rewrite_compatibility_state();
     refuse_compatibility_state();
     const int version = rewrite_version();
     remove_core_extensions();
@@ -188,9 +189,33 @@ class Rewriter {
     edits_.push_back({pos, length, std::move(with)});
   }
 
+  // The compatibility-profile state piglit's shader_runner feeds, as declared variables.
+  void rewrite_compatibility_state() {
+    const auto declare = [&](std::string_view from, const char* to, const std::string& declaration) {
+      const Word* first = find_word(from);
+      if (!first) return;
+      rename_all(from, to);
+      declarations_.push_back(declaration);
+      std::string what(from);  // appended piecewise, as rename_noted does
+      what.append(" read as '").append(declaration).append("' (compatibility profile)");
+      note(first->pos, what);
+      fed_.push_back(from);
+    };
+    for (const auto& [from, to] : kCompatibilityMatrices)
+      declare(from, to, std::string("uniform mat4 ") + to + ";");
+    if (source_.stage == Stage::Vertex)
+      declare("gl_Vertex", kCompatibilityVertex, std::string("in vec4 ") + kCompatibilityVertex + ";");
+    if (source_.stage == Stage::Fragment) {
+      declare("gl_Color", "tessref_Color", "in vec4 tessref_Color;");
+    } else if (source_.stage != Stage::TessControl) {
+      declare("gl_FrontColor", "tessref_Color", "out vec4 tessref_Color;");
+    }
+  }
+
   void refuse_compatibility_state() const {
     for (const Word& w : words_)
-      if (const char* hint = compatibility_hint(w.text))
+      if (std::find(fed_.begin(), fed_.end(), w.text) != fed_.end()) continue;
+      else if (const char* hint = compatibility_hint(w.text))
         fail(w.pos, "'" + std::string(w.text) +
                         "' is compatibility-profile fixed-function state, which tessref does not "
                         "support; " + hint + " instead");
@@ -328,6 +353,7 @@ class Rewriter {
   };
 
   const ShaderSource& source_;
+  std::vector<std::string_view> fed_;  // compatibility state rewritten, not refused
   std::string code_;
   std::vector<std::size_t> line_starts_;
   std::vector<Directive> directives_;

@@ -18,6 +18,16 @@ struct RewrittenSource {
 
 // Throws CompileError for what tessref refuses: an unknown or OpenGL ES #version, and
 // compatibility-profile fixed-function state (gl_ModelViewProjectionMatrix, gl_ClipVertex, ...).
+// With source.compatibility, the state a caller can feed becomes declared variables instead:
+// gl_ModelViewProjectionMatrix, gl_ModelViewMatrix and gl_ProjectionMatrix the uniforms
+// kCompatibilityMatrices name, gl_Vertex the vertex input kCompatibilityVertex, gl_FrontColor and
+// the fragment shader's gl_Color the varying tessref_Color.
 RewrittenSource rewrite_glsl(const ShaderSource& source);
+
+inline constexpr const char* kCompatibilityVertex = "tessref_Vertex";
+inline constexpr const char* kCompatibilityMatrices[3][2] = {
+    {"gl_ModelViewProjectionMatrix", "tessref_ModelViewProjectionMatrix"},
+    {"gl_ModelViewMatrix", "tessref_ModelViewMatrix"},
+    {"gl_ProjectionMatrix", "tessref_ProjectionMatrix"}};
 
 }  // namespace tessref::shader

@@ -828,7 +828,7 @@ TEST(GlslErrors, HugeAndNegativeDrawArgumentsFailAtTheirLine) {
   EXPECT_EQ(r.verdict, Verdict::Fail);
   EXPECT_EQ(r.reason, str(line_of(huge, "draw arrays")) +
                           ": draw: 600000000 vertices to shade, more than tessref's limit of 4194304 per draw "
-                          "(2112 MiB of shaded vertices) [draw arrays GL_PATCHES 0 600000000]");
+                          "(2432 MiB of shaded vertices) [draw arrays GL_PATCHES 0 600000000]");
   const std::string negative = head + "draw arrays GL_PATCHES -1 4\n";
   r = run_text(negative);
   EXPECT_EQ(r.verdict, Verdict::Fail);

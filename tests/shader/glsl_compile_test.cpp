@@ -1,6 +1,7 @@
 // The GLSL front-end: compile + link + legalize, the source rewrites, the error messages, and
 // the project's own GLSL twins.
 #include "shader/glsl_compile.h"
+#include "shader/glsl_rewrite.h"
 #include "shader/spirv_module.h"
 
 #include <gmock/gmock.h>
@@ -544,6 +545,27 @@ void main() {
   const char* clip = "#version 150 compatibility\nvoid main() { gl_ClipVertex = vec4(0.0); }\n";
   EXPECT_THAT(error_of({{Stage::Vertex, "c.vert", 1, clip}}),
               HasSubstr("c.vert:2: error: 'gl_ClipVertex' is compatibility-profile"));
+}
+
+// In a compatibility-profile context (piglit's shader_runner), the state the runner feeds becomes
+// declared variables, each noted; gl_ClipVertex, which it does not feed, stays refused.
+TEST(GlslCompile, CompatibilityStateTheCallerFeedsIsDeclared) {
+  const char* vertex = "#version 130\nvoid main() {\n  gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n"
+                       "  gl_FrontColor = vec4(1.0);\n}\n";
+  const char* fragment = "#version 130\nvoid main() { gl_FragColor = gl_Color; }\n";
+  shader::ShaderSource vs{Stage::Vertex, "c.shader_test", 10, vertex, true};
+  const shader::RewrittenSource r = shader::rewrite_glsl(vs);
+  EXPECT_THAT(r.text, HasSubstr("uniform mat4 tessref_ModelViewProjectionMatrix;\nin vec4 tessref_Vertex;\n"
+                                "out vec4 tessref_Color;\n#line 10\n"));
+  EXPECT_THAT(r.text, HasSubstr("gl_Position = tessref_ModelViewProjectionMatrix * tessref_Vertex;"));
+  EXPECT_THAT(r.notes, Contains("c.shader_test:12: gl_Vertex read as 'in vec4 tessref_Vertex;' (compatibility profile)"));
+  const shader::CompiledProgram p =
+      shader::compile_program({vs, {Stage::Fragment, "c.shader_test", 20, fragment, true}});
+  EXPECT_EQ(p.stages.size(), 2u);
+  // The same text outside a compatibility context is refused, as is gl_ClipVertex within one.
+  EXPECT_THAT(error_of({{Stage::Vertex, "c.shader_test", 10, vertex}}), HasSubstr("'gl_ModelViewProjectionMatrix' is"));
+  shader::ShaderSource clip{Stage::Vertex, "v.vert", 1, "#version 130\nvoid main() { gl_ClipVertex = vec4(0.0); }\n", true};
+  EXPECT_THROW(shader::rewrite_glsl(clip), shader::CompileError);
 }
 
 TEST(GlslCompile, OpenGlEsIsRefused) {
