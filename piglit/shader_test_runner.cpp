@@ -106,7 +106,6 @@ std::string unmet_requirement(const ShaderTestFile& f) {
   }
   if (r.gl) {
     if (r.gl->profile == Profile::Es) return "OpenGL ES";
-    if (r.gl->profile == Profile::Compat) return "a compatibility-profile context (fixed-function state)";
     if (!compare(45, r.gl->comparison, r.gl->major * 10 + r.gl->minor)) return "GL version requirement not met by 4.5";
   }
   for (const ExtensionRequirement& e : r.extensions) {
@@ -125,9 +124,14 @@ std::string unmet_requirement(const ShaderTestFile& f) {
     if (s.language == ShaderLanguage::Spirv) return "SPIR-V assembly shaders";
     if (s.language == ShaderLanguage::ArbAssembly) return "ARB assembly programs";
   }
+  // The compatibility profile's state beyond what the runner feeds (glsl_rewrite.h).
   for (const TestCommand& c : f.commands)
-    if (c.kind == CommandKind::NewList || c.kind == CommandKind::CallList)
-      return "display lists (compatibility profile)";
+    if (c.kind == CommandKind::ClipPlane) return "glClipPlane's user clip planes (compatibility profile)";
+  for (const ShaderSection& s : f.shaders)
+    for (const char* name : {"gl_FrontSecondaryColor", "gl_SecondaryColor", "gl_BackColor", "gl_ClipVertex"})
+      if (s.source.find(name) != std::string::npos)
+        return std::string(name) + " (compatibility profile: tessref feeds gl_Vertex, the matrices and "
+                                   "gl_FrontColor/gl_Color only)";
   return {};
 }
 
@@ -140,6 +144,11 @@ shader::Stage to_stage(ShaderStage s) {
     default: return shader::Stage::Fragment;
   }
 }
+
+// The fixed-function fragment stage with its defaults (no texturing, no fog, no colour sum): the
+// primary colour, or, when no shader writes gl_FrontColor (GL: undefined), 0.
+constexpr const char* kFixedFunctionFragment = "#version 150\nvoid main() { gl_FragColor = gl_Color; }\n";
+constexpr const char* kFixedFunctionFragmentUnlit = "#version 150\nvoid main() { gl_FragColor = vec4(0.0); }\n";
 
 // piglit's [vertex shader passthrough]: piglit_vertex (location 0) to gl_Position.
 constexpr const char* kPassthrough =
@@ -201,6 +210,15 @@ class Runner {
       else
         sources.push_back({to_stage(s.stage), f_.file_name, s.first_line, s.source, compatibility});
     }
+    // The compatibility profile's fixed-function fragment stage: the primary colour.
+    const bool has_fragment = std::any_of(f_.shaders.begin(), f_.shaders.end(),
+                                          [](const ShaderSection& s) { return s.stage == ShaderStage::Fragment; });
+    const bool front_color = std::any_of(f_.shaders.begin(), f_.shaders.end(), [](const ShaderSection& s) {
+      return s.source.find("gl_FrontColor") != std::string::npos;
+    });
+    if (compatibility && !has_fragment)
+      sources.push_back({shader::Stage::Fragment, f_.file_name, 1,
+                         front_color ? kFixedFunctionFragment : kFixedFunctionFragmentUnlit, true});
     try {
       const shader::CompiledProgram compiled = shader::compile_program(sources);
       if (expect_link_error) return {Verdict::Fail, "the program linked, but the file expects a link error"};
@@ -390,7 +408,41 @@ class Runner {
       }
   }
 
+  // Display lists (compatibility profile): the draws and the patch parameters between newlist and
+  // endlist are compiled into the list (and run too with GL_COMPILE_AND_EXECUTE); calllist runs them.
+  static bool listable(CommandKind k) {
+    return k == CommandKind::DrawArrays || k == CommandKind::DrawRect || k == CommandKind::PatchVertices ||
+           k == CommandKind::PatchDefaultOuterLevel || k == CommandKind::PatchDefaultInnerLevel;
+  }
   void execute(const TestCommand& c) {
+    if (c.kind == CommandKind::NewList) {
+      if (recording_) fail(c, "newlist inside a display list is GL_INVALID_OPERATION");
+      recording_ = true;
+      execute_while_recording_ = !c.words.empty() && c.words[0] == "GL_COMPILE_AND_EXECUTE";
+      list_.clear();
+      return;
+    }
+    if (c.kind == CommandKind::EndList) {
+      if (!recording_) fail(c, "endlist without newlist is GL_INVALID_OPERATION");
+      recording_ = false;
+      return;
+    }
+    if (c.kind == CommandKind::CallList) {
+      for (const TestCommand* listed : list_) run_command(*listed);
+      return;
+    }
+    if (c.kind == CommandKind::DeleteList) {
+      list_.clear();
+      return;
+    }
+    if (recording_ && listable(c.kind)) {
+      list_.push_back(&c);
+      if (!execute_while_recording_) return;
+    }
+    run_command(c);
+  }
+
+  void run_command(const TestCommand& c) {
     const auto& n = c.numbers;
     switch (c.kind) {
       case CommandKind::ClearColor: clear_color_ = glm::vec4(n[0], n[1], n[2], n[3]); break;
@@ -541,6 +593,8 @@ class Runner {
   RasterState state_;
   glm::vec4 clear_color_{0.0f};
   glm::mat4 projection_{1.0f};  // the compatibility profile's GL_PROJECTION matrix
+  bool recording_ = false, execute_while_recording_ = false;  // between newlist and endlist
+  std::vector<const TestCommand*> list_;                        // the display list
   glm::vec4 default_outer_{1.0f};
   glm::vec2 default_inner_{1.0f};
   int patch_vertices_ = 3;
