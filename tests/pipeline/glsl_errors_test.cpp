@@ -284,24 +284,29 @@ void main() { gl_Position = gl_in[0].gl_Position; EmitVertex(); }
   EXPECT_NE(r.reason.find("expected (0, 255, 0, 255), observed (51, 51, 51, 51)"), std::string::npos) << r.reason;
 }
 
-TEST(GlslErrors, CompatibilityStateIsRefusedByName) {
-  const std::string text = std::string(kRequire) + R"([vertex shader]
+// A file that asks for a core context refuses the compatibility profile's state by name. Without
+// that (shader_runner's compatibility context), the matrices and gl_Vertex are fed: the identity
+// matrix draws the rectangle; a file that needs glClipPlane is skipped before anything is compiled.
+TEST(GlslErrors, CompatibilityStateIsRefusedByNameInACoreContext) {
+  const std::string body = R"([vertex shader]
 in vec4 piglit_vertex;
 void main() {
   gl_Position = gl_ModelViewProjectionMatrix * piglit_vertex;
 }
 
-)" + kControl + kEvaluation + kGreen + kDrawGreen;
-  const ShaderTestResult r = run_text(text, "compat.shader_test");
+)" + std::string(kControl) + kEvaluation + kGreen + kDrawGreen;
+  const std::string core = "[require]\nGL CORE >= 4.0\nGLSL >= 1.50\n\n" + body;
+  const ShaderTestResult r = run_text(core, "compat.shader_test");
   EXPECT_EQ(r.verdict, Verdict::Fail);
-  EXPECT_EQ(r.reason, "compat.shader_test:" + str(line_of(text, "gl_ModelViewProjectionMatrix")) +
+  EXPECT_EQ(r.reason, "compat.shader_test:" + str(line_of(core, "gl_ModelViewProjectionMatrix")) +
                           ": error: 'gl_ModelViewProjectionMatrix' is compatibility-profile fixed-function "
                           "state, which tessref does not support; pass the matrix as a uniform instead");
-  // A file that asks for a compatibility context is skipped before anything is compiled.
-  const ShaderTestResult skipped = run_text("[require]\nGL COMPAT >= 3.1\nGLSL >= 1.50\n\n" +
-                                            text.substr(std::string(kRequire).size()));
+  const ShaderTestResult fed = run_text(std::string(kRequire) + body, "fed.shader_test");
+  EXPECT_EQ(fed.verdict, Verdict::Pass) << fed.reason;
+  const ShaderTestResult skipped =
+      run_text("[require]\nGL COMPAT >= 3.1\nGLSL >= 1.50\n\n" + body + "clip plane 0 0 1 0 0.5\n");
   EXPECT_EQ(skipped.verdict, Verdict::Skip);
-  EXPECT_EQ(skipped.reason, "a compatibility-profile context (fixed-function state)");
+  EXPECT_EQ(skipped.reason, "glClipPlane's user clip planes (compatibility profile)");
 }
 
 TEST(GlslErrors, RuntimeSizedShaderStorageBlockIsRefusedByName) {
