@@ -35,6 +35,7 @@ struct FragmentBatch {
   alignas(32) float color[4][kFragmentLanes];       // outputs: location 0
   alignas(32) float aux[4][kFragmentLanes];         // location 1
   alignas(32) float more[kMaxDrawBuffers - 2][4][kFragmentLanes];  // locations 2 to 7
+  alignas(32) float frag_depth[kFragmentLanes];     // gl_FragDepth, when writes_depth()
   std::uint8_t live[kFragmentLanes];
   std::uint8_t front_facing[kFragmentLanes];
   int lanes() const { return 4 * quads; }
@@ -55,6 +56,9 @@ struct FragmentProgram {
   // Whether shade_batch may clear a lane's live flag (GLSL discard). The rasterizer then tests
   // depth again and writes it only after shading, in arrival order.
   virtual bool may_discard() const { return false; }
+  // Whether shade_batch writes gl_FragDepth (batch.frag_depth): the depth test then takes it, after
+  // shading, instead of the interpolated depth.
+  virtual bool writes_depth() const { return false; }
   // Whether shade_batch reads other lanes of a quad (derivatives). Only then do the lanes that
   // cover nothing need their own inputs (helper invocations); otherwise nothing can see them.
   virtual bool reads_quads() const { return false; }

@@ -189,10 +189,11 @@ FragmentSink::FragmentSink(const FragmentProgram& fs, Framebuffer& fb, int num_v
       fb_(fb),
       draw_buffers_(fb.draw_buffers()),
       depth_format_(fb.depth_format),
-      depth_test_(state.depth_test),
       depth_write_(state.depth_test && state.depth_write),
       depth_func_(state.depth_func),
-      late_depth_(state.depth_test && fs.may_discard()),
+      late_depth_(state.depth_test && (fs.may_discard() || fs.writes_depth())),
+      early_test_(state.depth_test && !fs.writes_depth()),
+      shader_depth_(fs.writes_depth()),
       helpers_(fs.reads_quads() || fs.shades_whole_vectors()),
       vectors_(fs.shades_whole_vectors()),
       blend_(state.blend),
@@ -222,7 +223,7 @@ void FragmentSink::flush() {
     if (!batch_.live[l]) continue;
     const std::size_t idx = pixel_[l];
     if (late_depth_) {  // lanes in arrival order: the test against fragments shaded before
-      const float z = stored_depth(batch_.frag_coord[2][l]);
+      const float z = shader_depth_ ? shader_depth(batch_.frag_depth[l]) : stored_depth(batch_.frag_coord[2][l]);
       if (!depth_passes(z, fb_.depth[idx])) {
         ++depth_failed_;
         continue;
@@ -310,7 +311,7 @@ struct Scanner {
             const int x = xs + i;
             const int lane = base + 2 * (x - seg_x) - (x & 1) + 2 * r;  // 4 * quad + (x & 1) + 2r
             if (!sink.helpers_) place(lane, x, y);
-            if (sink.depth_test_) {
+            if (sink.early_test_) {
               const float stored = sink.stored_depth(batch.frag_coord[2][lane]);
               if (!sink.depth_passes(stored, depth[i])) {
                 ++sink.depth_failed_;
@@ -394,7 +395,7 @@ std::uint64_t raster_triangle(const SetupTriangle& t, const float* varyings, int
           z[k] = ip.depth(b1[k], b2[k]);
           computed |= 1u << k;
           idx[k] = fb.index(x, y);
-          if (sink.depth_test_) {
+          if (sink.early_test_) {
             const float stored = sink.stored_depth(z[k]);
             if (!sink.depth_passes(stored, fb.depth[idx[k]])) {
               ++sink.depth_failed_;

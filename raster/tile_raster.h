@@ -42,10 +42,11 @@ class FragmentSink {
   Framebuffer& fb_;
   int draw_buffers_;  // fb's draw buffers 0 .. draw_buffers_ - 1 (some may be absent)
   DepthFormat depth_format_;  // fragment depths are converted to it before the test
-  bool depth_test_;
   bool depth_write_;
   DepthFunc depth_func_;
-  bool late_depth_;  // depth written after shading (the program may discard)
+  bool late_depth_;  // depth written after shading (the program may discard or write gl_FragDepth)
+  bool early_test_;  // the interpolated depth tested before shading (not with gl_FragDepth)
+  bool shader_depth_;  // the depth tested is gl_FragDepth
   bool helpers_;     // lanes that cover nothing get their own inputs (the program reads quads)
   bool vectors_;     // a vector's uncovered quad is shaded with its covered one (shades_whole_vectors)
   BlendState blend_;
@@ -61,6 +62,13 @@ class FragmentSink {
   float stored_depth(float z) const {
     if (depth_clamp_) z = z < clamp_lo_ ? clamp_lo_ : (clamp_hi_ < z ? clamp_hi_ : z);
     return tessref::stored_depth(depth_format_, z);
+  }
+  // gl_FragDepth's value in the buffer: clamped to [0, 1] (GL requires it for a fixed-point buffer;
+  // llvmpipe clamps a GL_DEPTH_COMPONENT32F one too, whatever the depth range: measured), to the
+  // depth range with GL_DEPTH_CLAMP, then converted as a window z is (GL 4.6 15.2.3, 13.8.1).
+  float shader_depth(float z) const {
+    z = z < 0.0f ? 0.0f : (1.0f < z ? 1.0f : z);  // NaN stays NaN, and fails every test but
+    return stored_depth(z);                        // GL_ALWAYS and GL_NOTEQUAL
   }
   // GL_LESS, the common case, without the switch.
   bool depth_passes(float z, float stored) const {

@@ -274,7 +274,6 @@ Module read_module(std::span<const std::uint32_t> words, const StorageBufferSize
           case spv::ExecutionModeVertexOrderCw:
           case spv::ExecutionModeVertexOrderCcw: m.modes.order = w[1]; break;
           case spv::ExecutionModePointMode: m.modes.point_mode = true; break;
-          case spv::ExecutionModeDepthReplacing: m.modes.depth_replacing = true; break;
           case spv::ExecutionModeOriginUpperLeft: m.modes.origin_upper_left = true; break;
           default: break;
         }

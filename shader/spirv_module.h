@@ -107,7 +107,6 @@ struct ExecutionModes {
   int input_vertices = 0;
   std::uint32_t output_primitive = 0;
   int invocations = 1;
-  bool depth_replacing = false;          // FS writes gl_FragDepth
   bool origin_upper_left = false;
 };
 

@@ -41,9 +41,6 @@ void refuse_unsupported_io(const shader::Module& m, shader::Stage stage) {
                                "' is a built-in " + (v.storage == spv::StorageClassOutput ? "output" : "input") +
                                " tessref's pipeline does not provide");
     if (v.storage != spv::StorageClassOutput) continue;
-    const auto b = v.decorations.builtin;
-    if (b == std::uint32_t(spv::BuiltInFragDepth) || m.modes.depth_replacing)
-      throw shader::SpirvError("gl_FragDepth is not supported (the depth written is the interpolated one)");
     if (stage == shader::Stage::Fragment && v.decorations.location && *v.decorations.location >= kMaxDrawBuffers)
       throw shader::SpirvError("fragment output '" + v.name + "' at location " + std::to_string(*v.decorations.location) +
                                ": past GL_MAX_DRAW_BUFFERS (" + std::to_string(kMaxDrawBuffers) +

@@ -348,6 +348,9 @@ void GlslFragment::shade_lanes(FragmentBatch& batch, int first, int n) const {
       else for (int l = 0; l < n; ++l) dst[l] = w.scalar == Scalar::I32 ? float(std::int32_t(row[l])) : float(row[l]);
     }
   }
+  // gl_FragDepth: what the invocation wrote; GL leaves an invocation that does not write it
+  // undefined, and the executor's zeroed outputs give 0.
+  if (frag_depth_) std::memcpy(batch.frag_depth + first, inv.row(*frag_depth_->slot, 0), 4 * std::size_t(n));
   const std::uint8_t* killed = inv.discarded();
   for (int l = 0; l < n; ++l)
     if (killed[l]) batch.live[first + l] = 0;
@@ -356,11 +359,13 @@ void GlslFragment::shade_lanes(FragmentBatch& batch, int first, int n) const {
 GlslFragment::GlslFragment(const StageProgram& sp, const VaryingLayout& inputs, int varyings, int primitive_id_varying)
     : sp_(sp), inputs_(inputs), varyings_(varyings), primitive_id_varying_(primitive_id_varying),
       samples_textures_(sp.exe->samples_textures()) {
-  for (const IoVariable& v : sp_.io.outputs)
+  for (const IoVariable& v : sp_.io.outputs) {
+    if (v.kind == IoKind::FragDepth) frag_depth_ = &v;
     if (v.kind == IoKind::User)
       for (const IoWord& w : v.words)
         if (w.io_word >= 4)
           output_locations_ = std::min(kMaxDrawBuffers, std::max(output_locations_, int(w.io_word - 4) / 4 + 1));
+  }
 }
 
 FragmentOutput GlslFragment::shade(const FragmentInput& in) const {

@@ -74,6 +74,7 @@ class GlslFragment final : public FragmentProgram {
   FragmentOutput shade(const FragmentInput& in) const override;
   void shade_batch(FragmentBatch& batch) const override;
   bool may_discard() const override { return sp_.exe->may_discard(); }
+  bool writes_depth() const override { return frag_depth_ != nullptr; }
   bool reads_quads() const override { return sp_.exe->reads_quads(); }
   bool shades_whole_vectors() const override { return samples_textures_; }
 
@@ -84,6 +85,7 @@ class GlslFragment final : public FragmentProgram {
   int varyings_;
   int primitive_id_varying_;
   bool samples_textures_;  // the lanes llvmpipe samples together then matter (shade_batch)
+  const IoVariable* frag_depth_ = nullptr;  // gl_FragDepth, if the shader writes it
   int output_locations_ = 0;  // 1 + the highest output location the program writes (at most 8)
 };
 

@@ -316,6 +316,25 @@ TEST_F(VerifyVsLlvmpipe, UserClipPlanesMatchOnEveryPixel) {
   }
 }
 
+// gl_FragDepth (tests/data/draws/frag_depth.json): the depth test takes the written depth, clamped
+// to [0, 1] in both depth formats and whatever the depth range, as llvmpipe does.
+TEST_F(VerifyVsLlvmpipe, FragDepthMatchesOnEveryPixel) {
+  const std::string scene = std::string(TESSREF_SOURCE_DIR) + "/tests/data/draws/frag_depth.json";
+  const std::vector<std::pair<std::string, std::string>> variants = {
+      {"frag_depth24", ""},
+      {"frag_depth32f", " --set framebuffer.depth.internalformat='\"GL_DEPTH_COMPONENT32F\"'"},
+      {"frag_depth_range", " --set framebuffer.depth.internalformat='\"GL_DEPTH_COMPONENT32F\"'"
+                           " --set draws.1.depth_range=[0.2,0.6]"}};
+  for (const auto& [name, sets] : variants) {
+    test::CliRun r = test::run_cli("capture " + scene + " --out " + path(name) + kSmall + sets);
+    ASSERT_EQ(r.exit_code, 0) << name << "\n" << r.output;
+    r = test::run_cli("verify " + scene + " --ref " + path(name) + kSmall + sets);
+    EXPECT_EQ(r.exit_code, 0) << name << "\n" << r.output;
+    EXPECT_THAT(r.output, HasSubstr("colour: 100.0000% of pixels within 1/255")) << name;
+    EXPECT_THAT(r.output, HasSubstr("raster coverage: 0 pixels differ from the driver's")) << name;
+  }
+}
+
 // A capture that keeps the records of every k-th patch only (--tess-records) still compares every
 // patch's coordinates, by digest: a patch outside the sample whose digest differs is named.
 TEST_F(VerifyVsLlvmpipe, SampledCapturesCompareEveryPatchByDigest) {
