@@ -4,6 +4,7 @@
 // Mesa's draw clipper (draw_pipe_clip.c), so that the cut vertices, and the pixels, are llvmpipe's.
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 
@@ -31,7 +32,7 @@ struct UserPlanes {
 inline std::uint32_t user_outcode(const float* varyings, const UserPlanes& user) {
   std::uint32_t code = 0;
   for (std::uint32_t m = user.mask; m; m &= m - 1) {
-    const int i = __builtin_ctz(m);
+    const int i = std::countr_zero(m);
     const float d = varyings[user.first + i];
     if (!(d >= 0.0f) || std::isinf(d)) code |= outcode::kUserPlane0 << i;
   }
