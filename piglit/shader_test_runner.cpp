@@ -125,10 +125,8 @@ std::string unmet_requirement(const ShaderTestFile& f) {
     if (s.language == ShaderLanguage::ArbAssembly) return "ARB assembly programs";
   }
   // The compatibility profile's state beyond what the runner feeds (glsl_rewrite.h).
-  for (const TestCommand& c : f.commands)
-    if (c.kind == CommandKind::ClipPlane) return "glClipPlane's user clip planes (compatibility profile)";
   for (const ShaderSection& s : f.shaders)
-    for (const char* name : {"gl_FrontSecondaryColor", "gl_SecondaryColor", "gl_BackColor", "gl_ClipVertex"})
+    for (const char* name : {"gl_FrontSecondaryColor", "gl_SecondaryColor", "gl_BackColor"})
       if (s.source.find(name) != std::string::npos)
         return std::string(name) + " (compatibility profile: tessref feeds gl_Vertex, the matrices and "
                                    "gl_FrontColor/gl_Color only)";
@@ -574,6 +572,12 @@ class Runner {
         break;
       }
       case CommandKind::LinkSuccess: break;
+      case CommandKind::ClipPlane: {  // glClipPlane: eye coordinates, the modelview being the identity
+        const int i = int(n[0]);
+        if (i < 0 || i > 7) fail(c, "GL_CLIP_PLANE" + std::to_string(i) + " is past GL_MAX_CLIP_PLANES (8)");
+        state_.clip_planes[std::size_t(i)] = glm::vec4(n[1], n[2], n[3], n[4]);
+        break;
+      }
       case CommandKind::Ortho: {  // glOrtho(l, r, b, t, -1, 1); without numbers the window's pixels
         const bool pixels = c.numbers.size() < 4;
         projection_ = glm::ortho(pixels ? 0.0f : float(n[0]), pixels ? float(fb_.width) : float(n[1]),

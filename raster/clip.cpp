@@ -18,12 +18,12 @@ constexpr std::uint32_t plane_bit(int i) {
 
 struct Planes {
   float gx, gy;
-  int user_first;
+  UserPlanes user;
   // Signed distance to plane i; >= 0 is inside. clip_outcode (clip.h) tests the same expressions
   // for the view planes; a user plane's is the vertex's gl_ClipDistance, interpolated like a
   // varying at the vertices clipping makes.
   float distance(int i, const ClipRecord& r) const {
-    if (i >= kViewPlanes) return r.varyings[std::size_t(user_first + i - kViewPlanes)];
+    if (i >= kViewPlanes) return user.distance(i - kViewPlanes, r.position, r.varyings.data());
     const glm::vec4& p = r.position;
     switch (i) {
       case 0: return gx * p.w - p.x;
@@ -106,12 +106,12 @@ ClipResult clip_triangle(const float* a, const float* b, const float* c, int num
   }
   const glm::vec4 &pa = out.v[0].position, &pb = out.v[1].position, &pc = out.v[2].position;
   if (!finite(pa) || !finite(pb) || !finite(pc)) return ClipResult::kInvalid;
-  const Planes planes{guard_x, guard_y, user.first};
+  const Planes planes{guard_x, guard_y, user};
   // The plane and viewport-side bits of clip_outcode (w <= 0 is handled after clipping).
   const std::uint32_t mask = outcode_mask & ~kNonPositiveW;
-  const std::uint32_t ca = (clip_outcode(pa, guard_x, guard_y) & mask) | user_outcode(a + 4, user);
-  const std::uint32_t cb = (clip_outcode(pb, guard_x, guard_y) & mask) | user_outcode(b + 4, user);
-  const std::uint32_t cc = (clip_outcode(pc, guard_x, guard_y) & mask) | user_outcode(c + 4, user);
+  const std::uint32_t ca = (clip_outcode(pa, guard_x, guard_y) & mask) | user_outcode(a, user);
+  const std::uint32_t cb = (clip_outcode(pb, guard_x, guard_y) & mask) | user_outcode(b, user);
+  const std::uint32_t cc = (clip_outcode(pc, guard_x, guard_y) & mask) | user_outcode(c, user);
   if (ca & cb & cc) return ClipResult::kRejected;
 
   const std::uint32_t to_clip = (ca | cb | cc) & kClipPlanes;
@@ -156,11 +156,11 @@ ClipResult clip_line(const float* a, const float* b, int num_varyings, float gua
   }
   const ClipRecord v0 = out[0], v1 = out[1];
   if (!finite(v0.position) || !finite(v1.position)) return ClipResult::kInvalid;
-  const Planes planes{guard_x, guard_y, user.first};
+  const Planes planes{guard_x, guard_y, user};
   const std::uint32_t c0 =
-      (clip_outcode(v0.position, guard_x, guard_y) & outcode_mask & ~kNonPositiveW) | user_outcode(a + 4, user);
+      (clip_outcode(v0.position, guard_x, guard_y) & outcode_mask & ~kNonPositiveW) | user_outcode(a, user);
   const std::uint32_t c1 =
-      (clip_outcode(v1.position, guard_x, guard_y) & outcode_mask & ~kNonPositiveW) | user_outcode(b + 4, user);
+      (clip_outcode(v1.position, guard_x, guard_y) & outcode_mask & ~kNonPositiveW) | user_outcode(b, user);
   if (c0 & c1) return ClipResult::kRejected;
   const std::uint32_t to_clip = (c0 | c1) & kClipPlanes;
   float t0 = 0.0f, t1 = 0.0f;

@@ -21,19 +21,32 @@ inline constexpr int kMaxUserPlanes = 8;
 inline constexpr int kMaxClipVertices = 3 + 6 + kMaxUserPlanes;
 
 // The user clip planes a draw clips against: bit i of mask for gl_ClipDistance[i], which each
-// vertex carries as varying first + i (DistanceVaryings).
+// vertex carries as varying first + i (DistanceVaryings); or, with planes (glClipPlane), the
+// distance dot(clip vertex, planes[i]), the clip vertex being the 4 varyings from `vertex`, or
+// gl_Position when vertex < 0.
 struct UserPlanes {
   std::uint32_t mask = 0;
   int first = 0;
+  const glm::vec4* planes = nullptr;
+  int vertex = -1;
+  float distance(int i, const glm::vec4& position, const float* varyings) const {
+    if (!planes) return varyings[first + i];
+    const glm::vec4 v = vertex < 0 ? position : glm::vec4(varyings[vertex], varyings[vertex + 1],
+                                                          varyings[vertex + 2], varyings[vertex + 3]);
+    const glm::vec4& p = planes[i];
+    return v.x * p.x + v.y * p.y + v.z * p.z + v.w * p.w;  // Mesa's dot4, in this order
+  }
 };
 
-// The user-plane outcode bits of one vertex (its varyings): outside is a negative distance, and, as
-// Mesa's draw module tests it, an infinite or NaN one (such a primitive is then dropped whole).
-inline std::uint32_t user_outcode(const float* varyings, const UserPlanes& user) {
+// The user-plane outcode bits of one vertex (gl_Position, then its varyings): outside is a negative
+// distance, and, as Mesa's draw module tests it, an infinite or NaN one (such a primitive is then
+// dropped whole).
+inline std::uint32_t user_outcode(const float* vertex, const UserPlanes& user) {
   std::uint32_t code = 0;
+  const glm::vec4 position(vertex[0], vertex[1], vertex[2], vertex[3]);
   for (std::uint32_t m = user.mask; m; m &= m - 1) {
     const int i = std::countr_zero(m);
-    const float d = varyings[user.first + i];
+    const float d = user.distance(i, position, vertex + 4);
     if (!(d >= 0.0f) || std::isinf(d)) code |= outcode::kUserPlane0 << i;
   }
   return code;

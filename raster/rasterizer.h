@@ -80,9 +80,12 @@ struct ViewportRect {
 // Where the vertices reaching the rasterizer carry gl_ClipDistance[] and gl_CullDistance[]: among
 // their varyings, after the fragment shader's inputs, so that clipping interpolates them like any
 // varying. clip_count, cull_count: the array sizes the last stage before the rasterizer writes.
+// Without clip distances, glClipPlane's planes (compatibility profile) are tested against the
+// clip vertex: the 4 varyings from clip_vertex_first (gl_ClipVertex), or gl_Position (-1).
 struct DistanceVaryings {
   int clip_first = 0, clip_count = 0;
   int cull_first = 0, cull_count = 0;
+  int clip_vertex_first = -1;
 };
 
 struct RasterState {
@@ -109,6 +112,9 @@ struct RasterState {
   bool depth_clamp = false;
   // glEnable(GL_CLIP_DISTANCEi) (GL 4.6 13.7): bit i clips against gl_ClipDistance[i].
   std::uint8_t clip_distances = 0;
+  // glClipPlane(GL_CLIP_PLANEi, ...) (compatibility profile), in the coordinates of the clip vertex:
+  // used for an enabled plane when the program writes no gl_ClipDistance.
+  std::array<glm::vec4, 8> clip_planes{};
   // The draw's program: where its vertices carry the distances (run_draw sets it).
   DistanceVaryings distances;
   // glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS) (GL 4.6 8.14.2): cube maps filtered across face edges.

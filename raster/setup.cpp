@@ -242,7 +242,7 @@ void project_vertices(const ClipVertex* vertices, std::size_t count, int records
   if (vp.user.mask)
     for (std::size_t i = 0; i < count; ++i)
       if (!(out[i].code & outcode::kNonFinite))
-        out[i].code |= user_outcode(&vertices[i * std::size_t(records)].varyings[0], vp.user);
+        out[i].code |= user_outcode(&vertices[i * std::size_t(records)].position.x, vp.user);
 }
 
 ProjectedVertex project_position(const glm::vec4& position, const Viewport& vp, bool generated) {

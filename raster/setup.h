@@ -75,6 +75,9 @@ struct Viewport {
     v.depth_clamp = state.depth_clamp;
     const DistanceVaryings& d = state.distances;
     v.user = {state.clip_distances & ((1u << std::clamp(d.clip_count, 0, kMaxUserPlanes)) - 1u), d.clip_first};
+    // Without gl_ClipDistance: glClipPlane's planes against the clip vertex.
+    if (d.clip_count == 0 && state.clip_distances)
+      v.user = {state.clip_distances, 0, state.clip_planes.data(), d.clip_vertex_first};
     v.cull_first = d.cull_first;
     v.cull_count = std::clamp(d.cull_count, 0, kMaxUserPlanes);
     if (state.viewport) {

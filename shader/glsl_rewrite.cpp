@@ -207,9 +207,54 @@ class Rewriter {
       declare("gl_Vertex", kCompatibilityVertex, std::string("in vec4 ") + kCompatibilityVertex + ";");
     if (source_.stage == Stage::Fragment) {
       declare("gl_Color", "tessref_Color", "in vec4 tessref_Color;");
-    } else if (source_.stage != Stage::TessControl) {
-      declare("gl_FrontColor", "tessref_Color", "out vec4 tessref_Color;");
+    } else {
+      if (source_.stage != Stage::TessControl) declare("gl_FrontColor", "tessref_Color", "out vec4 tessref_Color;");
+      rewrite_clip_vertex();
     }
+  }
+
+  // gl_ClipVertex: the stage's output tessref_ClipVertex, gl_in[i].gl_ClipVertex the input array
+  // tessref_ClipVertexIn[i], both at location 31 (the last), so that they meet across stages.
+  void rewrite_clip_vertex() {
+    const std::string out_name = kCompatibilityClipVertex, in_name = out_name + "In";
+    bool written = false, read = false, arrayed_out = false;
+    const Word* first = nullptr;
+    for (const Word& w : words_) {
+      if (w.text != "gl_ClipVertex") continue;
+      first = first ? first : &w;
+      const std::size_t dot = w.pos > 0 ? code_.find_last_not_of(" \t\r\n", w.pos - 1) : std::string::npos;
+      if (dot == std::string::npos || code_[dot] != '.') {  // the stage's own output
+        replace(w.pos, w.text.size(), out_name);
+        written = true;
+        continue;
+      }
+      // X[index].gl_ClipVertex, X being gl_in or gl_out: X becomes the array, ".gl_ClipVertex" goes.
+      const std::size_t close = dot > 0 ? code_.find_last_not_of(" \t\r\n", dot - 1) : std::string::npos;
+      std::size_t open = close;
+      for (int depth = 0; open != std::string::npos && open > 0; --open) {
+        if (code_[open] == ']') ++depth;
+        if (code_[open] == '[' && --depth == 0) break;
+      }
+      const std::size_t name_end = open == std::string::npos || open == 0
+                                       ? std::string::npos : code_.find_last_not_of(" \t\r\n", open - 1);
+      const auto member_of = [&](std::string_view block) {
+        return name_end != std::string::npos && name_end + 1 >= block.size() &&
+               code_.compare(name_end + 1 - block.size(), block.size(), block) == 0;
+      };
+      const bool in = member_of("gl_in");
+      if (close == std::string::npos || code_[close] != ']' || (!in && !member_of("gl_out")))
+        fail(w.pos, "gl_ClipVertex as a member of something other than gl_in[i] or gl_out[i]");
+      const std::size_t name = name_end + 1 - (in ? 5 : 6);
+      replace(name, in ? 5 : 6, in ? in_name : out_name);
+      replace(close + 1, w.pos + w.text.size() - (close + 1), "");
+      (in ? read : arrayed_out) = true;
+    }
+    if (!first) return;
+    if (read) declarations_.push_back("layout(location = 31) in vec4 " + in_name + "[];");
+    if (written || arrayed_out)
+      declarations_.push_back("layout(location = 31) out vec4 " + out_name + (arrayed_out ? "[];" : ";"));
+    note(first->pos, "gl_ClipVertex read as '" + out_name + "' at location 31 (compatibility profile)");
+    fed_.push_back("gl_ClipVertex");
   }
 
   void refuse_compatibility_state() const {

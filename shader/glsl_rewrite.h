@@ -21,10 +21,12 @@ struct RewrittenSource {
 // With source.compatibility, the state a caller can feed becomes declared variables instead:
 // gl_ModelViewProjectionMatrix, gl_ModelViewMatrix and gl_ProjectionMatrix the uniforms
 // kCompatibilityMatrices name, gl_Vertex the vertex input kCompatibilityVertex, gl_FrontColor and
-// the fragment shader's gl_Color the varying tessref_Color.
+// the fragment shader's gl_Color the varying tessref_Color, a vertex, evaluation or geometry
+// shader's gl_ClipVertex the output kCompatibilityClipVertex.
 RewrittenSource rewrite_glsl(const ShaderSource& source);
 
 inline constexpr const char* kCompatibilityVertex = "tessref_Vertex";
+inline constexpr const char* kCompatibilityClipVertex = "tessref_ClipVertex";
 inline constexpr const char* kCompatibilityMatrices[3][2] = {
     {"gl_ModelViewProjectionMatrix", "tessref_ModelViewProjectionMatrix"},
     {"gl_ModelViewMatrix", "tessref_ModelViewMatrix"},

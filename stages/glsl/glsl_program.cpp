@@ -8,6 +8,7 @@
 #include <spirv/unified1/spirv.hpp>
 
 #include "shader/buffer_layout.h"
+#include "shader/glsl_rewrite.h"
 #include "stages/glsl/glsl_geometry.h"
 #include "stages/glsl/glsl_stages.h"
 
@@ -625,7 +626,13 @@ void GlslProgram::rasterizer_vertex(const StageVertex& shaded, ClipVertex* recor
 }
 
 DistanceVaryings GlslProgram::distance_varyings() const {
-  return {out_layout_.user, out_layout_.clip, out_layout_.user + out_layout_.clip, out_layout_.cull};
+  DistanceVaryings d{out_layout_.user, out_layout_.clip, out_layout_.user + out_layout_.clip, out_layout_.cull};
+  // The compatibility profile's gl_ClipVertex (shader/glsl_rewrite.h), where the last stage writes it.
+  const StageProgram& last = gs_ ? *gs_ : tes_ ? *tes_ : *vs_;
+  for (const IoVariable& v : last.io.outputs)
+    if (v.kind == IoKind::User && v.variable->name == shader::kCompatibilityClipVertex && !v.words.empty())
+      d.clip_vertex_first = out_layout_.float_of(v.words[0].io_word) - 4;
+  return d;
 }
 
 }  // namespace tessref::glsl

@@ -286,7 +286,8 @@ void main() { gl_Position = gl_in[0].gl_Position; EmitVertex(); }
 
 // A file that asks for a core context refuses the compatibility profile's state by name. Without
 // that (shader_runner's compatibility context), the matrices and gl_Vertex are fed: the identity
-// matrix draws the rectangle; a file that needs glClipPlane is skipped before anything is compiled.
+// matrix draws the rectangle; a file that needs secondary colours is skipped before anything is
+// compiled.
 TEST(GlslErrors, CompatibilityStateIsRefusedByNameInACoreContext) {
   const std::string body = R"([vertex shader]
 in vec4 piglit_vertex;
@@ -303,10 +304,13 @@ void main() {
                           "state, which tessref does not support; pass the matrix as a uniform instead");
   const ShaderTestResult fed = run_text(std::string(kRequire) + body, "fed.shader_test");
   EXPECT_EQ(fed.verdict, Verdict::Pass) << fed.reason;
-  const ShaderTestResult skipped =
-      run_text("[require]\nGL COMPAT >= 3.1\nGLSL >= 1.50\n\n" + body + "clip plane 0 0 1 0 0.5\n");
+  std::string secondary = body;
+  secondary.insert(secondary.find("\n}"), "\n  gl_FrontSecondaryColor = vec4(1.0);");
+  const ShaderTestResult skipped = run_text("[require]\nGL COMPAT >= 3.1\nGLSL >= 1.50\n\n" + secondary);
   EXPECT_EQ(skipped.verdict, Verdict::Skip);
-  EXPECT_EQ(skipped.reason, "glClipPlane's user clip planes (compatibility profile)");
+  EXPECT_EQ(skipped.reason,
+            "gl_FrontSecondaryColor (compatibility profile: tessref feeds gl_Vertex, the matrices and "
+            "gl_FrontColor/gl_Color only)");
 }
 
 TEST(GlslErrors, RuntimeSizedShaderStorageBlockIsRefusedByName) {

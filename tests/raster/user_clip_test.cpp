@@ -122,5 +122,30 @@ TEST(UserClip, DrawsKeepWhatIsInsideTheEnabledPlanes) {
   EXPECT_EQ(s.fragments_shaded, 0u);
 }
 
+// glClipPlane's planes (compatibility profile) with no clip distance written: dot(gl_Position,
+// plane), or dot(clip vertex, plane) for a clip vertex carried as varyings.
+TEST(UserClip, ClipPlanesTestTheClipVertex) {
+  test::VaryingProgram prog;
+  RasterState state;
+  state.clip_distances = 1;
+  state.clip_planes[0] = glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);  // x >= 0
+  {
+    Framebuffer fb(kW, kH);
+    const RasterStats s = draw_triangles(rectangle(0.5f), state, prog, fb, Parallel(2));  // gl_Position
+    EXPECT_EQ(s.fragments_shaded, std::uint64_t(kW / 2 * kH));
+    EXPECT_LT(fb.depth[std::size_t(kW - 1)], 1.0f);
+  }
+  // The clip vertex in varyings 0-3: (x_ndc, cull, 0, 0); the plane -x >= 0 keeps the left half.
+  state.clip_planes[0] = glm::vec4(-1.0f, 0.0f, 0.0f, 0.0f);
+  state.distances.clip_vertex_first = 0;
+  TriangleBatch b = rectangle(0.5f);
+  b.num_varyings = 4;
+  Framebuffer fb(kW, kH);
+  const RasterStats s = draw_triangles(b, state, prog, fb, Parallel(2));
+  EXPECT_EQ(s.fragments_shaded, std::uint64_t(kW / 2 * kH));
+  EXPECT_LT(fb.depth[0], 1.0f);
+  EXPECT_EQ(fb.depth[std::size_t(kW - 1)], 1.0f);
+}
+
 }  // namespace
 }  // namespace tessref

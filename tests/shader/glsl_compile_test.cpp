@@ -548,7 +548,8 @@ void main() {
 }
 
 // In a compatibility-profile context (piglit's shader_runner), the state the runner feeds becomes
-// declared variables, each noted; gl_ClipVertex, which it does not feed, stays refused.
+// declared variables, each noted; gl_ClipVertex a location-31 output (gl_in[i].gl_ClipVertex an
+// input array there); what it does not feed stays refused.
 TEST(GlslCompile, CompatibilityStateTheCallerFeedsIsDeclared) {
   const char* vertex = "#version 130\nvoid main() {\n  gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n"
                        "  gl_FrontColor = vec4(1.0);\n}\n";
@@ -564,8 +565,17 @@ TEST(GlslCompile, CompatibilityStateTheCallerFeedsIsDeclared) {
   EXPECT_EQ(p.stages.size(), 2u);
   // The same text outside a compatibility context is refused, as is gl_ClipVertex within one.
   EXPECT_THAT(error_of({{Stage::Vertex, "c.shader_test", 10, vertex}}), HasSubstr("'gl_ModelViewProjectionMatrix' is"));
-  shader::ShaderSource clip{Stage::Vertex, "v.vert", 1, "#version 130\nvoid main() { gl_ClipVertex = vec4(0.0); }\n", true};
-  EXPECT_THROW(shader::rewrite_glsl(clip), shader::CompileError);
+  shader::ShaderSource tes{Stage::TessEval, "e.tese", 1,
+                          "#version 150\nlayout(triangles) in;\nvoid main() {\n"
+                          "  gl_ClipVertex = gl_in[1].gl_ClipVertex * gl_TessCoord.y;\n}\n",
+                          true};
+  const shader::RewrittenSource e = shader::rewrite_glsl(tes);
+  EXPECT_THAT(e.text, HasSubstr("layout(location = 31) in vec4 tessref_ClipVertexIn[];\n"
+                                "layout(location = 31) out vec4 tessref_ClipVertex;\n"));
+  EXPECT_THAT(e.text, HasSubstr("tessref_ClipVertex = tessref_ClipVertexIn[1] * gl_TessCoord.y;"));
+  shader::ShaderSource secondary{Stage::Vertex, "v.vert", 1,
+                                 "#version 130\nvoid main() { gl_FrontSecondaryColor = vec4(0.0); }\n", true};
+  EXPECT_THROW(shader::rewrite_glsl(secondary), shader::CompileError);
 }
 
 TEST(GlslCompile, OpenGlEsIsRefused) {
