@@ -62,7 +62,7 @@ struct Viewport {
   std::uint32_t outcode_mask() const { return depth_clamp ? ~(outcode::kNear | outcode::kFar) : ~0u; }
   // The enabled user planes the program writes a distance for (GL leaves an enabled plane without
   // one undefined: it does not clip), and the cull distances, which need no enable.
-  UserPlanes user;
+  UserPlanes user{};
   int cull_first = 0, cull_count = 0;
   template <int N>
   bool culled(const float* const (&varyings)[N]) const {
