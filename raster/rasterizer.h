@@ -1,5 +1,6 @@
 #pragma once
 // Clipping, perspective divide, viewport, triangle setup and rasterization by GL's rules.
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 
@@ -117,6 +118,11 @@ struct RasterState {
   std::array<glm::vec4, 8> clip_planes{};
   // The draw's program: where its vertices carry the distances (run_draw sets it).
   DistanceVaryings distances;
+  // The enabled planes the program writes a gl_ClipDistance for (an enabled plane without one is
+  // undefined in GL and does not clip).
+  std::uint32_t clipping_distances() const {
+    return clip_distances & ((1u << std::clamp(distances.clip_count, 0, 8)) - 1u);
+  }
   // glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS) (GL 4.6 8.14.2): cube maps filtered across face edges.
   // Texture state rather than the rasterizer's, kept with the draw's other capabilities.
   bool cube_map_seamless = false;

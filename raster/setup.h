@@ -74,7 +74,7 @@ struct Viewport {
     v.depth_near = state.depth_range_near, v.depth_far = state.depth_range_far;
     v.depth_clamp = state.depth_clamp;
     const DistanceVaryings& d = state.distances;
-    v.user = {state.clip_distances & ((1u << std::clamp(d.clip_count, 0, kMaxUserPlanes)) - 1u), d.clip_first};
+    v.user = {state.clipping_distances(), d.clip_first};
     // Without gl_ClipDistance: glClipPlane's planes against the clip vertex.
     if (d.clip_count == 0 && state.clip_distances)
       v.user = {state.clip_distances, 0, state.clip_planes.data(), d.clip_vertex_first};

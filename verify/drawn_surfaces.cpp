@@ -67,8 +67,8 @@ void observe_draws(const Scene& scene, const std::vector<std::vector<CallPatches
   out.user_clipped.assign(scene.draws.size(), false);
   options.begin_draw = [&out](std::size_t d) { out.draw = d; };
   options.raster_state = [&out](const RasterState& r) {
-    const bool clips = (r.clip_distances & ((1u << std::min(r.distances.clip_count, 8)) - 1u)) != 0;
-    if ((clips || r.distances.cull_count > 0) && out.draw < out.user_clipped.size()) out.user_clipped[out.draw] = true;
+    if ((r.clipping_distances() || r.distances.cull_count > 0) && out.draw < out.user_clipped.size())
+      out.user_clipped[out.draw] = true;
   };
   std::uint32_t patches = 0;
   for (const auto& draw : numbering)
