@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <map>
 #include <memory>
 #include <new>
@@ -96,6 +97,18 @@ int clip_plane_index(const std::string& name) {
   return -1;
 }
 
+// shader_runner's requirement lines for separable programs: all stages in one program with
+// GL_PROGRAM_SEPARABLE, or each stage a program of its own in a program pipeline.
+constexpr std::string_view kSeparableProgram = "SEPARABLE PROGRAM ENABLED", kSeparatePrograms = "SSO ENABLED";
+
+shader::Linking linking_of(const Requirements& r) {
+  for (const RawLine& line : r.other) {
+    if (line.text == kSeparableProgram) return shader::Linking::SeparableProgram;
+    if (line.text == kSeparatePrograms) return shader::Linking::SeparatePrograms;
+  }
+  return shader::Linking::Program;
+}
+
 // Empty when tessref meets the file's [require] section; else the reason to skip.
 std::string unmet_requirement(const ShaderTestFile& f) {
   const Requirements& r = f.requirements;
@@ -118,7 +131,8 @@ std::string unmet_requirement(const ShaderTestFile& f) {
     if (!compare(it->second, l.comparison, l.value))
       return l.name + " >= " + std::to_string(l.value) + " (tessref: " + std::to_string(it->second) + ")";
   }
-  for (const RawLine& line : r.other) return "requirement '" + line.text + "'";
+  for (const RawLine& line : r.other)
+    if (line.text != kSeparableProgram && line.text != kSeparatePrograms) return "requirement '" + line.text + "'";
   for (const ShaderSection& s : f.shaders) {
     if (s.stage == ShaderStage::Compute) return "a compute shader";
     if (s.language == ShaderLanguage::Spirv) return "SPIR-V assembly shaders";
@@ -126,10 +140,10 @@ std::string unmet_requirement(const ShaderTestFile& f) {
   }
   // The compatibility profile's state beyond what the runner feeds (glsl_rewrite.h).
   for (const ShaderSection& s : f.shaders)
-    for (const char* name : {"gl_FrontSecondaryColor", "gl_SecondaryColor", "gl_BackColor"})
+    for (const char* name : {"gl_BackColor", "gl_BackSecondaryColor"})
       if (s.source.find(name) != std::string::npos)
-        return std::string(name) + " (compatibility profile: tessref feeds gl_Vertex, the matrices and "
-                                   "gl_FrontColor/gl_Color only)";
+        return std::string(name) + " (compatibility profile: tessref feeds gl_Vertex, the matrices and the "
+                                   "front colours only)";
   return {};
 }
 
@@ -214,11 +228,18 @@ class Runner {
     const bool front_color = std::any_of(f_.shaders.begin(), f_.shaders.end(), [](const ShaderSection& s) {
       return s.source.find("gl_FrontColor") != std::string::npos;
     });
+    // GL_CLAMP_VERTEX_COLOR, on in a compatibility context: the last stage before the rasterizer.
+    if (compatibility) {
+      shader::Stage last = shader::Stage::Vertex;  // the enumeration is in pipeline order
+      for (const shader::ShaderSource& s : sources)
+        if (s.stage != shader::Stage::Fragment) last = std::max(last, s.stage);
+      for (shader::ShaderSource& s : sources) s.clamp_vertex_color = s.stage == last;
+    }
     if (compatibility && !has_fragment)
       sources.push_back({shader::Stage::Fragment, f_.file_name, 1,
                          front_color ? kFixedFunctionFragment : kFixedFunctionFragmentUnlit, true});
     try {
-      const shader::CompiledProgram compiled = shader::compile_program(sources);
+      const shader::CompiledProgram compiled = shader::compile_program(sources, linking_of(f_.requirements));
       if (expect_link_error) return {Verdict::Fail, "the program linked, but the file expects a link error"};
       program_ = std::make_unique<glsl::GlslProgram>(compiled, options_.limits);
       set_matrices();

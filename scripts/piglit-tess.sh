@@ -18,8 +18,9 @@
 #                   scripts/piglit-llvmpipe.sh).
 # --expect-pass N   fails unless exactly N files pass.
 # --expect-fail F   (repeatable) file F (relative, as printed) fails as it does on llvmpipe, where
-#                   piglit expects what the GL spec leaves open: its failure is the expected
-#                   verdict, and its passing is reported as a change.
+#                   piglit expects what the GL spec leaves open, or needs what tessref lacks (the
+#                   caller names it): its failure is the expected verdict, and its passing is
+#                   reported as a change.
 # Other arguments go to `tessref shader-test` as they are (e.g. --threads 2).
 # The binary is ${TESSREF_BIN:-build/cli/tessref}. Exit status 0 only when no file failed (and
 # the pass count is N, with --expect-pass).
@@ -142,7 +143,7 @@ mapfile -t failed_files < <(sed -n 's/^fail: \([^:]*\):.*/\1/p' "$work/out")
 unexpected=0
 for f in "${failed_files[@]}"; do
   if [[ " ${expect_fail[*]} " == *" $f "* ]]; then
-    log "$f failed, as expected (--expect-fail: it fails on llvmpipe the same way)"
+    log "$f failed, as expected (--expect-fail: the reason is in the CMake comment or docs/piglit.md)"
   else
     unexpected=$((unexpected + 1))
   fi

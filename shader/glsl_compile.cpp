@@ -193,10 +193,23 @@ std::string type_text(const IoVariable& v) {
   return text;
 }
 
+// GLSL 4.50, 4.3.4: structures (and blocks, which a location may pair whatever their names)
+// match when their members match in name, type and order; the structure's own name does not count.
+bool same_shape(const glslang::TType& a, const glslang::TType& b) {
+  if (!a.isStruct() || !b.isStruct()) return a == b;
+  if (a.isArray() != b.isArray() || (a.isArray() && !(*a.getArraySizes() == *b.getArraySizes()))) return false;
+  const glslang::TTypeList& ma = *a.getStruct();
+  const glslang::TTypeList& mb = *b.getStruct();
+  if (ma.size() != mb.size()) return false;
+  for (std::size_t i = 0; i < ma.size(); ++i)
+    if (ma[i].type->getFieldName() != mb[i].type->getFieldName() || !same_shape(*ma[i].type, *mb[i].type)) return false;
+  return true;
+}
+
 bool same_type(const IoVariable& a, const IoVariable& b) {
   if (a.type->getQualifier().patch != b.type->getQualifier().patch) return false;
   auto equals_b = [&b](const glslang::TType& type) {
-    return b.arrayed ? type == glslang::TType(*b.type, 0) : type == *b.type;
+    return b.arrayed ? same_shape(type, glslang::TType(*b.type, 0)) : same_shape(type, *b.type);
   };
   return a.arrayed ? equals_b(glslang::TType(*a.type, 0)) : equals_b(*a.type);
 }
@@ -243,6 +256,31 @@ std::vector<IoVariable> interface_of(Stage stage, const glslang::TIntermediate& 
     }
   }
   return vars;
+}
+
+// The first static use of the stage's built-in gl_PerVertex input (gl_in[]) and output blocks.
+struct PerVertexUse {
+  std::optional<glslang::TSourceLoc> in, out;
+};
+PerVertexUse per_vertex_use(const glslang::TIntermediate& intermediate) {
+  const LiveSymbols live(intermediate);
+  PerVertexUse use;
+  for (TIntermNode* global : intermediate.getTreeRoot()->getAsAggregate()->getSequence()) {
+    const glslang::TIntermAggregate* objects = global->getAsAggregate();
+    if (!objects || objects->getOp() != glslang::EOpLinkerObjects) continue;
+    for (TIntermNode* object : objects->getSequence()) {
+      const glslang::TIntermSymbol* symbol = object->getAsSymbolNode();
+      if (!symbol || symbol->getType().getBasicType() != glslang::EbtBlock ||
+          symbol->getType().getTypeName() != "gl_PerVertex")
+        continue;
+      const auto first = live.first_use.find(symbol->getName().c_str());
+      if (first == live.first_use.end()) continue;
+      const glslang::TStorageQualifier storage = symbol->getQualifier().storage;
+      if (storage == glslang::EvqVaryingIn) use.in = first->second;
+      if (storage == glslang::EvqVaryingOut) use.out = first->second;
+    }
+  }
+  return use;
 }
 
 std::string where(const glslang::TSourceLoc& loc) {
@@ -529,9 +567,37 @@ void check_output_vertices(const ShaderSource& source, const glslang::TShader& s
                    std::to_string(kGlMaxPatchVertices) + " vertices");
 }
 
+// OpenGL 4.5, 7.4: "To use any built-in input or output in the gl_PerVertex ... blocks in
+// separable program objects, shader code must redeclare those blocks prior to use." As Mesa
+// checks it: between each stage and the next one in the program, for GLSL 1.50 and later
+// (ARB_separate_shader_objects issue 28 exempts 1.40 and earlier, which have no blocks).
+void check_separable_blocks(const std::vector<StageInterface>& stages, const std::vector<PerVertexUse>& uses,
+                            const std::vector<ShaderSource>& sources, const std::vector<RewrittenSource>& rewritten,
+                            std::vector<std::string>& errors) {
+  int version = 0;
+  for (const RewrittenSource& r : rewritten) version = std::max(version, r.version);
+  if (version < 150) return;
+  auto redeclares = [&](Stage stage, bool in) {
+    for (std::size_t i = 0; i < sources.size(); ++i)
+      if (sources[i].stage == stage && (in ? rewritten[i].redeclares_per_vertex_in : rewritten[i].redeclares_per_vertex_out))
+        return true;
+    return false;
+  };
+  for (std::size_t i = 0; i + 1 < stages.size(); ++i)
+    for (const bool in : {false, true}) {
+      const std::size_t k = in ? i + 1 : i;  // the producer's outputs, then the consumer's inputs
+      const std::optional<glslang::TSourceLoc>& use = in ? uses[k].in : uses[k].out;
+      if (!use || redeclares(stages[k].stage, in)) continue;
+      errors.push_back(where(*use) + ": error: link error: the " + stage_name(stages[k].stage) + " uses the built-in " +
+                       (in ? "input" : "output") + " block gl_PerVertex without redeclaring it ('" +
+                       (in ? "in" : "out") + " gl_PerVertex { ... }'), which a separable program of GLSL 1.50 or " +
+                       "later must (OpenGL 4.5, 7.4)");
+    }
+}
+
 }  // namespace
 
-CompiledProgram compile_program(const std::vector<ShaderSource>& sources) {
+CompiledProgram compile_program(const std::vector<ShaderSource>& sources, Linking linking) {
   if (sources.empty()) throw CompileError("error: a program needs at least one shader");
   std::vector<std::string> errors;
   // GL 4.5 section 7.3: a (non-separable) program with tessellation or geometry shaders needs a
@@ -598,7 +664,12 @@ CompiledProgram compile_program(const std::vector<ShaderSource>& sources) {
   std::vector<StageInterface> interfaces;
   for (auto& [stage, program] : programs)
     interfaces.push_back({stage, interface_of(stage, intermediate(stage))});
-  check_links(interfaces, errors);
+  if (linking != Linking::SeparatePrograms) check_links(interfaces, errors);
+  if (linking == Linking::SeparableProgram) {
+    std::vector<PerVertexUse> uses;
+    for (const StageInterface& stage : interfaces) uses.push_back(per_vertex_use(intermediate(stage.stage)));
+    check_separable_blocks(interfaces, uses, sources, rewritten, errors);
+  }
   throw_if_any(errors);
 
   // TProgram::mapIO over several programs. glslang's OpenGL mapper and resolver (which

@@ -30,6 +30,18 @@ struct ShaderSource {
   // fixed-function matrices, gl_Vertex and gl_FrontColor/gl_Color become declared variables
   // (glsl_rewrite.h) that the caller feeds. Otherwise they are refused by name.
   bool compatibility = false;
+  // With `compatibility`, in the last stage before the rasterizer: GL_CLAMP_VERTEX_COLOR, on by
+  // default in that profile, clamps gl_FrontColor and gl_FrontSecondaryColor to [0, 1].
+  bool clamp_vertex_color = false;
+};
+
+// How the stages are linked (OpenGL 4.5, 7.3 and 7.4; GL_ARB_separate_shader_objects).
+enum class Linking {
+  Program,           // one program object
+  SeparableProgram,  // one program with GL_PROGRAM_SEPARABLE set: its stages are linked together
+                     // (GLSL 1.50 and later must redeclare the gl_PerVertex blocks they use)
+  SeparatePrograms,  // each stage a separable program of its own, met in a program pipeline:
+                     // no link-time check between stages (inputs without a match read undefined values)
 };
 
 struct CompiledStage {
@@ -51,6 +63,6 @@ class CompileError : public InputError {
 
 // Several sources of one stage are compilation units linked into that stage. Interface variables
 // without a location get one by name, the same in every stage (docs/glsl.md, "Locations").
-CompiledProgram compile_program(const std::vector<ShaderSource>& sources);
+CompiledProgram compile_program(const std::vector<ShaderSource>& sources, Linking linking = Linking::Program);
 
 }  // namespace tessref::shader

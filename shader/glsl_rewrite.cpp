@@ -207,10 +207,39 @@ class Rewriter {
       declare("gl_Vertex", kCompatibilityVertex, std::string("in vec4 ") + kCompatibilityVertex + ";");
     if (source_.stage == Stage::Fragment) {
       declare("gl_Color", "tessref_Color", "in vec4 tessref_Color;");
+      declare("gl_SecondaryColor", "tessref_SecondaryColor", "in vec4 tessref_SecondaryColor;");
     } else {
-      if (source_.stage != Stage::TessControl) declare("gl_FrontColor", "tessref_Color", "out vec4 tessref_Color;");
+      if (source_.stage != Stage::TessControl) {
+        declare("gl_FrontColor", "tessref_Color", "out vec4 tessref_Color;");
+        declare("gl_FrontSecondaryColor", "tessref_SecondaryColor", "out vec4 tessref_SecondaryColor;");
+        if (source_.clamp_vertex_color) clamp_vertex_colors();
+      }
       rewrite_clip_vertex();
     }
+  }
+
+  // GL_CLAMP_VERTEX_COLOR: the colours this stage writes are clamped to [0, 1] per vertex, before
+  // they are interpolated: when main() returns, or at each EmitVertex() of a geometry shader.
+  void clamp_vertex_colors() {
+    std::string clamps;
+    for (const char* from : {"gl_FrontColor", "gl_FrontSecondaryColor"})
+      if (find_word(from)) {
+        const std::string name = from == std::string_view("gl_FrontColor") ? "tessref_Color" : "tessref_SecondaryColor";
+        clamps += " " + name + " = clamp(" + name + ", 0.0, 1.0);";
+      }
+    if (clamps.empty()) return;
+    const bool geometry = source_.stage == Stage::Geometry;
+    const char* entry = geometry ? "EmitVertex" : "main";
+    const Word* first = find_word(entry);
+    if (!first) return;
+    rename_all(entry, geometry ? "tessref_EmitVertex" : "tessref_main");
+    if (geometry)
+      declarations_.push_back("void tessref_EmitVertex() {" + clamps + " EmitVertex(); }");
+    else
+      appendix_ = "\nvoid main() { tessref_main();" + clamps + " }\n";
+    note(first->pos, std::string("vertex colours clamped to [0, 1] ") +
+                         (geometry ? "at each EmitVertex()" : "when main() returns") +
+                         " (compatibility profile: GL_CLAMP_VERTEX_COLOR)");
   }
 
   // gl_ClipVertex: the stage's output tessref_ClipVertex, gl_in[i].gl_ClipVertex the input array
@@ -281,6 +310,7 @@ class Rewriter {
       fail(d.begin, "#version must come before anything else but comments");
     const std::string_view number = d.words.size() > 1 ? d.words[1] : "";
     const std::string_view profile = d.words.size() > 2 ? d.words[2] : "";
+    user_version_ = std::atoi(std::string(number).c_str());
     if (profile == "es" || number == "100")
       fail(d.begin, "OpenGL ES shaders are not supported (#version " + std::string(number) + " " +
                         std::string(profile) + "); tessref runs desktop GLSL 1.10 to 4.60");
@@ -346,6 +376,13 @@ class Rewriter {
       rename_noted(old_name, new_name);
   }
 
+  // Whether the text redeclares the built-in block `storage gl_PerVertex` (GLSL 4.50, 7.1).
+  bool redeclares(std::string_view storage) const {
+    for (std::size_t i = 0; i + 1 < words_.size(); ++i)
+      if (words_[i].text == storage && words_[i + 1].text == "gl_PerVertex") return true;
+    return false;
+  }
+
   const Word* find_word(std::string_view text) const {
     auto it = std::find_if(words_.begin(), words_.end(),
                            [&](const Word& w) { return w.text == text; });
@@ -383,7 +420,7 @@ class Rewriter {
     header += "#line " + std::to_string(source_.first_line) + "\n";
     std::stable_sort(notes_.begin(), notes_.end(),
                      [](const Note& a, const Note& b) { return a.pos < b.pos; });
-    RewrittenSource out{header + text, {}};
+    RewrittenSource out{header + text + appendix_, {}, user_version_, redeclares("in"), redeclares("out")};
     for (const Note& n : notes_) out.notes.push_back(where(n.pos) + ": " + n.what);
     return out;
   }
@@ -405,7 +442,9 @@ class Rewriter {
   std::vector<Word> words_;
   std::vector<Edit> edits_;
   std::vector<std::string> declarations_;
+  std::string appendix_;  // after the user's text
   std::vector<Note> notes_;
+  int user_version_ = 110;
 };
 
 }  // namespace

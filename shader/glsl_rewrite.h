@@ -14,6 +14,9 @@ namespace tessref::shader {
 struct RewrittenSource {
   std::string text;                // for glslang: "#version 450 core" (or 460), header, #line
   std::vector<std::string> notes;  // "FILE:LINE: what was rewritten", one per rewrite
+  int version = 110;               // the user's #version (110 without one)
+  // The text redeclares `in gl_PerVertex` / `out gl_PerVertex` (a separable program must).
+  bool redeclares_per_vertex_in = false, redeclares_per_vertex_out = false;
 };
 
 // Throws CompileError for what tessref refuses: an unknown or OpenGL ES #version, and
@@ -21,8 +24,9 @@ struct RewrittenSource {
 // With source.compatibility, the state a caller can feed becomes declared variables instead:
 // gl_ModelViewProjectionMatrix, gl_ModelViewMatrix and gl_ProjectionMatrix the uniforms
 // kCompatibilityMatrices name, gl_Vertex the vertex input kCompatibilityVertex, gl_FrontColor and
-// the fragment shader's gl_Color the varying tessref_Color, a vertex, evaluation or geometry
-// shader's gl_ClipVertex the output kCompatibilityClipVertex.
+// the fragment shader's gl_Color the varying tessref_Color (gl_FrontSecondaryColor and
+// gl_SecondaryColor tessref_SecondaryColor; source.clamp_vertex_color clamps both), a vertex,
+// evaluation or geometry shader's gl_ClipVertex the output kCompatibilityClipVertex.
 RewrittenSource rewrite_glsl(const ShaderSource& source);
 
 inline constexpr const char* kCompatibilityVertex = "tessref_Vertex";

@@ -304,13 +304,12 @@ void main() {
                           "state, which tessref does not support; pass the matrix as a uniform instead");
   const ShaderTestResult fed = run_text(std::string(kRequire) + body, "fed.shader_test");
   EXPECT_EQ(fed.verdict, Verdict::Pass) << fed.reason;
-  std::string secondary = body;
-  secondary.insert(secondary.find("\n}"), "\n  gl_FrontSecondaryColor = vec4(1.0);");
-  const ShaderTestResult skipped = run_text("[require]\nGL COMPAT >= 3.1\nGLSL >= 1.50\n\n" + secondary);
+  std::string back = body;
+  back.insert(back.find("\n}"), "\n  gl_BackColor = vec4(1.0);");
+  const ShaderTestResult skipped = run_text("[require]\nGL COMPAT >= 3.1\nGLSL >= 1.50\n\n" + back);
   EXPECT_EQ(skipped.verdict, Verdict::Skip);
   EXPECT_EQ(skipped.reason,
-            "gl_FrontSecondaryColor (compatibility profile: tessref feeds gl_Vertex, the matrices and "
-            "gl_FrontColor/gl_Color only)");
+            "gl_BackColor (compatibility profile: tessref feeds gl_Vertex, the matrices and the front colours only)");
 }
 
 TEST(GlslErrors, RuntimeSizedShaderStorageBlockIsRefusedByName) {

@@ -19,6 +19,7 @@ namespace {
 using ::testing::AllOf;
 using ::testing::Contains;
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 // Just enough of a SPIR-V reader for the checks below.
 struct Instruction {
@@ -573,9 +574,66 @@ TEST(GlslCompile, CompatibilityStateTheCallerFeedsIsDeclared) {
   EXPECT_THAT(e.text, HasSubstr("layout(location = 31) in vec4 tessref_ClipVertexIn[];\n"
                                 "layout(location = 31) out vec4 tessref_ClipVertex;\n"));
   EXPECT_THAT(e.text, HasSubstr("tessref_ClipVertex = tessref_ClipVertexIn[1] * gl_TessCoord.y;"));
-  shader::ShaderSource secondary{Stage::Vertex, "v.vert", 1,
-                                 "#version 130\nvoid main() { gl_FrontSecondaryColor = vec4(0.0); }\n", true};
-  EXPECT_THROW(shader::rewrite_glsl(secondary), shader::CompileError);
+  shader::ShaderSource back{Stage::Vertex, "v.vert", 1,
+                            "#version 130\nvoid main() { gl_BackSecondaryColor = vec4(0.0); }\n", true};
+  EXPECT_THROW(shader::rewrite_glsl(back), shader::CompileError);
+}
+
+// GL_CLAMP_VERTEX_COLOR: the last stage's colours are clamped per vertex when main() returns
+// (the stage before keeps its own), or at each EmitVertex() of a geometry shader.
+TEST(GlslCompile, VertexColoursAreClampedWhereTheLastStageWritesThem) {
+  shader::ShaderSource vs{Stage::Vertex, "v.vert", 1,
+                          "#version 150\nvoid main() {\n  gl_FrontColor = vec4(-2.0, 0.5, 3.0, 1.0);\n"
+                          "  gl_FrontSecondaryColor = vec4(2.0);\n  if (gl_VertexID > 0) return;\n}\n",
+                          true, true};
+  const shader::RewrittenSource r = shader::rewrite_glsl(vs);
+  EXPECT_THAT(r.text, HasSubstr("void tessref_main() {"));
+  EXPECT_THAT(r.text, HasSubstr("\nvoid main() { tessref_main(); tessref_Color = clamp(tessref_Color, 0.0, 1.0); "
+                                "tessref_SecondaryColor = clamp(tessref_SecondaryColor, 0.0, 1.0); }\n"));
+  EXPECT_THAT(r.notes, Contains("v.vert:2: vertex colours clamped to [0, 1] when main() returns (compatibility "
+                                "profile: GL_CLAMP_VERTEX_COLOR)"));
+  vs.clamp_vertex_color = false;
+  EXPECT_THAT(shader::rewrite_glsl(vs).text, Not(HasSubstr("clamp(")));
+  shader::ShaderSource gs{Stage::Geometry, "g.geom", 1,
+                          "#version 150\nlayout(points) in;\nlayout(points, max_vertices = 1) out;\n"
+                          "void main() { gl_FrontColor = vec4(2.0); EmitVertex(); }\n",
+                          true, true};
+  const shader::RewrittenSource g = shader::rewrite_glsl(gs);
+  EXPECT_THAT(g.text, HasSubstr("void tessref_EmitVertex() { tessref_Color = clamp(tessref_Color, 0.0, 1.0); EmitVertex(); }"));
+  EXPECT_THAT(g.text, HasSubstr("void main() { tessref_Color = vec4(2.0); tessref_EmitVertex(); }"));
+  const shader::CompiledProgram p = shader::compile_program(
+      {vs, gs, {Stage::Fragment, "f.frag", 1, "#version 150\nvoid main() { gl_FragColor = gl_Color; }\n", true}});
+  EXPECT_EQ(p.stages.size(), 3u);
+}
+
+// OpenGL 4.5, 7.4: a separable program's shaders of GLSL 1.50 and later redeclare the
+// gl_PerVertex blocks they use; 1.40 ones need not, and separate programs are not checked
+// against each other (Mesa's rules, which piglit's arb_separate_shader_objects tests follow).
+TEST(GlslCompile, SeparableProgramsRedeclareTheBuiltInBlocksTheyUse) {
+  const char* vs150 = "#version 150\nvoid main() {\n  gl_Position = vec4(0.0);\n}\n";
+  const char* fs = "#version 150\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n";
+  const std::vector<shader::ShaderSource> implicit{{Stage::Vertex, "v.vert", 1, vs150}, {Stage::Fragment, "f.frag", 1, fs}};
+  EXPECT_NO_THROW(shader::compile_program(implicit));
+  EXPECT_NO_THROW(shader::compile_program(implicit, shader::Linking::SeparatePrograms));
+  try {
+    shader::compile_program(implicit, shader::Linking::SeparableProgram);
+    ADD_FAILURE() << "linked";
+  } catch (const shader::CompileError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("v.vert:3: error: link error: the vertex shader uses the built-in output block "
+                                    "gl_PerVertex without redeclaring it ('out gl_PerVertex { ... }')"));
+  }
+  const char* redeclared = "#version 150\nout gl_PerVertex { vec4 gl_Position; };\nvoid main() { gl_Position = vec4(0.0); }\n";
+  EXPECT_NO_THROW(shader::compile_program({{Stage::Vertex, "v.vert", 1, redeclared}, {Stage::Fragment, "f.frag", 1, fs}},
+                                          shader::Linking::SeparableProgram));
+  const char* vs140 = "#version 140\nvoid main() { gl_Position = vec4(0.0); }\n";
+  const char* fs140 = "#version 140\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n";
+  EXPECT_NO_THROW(shader::compile_program({{Stage::Vertex, "v.vert", 1, vs140}, {Stage::Fragment, "f.frag", 1, fs140}},
+                                          shader::Linking::SeparableProgram));
+  // An input that the stage before does not write is a link error in one program, not across two.
+  const char* reads = "#version 150\nin vec4 missing;\nout vec4 c;\nvoid main() { c = missing; }\n";
+  const std::vector<shader::ShaderSource> unmatched{{Stage::Vertex, "v.vert", 1, vs150}, {Stage::Fragment, "f.frag", 1, reads}};
+  EXPECT_THROW(shader::compile_program(unmatched), shader::CompileError);
+  EXPECT_NO_THROW(shader::compile_program(unmatched, shader::Linking::SeparatePrograms));
 }
 
 TEST(GlslCompile, OpenGlEsIsRefused) {
