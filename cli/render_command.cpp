@@ -26,6 +26,7 @@
 #include "mesh/mesh_source.h"
 #include "io/output_files.h"
 #include "render/render.h"
+#include "render/transform_feedback.h"
 #include "scene/scene_loader.h"
 #include "io/tess_dump.h"
 #include "inspect/fragment_dump.h"
@@ -48,7 +49,21 @@ struct RenderOptions {
   bool check = false;  // --check: NaN and infinity in every stage's outputs (check/check.h)
   std::vector<std::string> check_ranges;  // --check-range NAME=LO,HI (check/check_range.h)
   std::vector<std::string> draw_buffers;  // --draw-buffer K=FILE: draw buffer K (1..7) as an image
+  std::string transform_feedback;  // --transform-feedback PREFIX: PREFIX.drawD.bufferB.bin
 };
+
+// --transform-feedback PREFIX: one file per buffer of each draw with a transform_feedback key.
+std::vector<std::pair<std::size_t, std::string>> feedback_files(const std::string& prefix, const Scene& scene) {
+  std::vector<std::pair<std::size_t, std::string>> files;  // (draw, file), buffers in order
+  for (std::size_t d = 0; d < scene.draws.size(); ++d)
+    if (const auto& t = scene.draws[d].transform_feedback)
+      for (std::size_t b = 0; b < t->buffers(); ++b)
+        files.emplace_back(d, prefix + ".draw" + std::to_string(d) + ".buffer" + std::to_string(b) + ".bin");
+  if (files.empty())
+    throw InputError("--transform-feedback: no draw of the scene has a transform_feedback key (draws[].transform_feedback: "
+                     "{varyings, buffer_mode})");
+  return files;
+}
 
 // --draw-buffer K=FILE, checked against the scene: a scene of draws has framebuffer.color's
 // attachments, the mesh path draw buffers 0 and 1 (its normals).
@@ -235,6 +250,12 @@ void run_render(const RenderOptions& o) {
     check_image_path(buffer_files.back().second, ImageKind::Color);
   }
 
+  std::vector<std::pair<std::size_t, std::string>> feedback_outputs;
+  std::vector<std::filesystem::path> feedback_tmps;
+  if (!o.transform_feedback.empty())
+    for (const auto& [draw, file] : feedback_outputs = feedback_files(o.transform_feedback, scene))
+      feedback_tmps.push_back(outputs.add("--transform-feedback", file));
+
   auto t = Clock::now();
   std::vector<std::string> warnings;
   const Mesh mesh = build_mesh(scene.mesh, warnings);
@@ -264,6 +285,7 @@ void run_render(const RenderOptions& o) {
   StageTimes vertex{"vertex", {}}, tessellation{"tessellation", {}}, raster{"raster+fs", {}},
       frame{"frame", {}};
   RenderResult result;
+  std::vector<FeedbackBuffers> feedback;  // the first frame's
   std::unique_ptr<Checker> checker;
   if (o.check || !o.check_ranges.empty()) checker = std::make_unique<Checker>(check_context(o, scene));
   ProgressLine progress;
@@ -278,7 +300,8 @@ void run_render(const RenderOptions& o) {
           budget->check_written(*dump);
         };
       const auto t0 = Clock::now();
-      result.stats = render_scene(scene, mesh, parallel, result.framebuffer, options);
+      result.stats = render_scene(scene, mesh, parallel, result.framebuffer, options,
+                                  i == 0 && !feedback_outputs.empty() ? &feedback : nullptr);
       frame.seconds.push_back(seconds_since(t0));
       vertex.seconds.push_back(result.stats.vertex_seconds);
       tessellation.seconds.push_back(result.stats.tessellation_seconds);
@@ -303,6 +326,17 @@ void run_render(const RenderOptions& o) {
   for (std::size_t i = 0; i < buffer_files.size(); ++i)
     write_as(buffer_tmps[i], buffer_files[i].second,
              [&] { write_color_image(fb, buffer_tmps[i], buffer_files[i].first); });
+  std::string feedback_summary;
+  for (std::size_t i = 0, k = 0; i < feedback.size(); ++i) {
+    const FeedbackBuffers& f = feedback[i];
+    feedback_summary += "; transform feedback, draw " + std::to_string(f.draw) + ": " + std::to_string(f.primitives) + " primitives";
+    for (std::size_t b = 0; b < f.bytes.size(); ++b, ++k) {
+      while (feedback_outputs[k].first != f.draw) ++k;  // a draw that drew no primitive writes empty files
+      write_text_file(feedback_tmps[k], feedback_outputs[k].second,
+                      std::string(reinterpret_cast<const char*>(f.bytes[b].data()), f.bytes[b].size()));
+      feedback_summary += ", " + feedback_outputs[k].second + " " + std::to_string(f.bytes[b].size()) + " bytes";
+    }
+  }
   if (!o.dump_fragments.empty()) write_fragment_dump(scene, mesh, parallel, o.dump_fragments);  // draws again
   outputs.commit();
   const double write_seconds = seconds_since(t);
@@ -320,13 +354,13 @@ void run_render(const RenderOptions& o) {
     tessellated = ", " + std::to_string(s.triangles_generated) + " after tessellation";
   std::printf(
       "tessref render: %s -> %s (%dx%d, %d threads): %llu %s in%s, %llu rasterized, "
-      "%llu fragments shaded; mesh %s, vertex %s, tessellation %s, raster+fs %s, write %s\n",
+      "%llu fragments shaded; mesh %s, vertex %s, tessellation %s, raster+fs %s, write %s%s\n",
       drawn_scene_name(scene, o.sets).c_str(), written_files(o, dump.get()).c_str(), scene.width,
       scene.height, parallel.threads(), static_cast<unsigned long long>(s.triangles_in),
       draws ? "primitives" : "triangles", tessellated.c_str(), static_cast<unsigned long long>(s.raster.triangles_rasterized),
       static_cast<unsigned long long>(s.raster.fragments_shaded), ms(mesh_seconds).c_str(),
       ms(s.vertex_seconds).c_str(), ms(s.tessellation_seconds).c_str(),
-      ms(s.raster_seconds).c_str(), ms(write_seconds).c_str());
+      ms(s.raster_seconds).c_str(), ms(write_seconds).c_str(), feedback_summary.c_str());
   if (s.raster.fragments_shaded == 0) warn_nothing_drawn(s);
   if (o.report_repeat)
     std::printf("tessref render: %d frame%s, median (min .. max): %s, %s, %s, %s\n", o.repeat,
@@ -398,6 +432,10 @@ void add_render_command(CLI::App& app) {
       ->type_name("K=FILE")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  cmd->add_option("--transform-feedback", opts->transform_feedback,
+                  "also write what each draw's transform feedback records (draws[].transform_feedback) to "
+                  "PREFIX.drawD.bufferB.bin, one file per buffer, as GL would fill the buffer")
+      ->type_name("PREFIX");
   cmd->add_option("--dump-tess", opts->dump_tess,
                   "also write every tessellated vertex (patch id, gl_TessCoord, position, normal): "
                   "binary, or text for *.txt (format: io/tess_dump.h)");

@@ -186,7 +186,7 @@ void issue(const DrawSetting& draw, const draw::DrawCall& c, std::uint32_t insta
 
 }  // namespace
 
-void GlDraws::draw() const {
+void GlDraws::draw(const std::function<void(std::size_t, bool)>& around) const {
   for (std::size_t d = 0; d < scene_.draws.size(); ++d) {
     bind(d, programs_[d]);
     const DrawSetting& draw = scene_.draws[d];
@@ -195,7 +195,9 @@ void GlDraws::draw() const {
       if (draw.clear_depth) glClearDepth(*draw.clear_depth);
       glClear((draw.clear_color ? GL_COLOR_BUFFER_BIT : 0) | (draw.clear_depth ? GL_DEPTH_BUFFER_BIT : 0));
     }
+    if (around) around(d, true);
     for (const draw::DrawCall& c : draw.calls) issue(draw, c, c.instance_count);
+    if (around) around(d, false);
     check_gl((scene_.draws[d].key + ": drawing").c_str());
   }
   unbind();

@@ -3,6 +3,7 @@
 // object per scene buffer, a vertex array object per draw, the state and the glDraw* calls, in
 // order. What tessref draws from the same scene (render/draw_scene.h) is compared against it.
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "draw/vertex_fetch.h"
@@ -23,8 +24,10 @@ class GlDraws {
   GlDraws& operator=(const GlDraws&) = delete;
 
   // Every draw into the bound framebuffer, each with its program and state; the state is left as
-  // GL's defaults afterwards (depth test and culling off, program 0).
-  void draw() const;
+  // GL's defaults afterwards (depth test and culling off, program 0). around(d, true) runs after
+  // draw d's state is bound and its clear done, around(d, false) after its calls (transform
+  // feedback begins and ends there).
+  void draw(const std::function<void(std::size_t, bool)>& around = {}) const;
 
   // Draw d one instance at a time with `program` (linked with the same vertex input locations as
   // the draw's own), for transform feedback: bind(d, program), then draw_instance(d, call, k) for

@@ -12,6 +12,7 @@
 #include "common/hash.h"
 #include "glref/gl_context.h"
 #include "glref/scene_renderer.h"
+#include "render/transform_feedback.h"
 #include "io/image_output.h"
 #include "io/output_files.h"
 #include "io/tess_digest.h"
@@ -57,8 +58,31 @@ CaptureSummary capture_reference(GlContext& context, const Scene& scene, const M
   const auto digests = outputs.add("tess_patches", dir / "tess_patches.bin");
   const auto manifest_path = outputs.add("manifest", dir / "manifest.json");
 
+  // Transform feedback (draws[].transform_feedback): one file per buffer of each such draw.
+  std::vector<std::pair<std::string, std::filesystem::path>> feedback_files;
+  for (std::size_t d = 0; d < scene.draws.size(); ++d)
+    if (const auto& t = scene.draws[d].transform_feedback)
+      for (std::size_t b = 0; b < t->buffers(); ++b) {
+        const std::string name = feedback_file_name(d, b);
+        feedback_files.emplace_back(name, outputs.add("transform feedback", dir / name));
+      }
+
   SceneRenderer renderer(context, scene, mesh);
   const Framebuffer fb = renderer.render();
+  nlohmann::json feedback_manifest = nlohmann::json::array();
+  if (!feedback_files.empty()) {
+    std::size_t k = 0;
+    for (const FeedbackBuffers& f : renderer.transform_feedback()) {
+      nlohmann::json files = nlohmann::json::array();
+      for (const std::vector<std::byte>& bytes : f.bytes) {
+        const auto& [name, temp] = feedback_files[k++];
+        write_text_file(temp, (dir / name).string(), std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+        files.push_back(name);
+      }
+      feedback_manifest.push_back({{"draw", f.draw}, {"primitives", f.primitives}, {"vertices_per_primitive", f.corners},
+                                   {"files", files}});
+    }
+  }
   write_as(color, dir / "color.png", [&] { write_rgb8_image(to_rgb8(fb), color); });
   write_as(depth, dir / "depth.exr", [&] { write_depth_image(fb, depth); });
   CaptureSummary summary;
@@ -115,9 +139,12 @@ CaptureSummary capture_reference(GlContext& context, const Scene& scene, const M
         {"tess", "tess.bin (--dump-tess binary format; one record per emitted vertex, 3 per triangle, of the "
                  "patches whose id is a multiple of tess_patch_stride)"},
         {"tess_patches", "tess_patches.bin (per patch: emitted vertices and a hash of its distinct gl_TessCoord; "
-                         "io/tess_digest.h)"}}},
+                         "io/tess_digest.h)"},
+        {"transform_feedback", "feedback.drawD.bufferB.bin (what transform feedback wrote into buffer B over draw D, "
+                               "as many bytes as its primitives filled)"}}},
       {"tess_values", scene.draws.empty() ? "position and normal: the evaluation shader's outputs at locations 0 and 1"
                                           : "gl_Position: x, y, z as the position, w as the normal's x"},
+      {"transform_feedback", feedback_manifest},
       {"tess_records", summary.tess_records},
       {"tess_records_stored", summary.tess_records_stored},
       {"tess_patch_stride", summary.patch_stride}};

@@ -174,6 +174,134 @@ std::vector<UniformConstant> scene_constants(const Scene& scene) {
           {"u_displacement", flag(t.displacement.enabled)}};
 }
 
+// Components of one glGetTransformFeedbackVarying type (a double counts two 32-bit words);
+// gl_SkipComponentsN and gl_NextBuffer report GL_NONE.
+int feedback_words(GLenum type) {
+  switch (type) {
+    case GL_NONE: return 1;  // gl_SkipComponentsN: its size is N
+    case GL_FLOAT: case GL_INT: case GL_UNSIGNED_INT: return 1;
+    case GL_FLOAT_VEC2: case GL_INT_VEC2: case GL_UNSIGNED_INT_VEC2: case GL_DOUBLE: return 2;
+    case GL_FLOAT_VEC3: case GL_INT_VEC3: case GL_UNSIGNED_INT_VEC3: return 3;
+    case GL_FLOAT_VEC4: case GL_INT_VEC4: case GL_UNSIGNED_INT_VEC4: case GL_FLOAT_MAT2: case GL_DOUBLE_VEC2: return 4;
+    case GL_FLOAT_MAT2x3: case GL_FLOAT_MAT3x2: case GL_DOUBLE_VEC3: return 6;
+    case GL_FLOAT_MAT2x4: case GL_FLOAT_MAT4x2: case GL_DOUBLE_VEC4: case GL_DOUBLE_MAT2: return 8;
+    case GL_FLOAT_MAT3: return 9;
+    case GL_FLOAT_MAT3x4: case GL_FLOAT_MAT4x3: case GL_DOUBLE_MAT2x3: case GL_DOUBLE_MAT3x2: return 12;
+    case GL_FLOAT_MAT4: case GL_DOUBLE_MAT2x4: case GL_DOUBLE_MAT4x2: return 16;
+    case GL_DOUBLE_MAT3: return 18;
+    case GL_DOUBLE_MAT3x4: case GL_DOUBLE_MAT4x3: return 24;
+    case GL_DOUBLE_MAT4: return 32;
+    default: throw GlError("transform feedback: a varying of GL type 0x" + std::to_string(type) + " the GL runner does not size");
+  }
+}
+
+// Transform feedback over the draws that have it: buffers bound and the queries begun before the
+// draw's calls, the bytes read back after them.
+class FeedbackRecording {
+ public:
+  FeedbackRecording(const Scene& scene, const std::vector<Program>& programs, std::vector<FeedbackBuffers>& out)
+      : scene_(scene), programs_(programs), out_(out) {
+    glGenQueries(2, queries_);
+  }
+  ~FeedbackRecording() {
+    glDeleteQueries(2, queries_);
+    if (!buffers_.empty()) glDeleteBuffers(GLsizei(buffers_.size()), buffers_.data());
+  }
+  FeedbackRecording(const FeedbackRecording&) = delete;
+  FeedbackRecording& operator=(const FeedbackRecording&) = delete;
+
+  void around(std::size_t d, bool begin) {
+    const DrawSetting& draw = scene_.draws[d];
+    if (!draw.transform_feedback) return;
+    const GLuint program = programs_[d].id();
+    if (begin) {
+      const TransformFeedbackSetting& t = *draw.transform_feedback;
+      buffers_.resize(t.buffers());
+      glGenBuffers(GLsizei(buffers_.size()), buffers_.data());
+      const std::vector<std::byte> zeros(kCapacity);  // gl_SkipComponents leaves words as they were
+      for (std::size_t b = 0; b < buffers_.size(); ++b) {
+        glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, GLuint(b), buffers_[b]);
+        glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, GLsizeiptr(kCapacity), zeros.data(), GL_STREAM_READ);
+      }
+      corners_ = primitive_corners(draw, program);
+      glBeginQuery(GL_PRIMITIVES_GENERATED, queries_[0]);
+      glBeginQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, queries_[1]);
+      glBeginTransformFeedback(corners_ == 1 ? GL_POINTS : corners_ == 2 ? GL_LINES : GL_TRIANGLES);
+      check_gl((draw.key + ": beginning transform feedback").c_str());
+      return;
+    }
+    glEndTransformFeedback();
+    glEndQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
+    glEndQuery(GL_PRIMITIVES_GENERATED);
+    GLuint generated = 0, written = 0;
+    glGetQueryObjectuiv(queries_[0], GL_QUERY_RESULT, &generated);
+    glGetQueryObjectuiv(queries_[1], GL_QUERY_RESULT, &written);
+    if (written != generated)
+      throw GlError(draw.key + ": transform feedback wrote " + std::to_string(written) + " of " + std::to_string(generated) +
+                    " primitives (the GL runner's buffers hold " + std::to_string(kCapacity >> 20) + " MiB each)");
+    FeedbackBuffers f;
+    f.draw = d;
+    f.primitives = written;
+    f.corners = written ? corners_ : 0;
+    const std::vector<std::size_t> strides = buffer_strides(*draw.transform_feedback, program);
+    for (std::size_t b = 0; b < buffers_.size(); ++b) {
+      std::vector<std::byte> bytes(std::size_t(written) * std::size_t(corners_) * strides[b]);
+      glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, buffers_[b]);
+      if (!bytes.empty()) glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0, GLsizeiptr(bytes.size()), bytes.data());
+      f.bytes.push_back(std::move(bytes));
+    }
+    check_gl((draw.key + ": reading transform feedback back").c_str());
+    glDeleteBuffers(GLsizei(buffers_.size()), buffers_.data());
+    buffers_.clear();
+    out_.push_back(std::move(f));
+  }
+
+ private:
+  static constexpr std::size_t kCapacity = std::size_t(64) << 20;
+
+  // What the draw's last vertex stage emits: the geometry shader's output type, the primitive
+  // generator's, or the draw's mode.
+  int primitive_corners(const DrawSetting& draw, GLuint program) const {
+    if (!(draw.shaders ? *draw.shaders : scene_.shaders).geometry.empty()) {
+      GLint type = 0;
+      glGetProgramiv(program, GL_GEOMETRY_OUTPUT_TYPE, &type);
+      return type == GL_POINTS ? 1 : type == GL_LINE_STRIP ? 2 : 3;
+    }
+    if (draw.mode == DrawMode::Patches) {
+      GLint mode = 0, point_mode = 0;
+      glGetProgramiv(program, GL_TESS_GEN_MODE, &mode);
+      glGetProgramiv(program, GL_TESS_GEN_POINT_MODE, &point_mode);
+      return point_mode ? 1 : mode == GL_ISOLINES ? 2 : 3;
+    }
+    return tessref::primitive_corners(draw.mode) > 3 ? 3 : tessref::primitive_corners(draw.mode);
+  }
+
+  // Bytes a vertex takes in each buffer, from the program's varyings as GL reports them.
+  static std::vector<std::size_t> buffer_strides(const TransformFeedbackSetting& t, GLuint program) {
+    std::vector<std::size_t> strides(t.buffers(), 0);
+    std::size_t buffer = 0;
+    for (std::size_t i = 0; i < t.varyings.size(); ++i) {
+      GLsizei length = 0, size = 0;
+      GLenum type = GL_NONE;
+      char name[256];
+      glGetTransformFeedbackVarying(program, GLuint(i), sizeof name, &length, &size, &type, name);
+      if (t.varyings[i] == "gl_NextBuffer") {
+        ++buffer;
+        continue;
+      }
+      strides[t.separate ? i : buffer] += 4 * std::size_t(size) * std::size_t(feedback_words(type));
+    }
+    return strides;
+  }
+
+  const Scene& scene_;
+  const std::vector<Program>& programs_;
+  std::vector<FeedbackBuffers>& out_;
+  GLuint queries_[2] = {0, 0};
+  std::vector<GLuint> buffers_;
+  int corners_ = 3;
+};
+
 std::vector<ShaderStage> twin_stages(const Scene& scene, bool for_capture, bool specialize = false) {
   if (scene.shaders.program == ShaderProgram::Custom) return custom_stages(scene, scene.shaders, for_capture);
   std::vector<ShaderStage> stages = builtin_twin_stages(scene, for_capture);
@@ -212,14 +340,19 @@ SceneRenderer::SceneRenderer(GlContext& context, const Scene& scene, const Mesh&
     draw_textures_.resize(scene_.draws.size());
     for (std::size_t i = 0; i < scene_.draws.size(); ++i) {
       const DrawSetting& d = scene_.draws[i];
-      if (d.shaders) {
-        draw_programs_[i] = link_program(custom_stages(scene_, *d.shaders, false));
-        set_uniforms(draw_programs_[i], *d.shaders);
-        draw_textures_[i] = std::make_unique<GlTextures>(scene_, *d.shaders);
+      // A draw with transform feedback links its program with the varyings (its own program).
+      const bool own = d.shaders || d.transform_feedback;
+      if (own) {
+        const ShaderSettings& shaders = d.shaders ? *d.shaders : scene_.shaders;
+        FeedbackVaryings varyings;
+        if (d.transform_feedback) varyings = {d.transform_feedback->varyings, !d.transform_feedback->separate};
+        draw_programs_[i] = link_program(custom_stages(scene_, shaders, false), varyings);
+        set_uniforms(draw_programs_[i], shaders);
+        draw_textures_[i] = std::make_unique<GlTextures>(scene_, shaders);
         draw_textures_[i]->set_samplers(draw_programs_[i].id());
       }
-      programs.push_back(d.shaders ? draw_programs_[i].id() : program_.id());
-      textures.push_back(d.shaders ? draw_textures_[i].get() : textures_.get());
+      programs.push_back(own ? draw_programs_[i].id() : program_.id());
+      textures.push_back(own ? draw_textures_[i].get() : textures_.get());
     }
     draws_ = std::make_unique<GlDraws>(scene_, load_buffers(scene_), programs, textures);
   } else if (const TessellationSettings& t = scene_.tessellation; t.enabled) {
@@ -326,7 +459,8 @@ void SceneRenderer::set_uniforms(const Program& program, const ShaderSettings& s
   if ((l = loc("u_eye")) >= 0) glUniform3fv(l, 1, glm::value_ptr(scene_.camera.eye));
   if ((l = loc("u_num_lights")) >= 0) glUniform1i(l, int(scene_.lights.size()));
   for (std::size_t i = 0; i < scene_.lights.size(); ++i) {
-    const std::string at = "[" + std::to_string(i) + "]";
+    std::string at = "[";
+    at.append(std::to_string(i)).append("]");
     if ((l = loc(("u_light_position" + at).c_str())) >= 0)
       glUniform3fv(l, 1, glm::value_ptr(scene_.lights[i].position));
     if ((l = loc(("u_light_intensity" + at).c_str())) >= 0)
@@ -435,7 +569,12 @@ void SceneRenderer::draw() {
                                                                                 : GL_FILL);
   if (draws_) {
     glDisable(GL_DEPTH_TEST);  // each draw sets its own state and program
-    draws_->draw();
+    if (feedback_) {
+      FeedbackRecording recording(scene_, draw_programs_, *feedback_);
+      draws_->draw([&recording](std::size_t d, bool begin) { recording.around(d, begin); });
+    } else {
+      draws_->draw();
+    }
     stats_.draws = scene_.draws.size();
   } else if (patches_) {
     program_.use();
@@ -612,6 +751,20 @@ Rgb8Image rgb8_top_first(const std::vector<glm::u8vec4>& bottom_first, int width
       p[1] = c.g;
       p[2] = c.b;
     }
+  return out;
+}
+
+std::vector<FeedbackBuffers> SceneRenderer::transform_feedback() {
+  if (!draws_) throw GlError("SceneRenderer::transform_feedback: the scene has no draws");
+  std::vector<FeedbackBuffers> out;
+  feedback_ = &out;
+  try {
+    draw();
+  } catch (...) {
+    feedback_ = nullptr;
+    throw;
+  }
+  feedback_ = nullptr;
   return out;
 }
 

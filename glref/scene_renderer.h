@@ -21,6 +21,7 @@
 #include "mesh/mesh.h"
 #include "scene/scene.h"
 #include "raster/framebuffer.h"
+#include "render/transform_feedback.h"
 
 namespace tessref::glref {
 
@@ -98,6 +99,12 @@ class SceneRenderer {
   // (glref/capture_wrap.h). GlError when the driver's stream cannot be told apart into patches.
   std::vector<TessDumpRecord> capture_draws_tess();
 
+  // A scene of draws: one frame (draw()) with transform feedback active over each draw that has
+  // draws[].transform_feedback, its program linked with those varyings; what each recorded, in
+  // draw order (the same shape as tessref's render/transform_feedback.h). GlError when a buffer
+  // of 64 MiB is too small or GL reports an error.
+  std::vector<FeedbackBuffers> transform_feedback();
+
   const SceneRenderStats& last_stats() const { return stats_; }
   const glm::mat4& view_projection() const { return view_projection_; }
 
@@ -121,6 +128,7 @@ class SceneRenderer {
   std::size_t index_count_ = 0;
   std::unique_ptr<RenderTarget> target_;
   SceneRenderStats stats_;
+  std::vector<FeedbackBuffers>* feedback_ = nullptr;  // set during transform_feedback()
 };
 
 // An RGBA8 read-back (row 0 at the bottom) as the 8-bit RGB image a PNG holds (top row first), to

@@ -418,8 +418,8 @@ class Runner {
           if (std::abs(o[i] - want[i]) > tol[i]) {
             std::string e, g;
             for (int k = 0; k < comps; ++k) {
-              e += (k ? ", " : "") + std::to_string(want[k]);
-              g += (k ? ", " : "") + std::to_string(o[k]);
+              e.append(k ? ", " : "").append(std::to_string(want[k]));
+              g.append(k ? ", " : "").append(std::to_string(o[k]));
             }
             fail(c, "probe at (" + std::to_string(x) + ", " + std::to_string(y) + "): expected (" + e +
                         "), observed (" + g + ") in 8-bit units, tolerance " + std::to_string(tol[i]));

@@ -27,17 +27,26 @@ RasterStats draw_batch(const PointBatch& b, const RasterState& s, const Fragment
   return draw_points(b, s, fs, fb, p);
 }
 
+// DrawOptions::primitives: the batch's primitives, as the rasterizer receives them.
+template <class Batch>
+void hand_out_primitives(const DrawOptions& options, const Batch& b) {
+  if (!options.primitives || b.primitive_count() == 0) return;
+  options.primitives(Batch::kCorners, b.primitive_count(),
+                     [&b](std::size_t p, int k) { return b.vertex_data(b.vertex_index(p, k)); });
+}
+
 // What the rasterizer draws of a batch the vertex or evaluation stage made: the batch itself, or
 // what the geometry shader emits for it (gl_PrimitiveIDIn counting on from `primitive_id`).
 template <class Batch>
 RasterStats draw_stage_batch(const GeometryProgram* gs, const Batch& b, std::uint32_t& primitive_id,
                              const RasterState& s, const FragmentProgram& fs, Framebuffer& fb, const Parallel& p,
-                             DrawStats& stats) {
+                             DrawStats& stats, const DrawOptions& options) {
   if (!gs) {
     if constexpr (Batch::kCorners > 3) {
       throw std::logic_error("draw: adjacency primitives without a geometry shader");  // refused above
     } else {
       stats.triangles_generated += b.primitive_count();
+      hand_out_primitives(options, b);
       return draw_batch(b, s, fs, fb, p);
     }
   }
@@ -48,6 +57,7 @@ RasterStats draw_stage_batch(const GeometryProgram* gs, const Batch& b, std::uin
   const auto draw = [&](const auto& emitted) {
     if (emitted.primitive_count() == 0) return;
     stats.triangles_generated += emitted.primitive_count();
+    hand_out_primitives(options, emitted);
     r += draw_batch(emitted, s, fs, fb, p);
   };
   draw(out.triangles);
@@ -89,7 +99,7 @@ void draw_primitive_list(const DrawProgram& program, const std::vector<StageVert
       if (options.line_batch) options.line_batch(batch, nullptr, nullptr);
     if constexpr (kCorners == 1)
       if (options.point_batch) options.point_batch(batch, nullptr, nullptr);
-    stats.raster += draw_stage_batch(gs, batch, primitive_id, state, fs, fb, parallel, stats);
+    stats.raster += draw_stage_batch(gs, batch, primitive_id, state, fs, fb, parallel, stats, options);
     stats.raster_seconds += seconds_since(t);
     if (options.check) options.check->after_raster();
     if (options.progress)
@@ -113,7 +123,7 @@ void draw_tess_primitives(std::vector<ClipVertex>& vertices, const TessEvalProgr
     if (options.line_batch) options.line_batch(batch, &records, &emitted);
   if constexpr (Batch::kCorners == 1)
     if (options.point_batch) options.point_batch(batch, &records, &emitted);
-  stats.raster += draw_stage_batch(gs, batch, primitive_id, state, fs, fb, parallel, stats);
+  stats.raster += draw_stage_batch(gs, batch, primitive_id, state, fs, fb, parallel, stats, options);
   batch.vertices.swap(vertices);
   vertices.clear();
 }
@@ -239,7 +249,7 @@ DrawStats run_draw(const DrawProgram& program, const std::vector<VertexAttribute
       if (first_id)
         for (TessDumpRecord& r : records) r.patch_id += first_id;
       const auto r0 = Clock::now();
-      stats.raster += draw_stage_batch(gs, batch, primitive_id, raster_state, *fs, fb, par, stats);
+      stats.raster += draw_stage_batch(gs, batch, primitive_id, raster_state, *fs, fb, par, stats, options);
       draw_tess_primitives<LineBatch>(lines, *tes, raster_state, *fs, fb, par, stats, options, records, emitted, gs, primitive_id);
       draw_tess_primitives<PointBatch>(points, *tes, raster_state, *fs, fb, par, stats, options, records, emitted, gs, primitive_id);
       stats.raster_seconds += seconds_since(r0);

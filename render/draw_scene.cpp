@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <span>
 
 #include "common/error.h"
 #include "raster/clear.h"
 #include "render/glsl_scene.h"
+#include "render/transform_feedback.h"
 
 namespace tessref {
 
@@ -274,8 +276,17 @@ void SceneDraws::for_each_call(std::size_t end, const std::function<void(const P
   }
 }
 
-DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& parallel, const DrawOptions& options) {
+DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& parallel, const DrawOptions& options,
+                           std::vector<FeedbackBuffers>* feedback) {
   SceneDraws draws(scene);
+  // Transform feedback: a recorder for each draw that has it, made at its first call (the
+  // program's outputs resolve the names), handed out when the next draw begins.
+  std::optional<FeedbackRecorder> recorder;
+  DrawOptions recording = options;
+  const auto hand_out = [&] {
+    if (recorder) feedback->push_back(recorder->buffers());
+    recorder.reset();
+  };
   DrawStats stats;
   std::size_t next = 0;  // the first draw not begun
   // Draws [next, end) begin: each one's glClear, then the caller hears of it.
@@ -290,9 +301,19 @@ DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& 
   };
   draws.for_each_call(scene.draws.size(), [&](const PreparedCall& p) {
     begin_until(p.draw + 1);
+    const bool records = feedback && p.setting.transform_feedback;
+    if (records && (!recorder || recorder->buffers().draw != p.draw)) {
+      hand_out();
+      recorder.emplace(scene, p.draw, p.program);
+      recording.primitives = [&](int corners, std::size_t count, const std::function<const float*(std::size_t, int)>& v) {
+        recorder->record(corners, count, v);
+        if (options.primitives) options.primitives(corners, count, v);
+      };
+    }
     if (p.call.indices.empty() || p.call.instances == 0) return;
-    stats += run_draw(p.program, p.attributes, p.call, p.setting.raster, fb, parallel, options);
+    stats += run_draw(p.program, p.attributes, p.call, p.setting.raster, fb, parallel, records ? recording : options);
   });
+  hand_out();
   begin_until(scene.draws.size());  // draws without calls still clear
   stats.warnings = draws.warnings();
   return stats;

@@ -65,8 +65,12 @@ class SceneDraws {
   std::vector<SceneProgram> own_;
 };
 
+struct FeedbackBuffers;
+
 // Draws every draw of the scene into fb (already cleared), each with its own program or the
-// scene's.
-DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& parallel, const DrawOptions& options);
+// scene's. With `feedback`: appends what each draw with a transform_feedback key records
+// (render/transform_feedback.h), in draw order.
+DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& parallel, const DrawOptions& options,
+                           std::vector<FeedbackBuffers>* feedback = nullptr);
 
 }  // namespace tessref

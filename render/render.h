@@ -13,6 +13,8 @@
 
 namespace tessref {
 
+struct FeedbackBuffers;  // render/transform_feedback.h
+
 struct RenderResult {
   Framebuffer framebuffer;
   DrawStats stats;
@@ -21,9 +23,11 @@ struct RenderResult {
 RenderResult render_scene(const Scene& scene, const Mesh& mesh, const Parallel& parallel,
                           const DrawOptions& options = {});
 // The same frame into fb, whose memory is reused when its size matches the scene's (repeated
-// frames: --repeat, benchmarks). The bytes of fb are those render_scene would return.
+// frames: --repeat, benchmarks). The bytes of fb are those render_scene would return. With
+// `feedback`, a scene of draws appends what its draws' transform feedback records.
 DrawStats render_scene(const Scene& scene, const Mesh& mesh, const Parallel& parallel,
-                       Framebuffer& fb, const DrawOptions& options = {});
+                       Framebuffer& fb, const DrawOptions& options = {},
+                       std::vector<FeedbackBuffers>* feedback = nullptr);
 
 // The built-in fragment program the scene's shading names, with the scene's uniforms: the object
 // render_scene draws with (shaders.program builtin), for tools that run it themselves.

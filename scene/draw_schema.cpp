@@ -10,6 +10,11 @@
 
 namespace tessref {
 
+std::size_t TransformFeedbackSetting::buffers() const {
+  if (separate) return varyings.size();
+  return 1 + std::size_t(std::count(varyings.begin(), varyings.end(), "gl_NextBuffer"));
+}
+
 std::optional<DrawMode> draw_mode_named(const std::string& gl_name) {
   static const std::pair<const char*, DrawMode> kNames[] = {
       {"GL_PATCHES", DrawMode::Patches},         {"GL_TRIANGLES", DrawMode::Triangles},
@@ -350,6 +355,45 @@ ShaderSettings read_draw_shaders(JsonObject& o, const ShaderSettings& scene_shad
   return read_shaders(JsonObject(merged, o.path_of("shaders"), quiet), quiet, base_dir);
 }
 
+// GL 4.5's minimum GL_MAX_TRANSFORM_FEEDBACK_BUFFERS and _SEPARATE_ATTRIBS (a program that uses
+// more would not link on every driver).
+constexpr std::size_t kMaxFeedbackBuffers = 4;
+
+TransformFeedbackSetting read_transform_feedback(JsonObject o) {
+  TransformFeedbackSetting t;
+  t.key = o.path();
+  o.describe("varyings", "an array of the last vertex stage's output names (\"gl_Position\", \"color\", "
+                         "\"array[1]\", \"Block.member\"), with gl_NextBuffer and gl_SkipComponents1..4 when interleaved");
+  o.describe("buffer_mode", "GL_INTERLEAVED_ATTRIBS (default: one buffer, gl_NextBuffer starts the next) or "
+                            "GL_SEPARATE_ATTRIBS (a buffer per varying)");
+  if (o.has("buffer_mode")) {
+    const std::string mode = o.string("buffer_mode");
+    if (mode != "GL_INTERLEAVED_ATTRIBS" && mode != "GL_SEPARATE_ATTRIBS")
+      o.fail("buffer_mode", "expected GL_INTERLEAVED_ATTRIBS or GL_SEPARATE_ATTRIBS, got \"" + mode + "\"");
+    t.separate = mode == "GL_SEPARATE_ATTRIBS";
+  }
+  const json& v = o.value("varyings");
+  if (!v.is_array() || v.empty()) o.fail("varyings", "expected a non-empty array of output names, got " + describe_json(v));
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (!v[i].is_string() || v[i].get<std::string>().empty())
+      o.fail("varyings", "element " + std::to_string(i) + ": expected an output name, got " + describe_json(v[i]));
+    const std::string name = v[i].get<std::string>();
+    const bool special = name == "gl_NextBuffer" || name.rfind("gl_SkipComponents", 0) == 0;
+    if (special && t.separate)
+      o.fail("varyings", "\"" + name + "\" is for GL_INTERLEAVED_ATTRIBS only (GL: the program fails to link)");
+    if (name.rfind("gl_SkipComponents", 0) == 0 && (name.size() != 18 || name[17] < '1' || name[17] > '4'))
+      o.fail("varyings", "\"" + name + "\": gl_SkipComponents1, 2, 3 or 4");
+    if (!special && std::find(t.varyings.begin(), t.varyings.end(), name) != t.varyings.end())
+      o.fail("varyings", "\"" + name + "\" is named twice (GL: the program fails to link)");
+    t.varyings.push_back(name);
+  }
+  if (t.buffers() > kMaxFeedbackBuffers)
+    o.fail("varyings", std::to_string(t.buffers()) + " buffers; GL guarantees " + std::to_string(kMaxFeedbackBuffers) +
+                           (t.separate ? " separate attributes" : " buffers (GL_MAX_TRANSFORM_FEEDBACK_BUFFERS)"));
+  o.finish();
+  return t;
+}
+
 DrawSetting read_draw(JsonObject o, const std::vector<BufferSetting>& buffers, const ShaderSettings& scene_shaders,
                       const std::filesystem::path& base_dir) {
   DrawSetting d;
@@ -417,6 +461,9 @@ DrawSetting read_draw(JsonObject o, const std::vector<BufferSetting>& buffers, c
     if (!d.clear_color && !d.clear_depth) c.fail("color", "give color, depth or both: the buffers glClear clears");
     c.finish();
   }
+  o.describe("transform_feedback", "an object {varyings, buffer_mode}: glTransformFeedbackVaryings and transform "
+                                   "feedback over the draw; render --transform-feedback writes the buffers");
+  if (o.has("transform_feedback")) d.transform_feedback = read_transform_feedback(o.object("transform_feedback"));
   if (o.has("robust_buffer_access")) d.rules.robust_buffer_access = o.boolean("robust_buffer_access");
   o.describe("robust_buffer_access", "a boolean (default false): a fetch outside a buffer reads zero instead of being an error");
   o.describe("calls", "an array of {count, first | basevertex, instancecount, baseinstance}: glMultiDraw* and indirect draws");

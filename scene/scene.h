@@ -167,6 +167,16 @@ struct UniformBufferSetting {
   std::optional<std::size_t> size;  // none: to the end of the buffer
 };
 
+// draws[].transform_feedback: glTransformFeedbackVaryings(program, varyings, buffer_mode) and a
+// transform feedback active over the draw (render --transform-feedback writes what it records).
+struct TransformFeedbackSetting {
+  std::string key;  // "draws.0.transform_feedback", for messages
+  std::vector<std::string> varyings;  // output names, gl_NextBuffer, gl_SkipComponents1..4
+  bool separate = false;              // GL_SEPARATE_ATTRIBS (default GL_INTERLEAVED_ATTRIBS)
+  // The buffers it writes: one per varying when separate, else one more per gl_NextBuffer.
+  std::size_t buffers() const;
+};
+
 // draws[]: one glDraw* call, or a list of them (calls: the multi-draw and indirect forms), with
 // the vertex array object, the program and the state it is drawn with.
 struct DrawSetting {
@@ -190,6 +200,7 @@ struct DrawSetting {
   // draws[].clear: glClear before the draw, within its scissor box and write masks.
   std::optional<glm::vec4> clear_color;
   std::optional<double> clear_depth;
+  std::optional<TransformFeedbackSetting> transform_feedback;
 };
 
 // framebuffer: the attachments a scene of draws draws into (draw buffer k takes fragment output

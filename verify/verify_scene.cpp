@@ -18,6 +18,7 @@
 #include "verify/compare.h"
 #include "verify/cracks.h"
 #include "verify/drawn_surfaces.h"
+#include "verify/feedback_compare.h"
 #include "verify/silhouette.h"
 #include "verify/surface_distance.h"
 
@@ -182,7 +183,9 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
   } else if (scene.tessellation.enabled) {
     options.tess_surface = [&](const std::vector<TessDumpRecord>& r, const TriangleBatch& b) { mine.append(r, b); };
   }
-  const RenderResult result = render_scene(scene, mesh, parallel, options);
+  RenderResult result;
+  std::vector<FeedbackBuffers> feedback;
+  result.stats = render_scene(scene, mesh, parallel, result.framebuffer, options, &feedback);
   if (of_draws) {
     finish_observing(scene, drawn);
     mine = std::move(drawn.tessellated);
@@ -417,6 +420,12 @@ VerifyResult verify_scene(const std::string& scene_path, const std::vector<std::
   }
   rate((100.0 - share) / std::max(1e-9, 100.0 - limits.color_share), 1.0);
 
+  // Transform feedback, byte for byte.
+  const FeedbackComparison fc = compare_feedback(reference, ref.manifest, feedback);
+  if (!fc.report.empty()) j["transform_feedback"] = fc.report;
+  failures.insert(failures.end(), fc.failures.begin(), fc.failures.end());
+  if (!fc.failures.empty()) rate(2.0, 1.0);
+
   j["limits"] = {{"max_distance_of_diagonal", limits.max_distance}, {"max_normal_difference", limits.max_normal},
                  {"silhouette_px", limits.silhouette_px},
                  {"color_share_percent", limits.color_share}, {"cracks_fail", limits.cracks_fail}};
@@ -513,6 +522,15 @@ std::string verify_summary(const nlohmann::json& j) {
                 col["max_difference_255"].get<int>(),
                 col["psnr_db"].is_null() ? "inf" : std::to_string(col["psnr_db"].get<double>()).c_str());
   out += buf;
+  if (j.contains("transform_feedback")) {
+    std::size_t identical = 0, bytes = 0;
+    for (const auto& b : j["transform_feedback"]) {
+      identical += b["identical"].get<bool>();
+      bytes += b["driver_bytes"].get<std::size_t>();
+    }
+    out += "  transform feedback: " + std::to_string(identical) + " of " + std::to_string(j["transform_feedback"].size()) +
+           " buffers identical to the driver's (" + std::to_string(bytes) + " bytes)\n";
+  }
   for (const auto& f : j["failures"]) out += "  FAIL: " + f.get<std::string>() + "\n";
   return out;
 }

@@ -11,6 +11,7 @@
 #include "shader/glsl_rewrite.h"
 #include "stages/glsl/glsl_geometry.h"
 #include "stages/glsl/glsl_stages.h"
+#include "stages/glsl/output_names.h"
 
 namespace tessref::glsl {
 namespace {
@@ -623,6 +624,10 @@ void GlslProgram::rasterizer_vertex(const StageVertex& shaded, ClipVertex* recor
   std::copy_n(src + kClipDistanceWord, layout.clip, dst + 4 + layout.user);
   std::copy_n(src + kCullDistanceWord, layout.cull, dst + 4 + layout.user + layout.clip);
   std::copy_n(src + kPointSizeWord, layout.point_size, dst + 4 + layout.user + layout.clip + layout.cull);
+}
+
+std::vector<int> GlslProgram::output_floats(const std::string& name) const {
+  return glsl::output_floats(gs_ ? *gs_ : tes_ ? *tes_ : *vs_, out_layout_, name);
 }
 
 DistanceVaryings GlslProgram::distance_varyings() const {

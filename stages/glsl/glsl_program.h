@@ -90,6 +90,9 @@ class GlslProgram final : public DrawProgram {
   // The type of the uniform with this GL name (an element's, for "name[i]"); nullopt if no stage
   // has it.
   std::optional<UniformShape> uniform_shape(const std::string& name) const;
+  // Where the rasterizer's vertex holds each word of the last vertex stage's output `name`, as
+  // glTransformFeedbackVaryings names it (stages/glsl/output_names.h); std::invalid_argument why not.
+  std::vector<int> output_floats(const std::string& name) const;
   // A uniform block of the program: its GL name, binding point and the bytes its layout reads.
   struct UniformBlock {
     std::string name;

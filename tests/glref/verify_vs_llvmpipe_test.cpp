@@ -316,6 +316,32 @@ TEST_F(VerifyVsLlvmpipe, UserClipPlanesMatchOnEveryPixel) {
   }
 }
 
+// Transform feedback (draws[].transform_feedback): the capture holds what llvmpipe's buffers
+// received, verify compares tessref's byte for byte: interleaved with gl_NextBuffer and
+// gl_SkipComponents, separate buffers, and a geometry shader's strips.
+TEST_F(VerifyVsLlvmpipe, TransformFeedbackBuffersMatchByteForByte) {
+  const std::string draws = std::string(TESSREF_SOURCE_DIR) + "/tests/data/draws/";
+  const std::vector<std::pair<std::string, std::string>> scenes = {
+      {"feedback_interleaved", "2 of 2 buffers identical to the driver's (9936 bytes)"},
+      {"feedback_separate", "3 of 3 buffers identical to the driver's (7104 bytes)"},
+      {"feedback_geometry", "1 of 1 buffers identical to the driver's (14208 bytes)"}};
+  for (const auto& [name, identical] : scenes) {
+    const test::CliRun r = capture_and_verify(draws + name + ".json", path(name));
+    EXPECT_EQ(r.exit_code, 0) << name << "\n" << r.output;
+    EXPECT_THAT(r.output, HasSubstr("transform feedback: " + identical)) << name;
+    EXPECT_TRUE(std::filesystem::exists(path(name) + "/feedback.draw0.buffer0.bin")) << name;
+  }
+  // A changed word in the driver's buffer is found and placed.
+  const std::string edited = path("feedback_separate") + "/feedback.draw0.buffer1.bin";
+  std::fstream f(edited, std::ios::in | std::ios::out | std::ios::binary);
+  f.seekp(40);
+  f.put(char(7));
+  f.close();
+  const test::CliRun r = test::run_cli("verify " + draws + "feedback_separate.json --ref " + path("feedback_separate") + kSmall);
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("FAIL: transform feedback: draw 0 buffer 1 differs from byte 40 (vertex 10, word 0)"));
+}
+
 // gl_FragDepth (tests/data/draws/frag_depth.json): the depth test takes the written depth, clamped
 // to [0, 1] in both depth formats and whatever the depth range, as llvmpipe does.
 TEST_F(VerifyVsLlvmpipe, FragDepthMatchesOnEveryPixel) {
