@@ -80,7 +80,7 @@ CaptureSummary capture_reference(GlContext& context, const Scene& scene, const M
         files.push_back(name);
       }
       feedback_manifest.push_back({{"draw", f.draw}, {"primitives", f.primitives}, {"vertices_per_primitive", f.corners},
-                                   {"files", files}});
+                                   {"stream_primitives", f.stream_primitives}, {"files", files}});
     }
   }
   write_as(color, dir / "color.png", [&] { write_rgb8_image(to_rgb8(fb), color); });

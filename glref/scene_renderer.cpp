@@ -201,10 +201,10 @@ class FeedbackRecording {
  public:
   FeedbackRecording(const Scene& scene, const std::vector<Program>& programs, std::vector<FeedbackBuffers>& out)
       : scene_(scene), programs_(programs), out_(out) {
-    glGenQueries(2, queries_);
+    glGenQueries(8, queries_);
   }
   ~FeedbackRecording() {
-    glDeleteQueries(2, queries_);
+    glDeleteQueries(8, queries_);
     if (!buffers_.empty()) glDeleteBuffers(GLsizei(buffers_.size()), buffers_.data());
   }
   FeedbackRecording(const FeedbackRecording&) = delete;
@@ -224,28 +224,38 @@ class FeedbackRecording {
         glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, GLsizeiptr(kCapacity), zeros.data(), GL_STREAM_READ);
       }
       corners_ = primitive_corners(draw, program);
-      glBeginQuery(GL_PRIMITIVES_GENERATED, queries_[0]);
-      glBeginQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, queries_[1]);
+      for (GLuint s = 0; s < 4; ++s) {  // by vertex stream: a geometry shader's streams 1..3 too
+        glBeginQueryIndexed(GL_PRIMITIVES_GENERATED, s, queries_[2 * s]);
+        glBeginQueryIndexed(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, s, queries_[2 * s + 1]);
+      }
       glBeginTransformFeedback(corners_ == 1 ? GL_POINTS : corners_ == 2 ? GL_LINES : GL_TRIANGLES);
       check_gl((draw.key + ": beginning transform feedback").c_str());
       return;
     }
     glEndTransformFeedback();
-    glEndQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
-    glEndQuery(GL_PRIMITIVES_GENERATED);
-    GLuint generated = 0, written = 0;
-    glGetQueryObjectuiv(queries_[0], GL_QUERY_RESULT, &generated);
-    glGetQueryObjectuiv(queries_[1], GL_QUERY_RESULT, &written);
-    if (written != generated)
-      throw GlError(draw.key + ": transform feedback wrote " + std::to_string(written) + " of " + std::to_string(generated) +
-                    " primitives (the GL runner's buffers hold " + std::to_string(kCapacity >> 20) + " MiB each)");
     FeedbackBuffers f;
     f.draw = d;
-    f.primitives = written;
-    f.corners = written ? corners_ : 0;
+    std::size_t longest = 0;  // vertices, over the streams
+    for (GLuint s = 0; s < 4; ++s) {
+      glEndQueryIndexed(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, s);
+      glEndQueryIndexed(GL_PRIMITIVES_GENERATED, s);
+      GLuint generated = 0, written = 0;
+      glGetQueryObjectuiv(queries_[2 * s], GL_QUERY_RESULT, &generated);
+      glGetQueryObjectuiv(queries_[2 * s + 1], GL_QUERY_RESULT, &written);
+      if (written != generated)
+        throw GlError(draw.key + ": transform feedback wrote " + std::to_string(written) + " of " + std::to_string(generated) +
+                      " primitives of stream " + std::to_string(s) + " (the GL runner's buffers hold " +
+                      std::to_string(kCapacity >> 20) + " MiB each)");
+      f.stream_primitives[s] = written;
+      longest = std::max(longest, std::size_t(written) * std::size_t(s ? 1 : corners_));  // streams past 0: points
+    }
+    f.primitives = f.stream_primitives[0];
+    f.corners = f.primitives ? corners_ : 0;
+    // GL does not say which stream a buffer records: each is read as far as the longest stream
+    // could have filled it (the rest still holds the zeros it was given).
     const std::vector<std::size_t> strides = buffer_strides(*draw.transform_feedback, program);
     for (std::size_t b = 0; b < buffers_.size(); ++b) {
-      std::vector<std::byte> bytes(std::size_t(written) * std::size_t(corners_) * strides[b]);
+      std::vector<std::byte> bytes(longest * strides[b]);
       glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, buffers_[b]);
       if (!bytes.empty()) glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0, GLsizeiptr(bytes.size()), bytes.data());
       f.bytes.push_back(std::move(bytes));
@@ -297,7 +307,7 @@ class FeedbackRecording {
   const Scene& scene_;
   const std::vector<Program>& programs_;
   std::vector<FeedbackBuffers>& out_;
-  GLuint queries_[2] = {0, 0};
+  GLuint queries_[8] = {};  // generated and written, for each vertex stream
   std::vector<GLuint> buffers_;
   int corners_ = 3;
 };

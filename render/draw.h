@@ -80,9 +80,10 @@ struct DrawOptions {
   // Every primitive as the rasterizer receives it (after the geometry shader, before clipping),
   // in the order GL's transform feedback records primitives, on the calling thread: `count`
   // primitives of `corners` (1, 2 or 3) vertices; vertex(p, k) holds corner k of primitive p
-  // (gl_Position, then the last stage's outputs: DrawProgram::output_floats). Stream 0 only: the
-  // rasterized one.
-  std::function<void(int corners, std::size_t count, const std::function<const float*(std::size_t, int)>& vertex)>
+  // (gl_Position, then the last stage's outputs: glsl::GlslProgram::output_floats). `stream`: the
+  // geometry shader's vertex stream; only stream 0 is rasterized, streams 1..3 are points.
+  std::function<void(int stream, int corners, std::size_t count,
+                     const std::function<const float*(std::size_t, int)>& vertex)>
       primitives;
   // `render --check`: every stage's outputs tested for NaN and infinity; the first offence throws
   // CheckOffence. Null: nothing is tested and nothing is added to the draw's work.

@@ -29,9 +29,9 @@ RasterStats draw_batch(const PointBatch& b, const RasterState& s, const Fragment
 
 // DrawOptions::primitives: the batch's primitives, as the rasterizer receives them.
 template <class Batch>
-void hand_out_primitives(const DrawOptions& options, const Batch& b) {
+void hand_out_primitives(const DrawOptions& options, const Batch& b, int stream = 0) {
   if (!options.primitives || b.primitive_count() == 0) return;
-  options.primitives(Batch::kCorners, b.primitive_count(),
+  options.primitives(stream, Batch::kCorners, b.primitive_count(),
                      [&b](std::size_t p, int k) { return b.vertex_data(b.vertex_index(p, k)); });
 }
 
@@ -51,6 +51,7 @@ RasterStats draw_stage_batch(const GeometryProgram* gs, const Batch& b, std::uin
     }
   }
   GeometryOutput out;
+  out.keep_streams = bool(options.primitives);
   run_geometry(*gs, b, primitive_id, p, out);
   primitive_id += std::uint32_t(b.primitive_count());
   RasterStats r;
@@ -63,6 +64,7 @@ RasterStats draw_stage_batch(const GeometryProgram* gs, const Batch& b, std::uin
   draw(out.triangles);
   draw(out.lines);
   draw(out.points);
+  for (std::size_t s = 0; s < out.streams.size(); ++s) hand_out_primitives(options, out.streams[s], int(s) + 1);
   return r;
 }
 

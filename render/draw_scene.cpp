@@ -305,9 +305,10 @@ DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& 
     if (records && (!recorder || recorder->buffers().draw != p.draw)) {
       hand_out();
       recorder.emplace(scene, p.draw, p.program);
-      recording.primitives = [&](int corners, std::size_t count, const std::function<const float*(std::size_t, int)>& v) {
-        recorder->record(corners, count, v);
-        if (options.primitives) options.primitives(corners, count, v);
+      recording.primitives = [&](int stream, int corners, std::size_t count,
+                                 const std::function<const float*(std::size_t, int)>& v) {
+        recorder->record(stream, corners, count, v);
+        if (options.primitives) options.primitives(stream, corners, count, v);
       };
     }
     if (p.call.indices.empty() || p.call.instances == 0) return;

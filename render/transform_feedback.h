@@ -6,6 +6,7 @@
 // buffer, gl_SkipComponentsN leaves N words as they were: zero here) or each into a buffer of
 // its own (GL_SEPARATE_ATTRIBS). tessref's buffers grow with the draw, as a GL buffer large
 // enough for every primitive would be filled.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -20,8 +21,10 @@ namespace tessref {
 struct FeedbackBuffers {
   std::size_t draw = 0;                       // into Scene::draws
   std::vector<std::vector<std::byte>> bytes;  // one per buffer binding 0, 1, ...
-  std::uint64_t primitives = 0;               // GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN
-  int corners = 0;                            // vertices per primitive recorded (0: none yet)
+  std::vector<int> buffer_streams;            // the vertex stream each buffer records
+  std::uint64_t primitives = 0;               // GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN (stream 0)
+  std::array<std::uint64_t, 4> stream_primitives{};  // the same query indexed by stream
+  int corners = 0;                            // vertices per stream-0 primitive (0: none recorded)
 };
 
 // A capture folder's file of buffer `buffer` of draw `draw`: "feedback.drawD.bufferB.bin".
@@ -34,8 +37,9 @@ class FeedbackRecorder {
  public:
   FeedbackRecorder(const Scene& scene, std::size_t draw, const glsl::GlslProgram& program);
   // DrawOptions::primitives' signature. A draw records one primitive type (GL: the mode of
-  // glBeginTransformFeedback); InputError if a later call changes it.
-  void record(int corners, std::size_t count, const std::function<const float*(std::size_t, int)>& vertex);
+  // glBeginTransformFeedback); InputError if a later call changes it. A geometry shader's
+  // streams 1..3 go to the buffers whose outputs it emits on them (layout(stream = N)).
+  void record(int stream, int corners, std::size_t count, const std::function<const float*(std::size_t, int)>& vertex);
   const FeedbackBuffers& buffers() const { return out_; }
 
  private:
@@ -43,6 +47,8 @@ class FeedbackRecorder {
     std::size_t buffer = 0;
     std::vector<int> floats;  // the vertex's float for each word; -1: a zero word
   };
+  void record_stream(int stream, int corners, std::size_t count, const std::function<const float*(std::size_t, int)>& vertex);
+
   const Scene& scene_;
   std::vector<Field> fields_;
   FeedbackBuffers out_;

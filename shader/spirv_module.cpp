@@ -42,6 +42,7 @@ void apply_decoration(Decorations& d, std::uint32_t decoration, std::span<const 
     case spv::DecorationBinding: d.binding = arg(); break;
     case spv::DecorationBuiltIn: d.builtin = arg(); break;
     case spv::DecorationOffset: d.offset = arg(); break;
+    case spv::DecorationStream: d.stream = arg(); break;
     case spv::DecorationArrayStride: d.array_stride = arg(); break;
     case spv::DecorationMatrixStride: d.matrix_stride = arg(); break;
     case spv::DecorationRowMajor: d.row_major = true; break;

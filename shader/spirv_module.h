@@ -63,6 +63,7 @@ struct Type {
 
 struct Decorations {
   std::optional<std::uint32_t> location, component, binding, builtin, offset;
+  std::optional<std::uint32_t> stream;  // a geometry shader output's vertex stream
   // Explicit layout (uniform blocks): ArrayStride on array types, MatrixStride and RowMajor on the
   // struct members that hold matrices.
   std::optional<std::uint32_t> array_stride, matrix_stride;

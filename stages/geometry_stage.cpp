@@ -54,6 +54,8 @@ void run_geometry(const GeometryProgram& gs, const PrimitiveBatch<Corners>& in, 
     o.triangles.indexed = o.lines.indexed = o.points.indexed = true;
     o.triangles.num_varyings = o.lines.num_varyings = o.points.num_varyings = gs.num_varyings();
     o.triangles.flat_varyings = o.lines.flat_varyings = o.points.flat_varyings = gs.flat_varyings();
+    o.keep_streams = out.keep_streams;
+    for (PointBatch& s : o.streams) s.indexed = true, s.num_varyings = gs.num_varyings();
   };
   prepare(out);
   // Each task writes its own slot; the slots are joined in order below.
@@ -70,6 +72,7 @@ void run_geometry(const GeometryProgram& gs, const PrimitiveBatch<Corners>& in, 
     append_primitives(out.triangles, part.triangles);
     append_primitives(out.lines, part.lines);
     append_primitives(out.points, part.points);
+    for (std::size_t s = 0; s < out.streams.size(); ++s) append_primitives(out.streams[s], part.streams[s]);
   }
 }
 

@@ -2,6 +2,7 @@
 // The geometry stage (GL 4.5, section 11.3): after the vertex or tessellation stages, one shader
 // invocation per input primitive (per instance of an instanced geometry shader) emits vertices into
 // strips, which are cut into the point, line or triangle lists the rasterizer draws.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -17,6 +18,10 @@ struct GeometryOutput {
   TriangleBatch triangles;
   LineBatch lines;
   PointBatch points;
+  // With keep_streams: the points emitted on vertex streams 1..3 (GL allows streams past 0 with
+  // points output only), which transform feedback records and the rasterizer never sees.
+  bool keep_streams = false;
+  std::array<PointBatch, 3> streams;
 };
 
 class GeometryProgram {

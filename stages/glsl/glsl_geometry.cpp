@@ -1,6 +1,7 @@
 #include "stages/glsl/glsl_geometry.h"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 
 #include <spirv/unified1/spirv.hpp>
@@ -17,6 +18,9 @@ struct LaneEmission {
   std::vector<std::uint32_t> indices;
   std::uint32_t strip_first = 0;  // the first vertex of the open strip
   int emitted = 0;                // vertices emitted on stream 0, kept or not (max_vertices)
+  // Streams 1..3 (points): their vertices, and how many each emitted, kept or not.
+  std::array<std::vector<ClipVertex>, 3> stream_vertices;
+  std::array<int, 3> stream_emitted{};
 };
 
 }  // namespace
@@ -82,14 +86,17 @@ void GlslGeometry::run_lanes(const float* const* corners, int in_varyings, std::
     e.strip_first = count;
   };
   inv.on_emit([&](int lane, int stream, bool end) {
-    if (stream != 0) return;  // other streams feed only transform feedback, which is not drawn
     LaneEmission& e = emissions[std::size_t(lane)];
+    // Streams past 0 feed transform feedback only: kept when it records them. Their primitives
+    // are points (GL), so ending one ends nothing.
+    if (stream != 0 && (end || !out.keep_streams || stream > 3)) return;
     if (end) return end_strip(e);
     // GL leaves vertices past max_vertices undefined; like llvmpipe, they are dropped.
-    if (e.emitted++ >= max_vertices_) return;
-    const std::size_t at = e.vertices.size();
-    e.vertices.resize(at + std::size_t(records), ClipVertex{});
-    auto* floats = reinterpret_cast<std::uint32_t*>(e.vertices.data() + at);
+    if ((stream ? e.stream_emitted[std::size_t(stream - 1)] : e.emitted)++ >= max_vertices_) return;
+    std::vector<ClipVertex>& vertices = stream ? e.stream_vertices[std::size_t(stream - 1)] : e.vertices;
+    const std::size_t at = vertices.size();
+    vertices.resize(at + std::size_t(records), ClipVertex{});
+    auto* floats = reinterpret_cast<std::uint32_t*>(vertices.data() + at);
     for (const IoVariable& v : sp_.io.outputs) {
       if (!v.carries_words()) continue;
       for (const IoWord& w : v.words) {
@@ -123,6 +130,14 @@ void GlslGeometry::run_lanes(const float* const* corners, int in_varyings, std::
   if (output_corners_ == 1) append(out.points);
   else if (output_corners_ == 2) append(out.lines);
   else append(out.triangles);
+  if (out.keep_streams)
+    for (std::size_t s = 0; s < out.streams.size(); ++s)
+      for (const LaneEmission& e : emissions) {
+        PointBatch& batch = out.streams[s];
+        const auto base = std::uint32_t(batch.vertex_count());
+        batch.vertices.insert(batch.vertices.end(), e.stream_vertices[s].begin(), e.stream_vertices[s].end());
+        for (std::uint32_t i = 0; i < e.stream_vertices[s].size() / std::size_t(records); ++i) batch.indices.push_back(base + i);
+      }
 }
 
 }  // namespace tessref::glsl

@@ -34,6 +34,15 @@ inline constexpr std::uint32_t kPointSizeWord = kCullDistanceWord + kMaxDistance
 // Where a stage's outputs sit in the rasterizer's vertex (gl_Position, then varyings): the user
 // varyings at their I/O words, then the clip distances, the cull distances and gl_PointSize the
 // stage writes (the point size for a geometry shader's gl_in[]; the rasterizer draws 1-pixel points).
+// Where the rasterizer's vertex (gl_Position, then the outputs as VaryingLayout places them)
+// holds each 32-bit word of an output, in the order transform feedback records them (a double as
+// two words, low first); -1 for a word the stage leaves unwritten. With the geometry shader's
+// vertex stream it is emitted on (layout(stream = N), 0 without one).
+struct OutputWords {
+  std::vector<int> floats;
+  int stream = 0;
+};
+
 struct VaryingLayout {
   int user = 0;            // varyings up to the last location written
   int clip = 0, cull = 0;  // gl_ClipDistance and gl_CullDistance elements written

@@ -626,7 +626,7 @@ void GlslProgram::rasterizer_vertex(const StageVertex& shaded, ClipVertex* recor
   std::copy_n(src + kPointSizeWord, layout.point_size, dst + 4 + layout.user + layout.clip + layout.cull);
 }
 
-std::vector<int> GlslProgram::output_floats(const std::string& name) const {
+OutputWords GlslProgram::output_floats(const std::string& name) const {
   return glsl::output_floats(gs_ ? *gs_ : tes_ ? *tes_ : *vs_, out_layout_, name);
 }
 

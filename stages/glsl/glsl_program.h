@@ -92,7 +92,7 @@ class GlslProgram final : public DrawProgram {
   std::optional<UniformShape> uniform_shape(const std::string& name) const;
   // Where the rasterizer's vertex holds each word of the last vertex stage's output `name`, as
   // glTransformFeedbackVaryings names it (stages/glsl/output_names.h); std::invalid_argument why not.
-  std::vector<int> output_floats(const std::string& name) const;
+  OutputWords output_floats(const std::string& name) const;
   // A uniform block of the program: its GL name, binding point and the bytes its layout reads.
   struct UniformBlock {
     std::string name;

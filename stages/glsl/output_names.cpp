@@ -70,11 +70,11 @@ std::vector<int> builtin_floats(const VaryingLayout& layout, const std::string& 
 
 }  // namespace
 
-std::vector<int> output_floats(const StageProgram& last, const VaryingLayout& layout, const std::string& name) {
+OutputWords output_floats(const StageProgram& last, const VaryingLayout& layout, const std::string& name) {
   std::string base;
   std::vector<Accessor> path;
   parse(name, base, path);
-  if (base.rfind("gl_", 0) == 0) return builtin_floats(layout, name, base, path);
+  if (base.rfind("gl_", 0) == 0) return {builtin_floats(layout, name, base, path), 0};
   const shader::Module& m = last.exe->module();
   const char* stage = shader::stage_name(last.stage);
   for (const IoVariable& v : last.io.outputs) {
@@ -87,6 +87,7 @@ std::vector<int> output_floats(const StageProgram& last, const VaryingLayout& la
       throw std::invalid_argument("'" + name + "': a block is recorded member by member ('" + base + ".member')");
     std::uint32_t first = 0;
     std::string walked = base;
+    int stream = int(v.variable->decorations.stream.value_or(0));
     for (const Accessor& a : path) {
       const shader::Type& t = m.type(type);
       if (a.member.empty()) {
@@ -106,15 +107,17 @@ std::vector<int> output_floats(const StageProgram& last, const VaryingLayout& la
       if (t.kind != shader::TypeKind::Struct || k == t.members.size())
         throw std::invalid_argument("'" + name + "': " + walked + " has no member '" + a.member + "'");
       first += t.member_word[k];
+      if (block && walked == base && k < v.variable->member_decorations.size())
+        stream = int(v.variable->member_decorations[k].stream.value_or(std::uint32_t(stream)));
       type = t.members[k];
       walked.append(".").append(a.member);
     }
     const std::uint32_t end = first + m.type(type).words;
-    std::vector<int> out(end - first, -1);
+    OutputWords out{std::vector<int>(end - first, -1), stream};
     for (const IoWord& w : v.words)
       for (int h = 0; h < shader::scalar_words(w.scalar); ++h)
         if (w.var_word + std::uint32_t(h) >= first && w.var_word + std::uint32_t(h) < end)
-          out[w.var_word + std::uint32_t(h) - first] = layout.float_of(w.io_word + std::uint32_t(h));
+          out.floats[w.var_word + std::uint32_t(h) - first] = layout.float_of(w.io_word + std::uint32_t(h));
     return out;
   }
   throw std::invalid_argument("'" + name + "' is not an output of the " + std::string(stage) +

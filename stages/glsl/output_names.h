@@ -11,10 +11,9 @@
 
 namespace tessref::glsl {
 
-// Where the rasterizer's vertex (gl_Position, then the outputs as `layout` places them) holds
-// each 32-bit word of the output `name`, in the order transform feedback records them (a double
-// as two words, low first); -1 for a word the stage leaves unwritten. std::invalid_argument saying
-// why when the stage has no such output (GL: the program fails to link).
-std::vector<int> output_floats(const StageProgram& last, const VaryingLayout& layout, const std::string& name);
+// Where the rasterizer's vertex holds each word of the output `name` (OutputWords);
+// std::invalid_argument saying why when the stage has no such output (GL: the program fails to
+// link).
+OutputWords output_floats(const StageProgram& last, const VaryingLayout& layout, const std::string& name);
 
 }  // namespace tessref::glsl

@@ -318,13 +318,14 @@ TEST_F(VerifyVsLlvmpipe, UserClipPlanesMatchOnEveryPixel) {
 
 // Transform feedback (draws[].transform_feedback): the capture holds what llvmpipe's buffers
 // received, verify compares tessref's byte for byte: interleaved with gl_NextBuffer and
-// gl_SkipComponents, separate buffers, and a geometry shader's strips.
+// gl_SkipComponents, separate buffers, a geometry shader's strips and its two vertex streams.
 TEST_F(VerifyVsLlvmpipe, TransformFeedbackBuffersMatchByteForByte) {
   const std::string draws = std::string(TESSREF_SOURCE_DIR) + "/tests/data/draws/";
   const std::vector<std::pair<std::string, std::string>> scenes = {
       {"feedback_interleaved", "2 of 2 buffers identical to the driver's (9936 bytes)"},
       {"feedback_separate", "3 of 3 buffers identical to the driver's (7104 bytes)"},
-      {"feedback_geometry", "1 of 1 buffers identical to the driver's (14208 bytes)"}};
+      {"feedback_geometry", "1 of 1 buffers identical to the driver's (14208 bytes)"},
+      {"feedback_streams", "2 of 2 buffers identical to the driver's (7400 bytes)"}};
   for (const auto& [name, identical] : scenes) {
     const test::CliRun r = capture_and_verify(draws + name + ".json", path(name));
     EXPECT_EQ(r.exit_code, 0) << name << "\n" << r.output;

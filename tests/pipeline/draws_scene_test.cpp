@@ -56,7 +56,7 @@ TEST(DrawsScene, SameBytesAtOneAndEightThreads) {
     EXPECT_EQ(one.framebuffer.depth, eight.framebuffer.depth) << f;
     ++scenes;
   }
-  EXPECT_EQ(scenes, 23);
+  EXPECT_EQ(scenes, 24);
 }
 
 // Each draw with its own program: a flat-coloured strip, then the patches depth-tested against it.

@@ -2,6 +2,7 @@
 // the evaluation shader's formula), the interleaved and separate layouts, the same bytes for any
 // thread count and batch size, and the errors a GL linker would give. The same scenes against
 // llvmpipe, byte for byte: tests/glref/verify_vs_llvmpipe_test.cpp.
+#include <array>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -117,8 +118,29 @@ TEST(TransformFeedback, GeometryShaderStripsAreRecordedInGlsVertexOrder) {
   }
 }
 
+// Stream 0's points into buffer 0, stream 1's into buffer 1 (after gl_NextBuffer), each counted.
+TEST(TransformFeedback, EachBufferRecordsTheStreamItsOutputsAreEmittedOn) {
+  const std::vector<FeedbackBuffers> f = record("feedback_streams.json");
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_EQ(f[0].corners, 1);
+  EXPECT_EQ(f[0].primitives, 222u);
+  EXPECT_EQ(f[0].stream_primitives, (std::array<std::uint64_t, 4>{222, 74, 0, 0}));
+  EXPECT_EQ(f[0].buffer_streams, (std::vector<int>{0, 1}));
+  ASSERT_EQ(f[0].bytes[0].size(), 222u * 28);  // gl_Position, g_coord
+  ASSERT_EQ(f[0].bytes[1].size(), 74u * 16);   // g_first
+  for (std::size_t t = 0; t < 74; ++t) {
+    // Stream 1's point t: triangle t's first corner (stream 0's point 3t) and its index.
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(word<float>(f[0].bytes[1], 4 * t + c), word<float>(f[0].bytes[0], 7 * 3 * t + 4 + c)) << t;
+    EXPECT_EQ(word<float>(f[0].bytes[1], 4 * t + 3), float(t));
+  }
+  // Outputs of two streams in one buffer: refused.
+  EXPECT_THAT(error_of("feedback_streams.json", {"draws.0.transform_feedback.varyings=[\"g_coord\",\"g_first\"]"}),
+              HasSubstr("varyings.1: \"g_first\" is emitted on vertex stream 1 and buffer 0 records stream 0"));
+}
+
 TEST(TransformFeedback, SameBytesForAnyThreadCountAndBatchSize) {
-  for (const std::string file : {"feedback_interleaved.json", "feedback_separate.json", "feedback_geometry.json"}) {
+  for (const std::string file : {"feedback_interleaved.json", "feedback_separate.json", "feedback_geometry.json",
+                                 "feedback_streams.json"}) {
     const std::vector<FeedbackBuffers> one = record(file, {}, 1);
     for (const int threads : {2, 8})
       for (const std::string lanes : {"1", "7", "64"}) {
