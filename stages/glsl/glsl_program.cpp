@@ -8,6 +8,7 @@
 #include <spirv/unified1/spirv.hpp>
 
 #include "shader/buffer_layout.h"
+#include "shader/resource_names.h"
 #include "shader/glsl_rewrite.h"
 #include "stages/glsl/glsl_geometry.h"
 #include "stages/glsl/glsl_stages.h"
@@ -165,14 +166,10 @@ std::optional<std::pair<std::uint32_t, std::uint32_t>> find_uniform(const shader
   return std::nullopt;
 }
 
-// A uniform by its full GL name: a head find_uniform knows, then any ".member" (struct members)
-// and "[i]" (array elements) after it, as glGetUniformLocation takes them ("lights[2].color").
-struct UniformAt {
-  std::uint32_t type = 0, word = 0;
-  std::uint32_t remaining = 1;  // elements from this one to the end of its array (1: not an element)
-};
-
-std::optional<UniformAt> resolve_uniform(const shader::Module& m, const shader::Variable& v, const std::string& name) {
+// A uniform by its full GL name: a head find_uniform knows, then its accessors
+// (shader/resource_names.h), as glGetUniformLocation takes them ("lights[2].color").
+std::optional<shader::NamedValue> resolve_uniform(const shader::Module& m, const shader::Variable& v,
+                                                  const std::string& name) {
   // Heads: up to the first accessor, or (Block.member) up to the second '.'.
   std::vector<std::size_t> heads;
   const std::size_t first = name.find_first_of(".[");
@@ -181,41 +178,12 @@ std::optional<UniformAt> resolve_uniform(const shader::Module& m, const shader::
   for (const std::size_t head : heads) {
     const auto found = find_uniform(m, v, name.substr(0, head));
     if (!found) continue;
-    UniformAt at{found->first, found->second, 1};
-    std::size_t p = head;
-    bool ok = true;
-    while (ok && p != std::string::npos && p < name.size()) {
-      const shader::Type& t = m.type(at.type);
-      if (name[p] == '[') {
-        const std::size_t close = name.find(']', p);
-        const std::string digits = close == std::string::npos ? "" : name.substr(p + 1, close - p - 1);
-        if (t.kind != TypeKind::Array || digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) {
-          ok = false;
-          break;
-        }
-        const unsigned long i = std::stoul(digits);
-        if (i >= t.count)
-          throw std::invalid_argument("uniform '" + name + "': index " + digits + " past the array's " +
-                                      std::to_string(t.count) + " elements");
-        at = {t.element, at.word + std::uint32_t(i) * m.type(t.element).words, t.count - std::uint32_t(i)};
-        p = close + 1;
-      } else if (name[p] == '.') {
-        const std::size_t end = name.find_first_of(".[", p + 1);
-        const std::string member = name.substr(p + 1, end == std::string::npos ? std::string::npos : end - p - 1);
-        ok = false;
-        if (t.kind == TypeKind::Struct)
-          for (std::uint32_t k = 0; k < t.members.size(); ++k)
-            if (const auto mn = m.member_names.find({at.type, k}); mn != m.member_names.end() && mn->second == member) {
-              at = {t.members[k], at.word + t.member_word[k], 1};
-              ok = true;
-              break;
-            }
-        p = end;
-      } else {
-        ok = false;
-      }
-    }
-    if (ok) return at;
+    const std::string_view accessors = head == std::string::npos ? std::string_view() : std::string_view(name).substr(head);
+    const shader::Access a = shader::follow_accessors(m, {found->first, found->second, 1}, name.substr(0, head), accessors);
+    if (a.index_past_end)
+      throw std::invalid_argument("uniform '" + name + "': index " + a.index + " past the array's " +
+                                  std::to_string(a.count) + " elements");
+    if (a.why.empty()) return a.value;
   }
   return std::nullopt;
 }
