@@ -234,53 +234,46 @@ class LiveSymbols : public glslang::TLiveTraverser {
   std::map<std::string, glslang::TSourceLoc> first_use;
 };
 
-std::vector<IoVariable> interface_of(Stage stage, const glslang::TIntermediate& intermediate) {
-  const LiveSymbols live(intermediate);
-  const EShLanguage lang = language(stage);
-  std::vector<IoVariable> vars;
-  for (TIntermNode* global : intermediate.getTreeRoot()->getAsAggregate()->getSequence()) {
-    const glslang::TIntermAggregate* objects = global->getAsAggregate();
-    if (!objects || objects->getOp() != glslang::EOpLinkerObjects) continue;
-    for (TIntermNode* object : objects->getSequence()) {
-      const glslang::TIntermSymbol* symbol = object->getAsSymbolNode();
-      if (!symbol || is_builtin(*symbol)) continue;
-      const glslang::TQualifier& q = symbol->getQualifier();
-      if (q.storage != glslang::EvqVaryingIn && q.storage != glslang::EvqVaryingOut) continue;
-      const auto use = live.first_use.find(symbol->getName().c_str());
-      IoVariable v{q.storage == glslang::EvqVaryingIn, q.isArrayedIo(lang),
-                   interface_name(*symbol), &symbol->getType(),
-                   use == live.first_use.end() ? std::nullopt : std::optional(use->second),
-                   q.hasLocation() ? static_cast<int>(q.layoutLocation) : -1,
-                   q.hasComponent() ? static_cast<int>(q.layoutComponent) : 0};
-      vars.push_back(v);
-    }
-  }
-  return vars;
-}
-
 // The first static use of the stage's built-in gl_PerVertex input (gl_in[]) and output blocks.
 struct PerVertexUse {
   std::optional<glslang::TSourceLoc> in, out;
 };
-PerVertexUse per_vertex_use(const glslang::TIntermediate& intermediate) {
+
+struct StageInterface {
+  Stage stage;
+  std::vector<IoVariable> vars;
+  PerVertexUse per_vertex;
+};
+
+// The stage's user inputs and outputs and its use of the built-in blocks, from one walk of its
+// linker objects.
+StageInterface interface_of(Stage stage, const glslang::TIntermediate& intermediate) {
   const LiveSymbols live(intermediate);
-  PerVertexUse use;
+  const EShLanguage lang = language(stage);
+  StageInterface out{stage, {}, {}};
   for (TIntermNode* global : intermediate.getTreeRoot()->getAsAggregate()->getSequence()) {
     const glslang::TIntermAggregate* objects = global->getAsAggregate();
     if (!objects || objects->getOp() != glslang::EOpLinkerObjects) continue;
     for (TIntermNode* object : objects->getSequence()) {
       const glslang::TIntermSymbol* symbol = object->getAsSymbolNode();
-      if (!symbol || symbol->getType().getBasicType() != glslang::EbtBlock ||
-          symbol->getType().getTypeName() != "gl_PerVertex")
+      if (!symbol) continue;
+      const glslang::TQualifier& q = symbol->getQualifier();
+      if (q.storage != glslang::EvqVaryingIn && q.storage != glslang::EvqVaryingOut) continue;
+      const auto use = live.first_use.find(symbol->getName().c_str());
+      const std::optional<glslang::TSourceLoc> first_use =
+          use == live.first_use.end() ? std::nullopt : std::optional(use->second);
+      if (symbol->getType().getBasicType() == glslang::EbtBlock && symbol->getType().getTypeName() == "gl_PerVertex") {
+        if (first_use) (q.storage == glslang::EvqVaryingIn ? out.per_vertex.in : out.per_vertex.out) = first_use;
         continue;
-      const auto first = live.first_use.find(symbol->getName().c_str());
-      if (first == live.first_use.end()) continue;
-      const glslang::TStorageQualifier storage = symbol->getQualifier().storage;
-      if (storage == glslang::EvqVaryingIn) use.in = first->second;
-      if (storage == glslang::EvqVaryingOut) use.out = first->second;
+      }
+      if (is_builtin(*symbol)) continue;
+      out.vars.push_back(IoVariable{q.storage == glslang::EvqVaryingIn, q.isArrayedIo(lang), interface_name(*symbol),
+                                    &symbol->getType(), first_use,
+                                    q.hasLocation() ? static_cast<int>(q.layoutLocation) : -1,
+                                    q.hasComponent() ? static_cast<int>(q.layoutComponent) : 0});
     }
   }
-  return use;
+  return out;
 }
 
 std::string where(const glslang::TSourceLoc& loc) {
@@ -290,11 +283,6 @@ std::string where(const glslang::TSourceLoc& loc) {
 std::string used_at(const IoVariable& v) {
   return v.first_use ? " (" + where(*v.first_use) + ")" : "";
 }
-
-struct StageInterface {
-  Stage stage;
-  std::vector<IoVariable> vars;
-};
 
 // GL's rules between adjacent stages (OpenGL 4.5, 7.4.1; GLSL 4.50, 4.4.1): an output matches an
 // input when both have the same location and component, or when neither has a location and
@@ -571,8 +559,7 @@ void check_output_vertices(const ShaderSource& source, const glslang::TShader& s
 // separable program objects, shader code must redeclare those blocks prior to use." As Mesa
 // checks it: between each stage and the next one in the program, for GLSL 1.50 and later
 // (ARB_separate_shader_objects issue 28 exempts 1.40 and earlier, which have no blocks).
-void check_separable_blocks(const std::vector<StageInterface>& stages, const std::vector<PerVertexUse>& uses,
-                            const std::vector<ShaderSource>& sources, const std::vector<RewrittenSource>& rewritten,
+void check_separable_blocks(const std::vector<StageInterface>& stages, const std::vector<ShaderSource>& sources, const std::vector<RewrittenSource>& rewritten,
                             std::vector<std::string>& errors) {
   int version = 0;
   for (const RewrittenSource& r : rewritten) version = std::max(version, r.version);
@@ -586,7 +573,7 @@ void check_separable_blocks(const std::vector<StageInterface>& stages, const std
   for (std::size_t i = 0; i + 1 < stages.size(); ++i)
     for (const bool in : {false, true}) {
       const std::size_t k = in ? i + 1 : i;  // the producer's outputs, then the consumer's inputs
-      const std::optional<glslang::TSourceLoc>& use = in ? uses[k].in : uses[k].out;
+      const std::optional<glslang::TSourceLoc>& use = in ? stages[k].per_vertex.in : stages[k].per_vertex.out;
       if (!use || redeclares(stages[k].stage, in)) continue;
       errors.push_back(where(*use) + ": error: link error: the " + stage_name(stages[k].stage) + " uses the built-in " +
                        (in ? "input" : "output") + " block gl_PerVertex without redeclaring it ('" +
@@ -663,13 +650,9 @@ CompiledProgram compile_program(const std::vector<ShaderSource>& sources, Linkin
 
   std::vector<StageInterface> interfaces;
   for (auto& [stage, program] : programs)
-    interfaces.push_back({stage, interface_of(stage, intermediate(stage))});
+    interfaces.push_back(interface_of(stage, intermediate(stage)));
   if (linking != Linking::SeparatePrograms) check_links(interfaces, errors);
-  if (linking == Linking::SeparableProgram) {
-    std::vector<PerVertexUse> uses;
-    for (const StageInterface& stage : interfaces) uses.push_back(per_vertex_use(intermediate(stage.stage)));
-    check_separable_blocks(interfaces, uses, sources, rewritten, errors);
-  }
+  if (linking == Linking::SeparableProgram) check_separable_blocks(interfaces, sources, rewritten, errors);
   throw_if_any(errors);
 
   // TProgram::mapIO over several programs. glslang's OpenGL mapper and resolver (which
