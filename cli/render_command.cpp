@@ -52,18 +52,7 @@ struct RenderOptions {
   std::string transform_feedback;  // --transform-feedback PREFIX: PREFIX.drawD.bufferB.bin
 };
 
-// --transform-feedback PREFIX: one file per buffer of each draw with a transform_feedback key.
-std::vector<std::pair<std::size_t, std::string>> feedback_files(const std::string& prefix, const Scene& scene) {
-  std::vector<std::pair<std::size_t, std::string>> files;  // (draw, file), buffers in order
-  for (std::size_t d = 0; d < scene.draws.size(); ++d)
-    if (const auto& t = scene.draws[d].transform_feedback)
-      for (std::size_t b = 0; b < t->buffers(); ++b)
-        files.emplace_back(d, prefix + ".draw" + std::to_string(d) + ".buffer" + std::to_string(b) + ".bin");
-  if (files.empty())
-    throw InputError("--transform-feedback: no draw of the scene has a transform_feedback key (draws[].transform_feedback: "
-                     "{varyings, buffer_mode})");
-  return files;
-}
+
 
 // --draw-buffer K=FILE, checked against the scene: a scene of draws has framebuffer.color's
 // attachments, the mesh path draw buffers 0 and 1 (its normals).
@@ -252,9 +241,13 @@ void run_render(const RenderOptions& o) {
 
   std::vector<std::pair<std::size_t, std::string>> feedback_outputs;
   std::vector<std::filesystem::path> feedback_tmps;
-  if (!o.transform_feedback.empty())
-    for (const auto& [draw, file] : feedback_outputs = feedback_files(o.transform_feedback, scene))
-      feedback_tmps.push_back(outputs.add("--transform-feedback", file));
+  if (!o.transform_feedback.empty()) {
+    feedback_outputs = feedback_files(scene, o.transform_feedback);
+    if (feedback_outputs.empty())
+      throw InputError("--transform-feedback: no draw of the scene has a transform_feedback key "
+                       "(draws[].transform_feedback: {varyings, buffer_mode})");
+    for (const auto& [draw, file] : feedback_outputs) feedback_tmps.push_back(outputs.add("--transform-feedback", file));
+  }
 
   auto t = Clock::now();
   std::vector<std::string> warnings;
@@ -326,15 +319,14 @@ void run_render(const RenderOptions& o) {
   for (std::size_t i = 0; i < buffer_files.size(); ++i)
     write_as(buffer_tmps[i], buffer_files[i].second,
              [&] { write_color_image(fb, buffer_tmps[i], buffer_files[i].first); });
+  // Every draw with the key records (draw_scene_draws), in the files' order.
   std::string feedback_summary;
-  for (std::size_t i = 0, k = 0; i < feedback.size(); ++i) {
-    const FeedbackBuffers& f = feedback[i];
+  std::size_t k = 0;
+  for (const FeedbackBuffers& f : feedback) {
     feedback_summary += "; transform feedback, draw " + std::to_string(f.draw) + ": " + std::to_string(f.primitives) + " primitives";
-    for (std::size_t b = 0; b < f.bytes.size(); ++b, ++k) {
-      while (feedback_outputs[k].first != f.draw) ++k;  // a draw that drew no primitive writes empty files
-      write_text_file(feedback_tmps[k], feedback_outputs[k].second,
-                      std::string(reinterpret_cast<const char*>(f.bytes[b].data()), f.bytes[b].size()));
-      feedback_summary += ", " + feedback_outputs[k].second + " " + std::to_string(f.bytes[b].size()) + " bytes";
+    for (const std::vector<std::byte>& bytes : f.bytes) {
+      write_binary_file(feedback_tmps[k], feedback_outputs[k].second, bytes);
+      feedback_summary += ", " + feedback_outputs[k++].second + " " + std::to_string(bytes.size()) + " bytes";
     }
   }
   if (!o.dump_fragments.empty()) write_fragment_dump(scene, mesh, parallel, o.dump_fragments);  // draws again

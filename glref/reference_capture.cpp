@@ -59,25 +59,20 @@ CaptureSummary capture_reference(GlContext& context, const Scene& scene, const M
   const auto manifest_path = outputs.add("manifest", dir / "manifest.json");
 
   // Transform feedback (draws[].transform_feedback): one file per buffer of each such draw.
-  std::vector<std::pair<std::string, std::filesystem::path>> feedback_files;
-  for (std::size_t d = 0; d < scene.draws.size(); ++d)
-    if (const auto& t = scene.draws[d].transform_feedback)
-      for (std::size_t b = 0; b < t->buffers(); ++b) {
-        const std::string name = feedback_file_name(d, b);
-        feedback_files.emplace_back(name, outputs.add("transform feedback", dir / name));
-      }
+  const std::vector<std::pair<std::size_t, std::string>> feedback_names = feedback_files(scene, "feedback");
+  std::vector<std::filesystem::path> feedback_tmps;
+  for (const auto& [draw, name] : feedback_names) feedback_tmps.push_back(outputs.add("transform feedback", dir / name));
 
   SceneRenderer renderer(context, scene, mesh);
   const Framebuffer fb = renderer.render();
   nlohmann::json feedback_manifest = nlohmann::json::array();
-  if (!feedback_files.empty()) {
+  if (!feedback_names.empty()) {
     std::size_t k = 0;
     for (const FeedbackBuffers& f : renderer.transform_feedback()) {
       nlohmann::json files = nlohmann::json::array();
       for (const std::vector<std::byte>& bytes : f.bytes) {
-        const auto& [name, temp] = feedback_files[k++];
-        write_text_file(temp, (dir / name).string(), std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
-        files.push_back(name);
+        write_binary_file(feedback_tmps[k], (dir / feedback_names[k].second).string(), bytes);
+        files.push_back(feedback_names[k++].second);
       }
       feedback_manifest.push_back({{"draw", f.draw}, {"primitives", f.primitives}, {"vertices_per_primitive", f.corners},
                                    {"stream_primitives", f.stream_primitives}, {"files", files}});

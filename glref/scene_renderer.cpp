@@ -2,6 +2,7 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <regex>
@@ -283,7 +284,7 @@ class FeedbackRecording {
       glGetProgramiv(program, GL_TESS_GEN_POINT_MODE, &point_mode);
       return point_mode ? 1 : mode == GL_ISOLINES ? 2 : 3;
     }
-    return tessref::primitive_corners(draw.mode) > 3 ? 3 : tessref::primitive_corners(draw.mode);
+    return std::min(3, tessref::primitive_corners(draw.mode));
   }
 
   // Bytes a vertex takes in each buffer, from the program's varyings as GL reports them.

@@ -224,8 +224,12 @@ CreatedFolder::~CreatedFolder() {
 }
 
 void write_text_file(const std::filesystem::path& temp, const std::string& target, const std::string& text) {
+  write_binary_file(temp, target, std::as_bytes(std::span(text.data(), text.size())));
+}
+
+void write_binary_file(const std::filesystem::path& temp, const std::string& target, std::span<const std::byte> bytes) {
   std::ofstream out(temp, std::ios::binary);
-  out << text;
+  out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
   if (!out.flush()) throw InputError(target + ": cannot write");
 }
 

@@ -3,7 +3,9 @@
 // target's folder (so the final rename is atomic and a failed or interrupted run leaves no
 // half-written file under the target's name); only when every output has been written and checked
 // are they renamed into place. Paths are checked before any work starts.
+#include <cstddef>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -71,5 +73,7 @@ class CreatedFolder {
 // Writes `text` into `temp` (a path OutputFiles::add returned). InputError naming `target` when
 // the write fails (a full disk).
 void write_text_file(const std::filesystem::path& temp, const std::string& target, const std::string& text);
+// The same for raw bytes.
+void write_binary_file(const std::filesystem::path& temp, const std::string& target, std::span<const std::byte> bytes);
 
 }  // namespace tessref

@@ -16,8 +16,13 @@ const char* primitive_name(int corners) { return corners == 1 ? "GL_POINTS" : co
 
 }  // namespace
 
-std::string feedback_file_name(std::size_t draw, std::size_t buffer) {
-  return "feedback.draw" + std::to_string(draw) + ".buffer" + std::to_string(buffer) + ".bin";
+std::vector<std::pair<std::size_t, std::string>> feedback_files(const Scene& scene, const std::string& prefix) {
+  std::vector<std::pair<std::size_t, std::string>> files;
+  for (std::size_t d = 0; d < scene.draws.size(); ++d)
+    if (const auto& t = scene.draws[d].transform_feedback)
+      for (std::size_t b = 0; b < t->buffers(); ++b)
+        files.emplace_back(d, prefix + ".draw" + std::to_string(d) + ".buffer" + std::to_string(b) + ".bin");
+  return files;
 }
 
 FeedbackRecorder::FeedbackRecorder(const Scene& scene, std::size_t draw, const glsl::GlslProgram& program)

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "scene/scene.h"
@@ -27,8 +28,9 @@ struct FeedbackBuffers {
   int corners = 0;                            // vertices per stream-0 primitive (0: none recorded)
 };
 
-// A capture folder's file of buffer `buffer` of draw `draw`: "feedback.drawD.bufferB.bin".
-std::string feedback_file_name(std::size_t draw, std::size_t buffer);
+// The file of each buffer of each draw with a transform_feedback key, in draw and buffer order:
+// (draw, "PREFIX.drawD.bufferB.bin"). A capture folder's are "feedback.drawD.bufferB.bin".
+std::vector<std::pair<std::size_t, std::string>> feedback_files(const Scene& scene, const std::string& prefix);
 
 // One draw's recording. The constructor resolves the varyings against the program's last vertex
 // stage as a GL linker would: InputError naming the scene key for a name that is not an output,

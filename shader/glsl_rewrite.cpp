@@ -222,11 +222,9 @@ class Rewriter {
   // they are interpolated: when main() returns, or at each EmitVertex() of a geometry shader.
   void clamp_vertex_colors() {
     std::string clamps;
-    for (const char* from : {"gl_FrontColor", "gl_FrontSecondaryColor"})
-      if (find_word(from)) {
-        const std::string name = from == std::string_view("gl_FrontColor") ? "tessref_Color" : "tessref_SecondaryColor";
-        clamps += " " + name + " = clamp(" + name + ", 0.0, 1.0);";
-      }
+    for (const auto& [from, to] : {std::pair{"gl_FrontColor", "tessref_Color"},
+                                   std::pair{"gl_FrontSecondaryColor", "tessref_SecondaryColor"}})
+      if (find_word(from)) clamps.append(" ").append(to).append(" = clamp(").append(to).append(", 0.0, 1.0);");
     if (clamps.empty()) return;
     const bool geometry = source_.stage == Stage::Geometry;
     const char* entry = geometry ? "EmitVertex" : "main";
