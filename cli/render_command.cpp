@@ -26,6 +26,8 @@
 #include "mesh/mesh_source.h"
 #include "io/output_files.h"
 #include "render/render.h"
+#include "render/draw_scene.h"
+#include "render/storage_files.h"
 #include "render/transform_feedback.h"
 #include "scene/scene_loader.h"
 #include "io/tess_dump.h"
@@ -50,6 +52,8 @@ struct RenderOptions {
   std::vector<std::string> check_ranges;  // --check-range NAME=LO,HI (check/check_range.h)
   std::vector<std::string> draw_buffers;  // --draw-buffer K=FILE: draw buffer K (1..7) as an image
   std::string transform_feedback;  // --transform-feedback PREFIX: PREFIX.drawD.bufferB.bin
+  std::string storage_buffers;     // --storage-buffers PREFIX: PREFIX.NAME.bin
+  std::string images;              // --images PREFIX: PREFIX.NAME.bin
 };
 
 
@@ -248,6 +252,15 @@ void run_render(const RenderOptions& o) {
                        "(draws[].transform_feedback: {varyings, buffer_mode})");
     for (const auto& [draw, file] : feedback_outputs) feedback_tmps.push_back(outputs.add("--transform-feedback", file));
   }
+  std::vector<std::pair<std::size_t, std::string>> storage_outputs;
+  std::vector<std::filesystem::path> storage_tmps;
+  if (!o.storage_buffers.empty()) {
+    storage_outputs = storage_buffer_files(scene, o.storage_buffers);
+    if (storage_outputs.empty())
+      throw InputError("--storage-buffers: no draw of the scene binds a buffer to a shader storage block "
+                       "(draws[].shader_storage_buffers)");
+    for (const auto& [buffer, file] : storage_outputs) storage_tmps.push_back(outputs.add("--storage-buffers", file));
+  }
 
   auto t = Clock::now();
   std::vector<std::string> warnings;
@@ -279,6 +292,10 @@ void run_render(const RenderOptions& o) {
       frame{"frame", {}};
   RenderResult result;
   std::vector<FeedbackBuffers> feedback;  // the first frame's
+  DrawnMemory memory;  // the first frame's buffers and images after its draws
+  const bool wants_memory = !storage_outputs.empty() || !o.images.empty();
+  if (!o.images.empty() && scene.draws.empty())
+    throw InputError("--images: the scene has no draws (images are bound by draws' shaders.textures)");
   std::unique_ptr<Checker> checker;
   if (o.check || !o.check_ranges.empty()) checker = std::make_unique<Checker>(check_context(o, scene));
   ProgressLine progress;
@@ -294,7 +311,8 @@ void run_render(const RenderOptions& o) {
         };
       const auto t0 = Clock::now();
       result.stats = render_scene(scene, mesh, parallel, result.framebuffer, options,
-                                  i == 0 && !feedback_outputs.empty() ? &feedback : nullptr);
+                                  i == 0 && !feedback_outputs.empty() ? &feedback : nullptr,
+                                  i == 0 && wants_memory ? &memory : nullptr);
       frame.seconds.push_back(seconds_since(t0));
       vertex.seconds.push_back(result.stats.vertex_seconds);
       tessellation.seconds.push_back(result.stats.tessellation_seconds);
@@ -320,13 +338,31 @@ void run_render(const RenderOptions& o) {
     write_as(buffer_tmps[i], buffer_files[i].second,
              [&] { write_color_image(fb, buffer_tmps[i], buffer_files[i].first); });
   // Every draw with the key records (draw_scene_draws), in the files' order.
-  std::string feedback_summary;
+  std::string output_summary;
   std::size_t k = 0;
   for (const FeedbackBuffers& f : feedback) {
-    feedback_summary += "; transform feedback, draw " + std::to_string(f.draw) + ": " + std::to_string(f.primitives) + " primitives";
+    output_summary += "; transform feedback, draw " + std::to_string(f.draw) + ": " + std::to_string(f.primitives) + " primitives";
     for (const std::vector<std::byte>& bytes : f.bytes) {
       write_binary_file(feedback_tmps[k], feedback_outputs[k].second, bytes);
-      feedback_summary += ", " + feedback_outputs[k++].second + " " + std::to_string(bytes.size()) + " bytes";
+      output_summary += ", " + feedback_outputs[k++].second + " " + std::to_string(bytes.size()) + " bytes";
+    }
+  }
+  for (std::size_t i = 0; i < storage_outputs.size(); ++i) {
+    const std::vector<std::byte>& bytes = memory.buffers.at(storage_outputs[i].first).bytes;
+    write_binary_file(storage_tmps[i], storage_outputs[i].second, bytes);
+    output_summary += "; " + storage_outputs[i].second + " " + std::to_string(bytes.size()) + " bytes";
+  }
+  if (!o.images.empty()) {
+    if (memory.images.empty())
+      throw InputError("--images: no draw binds a texture to an image uniform (shaders.textures naming an image2D ...)");
+    for (const auto& [name, stored] : memory.images) {
+      std::string file = o.images;
+      file += '.';
+      file += name;
+      file += ".bin";
+      const std::filesystem::path tmp = outputs.add("--images", file);
+      write_binary_file(tmp, file, std::as_bytes(std::span(stored)));
+      output_summary += "; " + file + " " + std::to_string(stored.size()) + " bytes";
     }
   }
   if (!o.dump_fragments.empty()) write_fragment_dump(scene, mesh, parallel, o.dump_fragments);  // draws again
@@ -352,7 +388,7 @@ void run_render(const RenderOptions& o) {
       draws ? "primitives" : "triangles", tessellated.c_str(), static_cast<unsigned long long>(s.raster.triangles_rasterized),
       static_cast<unsigned long long>(s.raster.fragments_shaded), ms(mesh_seconds).c_str(),
       ms(s.vertex_seconds).c_str(), ms(s.tessellation_seconds).c_str(),
-      ms(s.raster_seconds).c_str(), ms(write_seconds).c_str(), feedback_summary.c_str());
+      ms(s.raster_seconds).c_str(), ms(write_seconds).c_str(), output_summary.c_str());
   if (s.raster.fragments_shaded == 0) warn_nothing_drawn(s);
   if (o.report_repeat)
     std::printf("tessref render: %d frame%s, median (min .. max): %s, %s, %s, %s\n", o.repeat,
@@ -427,6 +463,15 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--transform-feedback", opts->transform_feedback,
                   "also write what each draw's transform feedback records (draws[].transform_feedback) to "
                   "PREFIX.drawD.bufferB.bin, one file per buffer, as GL would fill the buffer")
+      ->type_name("PREFIX");
+  cmd->add_option("--storage-buffers", opts->storage_buffers,
+                  "also write every buffer a draw binds to a shader storage block, as the draws left it, to "
+                  "PREFIX.NAME.bin (NAME: the buffer's name in the scene)")
+      ->type_name("PREFIX");
+  cmd->add_option("--images", opts->images,
+                  "also write level 0 of every texture a draw binds to an image uniform, as the draws left it, "
+                  "to PREFIX.NAME.bin (NAME: the uniform's; drawD.NAME for a draw's own shaders; the texels' "
+                  "bytes in their internal format, rows from the bottom)")
       ->type_name("PREFIX");
   cmd->add_option("--dump-tess", opts->dump_tess,
                   "also write every tessellated vertex (patch id, gl_TessCoord, position, normal): "

@@ -476,7 +476,27 @@ void parse_draw(Args& a, TestCommand& c) {
   c.kind = K::DrawRect;
 }
 
+// The scalar GLSL type a ssbo command names (int, uint, float, double); false for others
+// (int64, vectors), which leave the command Unknown.
+bool ssbo_type(Args& a, TestCommand& c) {
+  const std::optional<GlslType> t = parse_glsl_type(a.word("a type"));
+  if (!t || t->columns != 1 || t->rows != 1 || t->scalar == ScalarType::Bool) return false;
+  c.type = *t;
+  return true;
+}
+
 void parse_probe(Args& a, TestCommand& c) {
+  if (a.match({"probe", "ssbo"})) {
+    if (!ssbo_type(a, c)) return;
+    a.numbers(c.numbers, 2, U);
+    std::string op = a.word("a comparison");
+    std::optional<Comparison> cmp = parse_comparison(op);
+    if (!cmp) a.fail("unknown comparison '" + op + "'");
+    c.comparison = *cmp;
+    c.numbers.push_back(a.number(data_type_of(c.type.scalar)));
+    c.kind = K::ProbeSsbo;
+    return;
+  }
   if (a.match({"probe", "atomic", "counter"})) {
     bool buffer = a.match({"buffer"});
     a.numbers(c.numbers, buffer ? 2 : 1, U);
@@ -572,6 +592,17 @@ void parse_arguments(Args& a, TestCommand& c) {
     while (!a.done()) c.numbers.push_back(a.number(F));
     if (c.numbers.size() != 1 && c.numbers.size() != 4) a.fail("expected 1 or 4 values");
     c.kind = K::Tolerance;
+  } else if (a.match({"ssbo"})) {
+    c.numbers.push_back(a.number(U));
+    if (a.match({"subdata"})) {
+      if (!ssbo_type(a, c)) return;
+      c.numbers.push_back(a.number(U));
+      while (!a.done()) c.numbers.push_back(a.number(data_type_of(c.type.scalar)));
+      c.kind = K::SsboSubData;
+    } else {
+      c.numbers.push_back(a.number(U));
+      c.kind = K::SsboSize;
+    }
   } else if (a.match({"atomic", "counters"})) {
     c.numbers.push_back(a.number(U));
     c.kind = K::AtomicCounters;

@@ -159,6 +159,11 @@ enum class CommandKind {
   ProbeAtomicCounter,
   // probe atomic counter buffer B OFFSET OP V: numbers binding, byte offset, value; comparison
   ProbeAtomicCounterBuffer,
+  SsboSize,     // ssbo B SIZE: numbers binding, bytes (a zeroed buffer bound at B)
+  // ssbo B subdata TYPE OFFSET VALUES...: numbers binding, byte offset, values; type TYPE
+  SsboSubData,
+  // probe ssbo TYPE B OFFSET OP VALUE: numbers binding, byte offset, value; type; comparison
+  ProbeSsbo,
   // texture checkerboard UNIT LEVEL (W, H) (COLOR0) (COLOR1):
   //   numbers unit, level, w, h, colour0 (4), colour1 (4)
   TextureCheckerboard,
@@ -182,8 +187,8 @@ struct TestCommand {
   std::string text;  // the line without its comment, trimmed
   std::vector<double> numbers;
   std::vector<std::string> words;
-  GlslType type;                              // Uniform
-  Comparison comparison = Comparison::Equal;  // ProbeAtomicCounter*
+  GlslType type;                              // Uniform, SsboSubData, ProbeSsbo
+  Comparison comparison = Comparison::Equal;  // ProbeAtomicCounter*, ProbeSsbo
   bool relative = false;                      // Probe, ProbeRect
   bool ortho = false;                         // DrawRect
   bool patch = false;                         // DrawRect

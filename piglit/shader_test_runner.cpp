@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -72,7 +73,8 @@ const std::set<std::string>& extensions() {
       "GL_ARB_enhanced_layouts", "GL_ARB_texture_rectangle", "GL_ARB_uniform_buffer_object",
       "GL_ARB_shader_bit_encoding", "GL_ARB_draw_instanced", "GL_ARB_instanced_arrays",
       "GL_ARB_fragment_coord_conventions", "GL_ARB_vertex_array_object",
-      "GL_ARB_shader_atomic_counters", "GL_ARB_cull_distance", "GL_EXT_shader_integer_mix"};
+      "GL_ARB_shader_atomic_counters", "GL_ARB_cull_distance", "GL_EXT_shader_integer_mix",
+      "GL_ARB_shader_storage_buffer_object", "GL_ARB_shader_atomic_counter_ops"};
   return names;
 }
 
@@ -86,6 +88,37 @@ bool compare(long long a, Comparison c, long long b) {
     case Comparison::GreaterEqual: return a >= b;
   }
   return false;
+}
+
+bool compare_floats(double a, Comparison c, double b) {
+  switch (c) {
+    case Comparison::Equal: return a == b;
+    case Comparison::NotEqual: return a != b;
+    case Comparison::Less: return a < b;
+    case Comparison::LessEqual: return a <= b;
+    case Comparison::Greater: return a > b;
+    case Comparison::GreaterEqual: return a >= b;
+  }
+  return false;
+}
+
+// One scalar of a storage buffer, stored as GL stores it (little-endian, float as IEEE single).
+void write_scalar(ScalarType t, double v, std::byte* at) {
+  switch (t) {
+    case ScalarType::Float: { const float f = float(v); std::memcpy(at, &f, 4); return; }
+    case ScalarType::Double: std::memcpy(at, &v, 8); return;
+    case ScalarType::Int: { const auto i = std::int32_t(std::llround(v)); std::memcpy(at, &i, 4); return; }
+    default: { const auto u = std::uint32_t(std::llround(v)); std::memcpy(at, &u, 4); return; }
+  }
+}
+
+double read_scalar(ScalarType t, const std::byte* at) {
+  switch (t) {
+    case ScalarType::Float: { float f; std::memcpy(&f, at, 4); return f; }
+    case ScalarType::Double: { double d; std::memcpy(&d, at, 8); return d; }
+    case ScalarType::Int: { std::int32_t i; std::memcpy(&i, at, 4); return i; }
+    default: { std::uint32_t u; std::memcpy(&u, at, 4); return u; }
+  }
 }
 
 // GL_CLIP_DISTANCEi's (or GL_CLIP_PLANEi's, the same enum) i, 0 to 7; -1 for another name.
@@ -241,7 +274,11 @@ class Runner {
     try {
       const shader::CompiledProgram compiled = shader::compile_program(sources, linking_of(f_.requirements));
       if (expect_link_error) return {Verdict::Fail, "the program linked, but the file expects a link error"};
-      program_ = std::make_unique<glsl::GlslProgram>(compiled, options_.limits);
+      // The storage buffers' sizes size the blocks' runtime arrays: known before the program.
+      shader::StorageBufferSizes storage;
+      for (const TestCommand& c : f_.commands)
+        if (c.kind == CommandKind::SsboSize) storage[std::uint32_t(c.numbers[0])] = std::size_t(c.numbers[1]);
+      program_ = std::make_unique<glsl::GlslProgram>(compiled, options_.limits, storage);
       set_matrices();
     } catch (const shader::CompileError& e) {
       if (expect_link_error) return {Verdict::Pass, {}};
@@ -343,7 +380,9 @@ class Runner {
 
   void draw(const TestCommand& c, const std::vector<glsl::VertexAttribute>& attributes, const DrawCall& call) {
     try {
+      for (auto& [binding, bytes] : ssbos_) program_->bind_storage_buffer(binding, bytes);
       run_draw(*program_, attributes, call, state_, fb_, parallel_);
+      program_->write_back_storage();
     } catch (const glsl::StageError& e) {
       fail(c, e.what());
     } catch (const std::invalid_argument& e) {  // a draw tessref refuses, at this line
@@ -592,6 +631,30 @@ class Runner {
           fail(c, "atomic counter " + std::to_string(index) + " is " + std::to_string(buffer[index]));
         break;
       }
+      case CommandKind::SsboSize:
+        ssbos_[std::uint32_t(n[0])].assign(std::size_t(n[1]), std::byte{0});
+        break;
+      case CommandKind::SsboSubData: {
+        std::vector<std::byte>& bytes = ssbo(c, std::uint32_t(n[0]));
+        const std::size_t size = c.type.scalar == ScalarType::Double ? 8 : 4;
+        for (std::size_t i = 2; i < n.size(); ++i) {
+          const std::size_t at = std::size_t(n[1]) + (i - 2) * size;
+          if (at + size > bytes.size()) fail(c, "subdata past the buffer's " + std::to_string(bytes.size()) + " bytes");
+          write_scalar(c.type.scalar, n[i], bytes.data() + at);
+        }
+        break;
+      }
+      case CommandKind::ProbeSsbo: {
+        const std::vector<std::byte>& bytes = ssbo(c, std::uint32_t(n[0]));
+        const std::size_t at = std::size_t(n[1]), size = c.type.scalar == ScalarType::Double ? 8 : 4;
+        if (at + size > bytes.size()) fail(c, "probe past the buffer's " + std::to_string(bytes.size()) + " bytes");
+        const double value = read_scalar(c.type.scalar, bytes.data() + at);
+        const bool ok = c.type.scalar == ScalarType::Float || c.type.scalar == ScalarType::Double
+                            ? compare_floats(value, c.comparison, n[2])
+                            : compare(std::llround(value), c.comparison, std::llround(n[2]));
+        if (!ok) fail(c, "the buffer holds " + std::to_string(value) + " at byte " + std::to_string(at));
+        break;
+      }
       case CommandKind::LinkSuccess: break;
       case CommandKind::ClipPlane: {  // glClipPlane: eye coordinates, the modelview being the identity
         const int i = int(n[0]);
@@ -627,6 +690,13 @@ class Runner {
   std::vector<glsl::VertexAttribute> attributes_;
   std::map<std::uint32_t, std::unique_ptr<texture::Texture>> textures_;
   texture::Texture* last_texture_ = nullptr;
+  std::map<std::uint32_t, std::vector<std::byte>> ssbos_;  // ssbo B SIZE: bound at B for every draw
+
+  std::vector<std::byte>& ssbo(const TestCommand& c, std::uint32_t binding) {
+    const auto it = ssbos_.find(binding);
+    if (it == ssbos_.end()) fail(c, "no buffer at shader storage binding " + std::to_string(binding) + " (ssbo B SIZE first)");
+    return it->second;
+  }
 };
 
 }  // namespace

@@ -68,6 +68,11 @@ struct FragmentProgram {
   // invocations while the other has a live lane: llvmpipe runs every lane of such a vector, and
   // some texture lookups depend on all of them (Invocations::set_sampling_vectors).
   virtual bool shades_whole_vectors() const { return false; }
+  // Whether shade_batch writes memory (storage blocks, atomics): every covered fragment must then
+  // run it, those that will fail the depth test too (GL 4.6 14.9: the depth test follows the
+  // shader), unless the shader asks for early_fragment_tests.
+  virtual bool has_side_effects() const { return false; }
+  virtual bool early_fragment_tests() const { return false; }
 };
 
 // glPolygonMode(GL_FRONT_AND_BACK, GL_FILL / GL_LINE / GL_POINT).

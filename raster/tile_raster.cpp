@@ -191,8 +191,9 @@ FragmentSink::FragmentSink(const FragmentProgram& fs, Framebuffer& fb, int num_v
       depth_format_(fb.depth_format),
       depth_write_(state.depth_test && state.depth_write),
       depth_func_(state.depth_func),
-      late_depth_(state.depth_test && (fs.may_discard() || fs.writes_depth())),
-      early_test_(state.depth_test && !fs.writes_depth()),
+      late_depth_(state.depth_test && (fs.may_discard() || fs.writes_depth() ||
+                                       (fs.has_side_effects() && !fs.early_fragment_tests()))),
+      early_test_(state.depth_test && !fs.writes_depth() && (!fs.has_side_effects() || fs.early_fragment_tests())),
       shader_depth_(fs.writes_depth()),
       helpers_(fs.reads_quads() || fs.shades_whole_vectors()),
       vectors_(fs.shades_whole_vectors()),

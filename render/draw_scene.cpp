@@ -117,20 +117,21 @@ std::vector<draw::VertexArray> resolve_arrays(const Scene& scene, const DrawSett
 
 // glBindBufferRange state of one indexed target: binding -> the range bound there. GL keeps it
 // from draw to draw, and so does a scene.
-using BufferBindings = std::map<std::uint32_t, std::pair<const UniformBufferSetting*, std::span<const std::byte>>>;
+// Storage blocks write back into the range (GlslProgram::write_back_storage).
+using BufferBindings = std::map<std::uint32_t, std::pair<const UniformBufferSetting*, std::span<std::byte>>>;
 
 // Adds d's ranges of one target (its uniform_buffers or storage_buffers) to the bindings the
 // earlier draws left. InputError for a range past its buffer.
 void add_bindings(const Scene& scene, const std::vector<UniformBufferSetting>& settings,
-                  const std::vector<draw::Buffer>& buffers, BufferBindings& bindings) {
+                  std::vector<draw::Buffer>& buffers, BufferBindings& bindings) {
   for (const UniformBufferSetting& u : settings) {
-    const draw::Buffer& b = buffers[u.buffer];
+    draw::Buffer& b = buffers[u.buffer];
     const std::size_t size = u.size.value_or(b.bytes.size() > u.offset ? b.bytes.size() - u.offset : 0);
     if (u.offset + size > b.bytes.size() || size == 0)
       throw InputError(scene.source + ": " + u.key + ": bytes [" + std::to_string(u.offset) + ", " +
                        std::to_string(u.offset + size) + ") of buffer '" + b.name + "', which holds " +
                        std::to_string(b.bytes.size()) + " bytes");
-    bindings[u.binding] = {&u, std::span<const std::byte>(b.bytes).subspan(u.offset, size)};
+    bindings[u.binding] = {&u, std::span<std::byte>(b.bytes).subspan(u.offset, size)};
   }
 }
 
@@ -220,6 +221,16 @@ SceneDraws::SceneDraws(const Scene& scene) : scene_(scene), buffers_(load_buffer
 
 SceneDraws::~SceneDraws() = default;
 
+std::vector<std::pair<std::string, std::vector<std::uint8_t>>> SceneDraws::images() const {
+  std::vector<std::pair<std::string, std::vector<std::uint8_t>>> out;
+  const auto add = [&](const SceneProgram& p, const std::string& prefix) {
+    for (const auto& [name, tex] : p.images) out.emplace_back(prefix + name, tex->levels.at(0).stored);
+  };
+  add(shared_, "");
+  for (std::size_t i = 0; i < own_.size(); ++i) add(own_[i], "draw" + std::to_string(i) + ".");
+  return out;
+}
+
 std::vector<std::string> SceneDraws::warnings() const {
   std::vector<std::string> out = shared_.warnings;
   for (const SceneProgram& p : own_) out.insert(out.end(), p.warnings.begin(), p.warnings.end());
@@ -265,6 +276,7 @@ void SceneDraws::for_each_call(std::size_t end, const std::function<void(const P
         };
       try {
         fn(PreparedCall{i, k, d, program, input.per_vertex, call});
+        program.write_back_storage();  // what the call wrote, for the next draws and the output
       } catch (const InputError& e) {  // an instanced array's fetch
         throw InputError(scene_.source + ": " + e.what());
       } catch (const glsl::StageError& e) {
@@ -277,7 +289,7 @@ void SceneDraws::for_each_call(std::size_t end, const std::function<void(const P
 }
 
 DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& parallel, const DrawOptions& options,
-                           std::vector<FeedbackBuffers>* feedback) {
+                           std::vector<FeedbackBuffers>* feedback, DrawnMemory* memory) {
   SceneDraws draws(scene);
   // Transform feedback: a recorder for each draw that has it, made at its first call (the
   // program's outputs resolve the names), handed out when the next draw begins.
@@ -317,6 +329,10 @@ DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& 
   hand_out();
   begin_until(scene.draws.size());  // draws without calls still clear
   stats.warnings = draws.warnings();
+  if (memory) {
+    memory->buffers = draws.buffers();
+    memory->images = draws.images();
+  }
   return stats;
 }
 

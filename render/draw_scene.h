@@ -50,6 +50,8 @@ class SceneDraws {
   explicit SceneDraws(const Scene& scene);  // InputError as load_buffers and build_scene_program
   ~SceneDraws();
   const std::vector<draw::Buffer>& buffers() const { return buffers_; }
+  // The textures the programs bind as images, as DrawnMemory names them, with level 0's bytes.
+  std::vector<std::pair<std::string, std::vector<std::uint8_t>>> images() const;
   // The GLSL sources of draw `draw`'s program (its own, or the scene's).
   std::vector<shader::ShaderSource> sources(std::size_t draw) const;
   // Calls fn for each call of draws [0, end), in order. The references fn receives live until
@@ -67,10 +69,19 @@ class SceneDraws {
 
 struct FeedbackBuffers;
 
+// What a scene's draws leave besides the framebuffer: its buffers (what shaders wrote into storage
+// blocks included) and the textures bound as images (level 0's stored bytes), after the frame.
+struct DrawnMemory {
+  std::vector<draw::Buffer> buffers;
+  // ("NAME", or "drawD.NAME" for a draw's own shaders; NAME the image uniform's) and the bytes.
+  std::vector<std::pair<std::string, std::vector<std::uint8_t>>> images;
+};
+
 // Draws every draw of the scene into fb (already cleared), each with its own program or the
 // scene's. With `feedback`: appends what each draw with a transform_feedback key records
-// (render/transform_feedback.h), in draw order.
+// (render/transform_feedback.h), in draw order. With `memory`: the buffers and images as the draws
+// left them.
 DrawStats draw_scene_draws(const Scene& scene, Framebuffer& fb, const Parallel& parallel, const DrawOptions& options,
-                           std::vector<FeedbackBuffers>* feedback = nullptr);
+                           std::vector<FeedbackBuffers>* feedback = nullptr, DrawnMemory* memory = nullptr);
 
 }  // namespace tessref

@@ -181,13 +181,45 @@ std::optional<texture::Target> sampler_target(const std::string& dims) {
   return std::nullopt;
 }
 
+// A texture named for an image uniform (image2D ...): its level 0 bound to the next image unit, as
+// glBindImageTexture(unit, texture, 0, GL_TRUE, 0, GL_READ_WRITE, format) with the format the image
+// declares, which must be the texture's own (GL also takes formats of the same size; tessref
+// refuses them by name).
+void bind_image(const Scene& scene, const TextureSetting& t, const std::string& key, const std::string& type,
+                std::uint32_t unit, glsl::GlslProgram& program, SceneProgram& out) {
+  const std::string dims = "sampler" + type.substr(type.find("image") + 5);
+  const std::optional<texture::Target> target = sampler_target(dims);
+  if (!target || texture::is_cube(*target))
+    throw InputError(key + ": the uniform is " + with_article(type) + "; tessref's images are the 1D, 2D, 3D, "
+                     "rectangle, buffer and array forms (not cube maps or multisample images)");
+  auto tex = std::make_unique<texture::Texture>(load_texture(t, key, scene));
+  if (tex->target != *target)
+    throw InputError(key + ".target: the uniform is " + with_article(type) + ", which reads a " +
+                     texture::gl_name(*target) + " texture, and this one is " + texture::gl_name(tex->target));
+  const std::optional<texture::TexelFormat> declared = program.image_format(t.sampler);
+  if (!declared)
+    throw InputError(key + ": the image's format qualifier is one tessref's textures do not have");
+  if (*declared != tex->format)
+    throw InputError(key + ".internalformat: the image is declared " + texture::info(*declared).gl_name +
+                     " and the texture is " + texture::info(tex->format).gl_name +
+                     "; tessref binds an image of its texture's own format");
+  program.bind_image(unit, tex.get());
+  program.set_uniform(t.sampler, integer(int(unit)));
+  out.images.emplace_back(t.sampler, tex.get());
+  out.textures.push_back(std::move(tex));
+}
+
 // shaders.textures: each image on its own texture unit (its index), the sampler uniform set to
-// that unit.
+// that unit; images (image2D ...) on image units of their own (bind_image).
 void bind_textures(const Scene& scene, const ShaderSettings& shaders, glsl::GlslProgram& program, SceneProgram& out) {
-  std::uint32_t unit = 0;
+  std::uint32_t unit = 0, image_unit = 0;
   for (const TextureSetting& t : shaders.textures) {
     const std::string key = scene.source + ": " + shaders.key + ".textures." + t.sampler;
     const auto shape = program.uniform_shape(t.sampler);
+    if (shape && shape->glsl_name.find("image") != std::string::npos) {
+      bind_image(scene, t, key, shape->glsl_name, image_unit++, program, out);
+      continue;
+    }
     if (!shape || shape->glsl_name.find("sampler") == std::string::npos)
       throw InputError(key + ": the program has no active sampler uniform of that name" +
                        (shape ? " (it is a " + shape->glsl_name + ")" : std::string()));

@@ -18,6 +18,8 @@ namespace tessref {
 struct SceneProgram {
   std::unique_ptr<glsl::GlslProgram> program;
   std::vector<std::unique_ptr<texture::Texture>> textures;
+  // The textures bound as images, by their uniform's name: what image stores change.
+  std::vector<std::pair<std::string, texture::Texture*>> images;
   std::vector<std::string> warnings;  // incomplete textures
 };
 

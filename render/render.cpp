@@ -50,11 +50,12 @@ RenderResult render_scene(const Scene& scene, const Mesh& mesh, const Parallel& 
 }
 
 DrawStats render_scene(const Scene& scene, const Mesh& mesh, const Parallel& parallel,
-                       Framebuffer& fb, const DrawOptions& options, std::vector<FeedbackBuffers>* feedback) {
+                       Framebuffer& fb, const DrawOptions& options, std::vector<FeedbackBuffers>* feedback,
+                       DrawnMemory* memory) {
   if (!scene.draws.empty()) {
     fb.reset(scene.width, scene.height, scene.background, parallel);
     set_up_framebuffer(scene, load_initial_images(scene), fb);
-    return draw_scene_draws(scene, fb, parallel, options, feedback);
+    return draw_scene_draws(scene, fb, parallel, options, feedback, memory);
   }
   if (scene.shaders.program != ShaderProgram::Builtin) {
     const SceneProgram program = build_scene_program(scene);

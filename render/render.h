@@ -14,6 +14,7 @@
 namespace tessref {
 
 struct FeedbackBuffers;  // render/transform_feedback.h
+struct DrawnMemory;      // render/draw_scene.h
 
 struct RenderResult {
   Framebuffer framebuffer;
@@ -24,10 +25,11 @@ RenderResult render_scene(const Scene& scene, const Mesh& mesh, const Parallel& 
                           const DrawOptions& options = {});
 // The same frame into fb, whose memory is reused when its size matches the scene's (repeated
 // frames: --repeat, benchmarks). The bytes of fb are those render_scene would return. With
-// `feedback`, a scene of draws appends what its draws' transform feedback records.
+// `feedback`, a scene of draws appends what its draws' transform feedback records; with
+// `memory`, it receives the buffers and images as the draws left them (render/draw_scene.h).
 DrawStats render_scene(const Scene& scene, const Mesh& mesh, const Parallel& parallel,
                        Framebuffer& fb, const DrawOptions& options = {},
-                       std::vector<FeedbackBuffers>* feedback = nullptr);
+                       std::vector<FeedbackBuffers>* feedback = nullptr, DrawnMemory* memory = nullptr);
 
 // The built-in fragment program the scene's shading names, with the scene's uniforms: the object
 // render_scene draws with (shaders.program builtin), for tools that run it themselves.

@@ -259,7 +259,7 @@ constexpr std::int64_t kOffsetAlignment = 256;
 constexpr BufferTarget kUniformBuffers{"uniform_buffers", "GL_UNIFORM_BUFFER", "uniform blocks (std140/std430)",
                                        "GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT", 72};
 constexpr BufferTarget kStorageBuffers{"shader_storage_buffers", "GL_SHADER_STORAGE_BUFFER",
-                                       "read-only shader storage blocks (std430; the range sizes a runtime array)",
+                                       "shader storage blocks (std430, read and written; the range sizes a runtime array)",
                                        "GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT", 8};
 
 std::vector<UniformBufferSetting> read_buffer_bindings(JsonObject& d, const std::vector<BufferSetting>& buffers,

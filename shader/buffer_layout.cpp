@@ -93,4 +93,13 @@ void read_explicit_layout(const Module& m, std::uint32_t type, std::span<const s
   });
 }
 
+void write_explicit_layout(const Module& m, std::uint32_t type, const std::uint32_t* words,
+                           const std::uint32_t* original, std::span<std::byte> bytes) {
+  walk(m, type, 0, 0, {}, [&](std::size_t byte, std::uint32_t word, Scalar s) {
+    const std::uint32_t n = scalar_bytes(s);
+    if (byte + n > bytes.size() || std::memcmp(words + word, original + word, n) == 0) return;
+    std::memcpy(bytes.data() + byte, words + word, n);
+  });
+}
+
 }  // namespace tessref::shader

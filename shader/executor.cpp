@@ -135,9 +135,8 @@ void Runner::load(const XIns& x) {
         });
       } else {
         put(d, [&](int l) {
-          const std::uint32_t o = v.base + (off ? off[l] : 0u) + offset + c.word;
           double r;
-          std::memcpy(&r, inv.shared_.data() + (v.per_group ? inv.group_base_[l] : 0u) + o, 8);
+          std::memcpy(&r, common(a.slot, l) + (off ? off[l] : 0u) + offset + c.word, 8);
           return r;
         });
       }
@@ -152,7 +151,7 @@ void Runner::load(const XIns& x) {
         put(d, [&](int l) { return A[std::size_t(v.base + off[l] + offset + c.word) * L + l]; });
       }
     } else {
-      const std::uint32_t* s = inv.shared_.data() + v.base + offset + c.word;
+      const std::uint32_t* s = (v.per_group ? inv.shared_.data() + v.base : common(a.slot)) + offset + c.word;
       if (v.per_group && inv.groups_ > 1) {  // each lane its group's copy
         // A broadcast per group where the group's lanes share the offset (a group's lanes are
         // consecutive), else a gather.
@@ -189,14 +188,14 @@ void Runner::store(const XIns& x) {
     copy_rows(A + std::size_t(v.base + a.offset) * L, A + std::size_t(x.a) * L, a.words, doubles_of(a.doubles));
     return;
   }
+  // Lane by lane in increasing order: where lanes write one shared word, the last lane's value stays.
   for (const FlatComponent& c : a.flat) {
     const int w = scalar_words(c.scalar);
     for (int l = 0; l < n; ++l) {
-      if (!mask[l]) continue;
+      if (!mask[l] || (v.storage && inv.helper_[l])) continue;
       const std::uint32_t o = (off ? off[l] : 0u) + a.offset + c.word;
       const std::uint32_t* src = A + std::size_t(x.a + c.word) * L + std::size_t(l) * w;
-      std::uint32_t* dst = v.per_lane ? A + std::size_t(v.base + o) * L + std::size_t(l) * w
-                                      : inv.shared_.data() + (v.per_group ? inv.group_base_[l] : 0u) + v.base + o;
+      std::uint32_t* dst = v.per_lane ? A + std::size_t(v.base + o) * L + std::size_t(l) * w : common(a.slot, l) + o;
       dst[0] = src[0];
       if (w == 2) dst[1] = src[1];
     }
@@ -295,6 +294,10 @@ void Runner::derivative(const XIns& x) {
 void Runner::texture(const XIns& x) {
   using Kind = TexOp::Kind;
   const TexOp& op = p.textures[x.aux];
+  if (op.storage) {
+    image(x);
+    return;
+  }
   const std::uint32_t* unit = row<std::uint32_t>(op.image);
   auto bound = [&](int l) -> const texture::Texture* {
     const std::uint32_t u = unit[l];
@@ -477,7 +480,8 @@ void Runner::texture(const XIns& x) {
 }
 
 void Runner::atomic(const XIns& x) {
-  // Lanes take their turns in lane order, so the values returned are deterministic.
+  // Lanes take their turns in lane order, so the values returned are deterministic. A helper
+  // invocation's atomic changes nothing (GL 4.6 15.2.5) and returns the value it read.
   const Access& a = p.accesses[x.aux];
   const VariableSlot& v = p.slots[a.slot];
   const std::uint32_t* off = a.offset_reg == kNone ? nullptr : A + std::size_t(a.offset_reg) * L;
@@ -485,19 +489,14 @@ void Runner::atomic(const XIns& x) {
   for (int l = 0; l < n; ++l) {
     if (!mask[l]) continue;
     const std::uint32_t o = (off ? off[l] : 0u) + a.offset;
-    std::uint32_t* cell = v.per_lane ? A + std::size_t(v.base + o) * L + l
-                                     : inv.shared_.data() + (v.per_group ? inv.group_base_[l] : 0u) + v.base + o;
+    std::uint32_t* cell = v.per_lane ? A + std::size_t(v.base + o) * L + l : common(a.slot, l) + o;
     const std::uint32_t before = *cell;
     const std::uint32_t operand = x.a == kNone ? 0u : A[std::size_t(x.a) * L + l];
-    switch (x.op) {
-      case XOp::AtomicInc: *cell = before + 1; break;
-      case XOp::AtomicDec: *cell = before - 1; break;
-      case XOp::AtomicAdd: *cell = before + operand; break;
-      case XOp::AtomicSub: *cell = before - operand; break;
-      case XOp::AtomicStore: *cell = operand; break;
-      default: break;
-    }
-    if (result) result[l] = x.op == XOp::AtomicDec ? before - 1 : before;
+    const std::uint32_t comparator = x.b == kNone ? 0u : A[std::size_t(x.b) * L + l];
+    const std::uint32_t after = atomic_value(x.op, before, operand, comparator);
+    if (v.per_lane || !inv.helper_[l]) *cell = after;
+    // atomicCounterDecrement returns the value after the decrement, the others the value before.
+    if (result) result[l] = x.op == XOp::AtomicDec ? after : before;
   }
 }
 
@@ -800,7 +799,9 @@ void Runner::exec(const XIns& x) {
       break;
     case XOp::Texture: texture(x); break;
     case XOp::AtomicInc: case XOp::AtomicDec: case XOp::AtomicLoad: case XOp::AtomicAdd:
-    case XOp::AtomicSub: case XOp::AtomicStore:
+    case XOp::AtomicSub: case XOp::AtomicStore: case XOp::AtomicSMin: case XOp::AtomicUMin:
+    case XOp::AtomicSMax: case XOp::AtomicUMax: case XOp::AtomicAnd: case XOp::AtomicOr:
+    case XOp::AtomicXor: case XOp::AtomicExchange: case XOp::AtomicCompareExchange:
       atomic(x);
       break;
     case XOp::Kill:
@@ -902,6 +903,7 @@ Invocations::Invocations(const Executable& exe) : exe_(exe) {
   shared_.assign(p.shared_words + std::size_t(kMaxLanes) * p.group_words, 0u);
   for (std::uint32_t& g : group_base_) g = p.shared_words;
   killed_.assign(kMaxLanes, 0);
+  storage_.assign(p.slots.size(), nullptr);
   std::size_t phi_words = 0;
   for (const XBlock& b : p.blocks) {
     std::size_t words = 0;
@@ -945,6 +947,22 @@ void Invocations::zero_shared(int groups) {
 
 void Invocations::set_group(int lane, int group) { group_base_[lane] = group_word(group); }
 
+void Invocations::bind_storage(std::uint32_t variable_id, std::uint32_t* words) {
+  const DecodedProgram& p = *exe_.program_;
+  if (variable_id < p.slot_of_id.size() && p.slot_of_id[variable_id] != kNone)
+    storage_[p.slot_of_id[variable_id]] = words;
+}
+
+void Invocations::bind_image(std::uint32_t unit, texture::Texture* t) {
+  if (images_.size() <= unit) images_.resize(unit + 1, nullptr);
+  images_[unit] = t;
+}
+
+void Invocations::set_helpers(const std::uint8_t* helper) {
+  std::copy_n(helper, lanes_, helper_);
+  has_helpers_ = true;
+}
+
 void Invocations::bind_texture(std::uint32_t binding, const texture::Texture* t) {
   if (textures_.size() <= binding) textures_.resize(binding + 1, nullptr);
   textures_[binding] = t;
@@ -957,6 +975,8 @@ void Invocations::set_sampling_vectors(const std::uint32_t* keys) {
 
 void Invocations::begin(int lanes, int groups) {
   has_sampling_vectors_ = false;
+  if (has_helpers_) std::fill_n(helper_, kMaxLanes, std::uint8_t(0));
+  has_helpers_ = false;
   lanes_ = std::clamp(lanes, 0, kMaxLanes);
   groups_ = std::clamp(groups, 1, kMaxLanes);
   const std::uint32_t first = group_word(0);
@@ -1204,6 +1224,22 @@ bool Executable::reads_quads() const {
       const TexOp& t = program_->textures[x.aux];
       if (t.implicit_lod || t.kind == TexOp::Kind::QueryLod) return true;
     }
+  }
+  return false;
+}
+
+bool Executable::writes_memory() const {
+  for (const XIns& x : program_->code) {
+    const bool store = x.op == XOp::Store || x.op == XOp::CopyMemory;
+    const bool atomic = x.op >= XOp::AtomicInc && x.op <= XOp::AtomicCompareExchange && x.op != XOp::AtomicLoad;
+    if (x.op == XOp::Texture) {
+      const TexOp& t = program_->textures[x.aux];
+      if (t.kind == TexOp::Kind::ImageWrite || (t.kind == TexOp::Kind::ImageAtomic && t.atomic != XOp::AtomicLoad))
+        return true;
+    }
+    if (!store && !atomic) continue;
+    const VariableSlot& v = program_->slots[program_->accesses[x.aux].slot];
+    if (v.storage || (atomic && !v.per_lane)) return true;
   }
   return false;
 }

@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -66,6 +67,9 @@ struct VariableSlot {
   std::uint32_t words = 0;  // flattened size
   bool per_lane = true;
   bool per_group = false;
+  // A shader storage block: read and written in the memory Invocations::bind_storage gives it,
+  // which every batch, thread and stage of a draw shares (its words here are only a fallback).
+  bool storage = false;
 };
 
 struct DecodedProgram;  // executor.cpp
@@ -103,6 +107,17 @@ class Invocations {
   // The texture a sampler whose value is `binding` (its texture unit) reads; null: none, which
   // reads as an incomplete texture.
   void bind_texture(std::uint32_t binding, const texture::Texture* t);
+  // The words a shader storage block variable reads and writes (flattened, as a shared variable's):
+  // memory outside the batch, kept by the caller for the whole draw; null: its own shared words.
+  void bind_storage(std::uint32_t variable_id, std::uint32_t* words);
+  // The texture an image uniform whose value is `unit` reads and writes (glBindImageTexture of its
+  // level 0; its format is the one the image declares); null: none, whose loads read 0 and whose
+  // stores are dropped. Writes go to the texture's stored bytes and the texels the sampler reads.
+  void bind_image(std::uint32_t unit, texture::Texture* t);
+  // Lanes that run as helper invocations (a fragment quad's lanes that cover no sample): their
+  // stores to storage blocks and their atomics have no effect (GL 4.6 15.2.5). Reset by begin().
+  void set_helpers(const std::uint8_t* helper);
+
   // glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS): cube maps are filtered across their faces' edges.
   void set_cube_map_seamless(bool on) { seamless_cube_ = on; }
   // Which lanes a GL driver would sample together (llvmpipe: a vector of two fragment quads),
@@ -134,11 +149,19 @@ class Invocations {
   std::vector<std::uint32_t> staging_;  // phi values between reading and writing
   std::vector<std::uint32_t> phi_doubles_;  // scratch for Runner::run_phis
   std::vector<const texture::Texture*> textures_;
+  std::vector<std::uint32_t*> storage_;  // by slot index: bind_storage's memory, null if none
+  std::vector<texture::Texture*> images_;  // by image unit
+  std::uint8_t helper_[kMaxLanes] = {};
+  bool has_helpers_ = false;
   bool seamless_cube_ = false;
   std::uint32_t sampling_vector_[kMaxLanes] = {};
   bool has_sampling_vectors_ = false;
   int lanes_ = 0;
 };
+
+// The internal format of a storage image's layout qualifier (a spv::ImageFormat), or nullopt for
+// one tessref's textures do not have (rgb10_a2).
+std::optional<texture::TexelFormat> image_texel_format(std::uint32_t spv_format);
 
 // A decoded, immutable program: one per shader stage, shared by all threads.
 class Executable {
@@ -158,6 +181,10 @@ class Executable {
   bool may_discard() const;
   // Whether the entry point takes a derivative (dFdx, dFdy, fwidth: other lanes of its quad).
   bool reads_quads() const;
+  // Whether the entry point writes memory other invocations see: a store or atomic into a shader
+  // storage block, or an atomic counter operation. Such a program's invocations must run in one
+  // fixed order (docs/executor.md, "Side effects").
+  bool writes_memory() const;
   // Whether the entry point filters textures (OpImageSample*): only then do the lanes a driver
   // samples together matter (Invocations::set_sampling_vectors).
   bool samples_textures() const;

@@ -1,5 +1,6 @@
 // Decoding a Module into the executor's program (executor_program.h).
 #include <algorithm>
+#include <map>
 #include <string>
 
 #define SPV_ENABLE_UTILITY_CODE
@@ -85,16 +86,6 @@ struct Decoder {
     for (const FlatComponent& c : t.flat) p.row_scalar[row + c.word] = c.scalar;
   }
 
-  // tessref runs shader storage blocks read-only: a store or atomic into one is refused here, when
-  // the program is built, rather than written to a copy no other invocation sees.
-  void refuse_storage_write(const Instruction& ins, std::uint32_t ptr) {
-    if (ptr >= chain_slot.size() || chain_slot[ptr] == kNone) return;
-    const Variable* v = m.variable(p.slots[chain_slot[ptr]].id);
-    if (v && v->decorations.buffer_block)
-      unsupported(m, ins, "a write to the shader storage block '" + v->name +
-                              "' (tessref runs storage blocks read-only: readonly buffer blocks)");
-  }
-
   std::uint32_t value(const Instruction& ins, std::uint32_t id) {
     if (id >= reg.size() || reg[id] == kNone) unsupported(m, ins, "operand %" + std::to_string(id) + " has no value");
     return reg[id];
@@ -107,6 +98,7 @@ struct Decoder {
       s.words = m.type(v.type).words;
       s.per_lane = !is_shared(m, v);
       s.per_group = !s.per_lane && (v.storage == spv::StorageClassInput || v.storage == spv::StorageClassOutput);
+      s.storage = v.storage == spv::StorageClassUniform && v.decorations.buffer_block;
       if (s.per_lane) {
         s.base = alloc_rows(s.words);
       } else if (s.per_group) {
@@ -260,21 +252,74 @@ struct Decoder {
 
   // OpImageSample*, OpImage*Gather, OpImageFetch and OpImageQuery* on a sampler of a target
   // tessref samples (kSamplers), any sampled type, or their shadow forms: one TexOp each.
+  // The texture target an image type reads (refused: multisample images).
+  texture::Target target_of(const Instruction& ins, const Type& image) {
+    const bool arrayed = image.image_arrayed != 0;
+    switch (image.image_ms ? spv::DimMax : spv::Dim(image.image_dim)) {
+      case spv::Dim1D: return arrayed ? texture::Target::k1DArray : texture::Target::k1D;
+      case spv::Dim2D: return arrayed ? texture::Target::k2DArray : texture::Target::k2D;
+      case spv::Dim3D: return texture::Target::k3D;
+      case spv::DimRect: return texture::Target::kRectangle;
+      case spv::DimBuffer: return texture::Target::kBuffer;
+      case spv::DimCube: return arrayed ? texture::Target::kCubeArray : texture::Target::kCube;
+      default: break;
+    }
+    const std::string name = sampler_glsl_name(m, image);
+    unsupported(m, ins, (name[0] == 'i' ? "an " : "a ") + name + " (tessref reads " + kSamplers +
+                            ", and the image forms of the same targets)");
+  }
+
+  // imageLoad (OpImageRead) and imageStore (OpImageWrite) on a storage image.
+  void image_access(const Instruction& ins, const std::vector<std::uint32_t>& o) {
+    const Type& image = m.type(value_type.at(o.at(0)));
+    TexOp t;
+    t.storage = true;
+    t.target = target_of(ins, image);
+    if (texture::is_cube(t.target)) unsupported(m, ins, "a cube map image");
+    t.image = value(ins, o[0]);
+    t.coord = value(ins, o.at(1));
+    t.coord_comps = comps_of(o[1]);
+    XIns x = base(ins, XOp::Texture);
+    if (ins.opcode == spv::OpImageRead) {
+      t.kind = TexOp::Kind::ImageRead;
+    } else {
+      t.kind = TexOp::Kind::ImageWrite;
+      t.texel = value(ins, o.at(2));
+    }
+    x.aux = std::uint32_t(p.textures.size());
+    p.textures.push_back(t);
+    emit(x);
+  }
+
+  // OpImageTexelPointer: the image's unit is loaded here, and the atomic that uses the pointer
+  // becomes an ImageAtomic (texel_pointer).
+  void image_texel_pointer(const Instruction& ins, const std::vector<std::uint32_t>& o) {
+    const Type& image = m.type(pointee(o.at(0)));
+    if (image.image_format != spv::ImageFormatR32i && image.image_format != spv::ImageFormatR32ui)
+      unsupported(m, ins, "an atomic on an image that is not r32i or r32ui (GL 4.5's image atomics)");
+    XIns load = base(ins, XOp::Load);
+    load.dst = alloc_rows(1);
+    load.n = 1;
+    load.s = Scalar::U32;
+    load.aux = chain_access(ins, o[0], image);
+    emit(load);
+    TexOp t;
+    t.storage = true;
+    t.kind = TexOp::Kind::ImageAtomic;
+    t.target = target_of(ins, image);
+    t.image = load.dst;
+    t.coord = value(ins, o.at(1));
+    t.coord_comps = comps_of(o[1]);
+    texel_pointer[ins.result] = t;
+  }
+  std::map<std::uint32_t, TexOp> texel_pointer;  // OpImageTexelPointer result -> its image texel
+
   void texture(const Instruction& ins, const std::vector<std::uint32_t>& o) {
     const spv::Op op = spv::Op(ins.opcode);
     const Type& image = m.type(value_type.at(o.at(0)));
-    const std::string name = sampler_glsl_name(m, image);
-    const bool arrayed = image.image_arrayed != 0;
     TexOp t;
-    switch (image.image_ms ? spv::DimMax : spv::Dim(image.image_dim)) {
-      case spv::Dim1D: t.target = arrayed ? texture::Target::k1DArray : texture::Target::k1D; break;
-      case spv::Dim2D: t.target = arrayed ? texture::Target::k2DArray : texture::Target::k2D; break;
-      case spv::Dim3D: t.target = texture::Target::k3D; break;
-      case spv::DimRect: t.target = texture::Target::kRectangle; break;
-      case spv::DimBuffer: t.target = texture::Target::kBuffer; break;
-      case spv::DimCube: t.target = arrayed ? texture::Target::kCubeArray : texture::Target::kCube; break;
-      default: unsupported(m, ins, (name[0] == 'i' ? "an " : "a ") + name + " (tessref samples " + kSamplers + " only)");
-    }
+    t.target = target_of(ins, image);
+    t.storage = image.image_storage;
     t.image = value(ins, o[0]);
     XIns x = base(ins, XOp::Texture);
     switch (op) {
@@ -687,14 +732,12 @@ struct Decoder {
       case spv::OpStore: {
         XIns x = base(ins, XOp::Store);
         const std::uint32_t ptr = o.at(0);
-        refuse_storage_write(ins, ptr);
         x.aux = chain_access(ins, ptr, m.type(value_type.at(o.at(1))));
         x.a = V(1);
         emit(x);
         return;
       }
       case spv::OpCopyMemory: {
-        refuse_storage_write(ins, o.at(0));
         XIns x = base(ins, XOp::CopyMemory);
         const Type& t = m.type(pointee(o.at(1)));
         x.aux = chain_access(ins, o.at(0), t);
@@ -737,18 +780,63 @@ struct Decoder {
       case spv::OpImageQueryLevels: case spv::OpImageQueryLod:
         texture(ins, o);
         return;
+      case spv::OpImageRead: case spv::OpImageWrite:
+        image_access(ins, o);
+        return;
+      case spv::OpImageTexelPointer:
+        image_texel_pointer(ins, o);
+        return;
       case spv::OpAtomicIIncrement: case spv::OpAtomicIDecrement: case spv::OpAtomicLoad:
-      case spv::OpAtomicIAdd: case spv::OpAtomicISub: case spv::OpAtomicStore: {
-        const spv::Op op = spv::Op(ins.opcode);
-        XIns x = base(ins, op == spv::OpAtomicIIncrement ? XOp::AtomicInc
-                           : op == spv::OpAtomicIDecrement ? XOp::AtomicDec
-                           : op == spv::OpAtomicLoad ? XOp::AtomicLoad
-                           : op == spv::OpAtomicIAdd ? XOp::AtomicAdd
-                           : op == spv::OpAtomicISub ? XOp::AtomicSub : XOp::AtomicStore);
+      case spv::OpAtomicIAdd: case spv::OpAtomicISub: case spv::OpAtomicStore: case spv::OpAtomicSMin:
+      case spv::OpAtomicUMin: case spv::OpAtomicSMax: case spv::OpAtomicUMax: case spv::OpAtomicAnd:
+      case spv::OpAtomicOr: case spv::OpAtomicXor: case spv::OpAtomicExchange:
+      case spv::OpAtomicCompareExchange: {
+        XOp op = XOp::AtomicLoad;
+        switch (spv::Op(ins.opcode)) {
+          case spv::OpAtomicIIncrement: op = XOp::AtomicInc; break;
+          case spv::OpAtomicIDecrement: op = XOp::AtomicDec; break;
+          case spv::OpAtomicIAdd: op = XOp::AtomicAdd; break;
+          case spv::OpAtomicISub: op = XOp::AtomicSub; break;
+          case spv::OpAtomicStore: op = XOp::AtomicStore; break;
+          case spv::OpAtomicSMin: op = XOp::AtomicSMin; break;
+          case spv::OpAtomicUMin: op = XOp::AtomicUMin; break;
+          case spv::OpAtomicSMax: op = XOp::AtomicSMax; break;
+          case spv::OpAtomicUMax: op = XOp::AtomicUMax; break;
+          case spv::OpAtomicAnd: op = XOp::AtomicAnd; break;
+          case spv::OpAtomicOr: op = XOp::AtomicOr; break;
+          case spv::OpAtomicXor: op = XOp::AtomicXor; break;
+          case spv::OpAtomicExchange: op = XOp::AtomicExchange; break;
+          case spv::OpAtomicCompareExchange: op = XOp::AtomicCompareExchange; break;
+          default: break;
+        }
+        XIns x = base(ins, op);
         const std::uint32_t ptr = o.at(0);
-        if (op != spv::OpAtomicLoad) refuse_storage_write(ins, ptr);
-        x.aux = chain_access(ins, ptr, m.type(pointee(ptr)));
-        if (op == spv::OpAtomicIAdd || op == spv::OpAtomicISub || op == spv::OpAtomicStore) x.a = V(3);
+        if (const auto texel = texel_pointer.find(ptr); texel != texel_pointer.end()) {
+          TexOp t = texel->second;
+          t.atomic = op;
+          if (op == XOp::AtomicCompareExchange) {
+            t.texel = V(4);
+            t.comparator = V(5);
+          } else if (op != XOp::AtomicInc && op != XOp::AtomicDec && op != XOp::AtomicLoad) {
+            t.texel = V(3);
+          }
+          x.op = XOp::Texture;
+          x.aux = std::uint32_t(p.textures.size());
+          p.textures.push_back(t);
+          emit(x);
+          return;
+        }
+        const Type& t = m.type(pointee(ptr));
+        if (t.kind != TypeKind::Int)
+          unsupported(m, ins, "an atomic operation on a " + m.name_of(pointee(ptr)) + " (GL 4.5's atomics take int and uint)");
+        x.aux = chain_access(ins, ptr, t);
+        // Operands: pointer, scope, semantics [, unequal semantics], value [, comparator].
+        if (op == XOp::AtomicCompareExchange) {
+          x.a = V(4);
+          x.b = V(5);
+        } else if (op != XOp::AtomicInc && op != XOp::AtomicDec && op != XOp::AtomicLoad) {
+          x.a = V(3);
+        }
         emit(x);
         return;
       }

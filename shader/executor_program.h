@@ -30,7 +30,9 @@ enum class XOp : std::uint16_t {
   BitCount, BitReverse, BitFieldInsert, BitFieldSExtract, BitFieldUExtract,
   DPdx, DPdy, Fwidth,
   Texture,  // aux = DecodedProgram::textures index
-  AtomicInc, AtomicDec, AtomicLoad, AtomicAdd, AtomicSub, AtomicStore,
+  // a: the value operand, b: a compare-exchange's comparator
+  AtomicInc, AtomicDec, AtomicLoad, AtomicAdd, AtomicSub, AtomicStore, AtomicSMin, AtomicUMin,
+  AtomicSMax, AtomicUMax, AtomicAnd, AtomicOr, AtomicXor, AtomicExchange, AtomicCompareExchange,
   Kill,
   Emit,  // EmitVertex / EndPrimitive (and the stream forms): aux = stream, b = 1 for an end
 };
@@ -53,8 +55,14 @@ struct XIns {
 // A texture instruction (OpImageSample*, OpImageFetch, OpImageQuery*): its operands' rows, kNone
 // where absent. Constant operands (ConstOffset) are rows like any other.
 struct TexOp {
-  enum class Kind : std::uint8_t { Sample, Gather, Fetch, QuerySize, QueryLevels, QueryLod };
+  // ImageRead, ImageWrite, ImageAtomic: a storage image's texel (imageLoad, imageStore, the
+  // image atomics); QuerySize of a storage image is imageSize.
+  enum class Kind : std::uint8_t { Sample, Gather, Fetch, QuerySize, QueryLevels, QueryLod, ImageRead, ImageWrite, ImageAtomic };
   Kind kind = Kind::Sample;
+  bool storage = false;         // `image` is an image unit (Invocations::bind_image), not a texture unit
+  std::uint32_t texel = kNone;  // ImageWrite: the value; ImageAtomic: the operand
+  std::uint32_t comparator = kNone;  // ImageAtomic, atomicCompSwap's
+  XOp atomic = XOp::Nop;        // ImageAtomic: the operation (XOp::Atomic*)
   std::uint32_t image = kNone;  // the sampler's texture unit (one U32 row)
   std::uint32_t coord = kNone;  // float coordinates (Fetch: integer texel indices)
   std::uint32_t coord_comps = 0;

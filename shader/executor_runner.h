@@ -29,6 +29,26 @@ std::uint32_t to_uint(F x) {
   return std::uint32_t(x);
 }
 
+// An atomic operation's new value of a word (XOp::Atomic*); comparator: atomicCompSwap's.
+inline std::uint32_t atomic_value(XOp op, std::uint32_t before, std::uint32_t operand, std::uint32_t comparator) {
+  switch (op) {
+    case XOp::AtomicInc: return before + 1;
+    case XOp::AtomicDec: return before - 1;
+    case XOp::AtomicAdd: return before + operand;
+    case XOp::AtomicSub: return before - operand;
+    case XOp::AtomicStore: case XOp::AtomicExchange: return operand;
+    case XOp::AtomicSMin: return std::int32_t(operand) < std::int32_t(before) ? operand : before;
+    case XOp::AtomicUMin: return operand < before ? operand : before;
+    case XOp::AtomicSMax: return std::int32_t(operand) > std::int32_t(before) ? operand : before;
+    case XOp::AtomicUMax: return operand > before ? operand : before;
+    case XOp::AtomicAnd: return before & operand;
+    case XOp::AtomicOr: return before | operand;
+    case XOp::AtomicXor: return before ^ operand;
+    case XOp::AtomicCompareExchange: return before == comparator ? operand : before;
+    default: return before;  // AtomicLoad
+  }
+}
+
 struct Runner {
   Invocations& inv;
   const DecodedProgram& p;
@@ -47,6 +67,14 @@ struct Runner {
   bool source_new_line = false;   // the next line recorded starts a new execution
   std::uint32_t source_block = 0;             // the block running
   std::vector<std::uint32_t> source_blocks;   // the blocks the current line execution ran
+
+  // A shared variable's words (lane's group block for a per-group one), or a storage block's
+  // memory where one is bound.
+  std::uint32_t* common(std::uint32_t slot, int lane = 0) {
+    const VariableSlot& v = p.slots[slot];
+    if (v.storage && inv.storage_[slot]) return inv.storage_[slot];
+    return inv.shared_.data() + (v.per_group ? inv.group_base_[lane] : 0u) + v.base;
+  }
 
   template <class T>
   T* row(std::uint32_t r, std::uint32_t comp = 0) {
@@ -160,6 +188,7 @@ struct Runner {
   void compare(const XIns& x);
   void matrix(const XIns& x);
   void texture(const XIns& x);
+  void image(const XIns& x);  // storage images: executor_image.cpp
   void atomic(const XIns& x);
   void derivative(const XIns& x);
   [[noreturn]] void fail(const std::string& what, int lane, int line) { throw ShaderRuntimeError(what, lane, line); }

@@ -276,6 +276,7 @@ Module read_module(std::span<const std::uint32_t> words, const StorageBufferSize
           case spv::ExecutionModeVertexOrderCcw: m.modes.order = w[1]; break;
           case spv::ExecutionModePointMode: m.modes.point_mode = true; break;
           case spv::ExecutionModeOriginUpperLeft: m.modes.origin_upper_left = true; break;
+          case spv::ExecutionModeEarlyFragmentTests: m.modes.early_fragment_tests = true; break;
           default: break;
         }
         break;
@@ -393,6 +394,8 @@ Module read_module(std::span<const std::uint32_t> words, const StorageBufferSize
         t.image_arrayed = w[4] != 0;
         t.image_depth = w[3] == 1;
         t.image_ms = w[5] != 0;
+        t.image_storage = w[6] == 2;
+        t.image_format = w[7];
         lay_out(m, t);
         m.types[w[0]] = t;
         break;
@@ -572,7 +575,7 @@ std::string sampler_glsl_name(const Module& m, const Type& t) {
     case spv::DimBuffer: dim = "Buffer"; break;
     default: dim = "(dimension " + std::to_string(t.image_dim) + ")"; break;
   }
-  return prefix + "sampler" + dim + (t.image_ms ? "MS" : "") + (t.image_arrayed ? "Array" : "") +
+  return prefix + (t.image_storage ? "image" : "sampler") + dim + (t.image_ms ? "MS" : "") + (t.image_arrayed ? "Array" : "") +
          (t.image_depth ? "Shadow" : "");
 }
 

@@ -55,6 +55,8 @@ struct Type {
   bool image_depth = false;  // a shadow sampler's image (Depth 1)
   bool image_ms = false;
   std::uint32_t image_sampled_type = 0;
+  bool image_storage = false;     // Sampled 2: a storage image (GLSL image2D ...), not a sampler's
+  std::uint32_t image_format = 0; // a storage image's spv::ImageFormat (its layout(rgba32f) ...)
   bool runtime = false;  // Array: an OpTypeRuntimeArray (count set from the bound buffer, else 0)
   // Words of a type above kMaxValueWords (saturated), whose `words` and `flat` are then empty;
   // 0 for every type that fits.
@@ -109,6 +111,9 @@ struct ExecutionModes {
   std::uint32_t output_primitive = 0;
   int invocations = 1;
   bool origin_upper_left = false;
+  // Fragment: layout(early_fragment_tests) in; the depth test runs before the shader, so fragments
+  // that fail it run no invocation and make no side effects (GL 4.6 14.9).
+  bool early_fragment_tests = false;
 };
 
 struct Module {

@@ -40,7 +40,7 @@ GlslGeometry::GlslGeometry(const StageProgram& sp, const VaryingLayout& inputs, 
 void GlslGeometry::run(const float* const* corners, int in_varyings, std::size_t count, std::uint32_t first_id,
                        GeometryOutput& out) const {
   const std::size_t lanes = count * std::size_t(invocations_);
-  const std::size_t step = std::size_t(std::clamp(sp_.exe->limits().batch_lanes, 1, shader::kMaxLanes));
+  const std::size_t step = sp_.side_effects ? 1 : std::size_t(std::clamp(sp_.exe->limits().batch_lanes, 1, shader::kMaxLanes));
   for (std::size_t first = 0; first < lanes; first += step)
     run_lanes(corners, in_varyings, first, int(std::min(step, lanes - first)), first_id, out);
 }

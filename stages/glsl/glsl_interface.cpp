@@ -22,6 +22,7 @@ IoKind kind_of_builtin(std::uint32_t b) {
     case spv::BuiltInClipDistance: return IoKind::ClipDistance;
     case spv::BuiltInCullDistance: return IoKind::CullDistance;
     case spv::BuiltInFragDepth: return IoKind::FragDepth;
+    case spv::BuiltInSampleMask: return IoKind::SampleMaskIn;  // an input (the output is refused: glsl_program.cpp)
     default: return IoKind::Other;
   }
 }

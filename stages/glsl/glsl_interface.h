@@ -21,7 +21,7 @@ struct IoWord {
 
 enum class IoKind { User, Position, TessLevelOuter, TessLevelInner, PrimitiveId, InvocationId,
                     PatchVertices, TessCoord, FragCoord, FrontFacing, HelperInvocation, VertexId, InstanceId,
-                    PointSize, ClipDistance, CullDistance, FragDepth, Other };
+                    PointSize, ClipDistance, CullDistance, FragDepth, SampleMaskIn, Other };
 
 // gl_ClipDistance[i], gl_CullDistance[i] and gl_PointSize as I/O words: past the 32 locations, so
 // that they travel between stages (StageVertex) as the other outputs do. 8 distances each:

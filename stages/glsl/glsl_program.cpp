@@ -4,6 +4,7 @@
 #include <map>
 #include <cstring>
 #include <stdexcept>
+#include <tuple>
 
 #include <spirv/unified1/spirv.hpp>
 
@@ -39,7 +40,10 @@ void refuse_unsupported_io(const shader::Module& m, shader::Stage stage) {
     // A built-in the pipeline does not carry (gl_SubGroupSizeARB, gl_PointCoord, gl_SampleID,
     // gl_Layer, gl_DrawID, ...) would read 0 or go nowhere: refused by name.
     // (glslang declares gl_SubGroupSizeARB as a UniformConstant, not an Input.)
-    if (v.decorations.builtin && kind_of_builtin(*v.decorations.builtin) == IoKind::Other)
+    // gl_SampleMask (the output) would change coverage, which tessref does not model.
+    const bool sample_mask_out = v.decorations.builtin && *v.decorations.builtin == spv::BuiltInSampleMask &&
+                                 v.storage == spv::StorageClassOutput;
+    if (v.decorations.builtin && (kind_of_builtin(*v.decorations.builtin) == IoKind::Other || sample_mask_out))
       throw shader::SpirvError("'" + (v.name.empty() ? "built-in " + std::to_string(*v.decorations.builtin) : v.name) +
                                "' is a built-in " + (v.storage == spv::StorageClassOutput ? "output" : "input") +
                                " tessref's pipeline does not provide");
@@ -76,6 +80,7 @@ std::unique_ptr<StageProgram> make_stage(const shader::CompiledStage& cs, shader
       continue;
     }
     if (v.storage != spv::StorageClassUniformConstant && v.storage != spv::StorageClassUniform) continue;
+    if (v.decorations.buffer_block) continue;  // in the program's StorageMemory
     sp->uniform_ranges.push_back({slot->base, slot->words});
   }
   std::uint32_t words = 0;
@@ -85,7 +90,7 @@ std::unique_ptr<StageProgram> make_stage(const shader::CompiledStage& cs, shader
     const shader::VariableSlot* slot = sp->exe->slot(v.id);
     if (slot->per_lane) continue;
     // A sampler's value is its texture unit: its binding until the user sets it.
-    if (m.type(v.type).kind == TypeKind::SampledImage)
+    if (m.type(v.type).kind == TypeKind::SampledImage || m.type(v.type).kind == TypeKind::Image)
       sp->uniforms[slot->base] = v.decorations.binding.value_or(0);
     // 'uniform T x = initializer;' (GLSL 1.20+): the value until the user sets it.
     if (v.initializer && (v.storage == spv::StorageClassUniformConstant || v.storage == spv::StorageClassUniform)) {
@@ -116,6 +121,7 @@ Shape shape_of(const shader::Module& m, std::uint32_t type) {
       s.rows = int(m.type(t.element).count);
       break;
     case TypeKind::SampledImage:
+    case TypeKind::Image:  // a storage image: its value is its image unit
       s.sampler = true;
       s.scalar = Scalar::I32;
       s.sampler_name = sampler_glsl_name(m, t);
@@ -213,7 +219,10 @@ shader::Invocations& StageProgram::prepare(int groups) const {
     std::copy_n(uniforms.begin() + first, n, inv.shared_words() + first);
   if (textures)
     for (std::uint32_t unit = 0; unit < textures->size(); ++unit) inv.bind_texture(unit, (*textures)[unit]);
+  if (images)
+    for (std::uint32_t unit = 0; unit < images->size(); ++unit) inv.bind_image(unit, (*images)[unit]);
   inv.set_cube_map_seamless(cube_map_seamless && *cube_map_seamless);
+  for (const auto& [id, words] : storage) inv.bind_storage(id, words);
   for (const auto& [word, binding, offset] : counters) {
     const std::vector<std::uint32_t>& buffer = (*counter_buffers)[binding];
     inv.shared_words()[word] = offset < buffer.size() ? buffer[offset] : 0u;
@@ -251,9 +260,12 @@ GlslProgram::GlslProgram(const shader::CompiledProgram& compiled, shader::ExecLi
   for (StageProgram* s : stages())
     if (s) {
       s->textures = &textures_;
+      s->images = &images_;
       s->cube_map_seamless = &cube_map_seamless_;
       s->counter_buffers = &counter_buffers_;
+      s->side_effects = s->exe->writes_memory();
     }
+  make_storage_memory();
   // Varyings handed to the rasterizer: every word the last geometry stage writes past gl_Position.
   // With a geometry shader, the stage before it hands its vertices on in the same form.
   const auto varyings_of = [](const StageProgram& stage) {
@@ -465,8 +477,16 @@ std::vector<GlslProgram::UniformBlock> blocks_of(std::span<StageProgram* const> 
   return out;
 }
 
-bool bind_blocks(std::span<StageProgram* const> stages, std::uint32_t binding, std::span<const std::byte> range,
-                 bool storage) {
+[[noreturn]] void throw_short_range(const shader::Module& m, std::uint32_t type, std::uint32_t binding,
+                                    std::size_t extent, std::size_t range, bool storage) {
+  const auto n = m.names.find(type);
+  throw std::invalid_argument(std::string(storage ? "shader storage block '" : "uniform block '") +
+                              (n != m.names.end() ? n->second : m.name_of(type)) + "' (binding " +
+                              std::to_string(binding) + ") reads " + std::to_string(extent) +
+                              " bytes; the bound range holds " + std::to_string(range));
+}
+
+bool bind_uniform_blocks(std::span<StageProgram* const> stages, std::uint32_t binding, std::span<const std::byte> range) {
   bool found = false;
   for (StageProgram* sp : stages) {
     if (!sp) continue;
@@ -474,19 +494,22 @@ bool bind_blocks(std::span<StageProgram* const> stages, std::uint32_t binding, s
     for_each_block(m, [&](const shader::Variable& v, std::uint32_t element, std::uint32_t type, std::uint32_t b) {
       if (b != binding) return;
       const std::size_t extent = shader::explicit_layout_extent(m, type);
-      if (range.size() < extent) {
-        const auto n = m.names.find(type);
-        throw std::invalid_argument(std::string(storage ? "shader storage block '" : "uniform block '") +
-                                    (n != m.names.end() ? n->second : m.name_of(type)) + "' (binding " +
-                                    std::to_string(binding) + ") reads " + std::to_string(extent) +
-                                    " bytes; the bound range holds " + std::to_string(range.size()));
-      }
+      if (range.size() < extent) throw_short_range(m, type, binding, extent, range.size(), false);
       std::uint32_t* out = sp->uniforms.data() + sp->exe->slot(v.id)->base + element * m.type(type).words;
       shader::read_explicit_layout(m, type, range, out);
       found = true;
-    }, storage);
+    });
   }
   return found;
+}
+
+// Whether two block types flatten to the same words (the same scalars at the same places).
+bool same_words(const shader::Module& a, std::uint32_t ta, const shader::Module& b, std::uint32_t tb) {
+  const std::vector<shader::FlatComponent>& fa = a.type(ta).flat;
+  const std::vector<shader::FlatComponent>& fb = b.type(tb).flat;
+  return fa.size() == fb.size() && std::equal(fa.begin(), fa.end(), fb.begin(), [](const auto& x, const auto& y) {
+           return x.word == y.word && x.scalar == y.scalar;
+         });
 }
 
 }  // namespace
@@ -499,12 +522,76 @@ std::vector<GlslProgram::UniformBlock> GlslProgram::storage_blocks() const {
 }
 
 bool GlslProgram::bind_uniform_buffer(std::uint32_t binding, std::span<const std::byte> range) {
-  return bind_blocks(stages(), binding, range, false);
+  return bind_uniform_blocks(stages(), binding, range);
 }
-bool GlslProgram::bind_storage_buffer(std::uint32_t binding, std::span<const std::byte> range) {
-  const bool found = bind_blocks(stages(), binding, range, true);
+
+void GlslProgram::make_storage_memory() {
+  std::vector<std::tuple<StageProgram*, std::uint32_t, std::size_t>> uses;  // stage, variable, memory
+  for (StageProgram* sp : stages()) {
+    if (!sp) continue;
+    const shader::Module& m = sp->exe->module();
+    for (const shader::Variable& v : m.variables) {
+      if (v.storage != spv::StorageClassUniform || !v.decorations.buffer_block) continue;
+      std::uint32_t type = v.type, elements = 1;
+      if (m.type(type).kind == TypeKind::Array) {
+        elements = m.type(type).count;
+        type = m.type(type).element;
+      }
+      const std::uint32_t binding = v.decorations.binding.value_or(0);
+      auto it = std::find_if(storage_.begin(), storage_.end(), [&](const StorageMemory& s) {
+        return s.first_binding == binding && s.elements == elements && same_words(*s.module, s.type, m, type);
+      });
+      if (it == storage_.end()) {
+        StorageMemory s;
+        s.module = &m;
+        s.type = type;
+        s.first_binding = binding;
+        s.elements = elements;
+        s.element_words = m.type(type).words;
+        s.words.assign(std::size_t(elements) * s.element_words, 0u);
+        s.original = s.words;
+        s.ranges.assign(elements, {});
+        storage_.push_back(std::move(s));
+        it = storage_.end() - 1;
+      }
+      uses.emplace_back(sp, v.id, std::size_t(it - storage_.begin()));
+    }
+  }
+  // Pointers only once storage_ has stopped growing.
+  for (const auto& [sp, id, k] : uses) sp->storage.push_back({id, storage_[k].words.data()});
+}
+
+bool GlslProgram::bind_storage_buffer(std::uint32_t binding, std::span<std::byte> range) {
+  bool found = false;
+  for (StorageMemory& s : storage_) {
+    if (binding < s.first_binding || binding - s.first_binding >= s.elements) continue;
+    const std::uint32_t e = binding - s.first_binding;
+    const std::size_t extent = shader::explicit_layout_extent(*s.module, s.type);
+    if (range.size() < extent) throw_short_range(*s.module, s.type, binding, extent, range.size(), true);
+    std::uint32_t* words = s.words.data() + std::size_t(e) * s.element_words;
+    shader::read_explicit_layout(*s.module, s.type, range, words);
+    std::copy_n(words, s.element_words, s.original.data() + std::size_t(e) * s.element_words);
+    s.ranges[e] = range;
+    found = true;
+  }
   if (found) bound_storage_.insert(binding);
   return found;
+}
+
+void GlslProgram::write_back_storage() {
+  for (StorageMemory& s : storage_)
+    for (std::uint32_t e = 0; e < s.elements; ++e) {
+      if (s.ranges[e].empty()) continue;
+      const std::size_t at = std::size_t(e) * s.element_words;
+      shader::write_explicit_layout(*s.module, s.type, s.words.data() + at, s.original.data() + at, s.ranges[e]);
+      std::copy_n(s.words.data() + at, s.element_words, s.original.data() + at);
+    }
+}
+
+bool GlslProgram::writes_memory() const {
+  for (const StageProgram* sp : stages())
+    if (sp && sp->side_effects) return true;
+  return false;
 }
 
 std::optional<GlslProgram::UniformBlock> GlslProgram::unbound_storage_block() const {
@@ -538,6 +625,21 @@ bool GlslProgram::uses_atomic_counters() const {
 void GlslProgram::bind_texture(std::uint32_t unit, const texture::Texture* texture) {
   if (textures_.size() <= unit) textures_.resize(unit + 1, nullptr);
   textures_[unit] = texture;
+}
+
+void GlslProgram::bind_image(std::uint32_t unit, texture::Texture* texture) {
+  if (images_.size() <= unit) images_.resize(unit + 1, nullptr);
+  images_[unit] = texture;
+}
+
+std::optional<texture::TexelFormat> GlslProgram::image_format(const std::string& name) const {
+  for (const StageProgram* sp : stages()) {
+    if (!sp) continue;
+    const shader::Module& m = sp->exe->module();
+    for (const shader::Variable& v : m.variables)
+      if (v.name == name && m.type(v.type).kind == TypeKind::Image) return shader::image_texel_format(m.type(v.type).image_format);
+  }
+  return std::nullopt;
 }
 
 std::optional<std::uint32_t> GlslProgram::attribute_location(const std::string& name) const {

@@ -36,11 +36,19 @@ struct StageProgram {
   std::vector<std::uint32_t> uniforms;  // an image of the shared words holding uniforms
   std::vector<std::pair<std::uint32_t, std::uint32_t>> uniform_ranges;  // (first word, words)
   const std::vector<const texture::Texture*>* textures = nullptr;  // the program's, by unit
+  const std::vector<texture::Texture*>* images = nullptr;          // the program's, by image unit
   const bool* cube_map_seamless = nullptr;  // the program's GL_TEXTURE_CUBE_MAP_SEAMLESS
   // Atomic counters: (shared word, binding, word offset in the binding's buffer), and the
   // program's buffers (binding -> words), which every run reads and writes back.
   std::vector<std::array<std::uint32_t, 3>> counters;
   std::map<std::uint32_t, std::vector<std::uint32_t>>* counter_buffers = nullptr;
+  // Shader storage blocks: (variable id, the words of its StorageMemory), bound at every batch.
+  std::vector<std::pair<std::uint32_t, std::uint32_t*>> storage;
+  // Whether invocations write memory others see (shader::Executable::writes_memory): then each
+  // batch is one invocation (a TCS: one patch; a fragment shader: one quad, or the two quads of
+  // one sampling vector), so that side effects happen in the order of a serial run whatever the
+  // batch size.
+  bool side_effects = false;
 
   // This thread's invocations with the uniforms and counters loaded and the shared memory of
   // `groups` groups (patches) zeroed.
@@ -105,20 +113,35 @@ class GlslProgram final : public DrawProgram {
   // take their values from range through their explicit layout. Returns false when no block uses
   // the binding; throws std::invalid_argument when range is shorter than a block's extent.
   bool bind_uniform_buffer(std::uint32_t binding, std::span<const std::byte> range);
-  // glBindBufferRange(GL_SHADER_STORAGE_BUFFER, binding, ...): the same for the read-only shader
-  // storage blocks (std430), whose runtime arrays the constructor sized for this range's bytes.
-  bool bind_storage_buffer(std::uint32_t binding, std::span<const std::byte> range);
+  // glBindBufferRange(GL_SHADER_STORAGE_BUFFER, binding, ...): the same for the shader storage
+  // blocks (std430), whose runtime arrays the constructor sized for this range's bytes. The
+  // blocks' memory is the program's from here on; write_back_storage() puts what the shaders
+  // wrote into range, which must outlive the draws.
+  bool bind_storage_buffer(std::uint32_t binding, std::span<std::byte> range);
+  // After a draw: every storage block's changed values back into its bound range's bytes.
+  void write_back_storage();
   // A storage block no range was bound to, if any: a draw refuses it (GL leaves its reads undefined).
   std::optional<UniformBlock> unbound_storage_block() const;
   // Binds a texture to a sampler's binding (texture unit). The texture must outlive the draws.
   void bind_texture(std::uint32_t unit, const texture::Texture* texture);
+  // glBindImageTexture(unit, texture, level 0, layered, 0, GL_READ_WRITE, its format): the
+  // images at `unit` read and write the texture's level 0 (docs/textures.md, "Images"). The
+  // texture must outlive the draws.
+  void bind_image(std::uint32_t unit, texture::Texture* texture);
+  // The internal format an image uniform declares (layout(rgba32f) ...); nullopt if no stage has
+  // an image of that name (or its format is one tessref's textures lack).
+  std::optional<texture::TexelFormat> image_format(const std::string& name) const;
   // glEnable / glDisable(GL_TEXTURE_CUBE_MAP_SEAMLESS) for the draws that follow (off by default).
   void set_cube_map_seamless(bool on) { cube_map_seamless_ = on; }
   // Atomic counter buffers (binding -> 32-bit counters). A program that uses atomic counters is
   // drawn on one thread, in patch and tile order, so the counts and the values each invocation
   // sees do not depend on the thread count.
   bool uses_atomic_counters() const;
-  bool draws_serially() const override { return uses_atomic_counters(); }
+  // Whether a stage writes storage blocks or atomic counters: the draw then runs on one thread
+  // and each stage one invocation a batch, so that the side effects and the values invocations
+  // read back are those of a serial run in tessref's order (docs/executor.md, "Side effects").
+  bool writes_memory() const;
+  bool draws_serially() const override { return uses_atomic_counters() || writes_memory(); }
   std::string draw_refusal() const override;
   std::vector<std::uint32_t>& counter_buffer(std::uint32_t binding) { return counter_buffers_[binding]; }
 
@@ -161,11 +184,24 @@ class GlslProgram final : public DrawProgram {
   // Every stage in pipeline order, null where the program has none.
   std::array<StageProgram*, 5> stages() const { return {vs_.get(), tcs_.get(), tes_.get(), gs_.get(), fs_.get()}; }
   void map_patch_locations();
+  void make_storage_memory();  // storage_, and each stage's pointers into it
   std::unique_ptr<StageProgram> vs_, tcs_, tes_, gs_, fs_;
   std::vector<const texture::Texture*> textures_;
+  std::vector<texture::Texture*> images_;
   bool cube_map_seamless_ = false;
   std::map<std::uint32_t, std::vector<std::uint32_t>> counter_buffers_;
   std::set<std::uint32_t> bound_storage_;  // bindings bind_storage_buffer filled
+  // A shader storage block's memory for the draws: its flattened words (every element of a block
+  // array), shared by the stages that declare it alike, read from the bound ranges and written
+  // back to them after each draw.
+  struct StorageMemory {
+    const shader::Module* module = nullptr;
+    std::uint32_t type = 0;  // the block's struct type
+    std::uint32_t first_binding = 0, elements = 1, element_words = 0;
+    std::vector<std::uint32_t> words, original;  // now, and as read from the ranges
+    std::vector<std::span<std::byte>> ranges;    // per element; empty where none is bound
+  };
+  std::vector<StorageMemory> storage_;  // made once by the constructor: stages point into it
   int num_varyings_ = 0;  // handed to the fragment shader: out_layout_, then gl_PrimitiveID's
   VaryingLayout out_layout_;  // the last stage before the rasterizer's outputs
   VaryingLayout pre_geometry_layout_;  // with a geometry shader: the outputs of the stage before it

@@ -131,10 +131,9 @@ void GlslControl::run_patches(const Patch* const* in, PatchOutput* const* out, i
   // each patch a group with its own gl_in[], gl_out[] and patch variables.
   const int n = output_vertices();
   const int lanes = std::clamp(sp_.exe->limits().batch_lanes, 1, shader::kMaxLanes);
-  // With atomic counters, one patch a batch: the counters then count in patch order whatever the
-  // batch size.
+  // With side effects, one patch a batch: they then happen in patch order whatever the batch size.
   const int per_batch =
-      sp_.counters.empty() ? std::max(1, std::min(shader::kMaxLanes, std::max(lanes, n)) / n) : 1;
+      sp_.side_effects ? 1 : std::max(1, std::min(shader::kMaxLanes, std::max(lanes, n)) / n);
   for (int first = 0; first < count; first += per_batch) {
     const int groups = std::min(per_batch, count - first);
     Invocations& inv = sp_.prepare(groups);
@@ -194,7 +193,7 @@ void PassThroughControl::run(int, int invocation_id, const Patch& in, PatchOutpu
 // Tessellation evaluation
 
 void GlslEvaluation::evaluate_batch(const PatchOutput& patch, int primitive_id, TessEvalBatch& batch) const {
-  const int step = std::clamp(sp_.exe->limits().batch_lanes, 1, shader::kMaxLanes);
+  const int step = sp_.side_effects ? 1 : std::clamp(sp_.exe->limits().batch_lanes, 1, shader::kMaxLanes);
   for (int first = 0; first < batch.count; first += step)
     evaluate_lanes(patch, primitive_id, batch, first, std::min(step, batch.count - first));
 }
@@ -271,7 +270,9 @@ std::uint32_t sampling_vector(const FragmentBatch& batch, int lane) {
 void GlslFragment::shade_batch(FragmentBatch& batch) const {
   // Whole quads per run: derivatives difference the lanes of a quad. A run does not end between
   // the two quads of one sampling vector, so that no lookup depends on batch_lanes.
-  const int step = std::max(samples_textures_ ? 8 : 4, std::clamp(sp_.exe->limits().batch_lanes, 1, shader::kMaxLanes) & ~3);
+  // With side effects, one quad (or sampling vector) a run: they happen in quad order.
+  const int unit = samples_textures_ ? 8 : 4;
+  const int step = sp_.side_effects ? unit : std::max(unit, std::clamp(sp_.exe->limits().batch_lanes, 1, shader::kMaxLanes) & ~3);
   for (int first = 0; first < batch.lanes();) {
     int n = std::min(step, batch.lanes() - first);
     if (samples_textures_ && first + n < batch.lanes() && sampling_vector(batch, first + n - 4) == sampling_vector(batch, first + n))
@@ -284,6 +285,13 @@ void GlslFragment::shade_batch(FragmentBatch& batch) const {
 void GlslFragment::shade_lanes(FragmentBatch& batch, int first, int n) const {
   Invocations& inv = sp_.prepare();
   inv.begin(n);
+  // Lanes that are not live (no sample covered, or discarded by the early depth test) run as
+  // helpers: no stores to storage blocks, no atomics.
+  if (sp_.side_effects) {
+    std::uint8_t helper[shader::kMaxLanes];
+    for (int l = 0; l < n; ++l) helper[l] = batch.live[first + l] ? 0 : 1;
+    inv.set_helpers(helper);
+  }
   if (samples_textures_) {
     std::uint32_t vectors[shader::kMaxLanes];
     for (int l = 0; l < n; ++l) vectors[l] = sampling_vector(batch, first + l);
@@ -299,6 +307,9 @@ void GlslFragment::shade_lanes(FragmentBatch& batch, int first, int n) const {
         break;
       case IoKind::HelperInvocation:  // the lanes of a quad that cover no sample (tile_raster.cpp)
         for (int l = 0; l < n; ++l) inv.row(*v.slot, 0)[l] = batch.live[first + l] ? 0u : 1u;
+        break;
+      case IoKind::SampleMaskIn:  // one sample a pixel: bit 0 where it is covered (GL 4.6 15.2.2)
+        for (int l = 0; l < n; ++l) inv.row(*v.slot, 0)[l] = batch.live[first + l] ? 1u : 0u;
         break;
       case IoKind::PrimitiveId:
         if (primitive_id_varying_ >= 0)
@@ -393,7 +404,7 @@ FragmentOutput GlslFragment::shade(const FragmentInput& in) const {
 void run_vertex_stage(const StageProgram& sp, const std::vector<VertexAttribute>& attributes,
                       std::size_t first, std::size_t count, int instance, StageVertex* out,
                       const Parallel& parallel, const std::uint32_t* vertex_ids) {
-  const std::size_t step = std::size_t(std::clamp(sp.exe->limits().batch_lanes, 1, shader::kMaxLanes));
+  const std::size_t step = sp.side_effects ? 1 : std::size_t(std::clamp(sp.exe->limits().batch_lanes, 1, shader::kMaxLanes));
   const std::size_t batches = (count + step - 1) / step;
   auto run_batch = [&](std::size_t b) {
     const std::size_t start = b * step;

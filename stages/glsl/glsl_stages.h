@@ -77,6 +77,8 @@ class GlslFragment final : public FragmentProgram {
   bool writes_depth() const override { return frag_depth_ != nullptr; }
   bool reads_quads() const override { return sp_.exe->reads_quads(); }
   bool shades_whole_vectors() const override { return samples_textures_; }
+  bool has_side_effects() const override { return sp_.side_effects; }
+  bool early_fragment_tests() const override { return sp_.exe->module().modes.early_fragment_tests; }
 
  private:
   void shade_lanes(FragmentBatch& batch, int first, int n) const;  // lanes [first, first + n)

@@ -464,14 +464,24 @@ TEST(ShaderTestFile, StateAndListCommands) {
   EXPECT_EQ(command("deletelist").kind, K::DeleteList);
   EXPECT_EQ(command("link error").kind, K::LinkError);
   EXPECT_EQ(command("link success").kind, K::LinkSuccess);
+  EXPECT_EQ(command("ssbo 2 64").kind, K::SsboSize);
+  EXPECT_EQ(command("ssbo 2 64").numbers, (std::vector<double>{2, 64}));
+  const TestCommand sub = command("ssbo 0 subdata float 8 1.5 -2");
+  EXPECT_EQ(sub.kind, K::SsboSubData);
+  EXPECT_EQ(sub.numbers, (std::vector<double>{0, 8, 1.5, -2}));
+  const TestCommand probe = command("probe ssbo uint 1 12 >= 42");
+  EXPECT_EQ(probe.kind, K::ProbeSsbo);
+  EXPECT_EQ(probe.numbers, (std::vector<double>{1, 12, 42}));
+  EXPECT_EQ(probe.comparison, Comparison::GreaterEqual);
+  EXPECT_EQ(command("ssbo 0 subdata int64 0 1").kind, K::Unknown);  // 64-bit integers: not run
 }
 
 TEST(ShaderTestFile, UnknownCommandsKeepTheirText) {
   const ShaderTestFile f =
-      with_test("ssbo 0 32\n  # comment\n\nclear depth 1.0\nblend func GL_ONE GL_ZERO\n");
+      with_test("fb tex 2d 0\n  # comment\n\nclear depth 1.0\nblend func GL_ONE GL_ZERO\n");
   ASSERT_EQ(f.commands.size(), 3u);
   EXPECT_EQ(f.commands[0].kind, K::Unknown);
-  EXPECT_EQ(f.commands[0].text, "ssbo 0 32");
+  EXPECT_EQ(f.commands[0].text, "fb tex 2d 0");
   EXPECT_EQ(f.commands[0].line, 3);
   EXPECT_TRUE(f.commands[0].numbers.empty());
   EXPECT_EQ(f.commands[1].kind, K::Unknown);

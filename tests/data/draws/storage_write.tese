@@ -1,5 +1,6 @@
 #version 450 core
-// storage_lift.tese writing into its storage block, which tessref refuses.
+// storage_lift.tese writing into its storage block: each invocation stores its height in lift[0],
+// which the patches after it read back.
 layout(quads, equal_spacing, ccw) in;
 in vec3 c_position[];
 out vec3 e_normal;
@@ -31,6 +32,6 @@ void main() {
   }
   e_normal = normalize(cross(pu, pv));
   p.y += scale.x * lift[gl_PrimitiveID % lift.length()] + scale.y * float(lift.length());
-  lift[0] = p.y;  // a write: tessref refuses it (storage blocks run read-only)
+  lift[0] = p.y;
   gl_Position = u_view_proj * vec4(p, 1.0);
 }
