@@ -78,7 +78,9 @@ const std::set<std::string>& extensions() {
   return names;
 }
 
-bool compare(long long a, Comparison c, long long b) {
+// a OP b, for integers and floats alike.
+template <class T>
+bool compare_as(T a, Comparison c, T b) {
   switch (c) {
     case Comparison::Equal: return a == b;
     case Comparison::NotEqual: return a != b;
@@ -89,18 +91,7 @@ bool compare(long long a, Comparison c, long long b) {
   }
   return false;
 }
-
-bool compare_floats(double a, Comparison c, double b) {
-  switch (c) {
-    case Comparison::Equal: return a == b;
-    case Comparison::NotEqual: return a != b;
-    case Comparison::Less: return a < b;
-    case Comparison::LessEqual: return a <= b;
-    case Comparison::Greater: return a > b;
-    case Comparison::GreaterEqual: return a >= b;
-  }
-  return false;
-}
+bool compare(long long a, Comparison c, long long b) { return compare_as(a, c, b); }
 
 // One scalar of a storage buffer, stored as GL stores it (little-endian, float as IEEE single).
 void write_scalar(ScalarType t, double v, std::byte* at) {
@@ -650,7 +641,7 @@ class Runner {
         if (at + size > bytes.size()) fail(c, "probe past the buffer's " + std::to_string(bytes.size()) + " bytes");
         const double value = read_scalar(c.type.scalar, bytes.data() + at);
         const bool ok = c.type.scalar == ScalarType::Float || c.type.scalar == ScalarType::Double
-                            ? compare_floats(value, c.comparison, n[2])
+                            ? compare_as(value, c.comparison, n[2])
                             : compare(std::llround(value), c.comparison, std::llround(n[2]));
         if (!ok) fail(c, "the buffer holds " + std::to_string(value) + " at byte " + std::to_string(at));
         break;
