@@ -127,7 +127,16 @@ PixelInspectResult inspect_draws_pixel(const Scene& scene, int x, int y, const P
     primitives_in_draw = 0;
     state = redraw_state(scene.draws[d].raster);
   };
-  options.fragment_program = [&](const FragmentProgram& fs) { recorder.set_draw(fs, fragment_source(draw), draw); };
+  options.fragment_program = [&](const FragmentProgram& fs) {
+    // The tagged redraw shades the draw's fragments a second time: side effects would happen
+    // twice and the outputs that depend on them would differ from the draw's.
+    if (fs.has_side_effects())
+      throw InputError("draws." + std::to_string(draw) + ": inspect --pixel shades a draw's fragments again to record "
+                       "them, and this fragment shader writes memory (storage blocks, images or atomics), which "
+                       "would happen twice; tessref does not replay side effects (render --storage-buffers and "
+                       "--images show what they left)");
+    recorder.set_draw(fs, fragment_source(draw), draw);
+  };
   options.tess_surface = [&](const std::vector<TessDumpRecord>& records, const TriangleBatch& batch) {
     draw_triangles(tagged_triangles(records, batch), state, recorder, scratch, parallel);
   };

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
+#include "inspect/inspect_pixel.h"
 #include "mesh/mesh_source.h"
 #include "render/draw_scene.h"
 #include "render/render.h"
@@ -97,6 +98,18 @@ TEST(StorageBuffers, FragmentsAndEvaluationsWriteInOneOrder) {
     if (i > 0) EXPECT_LE(w.records[4 * (i - 1) + 2], w.records[4 * i + 2]);
   }
   EXPECT_EQ(w.records[4 * 86 + 3], 0.0f);  // past the last evaluation: as uploaded
+}
+
+// inspect --pixel shades the pixel's fragments again; with side effects that would run them twice.
+TEST(StorageBuffers, InspectPixelRefusesToReplaySideEffects) {
+  const Scene scene = load_scene(kScene);
+  try {
+    inspect_draws_pixel(scene, 5, 5, Parallel(1));
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("draws.0: inspect --pixel shades a draw's fragments again"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(StorageBuffers, SameBytesForEveryThreadCountAndBatchSize) {
