@@ -14,6 +14,7 @@
 #include "raster/rasterizer.h"
 #include "raster/setup.h"
 #include "raster/tile_raster.h"
+#include "raster/triage.h"
 
 namespace tessref {
 
@@ -64,6 +65,7 @@ struct Chunk {
   std::vector<std::uint32_t> tile_tris;   // indices into prims, grouped by tile, in order
   std::vector<std::uint32_t> single_tile; // per triangle: its only tile, or ~0 (scratch)
   std::vector<std::uint32_t> fill;        // per tile: next slot in tile_tris (scratch)
+  std::vector<raster::Triage> triage;     // per input primitive: what triage decided (scratch)
   RasterStats stats;
 };
 
@@ -73,18 +75,32 @@ struct TileGrid {
 };
 
 // setup_one(i, prims, varyings, pieces) sets up input primitive i (raster::setup_triangle and its
-// kin).
-template <class Setup, class SetupOne>
+// kin). triage(first, last, verdicts) may decide primitives [first, last) beforehand (raster/triage.h;
+// false: it decided nothing); those it culls or finds without fragments skip setup_one.
+template <class Setup, class SetupOne, class TriageRange>
 void setup_chunk(int num_varyings, std::size_t first, std::size_t last, const TileGrid& grid,
-                 const SetupOne& setup_one, Chunk<Setup>& chunk) {
+                 const SetupOne& setup_one, const TriageRange& triage, Chunk<Setup>& chunk) {
   chunk.prims.clear();
   chunk.varyings.clear();
   chunk.prims.reserve(last - first);
   chunk.varyings.reserve((last - first) * 3 * std::size_t(num_varyings));
   chunk.stats = RasterStats{};
+  chunk.triage.resize(last - first);
+  const bool triaged = triage(first, last, chunk.triage.data());
   for (std::size_t i = first; i < last; ++i) {
     int pieces = 0;
     ++chunk.stats.triangles_in;
+    if (triaged) {
+      const raster::Triage verdict = chunk.triage[i - first];
+      if (verdict == raster::Triage::kCulled) {
+        ++chunk.stats.triangles_culled;
+        continue;
+      }
+      if (verdict == raster::Triage::kNoFragment) {
+        ++chunk.stats.triangles_rasterized;
+        continue;
+      }
+    }
     switch (setup_one(i, chunk.prims, chunk.varyings, pieces)) {
       case raster::SetupOutcome::kClippedAway: ++chunk.stats.triangles_clipped_away; break;
       case raster::SetupOutcome::kCulled: ++chunk.stats.triangles_culled; break;
@@ -143,9 +159,11 @@ void setup_chunk(int num_varyings, std::size_t first, std::size_t last, const Ti
 
 // The draw of any primitive kind: Setup is what setup_one(i, prims, varyings, pieces) makes of
 // input primitive i of batch.
-template <class Setup, class Batch, class SetupOne>
+// triage(projected, vp, first, last, verdicts): setup_chunk's triage, with the projected vertices.
+template <class Setup, class Batch, class SetupOne, class TriageRange>
 RasterStats draw_batch(const Batch& batch, const RasterState& state, const FragmentProgram& fs,
-                       Framebuffer& fb, const Parallel& parallel, const SetupOne& setup_one) {
+                       Framebuffer& fb, const Parallel& parallel, const SetupOne& setup_one,
+                       const TriageRange& triage) {
   RasterStats total;
   const std::size_t n = batch.primitive_count();
   if (fb.width <= 0 || fb.height <= 0) {
@@ -211,6 +229,9 @@ RasterStats draw_batch(const Batch& batch, const RasterState& state, const Fragm
       setup_chunk(num_varyings, first, std::min(pass_last, first + kChunkTriangles), grid,
                   [&](std::size_t i, std::vector<Setup>& prims, std::vector<float>& varyings,
                       int& pieces) { return setup_one(projected.data(), vp, i, prims, varyings, pieces); },
+                  [&](std::size_t first, std::size_t last, raster::Triage* verdicts) {
+                    return triage(projected.data(), vp, first, last, verdicts);
+                  },
                   chunks[c]);
     });
 
@@ -265,6 +286,38 @@ RasterStats draw_batch(const Batch& batch, const RasterState& state, const Fragm
   return total;
 }
 
+
+// No triage: every primitive goes through setup.
+bool no_triage(const raster::ProjectedVertex*, const raster::Viewport&, std::size_t, std::size_t,
+               raster::Triage*) {
+  return false;
+}
+
+// Filled triangles: the triage of whole chunks from their corners (cull distances, tested per
+// triangle on its varyings, leave everything to setup).
+bool triage_filled(const TriangleBatch& batch, const RasterState& state,
+                   const raster::ProjectedVertex* projected, const raster::Viewport& vp,
+                   std::size_t first, std::size_t last, raster::Triage* verdicts) {
+  if (vp.cull_count > 0) return false;
+  thread_local raster::TriageCorners corners;
+  static_assert(kChunkTriangles <= raster::TriageCorners::kMax);
+  const int n = int(last - first);
+  for (int k = 0; k < n; ++k) {
+    std::uint32_t codes = 0;
+    for (int c = 0; c < 3; ++c) {
+      const raster::ProjectedVertex& p = projected[batch.vertex_index(first + std::size_t(k), c)];
+      corners.x[c][k] = p.x;
+      corners.y[c][k] = p.y;
+      codes |= p.code;
+    }
+    corners.codes[k] = codes;
+  }
+  const raster::TriageParams params{vp.width, vp.height, state.cull_front_faces,
+                                    state.cull_back_faces, state.front_face_cw};
+  raster::triage_triangles(corners, n, params, verdicts);
+  return true;
+}
+
 }  // namespace
 
 RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
@@ -276,6 +329,10 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
             std::vector<SetupTriangle>& tris, std::vector<float>& varyings, int& pieces) {
           return raster::setup_triangle(batch, i, projected, vp, raster::FaceRule::of(state), tris,
                                         varyings, pieces);
+        },
+        [&](const raster::ProjectedVertex* projected, const raster::Viewport& vp, std::size_t first,
+            std::size_t last, raster::Triage* verdicts) {
+          return triage_filled(batch, state, projected, vp, first, last, verdicts);
         });
   return draw_batch<SetupQuad>(
       batch, state, fs, fb, parallel,
@@ -283,7 +340,8 @@ RasterStats draw_triangles(const TriangleBatch& batch, const RasterState& state,
           std::vector<SetupQuad>& quads, std::vector<float>& varyings, int& pieces) {
         return raster::setup_triangle_outline(batch, i, projected, vp, raster::FaceRule::of(state),
                                               state.polygon_mode, quads, varyings, pieces);
-      });
+      },
+      no_triage);
 }
 
 RasterStats draw_lines(const LineBatch& batch, const RasterState& state, const FragmentProgram& fs,
@@ -293,7 +351,8 @@ RasterStats draw_lines(const LineBatch& batch, const RasterState& state, const F
       [&](const raster::ProjectedVertex* projected, const raster::Viewport& vp, std::size_t i,
           std::vector<SetupQuad>& quads, std::vector<float>& varyings, int& pieces) {
         return raster::setup_line(batch, i, projected, vp, quads, varyings, pieces);
-      });
+      },
+      no_triage);
 }
 
 RasterStats draw_points(const PointBatch& batch, const RasterState& state,
@@ -303,7 +362,8 @@ RasterStats draw_points(const PointBatch& batch, const RasterState& state,
       [&](const raster::ProjectedVertex* projected, const raster::Viewport& vp, std::size_t i,
           std::vector<SetupQuad>& quads, std::vector<float>& varyings, int& pieces) {
         return raster::setup_point(batch, i, projected, vp, quads, varyings, pieces);
-      });
+      },
+      no_triage);
 }
 
 }  // namespace tessref

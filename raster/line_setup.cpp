@@ -64,14 +64,11 @@ void common_fields(const LineVertex& a, const LineVertex& b, const Viewport& vp,
                    SetupTriangle& t) {
   const LineVertex* v[3] = {&a, &b, &a};
   for (int i = 0; i < 3; ++i) {
-    t.xf[i] = v[i]->x;
-    t.yf[i] = v[i]->y;
     t.x[i] = snap(v[i]->x);
     t.y[i] = snap(v[i]->y);
     t.z[i] = v[i]->z;
     t.inv_w[i] = v[i]->inv_w;
   }
-  t.area2 = 0;
   t.front_facing = true;  // GL: points and lines are front-facing
   t.small_mask = 0;
   t.b_x0 = a.x;

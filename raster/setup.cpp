@@ -104,7 +104,6 @@ struct FlatVaryings {
 void store_piece(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                  const PieceBox& box, const Viewport& vp, int num_varyings, FlatVaryings flat,
                  std::vector<SetupTriangle>& tris, std::vector<float>& varyings) {
-  const std::int64_t area2 = box.area2;
   const bool ccw = box.ccw;
   const int min_x = box.min_x, min_y = box.min_y, max_x = box.max_x, max_y = box.max_y;
   // Wind every triangle counter-clockwise so that the edge functions are positive inside.
@@ -114,8 +113,6 @@ void store_piece(const WindowVertex& a, const WindowVertex& b, const WindowVerte
   for (int i = 0; i < 3; ++i) {
     t.x[i] = v[i]->x;
     t.y[i] = v[i]->y;
-    t.xf[i] = v[i]->xf;
-    t.yf[i] = v[i]->yf;
     t.z[i] = v[i]->z;
     t.inv_w[i] = v[i]->inv_w;
   }
@@ -169,7 +166,6 @@ void store_piece(const WindowVertex& a, const WindowVertex& b, const WindowVerte
     t.z_lo = vp.vertex_z_lo();  // GL_DEPTH_CLAMP: gl_FragCoord.z unclamped, the depth test clamps
     t.z_hi = vp.vertex_z_hi();
   }
-  t.area2 = ccw ? area2 : -area2;
   t.front_facing = box.front;
   t.min_x = min_x;
   t.min_y = min_y;

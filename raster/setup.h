@@ -13,9 +13,9 @@ namespace tessref::raster {
 
 // A triangle ready to scan: wound counter-clockwise in window space (y up).
 struct SetupTriangle {
+  // Held per tile pass for every triangle that covers a pixel centre, so kept small: the scan
+  // needs no unsnapped positions (the interpolation planes below hold them) and no area.
   std::int32_t x[3], y[3];         // window coordinates, 24.8 fixed point
-  float xf[3], yf[3];              // the same before snapping
-  std::int64_t area2;              // twice the area, > 0, in 16.16 (units of 2^-16 pixel^2)
   float z[3];                      // window depth, already in the depth range
   // Barycentric weights of vertices 1 and 2 as planes through the unsnapped window positions
   // (where llvmpipe fits depth and varyings): b_k(x, y) = bk_dx (x - b_x0) + bk_dy (y - b_y0).

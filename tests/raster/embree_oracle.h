@@ -42,18 +42,12 @@ inline std::vector<raster::SetupTriangle> setup_all(const TriangleBatch& batch, 
 }
 
 // Depth of triangle t's plane at (px, py): the plane through its unsnapped window positions and
-// depths (where llvmpipe, and so the rasterizer, fits it), by barycentrics in double: an
-// independent evaluation of the same plane.
+// depths (where llvmpipe, and so the rasterizer, fits it; SetupTriangle keeps it as barycentric
+// planes), evaluated in double without the rasterizer's rounding to float and clamping.
 inline double exact_depth_at(const raster::SetupTriangle& t, double px, double py) {
-  double e[3];
-  for (int k = 0; k < 3; ++k) {
-    const int a = (k + 1) % 3, b = (k + 2) % 3;
-    const double ax = t.xf[a], ay = t.yf[a], bx = t.xf[b], by = t.yf[b];
-    e[k] = (bx - ax) * (py - ay) - (by - ay) * (px - ax);
-  }
-  const double sum = e[0] + e[1] + e[2];
-  if (sum == 0.0) return t.z[0];  // degenerate before snapping: the rasterizer uses z[0]
-  return (e[0] * t.z[0] + e[1] * t.z[1] + e[2] * t.z[2]) / sum;
+  const double dx = px - t.b_x0, dy = py - t.b_y0;
+  const double b1 = t.b1_dx * dx + t.b1_dy * dy, b2 = t.b2_dx * dx + t.b2_dy * dy;
+  return t.z[0] + b1 * (double(t.z[1]) - t.z[0]) + b2 * (double(t.z[2]) - t.z[0]);
 }
 inline double exact_depth(const raster::SetupTriangle& t, int x, int y) {
   return exact_depth_at(t, x + 0.5, y + 0.5);
