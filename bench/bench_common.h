@@ -16,7 +16,7 @@
 #include <memory>
 
 #include "glref/gl_context.h"
-#include "glref/malloc_tuning.h"
+#include "common/malloc_tuning.h"
 #endif
 
 namespace tessref::bench {
@@ -101,7 +101,7 @@ class RateReporter : public MedianReporter {
 template <typename Reporter>
 int run_benchmarks(int argc, char** argv) {
 #ifdef TESSREF_HAVE_GLREF
-  glref::keep_draw_buffers_off_mmap();  // before anything allocates
+  keep_draw_buffers_off_mmap();  // before anything allocates
 #endif
   benchmark::Initialize(&argc, argv);
   Reporter reporter;

@@ -19,7 +19,6 @@
 #ifdef TESSREF_HAVE_GLREF
 #include "glref/gl_context.h"
 #include "glref/gl_error.h"
-#include "glref/malloc_tuning.h"
 #include "glref/reference_capture.h"
 #endif
 
@@ -62,7 +61,6 @@ void capture_one(glref::GlContext& context, const std::string& scene_path, const
 
 void run(const CaptureArgs& a) {
 #ifdef TESSREF_HAVE_GLREF
-  glref::keep_draw_buffers_off_mmap();
   std::error_code ec;
   const bool campaign = !a.scene.empty() && std::filesystem::is_directory(a.scene, ec);
   if (!campaign && !a.shard.empty()) throw InputError("--shard needs a folder of scenes, not one scene");

@@ -8,9 +8,12 @@
 
 #include "cli/commands.h"
 #include "common/error.h"
+#include "common/malloc_tuning.h"
 #include "common/memory_budget.h"
 
 int main(int argc, char** argv) {
+  // Every command draws (render --repeat and verify redraw frames; capture runs llvmpipe too).
+  tessref::keep_draw_buffers_off_mmap();
   CLI::App app{"tessref: a CPU reference of the OpenGL 4.x tessellation pipeline"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("tessref ") + TESSREF_VERSION);

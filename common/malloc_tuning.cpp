@@ -1,8 +1,8 @@
-#include "glref/malloc_tuning.h"
+#include "common/malloc_tuning.h"
 
 #include <malloc.h>
 
-namespace tessref::glref {
+namespace tessref {
 
 void keep_draw_buffers_off_mmap() {
   mallopt(M_MMAP_THRESHOLD, 32 << 20);
@@ -10,4 +10,4 @@ void keep_draw_buffers_off_mmap() {
   mallopt(M_TOP_PAD, 64 << 20);
 }
 
-}  // namespace tessref::glref
+}  // namespace tessref

@@ -10,7 +10,7 @@
 
 #include "common/error.h"
 #include "glref/gl_context.h"
-#include "glref/malloc_tuning.h"
+#include "common/malloc_tuning.h"
 #include "glref/gl_error.h"
 #include "glref/levels_file.h"
 #include "glref/tess_capture.h"
@@ -68,7 +68,7 @@ void write_all(const std::string& s) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  tessref::glref::keep_draw_buffers_off_mmap();
+  tessref::keep_draw_buffers_off_mmap();
   CLI::App app{"tessref-glref: the real-GL reference runner (EGL + OpenGL 4.5 core)"};
   app.require_subcommand(1);
   std::string platform_name = "auto";

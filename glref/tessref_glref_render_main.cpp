@@ -10,7 +10,7 @@
 
 #include "common/error.h"
 #include "glref/gl_context.h"
-#include "glref/malloc_tuning.h"
+#include "common/malloc_tuning.h"
 #include "glref/gl_error.h"
 #include "glref/scene_renderer.h"
 #include "mesh/camera.h"
@@ -90,7 +90,7 @@ int run(const Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  tessref::glref::keep_draw_buffers_off_mmap();
+  tessref::keep_draw_buffers_off_mmap();
   CLI::App app{"tessref-glref-render: a tessref scene on the GL driver, with tessref's GLSL twins"};
   Options o;
   app.add_option("scene", o.scene, "scene file (as `tessref render`); without one, the default scene");
