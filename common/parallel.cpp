@@ -9,6 +9,7 @@
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
 
 // ThreadSanitizer (scripts/sanitize.sh tsan) and oneTBB: Debian's libtbb is not instrumented, so
@@ -112,6 +113,35 @@ void Parallel::for_each(std::size_t n, const std::function<void(std::size_t)>& f
   });
   happens_before_acquire(&shared.end);
   if (shared.error) std::rethrow_exception(shared.error);
+}
+
+void Parallel::run_beside(const std::function<void()>& first, const std::function<void()>& second) const {
+  struct Shared {
+    const std::function<void()>* fn[2];
+    std::exception_ptr error[2];
+    char start = 0, end = 0;  // TSan's synchronization objects, as in for_each
+  } shared{{&first, &second}, {}};
+  Shared* const state = &shared;
+  auto task = [state](int k) {  // runs to its end whatever the other does
+    Shared& s = *read_handed_over(state);
+    happens_before_acquire(&s.start);
+    try {
+      (*s.fn[k])();
+    } catch (...) {
+      s.error[k] = std::current_exception();
+    }
+    happens_before_release(&s.end);
+  };
+  happens_before_release(&shared.start);
+  if (threads_ == 1) {
+    task(0);
+    task(1);
+  } else {
+    arena_->execute([&task] { tbb::parallel_invoke([&task] { task(0); }, [&task] { task(1); }); });
+  }
+  happens_before_acquire(&shared.end);
+  for (const std::exception_ptr& e : shared.error)
+    if (e) std::rethrow_exception(e);
 }
 
 }  // namespace tessref

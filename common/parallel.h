@@ -21,6 +21,10 @@ class Parallel {
   // throw, the exception of the lowest such i is rethrown, whatever the thread count (calls past a
   // failed i are skipped once it failed), so errors are as deterministic as results.
   void for_each(std::size_t n, const std::function<void(std::size_t)>& fn) const;
+  // Runs first() and second() at the same time (each may call for_each; their tasks share the
+  // threads), or one after the other on one thread. They must not touch the same data. Both always
+  // run to their end; if both throw, first()'s exception is rethrown.
+  void run_beside(const std::function<void()>& first, const std::function<void()>& second) const;
 
  private:
   int threads_;

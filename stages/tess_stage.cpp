@@ -414,13 +414,30 @@ TessStats tessellate_chunks(const TessDrawInput& input, std::size_t chunk_patche
   const std::size_t total = input.patch_count();
   const std::size_t chunk = std::max<std::size_t>(1, chunk_patches);
   TessStats stats;
-  TriangleBatch batch;      // reused: its capacity stays at about one chunk
-  batch.indexed = true;
+  // Two batches, reused (their capacity stays at about one chunk): while one chunk is consumed
+  // (rasterized), the next is tessellated beside it, so that neither stage's last tasks leave
+  // threads idle. Not when the consumer reads what tessellation writes besides the batch (the
+  // dump records, the control check, isoline and point vertices).
+  TriangleBatch batches[2];
+  for (TriangleBatch& b : batches) b.indexed = true;
+  const TessLayout layout = tes.layout();
+  const bool overlap = parallel.threads() > 1 && !options.dump && !options.dump_emitted && !options.control_check &&
+                       layout.domain != TessDomain::Isolines && !layout.point_mode;
   ExecutorScratch scratch;  // likewise the per-patch and per-task buffers
-  for (std::size_t first = 0; first < total; first += chunk) {
+  auto tessellate_chunk = [&](std::size_t first, TriangleBatch& batch) {
     stats += tessellate_range(input, first, std::min(first + chunk, total), tcs, tes, options,
                               parallel, batch, scratch, /*overwrite=*/true);
-    consume(batch);
+  };
+  if (total == 0) return stats;
+  tessellate_chunk(0, batches[0]);
+  for (std::size_t first = 0, k = 0; first < total; first += chunk, k ^= 1) {
+    const std::size_t next = first + chunk;
+    if (next < total && overlap)
+      parallel.run_beside([&] { consume(batches[k]); }, [&] { tessellate_chunk(next, batches[k ^ 1]); });
+    else {
+      consume(batches[k]);
+      if (next < total) tessellate_chunk(next, batches[k ^ 1]);
+    }
   }
   return stats;
 }

@@ -195,9 +195,11 @@ TessStats tessellate(const TessDrawInput& input, std::size_t first_patch, std::s
                      const TessOptions& options, const Parallel& parallel, TriangleBatch& out);
 
 // Tessellates the whole draw chunk by chunk (chunk_patches patches at a time) and hands each chunk's
-// batch to consume (e.g. draw_triangles) before producing the next, so memory is bounded by the chunk
-// (its buffers are reused from chunk to chunk). Calling draw_triangles on each chunk in order equals
-// one draw of the whole batch. Typical use by the pipeline:
+// batch to consume (e.g. draw_triangles), in order, so memory is bounded by two chunks (their
+// buffers are reused from chunk to chunk). With several threads the next chunk is tessellated while
+// consume runs (Parallel::run_beside), unless options ask for dump records, a control check or
+// isoline and point vertices, which consume reads. Calling draw_triangles on each chunk in order
+// equals one draw of the whole batch. Typical use by the pipeline:
 //
 //   PnTcs tcs;  tcs.normal_mode = ...;  tcs.levels = TessLevelSettings::uniform(outer, inner);
 //   PnTes tes;  tes.normal_mode = tcs.normal_mode;  tes.spacing = ...;  tes.view_proj = vp;

@@ -55,5 +55,42 @@ TEST(Parallel, TheLowestFailedIndexIsRethrownWhateverTheThreadCount) {
   }
 }
 
+TEST(Parallel, RunBesideRunsBothWithTheirOwnForEachAndSeesTheirWork) {
+  for (int threads : {1, 2, 8}) {
+    const Parallel parallel(threads);
+    std::vector<int> a(3000, 0), b(2000, 0);
+    parallel.run_beside([&] { parallel.for_each(a.size(), [&](std::size_t i) { a[i] = int(i) + 1; }); },
+                        [&] { parallel.for_each(b.size(), [&](std::size_t i) { b[i] = 2 * int(i); }); });
+    for (std::size_t i = 0; i < a.size(); ++i) ASSERT_EQ(a[i], int(i) + 1) << threads << " threads";
+    for (std::size_t i = 0; i < b.size(); ++i) ASSERT_EQ(b[i], 2 * int(i)) << threads << " threads";
+  }
+}
+
+TEST(Parallel, RunBesideRethrowsTheFirstsExceptionWhenBothThrow) {
+  for (int threads : {1, 2, 8}) {
+    const Parallel parallel(threads);
+    for (int repeat = 0; repeat < 20; ++repeat) {
+      bool second_ran = false;
+      try {
+        parallel.run_beside([] { throw std::runtime_error("first"); },
+                            [&] {
+                              second_ran = true;
+                              throw std::runtime_error("second");
+                            });
+        ADD_FAILURE() << "no exception";
+      } catch (const std::runtime_error& e) {
+        EXPECT_EQ(std::string(e.what()), "first") << threads << " threads";
+      }
+      EXPECT_TRUE(second_ran) << threads << " threads";  // both always run
+      try {
+        parallel.run_beside([] {}, [] { throw std::runtime_error("second"); });
+        ADD_FAILURE() << "no exception";
+      } catch (const std::runtime_error& e) {
+        EXPECT_EQ(std::string(e.what()), "second") << threads << " threads";
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tessref
