@@ -9,7 +9,9 @@
 //             with implicit LOD; llvmpipe runs the same GLSL files.
 // What one iteration includes:
 //   tessref:  render_scene with all hardware threads: framebuffer clear, vertex shader,
-//             TCS/TPG/TES, rasterization and Phong shading. Not the mesh, not image files.
+//             TCS/TPG/TES, rasterization and Phong shading, into RGBA32F colour and float depth
+//             (no normals target, as `tessref render` without --normals). Not the mesh, not
+//             image files.
 //   llvmpipe, fair (BM_LlvmpipeFrame/<scene>/fair, the one the ratio uses): llvmpipe at its best
 //             for the same 8-bit image: the GLSL twins compiled for the scene (light count,
 //             normal mode and switches as constants, glsl_rewrite.h specialize_uniforms), one RGBA8
@@ -119,8 +121,10 @@ void tessref_frame(benchmark::State& state, std::size_t which) {
   if (!f.error.empty()) return state.SkipWithError(f.error.c_str());
   DrawStats stats;
   Framebuffer fb;  // kept from frame to frame, as llvmpipe keeps its render target
+  DrawOptions options;
+  options.normals = false;  // as `tessref render` without --normals (and llvmpipe's fair target)
   for (auto _ : state) {
-    stats = render_scene(f.scene, f.mesh, parallel(), fb);
+    stats = render_scene(f.scene, f.mesh, parallel(), fb, options);
     benchmark::DoNotOptimize(fb.color.data());
   }
   state.SetLabel(specs()[which].name);

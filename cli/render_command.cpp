@@ -302,6 +302,7 @@ void run_render(const RenderOptions& o) {
   try {
     for (int i = 0; i < o.repeat; ++i) {
       DrawOptions options;
+      options.normals = !o.normals.empty();
       options.check = checker.get();
       options.progress = [&](double f) { progress.update((i + f) / o.repeat); };
       if (dump && i == 0)

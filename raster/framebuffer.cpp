@@ -20,11 +20,11 @@ void Framebuffer::clear(glm::vec4 clear_color) {
   for (auto& b : more) std::fill(b.begin(), b.end(), glm::vec4(0.0f));
 }
 
-void Framebuffer::reset(int w, int h, glm::vec4 clear_color, const Parallel& parallel) {
+void Framebuffer::reset(int w, int h, glm::vec4 clear_color, const Parallel& parallel, bool with_aux) {
   w = w > 0 ? w : 0;
   h = h > 0 ? h : 0;
   const std::size_t n = std::size_t(w) * std::size_t(h);
-  if (w != width || h != height || color.size() != n || depth.size() != n || aux.size() != n) {
+  if (w != width || h != height || color.size() != n || depth.size() != n) {
     const int buffers = draw_buffers();
     const auto formats = color_format;
     const DepthFormat depth_kind = depth_format;
@@ -32,8 +32,11 @@ void Framebuffer::reset(int w, int h, glm::vec4 clear_color, const Parallel& par
     set_draw_buffers(std::max(buffers, 2));
     color_format = formats;
     depth_format = depth_kind;
+    if (!with_aux) aux.clear();
     return;
   }
+  if (!with_aux) aux.clear();                    // capacity kept
+  else if (aux.size() != n) aux.resize(n);       // cleared below
   constexpr std::size_t kPixelsPerTask = 1 << 16;
   parallel.for_each((n + kPixelsPerTask - 1) / kPixelsPerTask, [&](std::size_t t) {
     const std::size_t a = t * kPixelsPerTask, b = std::min(n, a + kPixelsPerTask);

@@ -33,8 +33,9 @@ struct Framebuffer {
   void clear(glm::vec4 clear_color);
   // Makes the framebuffer w x h and clears it, reusing its memory when the size is unchanged (a
   // frame drawn again then pays no allocation and no page faults), on all of parallel's threads.
-  // Draw buffers 2 to 7 and the formats are kept.
-  void reset(int w, int h, glm::vec4 clear_color, const Parallel& parallel);
+  // Draw buffers 2 to 7 and the formats are kept. with_aux false: draw buffer 1 is dropped (its
+  // memory kept for a later frame that has it), so it is neither cleared nor written.
+  void reset(int w, int h, glm::vec4 clear_color, const Parallel& parallel, bool with_aux = true);
   // Gives the framebuffer draw buffers 0 .. n - 1 (n in 1..8; buffers from 2 on cleared to 0, the
   // others dropped).
   void set_draw_buffers(int n);

@@ -51,6 +51,10 @@ struct DrawOptions {
   // Tessellation: patches per chunk (each chunk is tessellated, then rasterized, then dropped);
   // 0 sizes chunks to about 128k triangles from the levels. The image never depends on it.
   std::size_t tess_chunk_patches = 0;
+  // A mesh scene (not a scene of draws): whether draw buffer 1, the world normals (location 1), is
+  // kept. false: the framebuffer has colour and depth only (location 1 is neither cleared nor
+  // written, as GL drops outputs without a draw buffer), for a caller that does not read it.
+  bool normals = true;
   // Tessellation: receives every TES invocation's record (patch id, gl_TessCoord, position,
   // normal), chunk by chunk in patch order, on the calling thread.
   std::function<void(const std::vector<TessDumpRecord>&)> dump_tess;

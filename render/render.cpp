@@ -59,7 +59,7 @@ DrawStats render_scene(const Scene& scene, const Mesh& mesh, const Parallel& par
   }
   if (scene.shaders.program != ShaderProgram::Builtin) {
     const SceneProgram program = build_scene_program(scene);
-    fb.reset(scene.width, scene.height, scene.background, parallel);
+    fb.reset(scene.width, scene.height, scene.background, parallel, options.normals);
     DrawStats stats = draw_glsl_scene(scene, *program.program, mesh, fb, parallel, options);
     stats.warnings.insert(stats.warnings.end(), program.warnings.begin(), program.warnings.end());
     return stats;
@@ -72,7 +72,7 @@ DrawStats render_scene(const Scene& scene, const Mesh& mesh, const Parallel& par
   const BuiltinFragmentProgram program = builtin_fragment_program(scene);
   const FragmentProgram& fs = program.get();
 
-  fb.reset(scene.width, scene.height, scene.background, parallel);
+  fb.reset(scene.width, scene.height, scene.background, parallel, options.normals);
   return draw_mesh(mesh, vs, scene.tessellation, state, fs, fb, parallel, options);
 }
 

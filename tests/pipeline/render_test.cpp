@@ -78,6 +78,48 @@ TEST(Render, BatchSizeDoesNotChangeTheImage) {
   EXPECT_TRUE(whole.framebuffer.depth == pieces.framebuffer.depth);
 }
 
+// Small chunks: with several threads each chunk is tessellated while the one before it is drawn
+// (tessellate_chunks' overlap); the image is the one-chunk, one-thread image.
+TEST(Render, OverlappedChunksGiveTheSerialImage) {
+  const Scene scene = load_scene("", {"image.width=256", "image.height=256"});
+  std::vector<std::string> warnings;
+  const Mesh mesh = build_mesh(scene.mesh, warnings);
+  const RenderResult serial = render_scene(scene, mesh, Parallel(1), DrawOptions{});
+  for (int threads : {2, 8}) {
+    DrawOptions options;
+    options.tess_chunk_patches = 7;  // 37 chunks of the 256 patches
+    const RenderResult r = render_scene(scene, mesh, Parallel(threads), options);
+    EXPECT_EQ(r.stats.triangles_generated, serial.stats.triangles_generated);
+    EXPECT_EQ(r.stats.raster.fragments_shaded, serial.stats.raster.fragments_shaded);
+    EXPECT_TRUE(r.framebuffer.color == serial.framebuffer.color) << threads << " threads";
+    EXPECT_TRUE(r.framebuffer.depth == serial.framebuffer.depth) << threads << " threads";
+    EXPECT_TRUE(r.framebuffer.aux == serial.framebuffer.aux) << threads << " threads";
+  }
+}
+
+// Without the normals target (`tessref render` without --normals) the colour and depth are the
+// same, in a framebuffer reused with and without it.
+TEST(Render, TheNormalsTargetIsDroppedWhenNotAskedFor) {
+  const Scene scene = load_scene("", {"image.width=256", "image.height=256"});
+  std::vector<std::string> warnings;
+  const Mesh mesh = build_mesh(scene.mesh, warnings);
+  const Parallel parallel(2);
+  Framebuffer with, fb;
+  render_scene(scene, mesh, parallel, with, DrawOptions{});
+  ASSERT_EQ(with.aux.size(), 256u * 256u);
+  EXPECT_TRUE(std::any_of(with.aux.begin(), with.aux.end(), [](const glm::vec4& n) { return n != glm::vec4(0.0f); }));
+  for (bool normals : {false, true, false}) {
+    DrawOptions options;
+    options.normals = normals;
+    render_scene(scene, mesh, parallel, fb, options);
+    EXPECT_TRUE(fb.color == with.color) << normals;
+    EXPECT_TRUE(fb.depth == with.depth) << normals;
+    if (normals) EXPECT_TRUE(fb.aux == with.aux);
+    else EXPECT_TRUE(fb.aux.empty());
+    EXPECT_EQ(fb.draw_buffers(), normals ? 2 : 1);
+  }
+}
+
 TEST(Render, StatsOfTheDefaultScene) {
   const RenderResult r = render(load_scene(""), 2);
   EXPECT_EQ(r.stats.triangles_in, 256u);  // the 16 x 8 torus
