@@ -136,7 +136,7 @@ TessGrain BuiltinProgram::tess_grain() const {
       1, make_pattern(programs_.tes().layout(), levels, TessProfile::llvmpipe(), settings_.tessellator)
              ->points.primitive_count());
   return {std::clamp<std::size_t>(kChunkTriangles / per_patch, 1, 4096),
-          std::clamp<std::size_t>(kTaskTriangles / per_patch, 1, 64)};
+          std::clamp<std::size_t>(kTaskTriangles / per_patch, 1, 64), /*overlap_chunks=*/true};
 }
 
 std::vector<VertexAttribute> mesh_attributes(const Mesh& mesh) {

@@ -189,6 +189,7 @@ DrawStats run_draw(const DrawProgram& program, const std::vector<VertexAttribute
   const TessGrain grain = program.tess_grain();
   tess_options.patches_per_task = grain.task_patches;
   tess_options.tessellator = program.tessellator();
+  tess_options.overlap_chunks = grain.overlap_chunks;
   std::vector<std::uint32_t> emitted;  // isolines and point mode, into records
   if (options.wants_tess_records()) tess_options.dump = &records;
   if (options.wants_emitted()) tess_options.dump_emitted = &emitted;

@@ -421,7 +421,7 @@ TessStats tessellate_chunks(const TessDrawInput& input, std::size_t chunk_patche
   TriangleBatch batches[2];
   for (TriangleBatch& b : batches) b.indexed = true;
   const TessLayout layout = tes.layout();
-  const bool overlap = parallel.threads() > 1 && !options.dump && !options.dump_emitted && !options.control_check &&
+  const bool overlap = options.overlap_chunks && parallel.threads() > 1 && !options.dump && !options.dump_emitted && !options.control_check &&
                        layout.domain != TessDomain::Isolines && !layout.point_mode;
   ExecutorScratch scratch;  // likewise the per-patch and per-task buffers
   auto tessellate_chunk = [&](std::size_t first, TriangleBatch& batch) {

@@ -180,6 +180,8 @@ struct TessOptions {
   // Optional (`render --check`): each patch's control shader output, in patch order on the calling
   // thread, after the control stage of each range and before its evaluation; may throw to stop.
   std::function<void(std::size_t patch, const PatchOutput& out)> control_check;
+  // tessellate_chunks: tessellate the next chunk while consume draws this one (TessGrain).
+  bool overlap_chunks = false;
 };
 
 // Runs TCS -> generate_tessellation -> TES for patches [first_patch, last_patch) of the draw and
@@ -196,9 +198,9 @@ TessStats tessellate(const TessDrawInput& input, std::size_t first_patch, std::s
 
 // Tessellates the whole draw chunk by chunk (chunk_patches patches at a time) and hands each chunk's
 // batch to consume (e.g. draw_triangles), in order, so memory is bounded by two chunks (their
-// buffers are reused from chunk to chunk). With several threads the next chunk is tessellated while
-// consume runs (Parallel::run_beside), unless options ask for dump records, a control check or
-// isoline and point vertices, which consume reads. Calling draw_triangles on each chunk in order
+// buffers are reused from chunk to chunk). With options.overlap_chunks and several threads the next
+// chunk is tessellated while consume runs (Parallel::run_beside), unless options ask for dump
+// records, a control check or isoline and point vertices, which consume reads. Calling draw_triangles on each chunk in order
 // equals one draw of the whole batch. Typical use by the pipeline:
 //
 //   PnTcs tcs;  tcs.normal_mode = ...;  tcs.levels = TessLevelSettings::uniform(outer, inner);
