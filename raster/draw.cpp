@@ -286,7 +286,6 @@ RasterStats draw_batch(const Batch& batch, const RasterState& state, const Fragm
   return total;
 }
 
-
 // No triage: every primitive goes through setup.
 bool no_triage(const raster::ProjectedVertex*, const raster::Viewport&, std::size_t, std::size_t,
                raster::Triage*) {

@@ -35,14 +35,14 @@ void Framebuffer::reset(int w, int h, glm::vec4 clear_color, const Parallel& par
     if (!with_aux) aux.clear();
     return;
   }
-  if (!with_aux) aux.clear();                    // capacity kept
-  else if (aux.size() != n) aux.resize(n);       // cleared below
+  if (!with_aux) aux.clear();               // capacity kept
+  else if (aux.size() != n) aux.resize(n);  // cleared below
   constexpr std::size_t kPixelsPerTask = 1 << 16;
   parallel.for_each((n + kPixelsPerTask - 1) / kPixelsPerTask, [&](std::size_t t) {
     const std::size_t a = t * kPixelsPerTask, b = std::min(n, a + kPixelsPerTask);
     std::fill(color.begin() + a, color.begin() + b, clear_color);
     std::fill(depth.begin() + a, depth.begin() + b, 1.0f);
-    std::fill(aux.begin() + a, aux.begin() + b, glm::vec4(0.0f));
+    if (!aux.empty()) std::fill(aux.begin() + a, aux.begin() + b, glm::vec4(0.0f));
     for (auto& m : more)
       if (!m.empty()) std::fill(m.begin() + a, m.begin() + b, glm::vec4(0.0f));
   });
