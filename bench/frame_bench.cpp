@@ -116,13 +116,20 @@ const Parallel& parallel() {
   return p;
 }
 
+// How tessref draws a frame here, timed and checked: as `tessref render` without --normals (and
+// as llvmpipe's fair target, which has no normals target either).
+DrawOptions frame_options() {
+  DrawOptions options;
+  options.normals = false;
+  return options;
+}
+
 void tessref_frame(benchmark::State& state, std::size_t which) {
   const Frame& f = frame(which);
   if (!f.error.empty()) return state.SkipWithError(f.error.c_str());
   DrawStats stats;
   Framebuffer fb;  // kept from frame to frame, as llvmpipe keeps its render target
-  DrawOptions options;
-  options.normals = false;  // as `tessref render` without --normals (and llvmpipe's fair target)
+  const DrawOptions options = frame_options();
   for (auto _ : state) {
     stats = render_scene(f.scene, f.mesh, parallel(), fb, options);
     benchmark::DoNotOptimize(fb.color.data());
@@ -155,7 +162,7 @@ void llvmpipe_frame(benchmark::State& state, std::size_t which, bool fair) {
   if (fair) {
     renderer.draw();
     Framebuffer fb;
-    render_scene(f.scene, f.mesh, parallel(), fb);
+    render_scene(f.scene, f.mesh, parallel(), fb, frame_options());  // the timed frame's setup
     // tessref's frame as its PNG holds it against llvmpipe's RGBA8 read-back.
     const ImageComparison check = compare_images(
         to_rgb8(fb), glref::rgb8_top_first(renderer.read_back_rgba8(), fb.width, fb.height),

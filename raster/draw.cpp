@@ -298,22 +298,11 @@ bool triage_filled(const TriangleBatch& batch, const RasterState& state,
                    const raster::ProjectedVertex* projected, const raster::Viewport& vp,
                    std::size_t first, std::size_t last, raster::Triage* verdicts) {
   if (vp.cull_count > 0) return false;
-  thread_local raster::TriageCorners corners;
   static_assert(kChunkTriangles <= raster::TriageCorners::kMax);
-  const int n = int(last - first);
-  for (int k = 0; k < n; ++k) {
-    std::uint32_t codes = 0;
-    for (int c = 0; c < 3; ++c) {
-      const raster::ProjectedVertex& p = projected[batch.vertex_index(first + std::size_t(k), c)];
-      corners.x[c][k] = p.x;
-      corners.y[c][k] = p.y;
-      codes |= p.code;
-    }
-    corners.codes[k] = codes;
-  }
   const raster::TriageParams params{vp.width, vp.height, state.cull_front_faces,
                                     state.cull_back_faces, state.front_face_cw};
-  raster::triage_triangles(corners, n, params, verdicts);
+  raster::triage_triangles(projected, batch.indexed ? batch.indices.data() : nullptr, first,
+                           int(last - first), params, verdicts);
   return true;
 }
 

@@ -8,6 +8,7 @@
 #include "raster/clip.h"
 #include "raster/project_kernel.h"
 #include "raster/rasterizer.h"
+#include "raster/triage.h"
 
 namespace tessref::raster {
 
@@ -98,8 +99,6 @@ struct FaceRule {
 
 // What became of one input triangle.
 enum class SetupOutcome { kClippedAway, kCulled, kRasterized };
-
-inline constexpr int kSmallTrianglePixels = 8;
 
 // Projects every vertex (ProjectedVertex, project_kernel.h): the AVX2 + FMA kernel where the CPU
 // has it and simd_path() is AVX2, else the portable code; the same bits either way.

@@ -1,5 +1,6 @@
 #include "raster/triage.h"
 
+#include "common/fixed_point.h"
 #include "common/simd.h"
 
 namespace tessref::raster {
@@ -9,10 +10,7 @@ namespace tessref::raster {
 // the fill rule included).
 void triage_kernel_scalar(const TriageCorners& corners, int first, int n, const TriageParams& params,
                           std::uint8_t* out) {
-  // Corners within this many 24.8 units of each other keep every product below in 32 bits
-  // (differences < 2^12 and < 2^13 + 2^8 to a centre: products < 2^26).
-  constexpr std::uint32_t kMaxExtent = 4096;
-  constexpr std::int32_t kSmallPixels = 8;  // kSmallTrianglePixels (setup.h)
+  constexpr auto kMaxExtent = std::uint32_t(kTriageMaxExtent);
   const std::int32_t last_x = params.width - 1, last_y = params.height - 1;
   const bool front_cw = params.front_cw, cull_front = params.cull_front, cull_back = params.cull_back;
   for (int i = first; i < n; ++i) {
@@ -42,7 +40,7 @@ void triage_kernel_scalar(const TriageCorners& corners, int first, int n, const 
     const bool empty = (bx0 > bx1) | (by0 > by1);
     const std::int32_t bw = bx1 - bx0 + 1, bh = by1 - by0 + 1;
     const std::int32_t cells = empty ? 0 : bw * bh;
-    const bool small = !empty & (cells <= kSmallPixels);
+    const bool small = !empty & (cells <= kSmallTrianglePixels);
     // Wound counter-clockwise as store_piece winds it: (v0, v1, v2) = (a, b, c) or (a, c, b).
     const std::int32_t v1x = ccw ? x1 : x2, v1y = ccw ? y1 : y2;
     const std::int32_t v2x = ccw ? x2 : x1, v2y = ccw ? y2 : y1;
@@ -51,11 +49,10 @@ void triage_kernel_scalar(const TriageCorners& corners, int first, int n, const 
     const std::int32_t qx[3] = {v2x, x0, v1x}, qy[3] = {v2y, y0, v1y};
     std::int32_t dx[3], dy[3], bias[3], row_e[3];
     const std::int32_t cx0 = bx0 * 256 + 128, cy0 = by0 * 256 + 128;
-#pragma GCC unroll 3
     for (int e = 0; e < 3; ++e) {
       dx[e] = qx[e] - px[e];
       dy[e] = qy[e] - py[e];
-      bias[e] = ((dy[e] < 0) | ((dy[e] == 0) & (dx[e] > 0))) ? 0 : -1;  // fixed::is_top_left_edge
+      bias[e] = fixed::is_top_left_edge(dx[e], dy[e]) ? 0 : -1;
       // E at the box's first centre (only read for small boxes, whose centres lie within 256 of
       // the corners' extent).
       row_e[e] = small ? dx[e] * (cy0 - py[e]) - dy[e] * (cx0 - px[e]) + bias[e] : 0;
@@ -64,8 +61,7 @@ void triage_kernel_scalar(const TriageCorners& corners, int first, int n, const 
     bool covers = false;
     std::int32_t col = 0;
     std::int32_t e0 = row_e[0], e1 = row_e[1], e2 = row_e[2];
-#pragma GCC unroll 8
-    for (std::int32_t k = 0; k < kSmallPixels; ++k) {
+    for (std::int32_t k = 0; k < kSmallTrianglePixels; ++k) {
       covers = covers | ((k < cells) & ((e0 | e1 | e2) >= 0));
       const bool wrap = col + 1 == bw;
       // Next centre: one to the right, or back to the row's start one row up.
@@ -80,7 +76,20 @@ void triage_kernel_scalar(const TriageCorners& corners, int first, int n, const 
   }
 }
 
-void triage_triangles(const TriageCorners& corners, int n, const TriageParams& params, Triage* out) {
+void triage_triangles(const ProjectedVertex* projected, const std::uint32_t* indices, std::size_t first,
+                      int n, const TriageParams& params, Triage* out) {
+  thread_local TriageCorners corners;
+  for (int k = 0; k < n; ++k) {
+    std::uint32_t codes = 0;
+    for (int c = 0; c < 3; ++c) {
+      const std::size_t corner = 3 * (first + std::size_t(k)) + std::size_t(c);
+      const ProjectedVertex& p = projected[indices ? indices[corner] : corner];
+      corners.x[c][k] = p.x;
+      corners.y[c][k] = p.y;
+      codes |= p.code;
+    }
+    corners.codes[k] = codes;
+  }
   static_assert(sizeof(Triage) == 1);
   auto* verdicts = reinterpret_cast<std::uint8_t*>(out);
   if (simd_path() == SimdPath::Avx2) triage_kernel_avx2(corners, n, params, verdicts);

@@ -10,6 +10,13 @@
 
 namespace tessref::raster {
 
+// Small triangles: a bounding box of at most this many pixels has its covered centres found by
+// setup (SetupTriangle::small_mask) and here.
+inline constexpr int kSmallTrianglePixels = 8;
+// Corners within this many 24.8 units of each other keep every product of the triage in 32 bits
+// (differences < 2^12 and < 2^13 + 2^8 to a centre: products < 2^26); farther apart: kSetUp.
+inline constexpr std::int32_t kTriageMaxExtent = 4096;
+
 // The verdict for one triangle. kSetUp: setup_triangle decides (clipping, large or covering
 // triangles, everything outside the fast path's bounds). The other two are exactly what
 // setup_triangle would conclude: kCulled (zero snapped area or a culled face: SetupOutcome::kCulled)
@@ -30,13 +37,15 @@ struct TriageParams {
   bool cull_front, cull_back, front_cw;  // FaceRule
 };
 
-// Verdicts for the n <= TriageCorners::kMax triangles of `corners` into out[0 .. n). The same
-// verdicts on every path (integer arithmetic only); the AVX2 build is used where the CPU has it
-// and simd_path() is AVX2.
-void triage_triangles(const TriageCorners& corners, int n, const TriageParams& params, Triage* out);
+// Verdicts for triangles first .. first + n - 1 (n <= TriageCorners::kMax) of a batch whose
+// vertices were projected into `projected`: corner c of triangle i is projected[indices[3i + c]],
+// or projected[3i + c] when indices is null. The same verdicts on every path (integer arithmetic
+// only); the AVX2 kernel is used where the CPU has it and simd_path() is AVX2.
+void triage_triangles(const ProjectedVertex* projected, const std::uint32_t* indices, std::size_t first,
+                      int n, const TriageParams& params, Triage* out);
 
-// The two kernels, for tests: the plain one writes out[first .. n), the AVX2 one (CPUs with AVX2
-// only) out[0 .. n).
+// The two kernels: the plain one writes out[first .. n), the AVX2 one (CPUs with AVX2 only)
+// out[0 .. n).
 void triage_kernel_scalar(const TriageCorners& corners, int first, int n, const TriageParams& params,
                           std::uint8_t* out);
 void triage_kernel_avx2(const TriageCorners& corners, int n, const TriageParams& params,

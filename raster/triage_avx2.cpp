@@ -25,10 +25,10 @@ void triage_kernel_avx2(const TriageCorners& corners, int n, const TriageParams&
                         std::uint8_t* out) {
   const __m256i zero = _mm256_setzero_si256(), ones = set1(-1);
   const __m256i last_x = set1(params.width - 1), last_y = set1(params.height - 1);
-  const __m256i extent_limit = set1(4096);  // kMaxExtent
+  const __m256i extent_limit = set1(kTriageMaxExtent);
   const __m256i front_cw = set1(params.front_cw ? -1 : 0);
   const __m256i cull_front = set1(params.cull_front ? -1 : 0), cull_back = set1(params.cull_back ? -1 : 0);
-  const __m256i c128 = set1(128), c127 = set1(127), c256 = set1(256), c8 = set1(8);
+  const __m256i c128 = set1(128), c127 = set1(127), c256 = set1(256), small_pixels = set1(kSmallTrianglePixels);
   int i = 0;
   for (; i + 8 <= n; i += 8) {
     __m256i x0 = load(&corners.x[0][i]), x1 = load(&corners.x[1][i]), x2 = load(&corners.x[2][i]);
@@ -36,7 +36,7 @@ void triage_kernel_avx2(const TriageCorners& corners, int n, const TriageParams&
     const __m256i codes = load(reinterpret_cast<const std::int32_t*>(&corners.codes[i]));
     const __m256i min_x = min3(x0, x1, x2), max_x = max3(x0, x1, x2);
     const __m256i min_y = min3(y0, y1, y2), max_y = max3(y0, y1, y2);
-    // Unsigned max - min < 4096: as signed, (max - min) in [0, 4096).
+    // Unsigned max - min < kTriageMaxExtent: as signed, (max - min) in [0, kTriageMaxExtent).
     const __m256i ext_x = sub(max_x, min_x), ext_y = sub(max_y, min_y);
     const __m256i in_x = _mm256_andnot_si256(gt(zero, ext_x), gt(extent_limit, ext_x));
     const __m256i in_y = _mm256_andnot_si256(gt(zero, ext_y), gt(extent_limit, ext_y));
@@ -56,9 +56,9 @@ void triage_kernel_avx2(const TriageCorners& corners, int n, const TriageParams&
     const __m256i bx1 = _mm256_min_epi32(_mm256_srai_epi32(sub(hi_x, c128), 8), last_x);
     const __m256i by1 = _mm256_min_epi32(_mm256_srai_epi32(sub(hi_y, c128), 8), last_y);
     const __m256i empty = _mm256_or_si256(gt(bx0, bx1), gt(by0, by1));
-    const __m256i bw = sub(bx1, _mm256_sub_epi32(bx0, set1(1)));
+    const __m256i bw = sub(bx1, sub(bx0, set1(1)));
     const __m256i cells = _mm256_andnot_si256(empty, mul(bw, sub(by1, sub(by0, set1(1)))));
-    const __m256i small = _mm256_andnot_si256(empty, _mm256_xor_si256(gt(cells, c8), ones));
+    const __m256i small = _mm256_andnot_si256(empty, _mm256_xor_si256(gt(cells, small_pixels), ones));
     const __m256i v1x = select(ccw, x1, x2), v1y = select(ccw, y1, y2);
     const __m256i v2x = select(ccw, x2, x1), v2y = select(ccw, y2, y1);
     const __m256i px[3] = {v1x, v2x, x0}, py[3] = {v1y, v2y, y0};
@@ -74,7 +74,7 @@ void triage_kernel_avx2(const TriageCorners& corners, int n, const TriageParams&
       e[k] = _mm256_and_si256(small, add(sub(mul(dx[k], sub(cy0, py[k])), mul(dy[k], sub(cx0, px[k]))), bias));
     }
     __m256i covers = zero, col = zero;
-    for (int k = 0; k < 8; ++k) {
+    for (int k = 0; k < kSmallTrianglePixels; ++k) {
       const __m256i outside = gt(zero, _mm256_or_si256(_mm256_or_si256(e[0], e[1]), e[2]));  // a sign bit
       covers = _mm256_or_si256(covers, _mm256_andnot_si256(outside, gt(cells, set1(k))));
       const __m256i wrap = eq(add(col, set1(1)), bw);

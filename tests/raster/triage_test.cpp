@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 #include <random>
 #include <vector>
 
@@ -55,23 +54,17 @@ void check_against_setup(const TriangleBatch& batch, raster::FaceRule faces) {
   std::size_t decided[3] = {};
   for (std::size_t first = 0; first < batch.triangle_count(); first += raster::TriageCorners::kMax) {
     const int n = int(std::min<std::size_t>(raster::TriageCorners::kMax, batch.triangle_count() - first));
-    auto corners = std::make_unique<raster::TriageCorners>();
-    for (int k = 0; k < n; ++k) {
-      std::uint32_t codes = 0;
-      for (int c = 0; c < 3; ++c) {
-        const raster::ProjectedVertex& p = projected[batch.vertex_index(first + std::size_t(k), c)];
-        corners->x[c][k] = p.x;
-        corners->y[c][k] = p.y;
-        codes |= p.code;
-      }
-      corners->codes[k] = codes;
-    }
-    std::vector<std::uint8_t> plain(std::size_t(n), 0xff), wide(std::size_t(n), 0xff);
-    raster::triage_kernel_scalar(*corners, 0, n, params, plain.data());
+    // The plain kernel, then the AVX2 one where the CPU has it: the same verdicts.
+    std::vector<raster::Triage> verdicts(static_cast<std::size_t>(n)), wide(static_cast<std::size_t>(n));
+    const SimdPath path = simd_path();
+    set_simd_path(SimdPath::Scalar);
+    raster::triage_triangles(projected.data(), nullptr, first, n, params, verdicts.data());
     if (cpu_has_avx2()) {
-      raster::triage_kernel_avx2(*corners, n, params, wide.data());
-      ASSERT_EQ(plain, wide) << "triangles " << first << " ..";
+      set_simd_path(SimdPath::Avx2);
+      raster::triage_triangles(projected.data(), nullptr, first, n, params, wide.data());
+      ASSERT_EQ(verdicts, wide) << "triangles " << first << " ..";
     }
+    set_simd_path(path);
     for (int k = 0; k < n; ++k) {
       const std::size_t i = first + std::size_t(k);
       std::vector<raster::SetupTriangle> tris;
@@ -79,9 +72,9 @@ void check_against_setup(const TriangleBatch& batch, raster::FaceRule faces) {
       int pieces = 0;
       const raster::SetupOutcome outcome =
           raster::setup_triangle(batch, i, projected.data(), vp, faces, tris, varyings, pieces);
-      const auto verdict = Triage(plain[std::size_t(k)]);
-      ASSERT_LE(plain[std::size_t(k)], 2) << "triangle " << i;
-      ++decided[plain[std::size_t(k)]];
+      const raster::Triage verdict = verdicts[std::size_t(k)];
+      ASSERT_LE(std::uint8_t(verdict), 2) << "triangle " << i;
+      ++decided[std::uint8_t(verdict)];
       if (verdict == Triage::kCulled) {
         EXPECT_EQ(outcome, raster::SetupOutcome::kCulled) << "triangle " << i;
         EXPECT_TRUE(tris.empty()) << "triangle " << i;
