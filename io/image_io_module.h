@@ -4,7 +4,8 @@
 //
 // OpenImageIO pulls in some 260 shared libraries; resolving them costs a quarter of a second at
 // start-up. So only the module links it, and image_output.cpp dlopens the module on the first
-// image read or write: commands that write no image never load OpenImageIO.
+// image read or write that needs it: commands that write no image, or only 8-bit PNGs
+// (io/png_writer.h), never load OpenImageIO.
 //
 // The module exports one symbol, TESSREF_IMAGE_IO_ENTRY, a function that returns the table
 // below. Nothing but plain C types crosses the boundary, and no exception does.

@@ -19,6 +19,7 @@
 
 #include "common/error.h"
 #include "io/image_io_module.h"
+#include "io/png_writer.h"
 
 namespace tessref {
 namespace {
@@ -197,6 +198,8 @@ struct ProbeAnswer {
 };
 ProbeAnswer ask_writer(const std::filesystem::path& path, ImageKind kind) {
   ProbeAnswer a;
+  if (lower_extension(path) == ".png")  // write_png_rgb8's files: known without loading the module
+    return kind == ImageKind::Color ? a : ProbeAnswer{{}, "it stores 8 or 16-bit integers, not floats"};
   int stored_float = 0;
   const int channels = kind == ImageKind::Depth ? 1 : 3;
   if (kind == ImageKind::Color) {
@@ -295,9 +298,10 @@ void write_float_channels(const std::filesystem::path& path, int width, int heig
 }
 
 void write_rgb8_image(const Rgb8Image& image, const std::filesystem::path& path) {
+  if (lower_extension(path) == ".png") return write_png_rgb8(path, image.width, image.height, image.pixels.data());
   write_image(path, image.width, image.height, 3, TESSREF_IMAGE_IO_UINT8, image.pixels.data());
   // Writers that keep floats (EXR, TIFF, HDR) report failed writes themselves; the 8-bit ones
-  // (PNG, BMP, TGA, JPEG under a file-size limit or on a full disk, JPEG 2000 below 32 pixels)
+  // (BMP, TGA, JPEG under a file-size limit or on a full disk, JPEG 2000 below 32 pixels)
   // may not, so their file counts as written only when it reads back whole.
   if (check_image_path(path, ImageKind::Color).stores_float) return;
   bool whole = false;

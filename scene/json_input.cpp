@@ -157,12 +157,18 @@ std::string read_json_text(const std::filesystem::path& file, const std::string&
     throw InputError(name + ": is not a regular file (a device, pipe or socket), not a " + what);
   std::ifstream in(file, std::ios::binary);
   if (!in.is_open()) throw InputError(name + ": cannot open the " + what);
-  // Read at most one byte past the limit: a file's size can change after it is asked, and some
-  // regular files (/proc) report none.
-  std::string text(std::size_t(kMaxJsonFileBytes) + 1, '\0');
-  in.read(text.data(), std::streamsize(text.size()));
-  if (in.bad()) throw InputError(name + ": cannot read the " + what);
-  text.resize(std::size_t(in.gcount()));
+  // Read in blocks up to one byte past the limit: a file's size can change after it is asked, and
+  // some regular files (/proc) report none. (Not one buffer of the limit's size: zeroing it cost
+  // more than the rest of a small render.)
+  std::string text;
+  char block[1 << 16];
+  while (text.size() <= kMaxJsonFileBytes) {
+    const std::size_t want = std::min(sizeof block, std::size_t(kMaxJsonFileBytes) + 1 - text.size());
+    in.read(block, std::streamsize(want));
+    if (in.bad()) throw InputError(name + ": cannot read the " + what);
+    text.append(block, std::size_t(in.gcount()));
+    if (!in) break;  // end of file
+  }
   if (text.size() > kMaxJsonFileBytes)
     throw InputError(name + ": the " + what + " is larger than " + std::to_string(kMaxJsonFileBytes >> 20) +
                      " MiB (tessref's limit for JSON input)");

@@ -6,7 +6,9 @@
 #   2. the primitive generator alone (tpg_bench) and PN patch evaluation alone (pn_bench), also with
 #      the GLSL twins on tessref's SPIR-V executor (batch 64 and 1);
 #   3. the rasterizer alone on a seeded triangle soup (raster_bench);
-#   4. memory bandwidth and fp32 FMA peak (machine_limits), and every figure as a share of them.
+#   4. memory bandwidth and fp32 FMA peak (machine_limits), and every figure as a share of them;
+#   5. whole processes: `tessref render` of the default scene to a PNG against the same on llvmpipe,
+#      and tessref's fixed cost (scripts/bench-startup.sh, appended to the table).
 # Each benchmark program alternates tessref and llvmpipe (random interleaving of repetitions) and
 # reports medians. Builds what it needs into build-bench (Release, benchmarks on).
 #
@@ -42,8 +44,8 @@ if (( build_step )); then
   cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DTESSREF_BUILD_BENCH=ON >"$build/bench-cmake.log" 2>&1 ||
     { cat "$build/bench-cmake.log" >&2; echo "bench.sh: cmake configure failed" >&2; exit 2; }
   extra=()  # the GL runner's `info`, for the llvmpipe version (absent when glref is not built)
-  cmake --build "$build" --target help 2>/dev/null | grep -q 'tessref-glref$' && extra=(tessref-glref)
-  cmake --build "$build" -j2 --target "${targets[@]}" "${extra[@]}" >"$build/bench-build.log" 2>&1 ||
+  cmake --build "$build" --target help 2>/dev/null | grep -q 'tessref-glref$' && extra=(tessref-glref tessref-glref-render)
+  cmake --build "$build" -j2 --target "${targets[@]}" tessref_cli "${extra[@]}" >"$build/bench-build.log" 2>&1 ||
     { tail -40 "$build/bench-build.log" >&2; echo "bench.sh: build failed (log: $build/bench-build.log)" >&2; exit 2; }
 fi
 for t in "${targets[@]}"; do
@@ -58,9 +60,9 @@ export GLIBC_TUNABLES=glibc.malloc.mmap_threshold=33554432:glibc.malloc.trim_thr
 
 # Repetitions: light frames, the Wuson level-64 frame (~2-3 s a side), PN, TPG, raster.
 if (( quick )); then
-  r_frame=3 r_heavy=1 r_pn=3 r_tpg=3 r_raster=3 limits_flag=--quick
+  r_frame=3 r_heavy=1 r_pn=3 r_tpg=3 r_raster=3 r_startup=3 limits_flag=--quick
 else
-  r_frame=9 r_heavy=3 r_pn=7 r_tpg=7 r_raster=7 limits_flag=
+  r_frame=9 r_heavy=3 r_pn=7 r_tpg=7 r_raster=7 r_startup=11 limits_flag=
 fi
 
 rm -rf "$results"
@@ -96,6 +98,12 @@ run tpg tpg_bench "$r_tpg"
 run pn pn_bench "$r_pn" \
   --benchmark_filter='^BM_(TessrefPn/(12/256|64/16)|ExecutorPn/(12/256|64/16)/(256|1)|LlvmpipePnDiscard/(12|64)|LlvmpipeFlatDiscard/(12|64))/'
 run raster raster_bench "$r_raster"
+log "start-up: whole processes, $r_startup rounds"
+if ! scripts/bench-startup.sh "$build" "$r_startup" >"$results/startup.md" 2>"$results/startup.log"; then
+  echo "bench.sh: bench-startup.sh failed (log: $results/startup.log)" >&2
+  cat "$results/startup.log" >&2
+  failed+=(startup)
+fi
 
 load_after=$(cut -d' ' -f1-3 /proc/loadavg)
 model=$(lscpu | sed -n 's/^Model name: *//p' | head -1)
@@ -114,6 +122,10 @@ for name in frames frames_wuson64 tpg pn raster; do
 done
 "$build/bench/bench_report" --limits "$results/limits.json" --machine "$model, $cores cores" \
   --date "$(date -u '+%Y-%m-%d %H:%M UTC')" --notes "$notes" -o "$build/bench.md" "${inputs[@]}"
+if [[ -s $results/startup.md ]]; then
+  { echo; echo "### Start-up (scripts/bench-startup.sh)"; echo; cat "$results/startup.md"; } >>"$build/bench.md"
+  cat "$results/startup.md"
+fi
 log "table written to $build/bench.md"
 if (( ${#failed[@]} )); then
   echo "bench.sh: failed: ${failed[*]}" >&2

@@ -6,7 +6,7 @@
 set -euo pipefail
 pkgs=("$@")
 [ ${#pkgs[@]} -gt 0 ] || pkgs=(build-essential cmake pkg-config
-      libglm-dev libopenimageio-dev openimageio-tools libembree-dev libtbb-dev libassimp-dev
+      libglm-dev libpng-dev libopenimageio-dev openimageio-tools libembree-dev libtbb-dev libassimp-dev
       assimp-testmodels libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
       libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri time faketime apitrace python3
       renderdoc python3-renderdoc librenderdoc-dev
