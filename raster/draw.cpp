@@ -49,7 +49,7 @@ void scan(const SetupQuad& q, const float* varyings, int nv, const raster::Pixel
   raster::raster_quad(q, varyings, nv, r, sink);
 }
 
-constexpr int kTileSize = 64;                    // pixels
+constexpr int kTileSize = kFramebufferTileSize; // pixels (a deferred clear is kept per tile)
 constexpr std::size_t kChunkTriangles = 1024;    // input triangles per setup task
 constexpr std::size_t kMinBinnedForTasks = 256;  // fewer (triangle, tile) pairs: scan inline
 // Bounds memory: about 170 bytes + 12 * num_varyings per triangle are held per pass. Each pass
@@ -260,6 +260,7 @@ RasterStats draw_batch(const Batch& batch, const RasterState& state, const Fragm
         rect.y1 = std::min(rect.y1, state.scissor.y + state.scissor.height - 1);
         if (rect.x0 > rect.x1 || rect.y0 > rect.y1) return;
       }
+      if (fb.clear_pending()) fb.clear_tile(tx, ty);  // the whole tile, whatever the scissor
       raster::FragmentSink sink(fs, fb, num_varyings, state, &batch.flat_varyings);
       for (std::size_t c = 0; c < num_chunks; ++c) {
         const Chunk<Setup>& chunk = chunks[c];

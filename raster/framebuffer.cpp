@@ -14,16 +14,19 @@ Framebuffer::Framebuffer(int w, int h, glm::vec4 clear_color)
 }
 
 void Framebuffer::clear(glm::vec4 clear_color) {
+  pending_tiles_.clear();
   std::fill(color.begin(), color.end(), clear_color);
   std::fill(depth.begin(), depth.end(), 1.0f);
   std::fill(aux.begin(), aux.end(), glm::vec4(0.0f));
   for (auto& b : more) std::fill(b.begin(), b.end(), glm::vec4(0.0f));
 }
 
-void Framebuffer::reset(int w, int h, glm::vec4 clear_color, const Parallel& parallel, bool with_aux) {
+void Framebuffer::reset(int w, int h, glm::vec4 clear_color, const Parallel& parallel, bool with_aux,
+                        bool defer_clear) {
   w = w > 0 ? w : 0;
   h = h > 0 ? h : 0;
   const std::size_t n = std::size_t(w) * std::size_t(h);
+  pending_tiles_.clear();
   if (w != width || h != height || color.size() != n || depth.size() != n) {
     // Each target written once, with its clear value; a dropped draw buffer 1 is not built at all
     // (a one-shot render paid 16 MiB of page faults for it at 1024x1024).
@@ -43,6 +46,11 @@ void Framebuffer::reset(int w, int h, glm::vec4 clear_color, const Parallel& par
   }
   if (!with_aux) aux.clear();               // capacity kept
   else if (aux.size() != n) aux.resize(n);  // cleared below
+  if (defer_clear && n > 0) {
+    pending_tiles_.assign(std::size_t(tiles_x()) * ((h + kFramebufferTileSize - 1) / kFramebufferTileSize), 1);
+    pending_color_ = clear_color;
+    return;
+  }
   constexpr std::size_t kPixelsPerTask = 1 << 16;
   parallel.for_each((n + kPixelsPerTask - 1) / kPixelsPerTask, [&](std::size_t t) {
     const std::size_t a = t * kPixelsPerTask, b = std::min(n, a + kPixelsPerTask);
@@ -52,6 +60,29 @@ void Framebuffer::reset(int w, int h, glm::vec4 clear_color, const Parallel& par
     for (auto& m : more)
       if (!m.empty()) std::fill(m.begin() + a, m.begin() + b, glm::vec4(0.0f));
   });
+}
+
+void Framebuffer::clear_tile(int tile_x, int tile_y) {
+  const std::size_t tile = std::size_t(tile_y) * tiles_x() + tile_x;
+  if (tile >= pending_tiles_.size() || !pending_tiles_[tile]) return;
+  pending_tiles_[tile] = 0;  // one byte per tile: tiles scanned on different threads never share one
+  const int x0 = tile_x * kFramebufferTileSize, x1 = std::min(width, x0 + kFramebufferTileSize);
+  const int y0 = tile_y * kFramebufferTileSize, y1 = std::min(height, y0 + kFramebufferTileSize);
+  for (int y = y0; y < y1; ++y) {
+    const std::size_t a = index(x0, y), b = index(x1 - 1, y) + 1;
+    std::fill(color.begin() + a, color.begin() + b, pending_color_);
+    std::fill(depth.begin() + a, depth.begin() + b, 1.0f);
+    if (!aux.empty()) std::fill(aux.begin() + a, aux.begin() + b, glm::vec4(0.0f));
+    for (auto& m : more)
+      if (!m.empty()) std::fill(m.begin() + a, m.begin() + b, glm::vec4(0.0f));
+  }
+}
+
+void Framebuffer::finish_clear(const Parallel& parallel) {
+  if (pending_tiles_.empty()) return;
+  const int tx = tiles_x();
+  parallel.for_each(pending_tiles_.size(), [&](std::size_t t) { clear_tile(int(t % tx), int(t / tx)); });
+  pending_tiles_.clear();
 }
 
 void Framebuffer::set_draw_buffers(int n) {

@@ -27,6 +27,20 @@ programs::PhongShader phong_shader(const Scene& scene) {
   return fs;
 }
 
+// The draws of a frame whose clear was deferred (Framebuffer::reset): then the tiles no draw
+// touched are cleared, also when a draw throws.
+template <class Draw>
+DrawStats cleared_after(Framebuffer& fb, const Parallel& parallel, Draw&& draw) {
+  try {
+    DrawStats stats = draw();
+    fb.finish_clear(parallel);
+    return stats;
+  } catch (...) {
+    fb.finish_clear(parallel);
+    throw;
+  }
+}
+
 }  // namespace
 
 BuiltinFragmentProgram builtin_fragment_program(const Scene& scene) {
@@ -59,8 +73,8 @@ DrawStats render_scene(const Scene& scene, const Mesh& mesh, const Parallel& par
   }
   if (scene.shaders.program != ShaderProgram::Builtin) {
     const SceneProgram program = build_scene_program(scene);
-    fb.reset(scene.width, scene.height, scene.background, parallel, options.normals);
-    DrawStats stats = draw_glsl_scene(scene, *program.program, mesh, fb, parallel, options);
+    fb.reset(scene.width, scene.height, scene.background, parallel, options.normals, true);
+    DrawStats stats = cleared_after(fb, parallel, [&] { return draw_glsl_scene(scene, *program.program, mesh, fb, parallel, options); });
     stats.warnings.insert(stats.warnings.end(), program.warnings.begin(), program.warnings.end());
     return stats;
   }
@@ -72,8 +86,8 @@ DrawStats render_scene(const Scene& scene, const Mesh& mesh, const Parallel& par
   const BuiltinFragmentProgram program = builtin_fragment_program(scene);
   const FragmentProgram& fs = program.get();
 
-  fb.reset(scene.width, scene.height, scene.background, parallel, options.normals);
-  return draw_mesh(mesh, vs, scene.tessellation, state, fs, fb, parallel, options);
+  fb.reset(scene.width, scene.height, scene.background, parallel, options.normals, true);
+  return cleared_after(fb, parallel, [&] { return draw_mesh(mesh, vs, scene.tessellation, state, fs, fb, parallel, options); });
 }
 
 std::optional<std::uint64_t> predicted_tes_invocations(const Scene& scene, const Mesh& mesh) {

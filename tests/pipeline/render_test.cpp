@@ -120,6 +120,39 @@ TEST(Render, TheNormalsTargetIsDroppedWhenNotAskedFor) {
   }
 }
 
+// A frame drawn into a framebuffer of the same size defers its clear to the tiles the draw
+// scans (Framebuffer::reset): the image must be a fresh framebuffer's, also where the earlier
+// frame drew and this one does not, for the C++ programs and a GLSL program, on 1 and 2 threads.
+TEST(Render, ADeferredClearGivesAFreshFramebuffersImage) {
+  // 200 x 136: tiles cut by the right and top edges. The first frame fills the view; the second
+  // draws a small torus on another background, so most tiles are cleared by finish_clear.
+  const std::vector<std::string> size = {"image.width=200", "image.height=136"};
+  std::vector<std::string> big = size, small = size;
+  big.push_back("transform.scale=3");
+  small.push_back("transform.scale=0.4");
+  small.push_back("background=[0.5, 0.1, 0.7, 1.0]");
+  for (const std::vector<std::string>& program : {std::vector<std::string>{}, std::vector<std::string>{"shaders.program=twins"}}) {
+    std::vector<std::string> a = big, b = small;
+    a.insert(a.end(), program.begin(), program.end());
+    b.insert(b.end(), program.begin(), program.end());
+    const Scene first = load_scene("", a), second = load_scene("", b);
+    std::vector<std::string> warnings;
+    const Mesh mesh = build_mesh(first.mesh, warnings);
+    for (int threads : {1, 2}) {
+      const Parallel parallel(threads);
+      Framebuffer fresh, reused;
+      render_scene(second, mesh, parallel, fresh, DrawOptions{});
+      render_scene(first, mesh, parallel, reused, DrawOptions{});
+      ASSERT_FALSE(reused.color == fresh.color);
+      render_scene(second, mesh, parallel, reused, DrawOptions{});
+      EXPECT_TRUE(reused.color == fresh.color) << threads << " threads, " << program.size() << " GLSL";
+      EXPECT_TRUE(reused.depth == fresh.depth) << threads << " threads, " << program.size() << " GLSL";
+      EXPECT_TRUE(reused.aux == fresh.aux) << threads << " threads, " << program.size() << " GLSL";
+      EXPECT_FALSE(reused.clear_pending());
+    }
+  }
+}
+
 TEST(Render, StatsOfTheDefaultScene) {
   const RenderResult r = render(load_scene(""), 2);
   EXPECT_EQ(r.stats.triangles_in, 256u);  // the 16 x 8 torus
