@@ -5,6 +5,7 @@
 
 #include "common/simd.h"
 #include "stages/programs/shading_lanes.h"
+#include "stages/programs/specular_pow.h"
 #include "stages/tess_stage.h"
 
 namespace tessref::programs {
@@ -24,7 +25,7 @@ FragmentOutput PhongShader::shade(const FragmentInput& in) const {
     glm::vec3 r = glm::reflect(-l, n);
     c += u_ka * u_light_intensity[i] * u_color +
          u_kd * u_light_intensity[i] * std::max(glm::dot(n, l), 0.0f) * u_color +
-         u_ks * u_light_intensity[i] * std::pow(std::max(glm::dot(r, view), 0.0f), u_shininess);
+         u_ks * u_light_intensity[i] * specular_pow(std::max(glm::dot(r, view), 0.0f), u_shininess);
   }
 
   FragmentOutput out;
@@ -36,7 +37,6 @@ FragmentOutput PhongShader::shade(const FragmentInput& in) const {
 ShadingLanes shading_lanes(FragmentBatch& b) {
   static_assert(kFragmentLanes == 64, "the shading kernels run on 64 lanes");
   return ShadingLanes{b.lanes(),
-                      b.live,
                       {b.varyings[kVaryingPosition], b.varyings[kVaryingPosition + 1],
                        b.varyings[kVaryingPosition + 2]},
                       {b.varyings[kVaryingNormal], b.varyings[kVaryingNormal + 1],

@@ -2,7 +2,6 @@
 // The built-in fragment programs over a FragmentBatch (structure of arrays), the hot loops of
 // PhongShader::shade_batch and NormalsShader::shade_batch. Plain floats only: compiled twice from
 // shading_batch_kernel.inc, for AVX2 and scalar, both giving the bits of shade() lane by lane.
-#include <cstdint>
 
 namespace tessref::programs {
 
@@ -18,11 +17,9 @@ struct PhongBatchUniforms {
 };
 
 // lanes: columns of the arrays; pos and nrm: world position and normal (3 rows each); writes
-// color (4 rows) and aux (4 rows) for every lane. live: lanes whose result is used (pow is
-// evaluated for those only).
+// color (4 rows) and aux (4 rows) for every lane, live or not.
 struct ShadingLanes {
   int lanes;
-  const std::uint8_t* live;
   const float* pos[3];
   const float* nrm[3];
   float* color[4];

@@ -1,5 +1,6 @@
 // The scalar build of the shading batch kernels.
 #include "stages/programs/shading_batch.h"
+#include "stages/programs/specular_pow.h"
 
 namespace tessref::programs {
 #define SHADING_SUFFIX scalar
