@@ -357,10 +357,7 @@ void run_render(const RenderOptions& o) {
     if (memory.images.empty())
       throw InputError("--images: no draw binds a texture to an image uniform (shaders.textures naming an image2D ...)");
     for (const auto& [name, stored] : memory.images) {
-      std::string file = o.images;
-      file += '.';
-      file += name;
-      file += ".bin";
+      const std::string file = memory_file_name(o.images, name);
       const std::filesystem::path tmp = outputs.add("--images", file);
       write_binary_file(tmp, file, std::as_bytes(std::span(stored)));
       output_summary += "; " + file + " " + std::to_string(stored.size()) + " bytes";

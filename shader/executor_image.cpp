@@ -1,7 +1,7 @@
 // Storage images (GL 4.6 8.26): imageLoad, imageStore, imageSize and the image atomics, on level 0
 // of the texture bound to the image's unit, whose internal format is the one the image declares
 // (layout(rgba32f) ...). A store converts the value as glTexSubImage would for that format
-// (texture::encode_texels) and keeps the texel the sampler reads in step (decode_texels).
+// (texture::encode_texel) and keeps the texel the sampler reads in step (decode_texel).
 #include <algorithm>
 #include <cstring>
 
@@ -110,22 +110,21 @@ void Runner::image(const XIns& x) {
         break;
       case Kind::ImageWrite: {
         if (!writes) break;
-        std::vector<std::uint8_t> bytes;
+        // Stored in the format, then read back as the sampler will read it.
+        std::uint8_t* stored = level->stored.data() + index * std::int64_t(format.bytes_per_texel());
         if (format.integer()) {
           std::int64_t v[4];
           for (int k = 0; k < 4; ++k) {
             const std::uint32_t w = row<std::uint32_t>(op.texel, std::uint32_t(k))[l];
             v[k] = format.signed_integer() ? std::int64_t(std::int32_t(w)) : std::int64_t(w);
           }
-          bytes = texture::encode_integer_texels(t->format, v, 1);
+          texture::encode_integer_texel(t->format, v, stored);
         } else {
           float v[4];
           for (int k = 0; k < 4; ++k) v[k] = row<float>(op.texel, std::uint32_t(k))[l];
-          bytes = texture::encode_texels(t->format, v, 1);
+          texture::encode_texel(t->format, v, stored);
         }
-        std::copy(bytes.begin(), bytes.end(), level->stored.begin() + index * std::int64_t(bytes.size()));
-        const std::vector<float> read_back = texture::decode_texels(t->format, bytes);
-        std::copy_n(read_back.begin(), 4, texel);
+        texture::decode_texel(t->format, stored, texel);
         break;
       }
       case Kind::ImageAtomic: {  // r32i and r32ui images only (the decoder checks)

@@ -191,176 +191,170 @@ std::string texel_format_names() {
   return out;
 }
 
-std::vector<std::uint8_t> encode_texels(TexelFormat f, const float* rgba, std::size_t texels) {
+void encode_texel(TexelFormat f, const float* rgba, std::uint8_t* dst) {
   const TexelFormatInfo& fi = info(f);
   if (fi.integer()) {  // each value rounded to the nearest integer (NaN: 0)
-    std::vector<std::int64_t> ints(texels * 4);
-    for (std::size_t k = 0; k < ints.size(); ++k)
+    std::int64_t ints[4];
+    for (int k = 0; k < 4; ++k)
       ints[k] = std::isnan(rgba[k]) ? 0 : std::int64_t(std::nearbyint(std::clamp(double(rgba[k]), -0x1p40, 0x1p40)));
-    return encode_integer_texels(f, ints.data(), texels);
+    return encode_integer_texel(f, ints, dst);
   }
-  std::vector<std::uint8_t> out(texels * std::size_t(fi.bytes_per_texel()));
-  std::uint8_t* dst = out.data();
   if (fi.packed()) {
-    for (std::size_t t = 0; t < texels; ++t) {
-      const float* v = rgba + t * 4;
-      const std::uint32_t word = fi.type == ChannelType::kRgb9E5
-                                     ? rgb9e5_from_float(v)
-                                     : ufloat_from_float(v[0], 6) | ufloat_from_float(v[1], 6) << 11 |
-                                           ufloat_from_float(v[2], 5) << 22;
-      std::memcpy(dst + t * 4, &word, 4);
-    }
-    return out;
+    const std::uint32_t word = fi.type == ChannelType::kRgb9E5
+                                   ? rgb9e5_from_float(rgba)
+                                   : ufloat_from_float(rgba[0], 6) | ufloat_from_float(rgba[1], 6) << 11 |
+                                         ufloat_from_float(rgba[2], 5) << 22;
+    std::memcpy(dst, &word, 4);
+    return;
   }
-  for (std::size_t t = 0; t < texels; ++t)
-    for (int c = 0; c < fi.channels; ++c) {
-      const float v = rgba[t * 4 + std::size_t(c)];
-      switch (fi.type) {
-        case ChannelType::kFloat32: std::memcpy(dst, &v, 4); dst += 4; break;
-        case ChannelType::kFloat16: {
-          const auto h = std::uint16_t(half_from_float(v));
-          std::memcpy(dst, &h, 2);
-          dst += 2;
-          break;
-        }
-        case ChannelType::kUnorm8:
-        case ChannelType::kSrgb8: *dst++ = fixed::unorm8_from_float(v); break;
-        case ChannelType::kUnorm16: {
-          const auto k = std::uint16_t(fixed::unorm_from_float(v, 16));
-          std::memcpy(dst, &k, 2);
-          dst += 2;
-          break;
-        }
-        case ChannelType::kSnorm8: *dst++ = std::uint8_t(std::int8_t(snorm_from_float(v, 8))); break;
-        case ChannelType::kSnorm16: {
-          const auto k = std::int16_t(snorm_from_float(v, 16));
-          std::memcpy(dst, &k, 2);
-          dst += 2;
-          break;
-        }
-        case ChannelType::kUfloat11_11_10: case ChannelType::kRgb9E5: case ChannelType::kUint10_10_10_2: break;
-        // Integer formats: encode_integer_texels.
-        case ChannelType::kSint8: case ChannelType::kSint16: case ChannelType::kSint32: case ChannelType::kUint8:
-        case ChannelType::kUint16: case ChannelType::kUint32: break;
-        case ChannelType::kUnorm24: {
-          const std::uint32_t k = fixed::unorm_from_float(v, 24);
-          const std::uint32_t word = (k << 8) | (f == TexelFormat::kDepth24 ? k >> 16 : 0u);
-          std::memcpy(dst, &word, 4);
-          dst += 4;
-          break;
-        }
+  for (int c = 0; c < fi.channels; ++c) {
+    const float v = rgba[c];
+    switch (fi.type) {
+      case ChannelType::kFloat32: std::memcpy(dst, &v, 4); dst += 4; break;
+      case ChannelType::kFloat16: {
+        const auto h = std::uint16_t(half_from_float(v));
+        std::memcpy(dst, &h, 2);
+        dst += 2;
+        break;
+      }
+      case ChannelType::kUnorm8:
+      case ChannelType::kSrgb8: *dst++ = fixed::unorm8_from_float(v); break;
+      case ChannelType::kUnorm16: {
+        const auto k = std::uint16_t(fixed::unorm_from_float(v, 16));
+        std::memcpy(dst, &k, 2);
+        dst += 2;
+        break;
+      }
+      case ChannelType::kSnorm8: *dst++ = std::uint8_t(std::int8_t(snorm_from_float(v, 8))); break;
+      case ChannelType::kSnorm16: {
+        const auto k = std::int16_t(snorm_from_float(v, 16));
+        std::memcpy(dst, &k, 2);
+        dst += 2;
+        break;
+      }
+      case ChannelType::kUfloat11_11_10: case ChannelType::kRgb9E5: case ChannelType::kUint10_10_10_2: break;
+      // Integer formats: encode_integer_texel.
+      case ChannelType::kSint8: case ChannelType::kSint16: case ChannelType::kSint32: case ChannelType::kUint8:
+      case ChannelType::kUint16: case ChannelType::kUint32: break;
+      case ChannelType::kUnorm24: {
+        const std::uint32_t k = fixed::unorm_from_float(v, 24);
+        const std::uint32_t word = (k << 8) | (f == TexelFormat::kDepth24 ? k >> 16 : 0u);
+        std::memcpy(dst, &word, 4);
+        dst += 4;
+        break;
       }
     }
+  }
+}
+
+void encode_integer_texel(TexelFormat f, const std::int64_t* rgba, std::uint8_t* dst) {
+  const TexelFormatInfo& fi = info(f);
+  std::int64_t v[4];
+  for (int c = 0; c < 4; ++c) v[c] = std::clamp(rgba[c], fi.integer_min(c), fi.integer_max(c));
+  if (fi.type == ChannelType::kUint10_10_10_2) {
+    const auto word = std::uint32_t(v[0] | v[1] << 10 | v[2] << 20 | v[3] << 30);
+    std::memcpy(dst, &word, 4);
+    return;
+  }
+  // Little-endian two's complement, the bytes GL_BYTE .. GL_UNSIGNED_INT data hold.
+  for (int c = 0; c < fi.channels; ++c)
+    for (int b = 0; b < fi.bytes_per_channel(); ++b) *dst++ = std::uint8_t(std::uint64_t(v[c]) >> (8 * b));
+}
+
+void decode_texel(TexelFormat f, const std::uint8_t* src, float* dst) {
+  const TexelFormatInfo& fi = info(f);
+  if (fi.integer()) {
+    std::int64_t v[4] = {0, 0, 0, 1};
+    if (fi.type == ChannelType::kUint10_10_10_2) {
+      std::uint32_t word;
+      std::memcpy(&word, src, 4);
+      v[0] = word & 1023u, v[1] = (word >> 10) & 1023u, v[2] = (word >> 20) & 1023u, v[3] = word >> 30;
+    } else {
+      const int bytes_per_channel = fi.bytes_per_channel();
+      for (int c = 0; c < fi.channels; ++c) {
+        std::uint64_t u = 0;
+        for (int b = 0; b < bytes_per_channel; ++b) u |= std::uint64_t(*src++) << (8 * b);
+        const int bits = 8 * bytes_per_channel;
+        v[c] = fi.signed_integer() && (u >> (bits - 1)) ? std::int64_t(u) - (std::int64_t(1) << bits) : std::int64_t(u);
+      }
+    }
+    for (int c = 0; c < 4; ++c) dst[c] = integer_bits(v[c]);
+    return;
+  }
+  dst[0] = dst[1] = dst[2] = 0.0f;
+  dst[3] = 1.0f;
+  if (fi.packed()) {
+    std::uint32_t word;
+    std::memcpy(&word, src, 4);
+    for (int c = 0; c < 3; ++c)
+      dst[c] = fi.type == ChannelType::kRgb9E5 ? rgb9e5_channel(word, c)
+                                               : ufloat_to_float((word >> (11 * c)) & (c < 2 ? 0x7ffu : 0x3ffu), c < 2 ? 6 : 5);
+    return;
+  }
+  for (int c = 0; c < fi.channels; ++c) {
+    switch (fi.type) {
+      case ChannelType::kFloat32: std::memcpy(&dst[c], src, 4); src += 4; break;
+      case ChannelType::kFloat16: {
+        std::uint16_t h;
+        std::memcpy(&h, src, 2);
+        dst[c] = half_to_float(h);
+        src += 2;
+        break;
+      }
+      case ChannelType::kUnorm8: dst[c] = fixed::unorm8_texel_to_float(*src++); break;
+      // Alpha is linear (GL 4.6 8.24).
+      case ChannelType::kSrgb8:
+        dst[c] = c == 3 ? fixed::unorm8_texel_to_float(*src) : srgb8_texel_to_float(*src);
+        ++src;
+        break;
+      case ChannelType::kUnorm16: {
+        std::uint16_t k;
+        std::memcpy(&k, src, 2);
+        dst[c] = fixed::unorm_texel_to_float(k, 16);
+        src += 2;
+        break;
+      }
+      case ChannelType::kSnorm8: dst[c] = snorm_texel_to_float(std::int8_t(*src++), 8); break;
+      case ChannelType::kSnorm16: {
+        std::int16_t k;
+        std::memcpy(&k, src, 2);
+        dst[c] = snorm_texel_to_float(k, 16);
+        src += 2;
+        break;
+      }
+      case ChannelType::kUfloat11_11_10: case ChannelType::kRgb9E5: case ChannelType::kUint10_10_10_2: break;
+      case ChannelType::kSint8: case ChannelType::kSint16: case ChannelType::kSint32: case ChannelType::kUint8:
+      case ChannelType::kUint16: case ChannelType::kUint32: break;  // integer formats: above
+      case ChannelType::kUnorm24: {
+        std::uint32_t word;
+        std::memcpy(&word, src, 4);
+        dst[c] = fixed::unorm_texel_to_float(word >> 8, 24);
+        src += 4;
+        break;
+      }
+    }
+  }
+}
+
+std::vector<std::uint8_t> encode_texels(TexelFormat f, const float* rgba, std::size_t texels) {
+  const std::size_t size = std::size_t(info(f).bytes_per_texel());
+  std::vector<std::uint8_t> out(texels * size);
+  for (std::size_t t = 0; t < texels; ++t) encode_texel(f, rgba + 4 * t, out.data() + t * size);
   return out;
 }
 
 std::vector<std::uint8_t> encode_integer_texels(TexelFormat f, const std::int64_t* rgba, std::size_t texels) {
-  const TexelFormatInfo& fi = info(f);
-  std::vector<std::uint8_t> out(texels * std::size_t(fi.bytes_per_texel()));
-  std::uint8_t* dst = out.data();
-  for (std::size_t t = 0; t < texels; ++t) {
-    std::int64_t v[4];
-    for (int c = 0; c < 4; ++c) v[c] = std::clamp(rgba[t * 4 + std::size_t(c)], fi.integer_min(c), fi.integer_max(c));
-    if (fi.type == ChannelType::kUint10_10_10_2) {
-      const auto word = std::uint32_t(v[0] | v[1] << 10 | v[2] << 20 | v[3] << 30);
-      std::memcpy(dst, &word, 4);
-      dst += 4;
-      continue;
-    }
-    // Little-endian two's complement, the bytes GL_BYTE .. GL_UNSIGNED_INT data hold.
-    for (int c = 0; c < fi.channels; ++c)
-      for (int b = 0; b < fi.bytes_per_channel(); ++b) *dst++ = std::uint8_t(std::uint64_t(v[c]) >> (8 * b));
-  }
+  const std::size_t size = std::size_t(info(f).bytes_per_texel());
+  std::vector<std::uint8_t> out(texels * size);
+  for (std::size_t t = 0; t < texels; ++t) encode_integer_texel(f, rgba + 4 * t, out.data() + t * size);
   return out;
 }
 
 std::vector<float> decode_texels(TexelFormat f, const std::vector<std::uint8_t>& bytes) {
-  const TexelFormatInfo& fi = info(f);
-  if (fi.integer()) {
-    const std::size_t texels = bytes.size() / std::size_t(fi.bytes_per_texel());
-    std::vector<float> out(texels * 4);
-    const std::uint8_t* src = bytes.data();
-    const int bytes_per_channel = fi.bytes_per_channel();
-    for (std::size_t t = 0; t < texels; ++t) {
-      float* dst = out.data() + t * 4;
-      std::int64_t v[4] = {0, 0, 0, 1};
-      if (fi.type == ChannelType::kUint10_10_10_2) {
-        std::uint32_t word;
-        std::memcpy(&word, src, 4);
-        src += 4;
-        v[0] = word & 1023u, v[1] = (word >> 10) & 1023u, v[2] = (word >> 20) & 1023u, v[3] = word >> 30;
-      } else {
-        for (int c = 0; c < fi.channels; ++c) {
-          std::uint64_t u = 0;
-          for (int b = 0; b < bytes_per_channel; ++b) u |= std::uint64_t(*src++) << (8 * b);
-          const int bits = 8 * bytes_per_channel;
-          v[c] = fi.signed_integer() && (u >> (bits - 1)) ? std::int64_t(u) - (std::int64_t(1) << bits) : std::int64_t(u);
-        }
-      }
-      for (int c = 0; c < 4; ++c) dst[c] = integer_bits(v[c]);
-    }
-    return out;
-  }
-  const std::size_t texels = bytes.size() / std::size_t(fi.bytes_per_texel());
+  const std::size_t size = std::size_t(info(f).bytes_per_texel());
+  const std::size_t texels = bytes.size() / size;
   std::vector<float> out(texels * 4);
-  const std::uint8_t* src = bytes.data();
-  for (std::size_t t = 0; t < texels; ++t) {
-    float* dst = out.data() + t * 4;
-    dst[0] = dst[1] = dst[2] = 0.0f;
-    dst[3] = 1.0f;
-    if (fi.packed()) {
-      std::uint32_t word;
-      std::memcpy(&word, src, 4);
-      src += 4;
-      for (int c = 0; c < 3; ++c)
-        dst[c] = fi.type == ChannelType::kRgb9E5 ? rgb9e5_channel(word, c)
-                                                 : ufloat_to_float((word >> (11 * c)) & (c < 2 ? 0x7ffu : 0x3ffu), c < 2 ? 6 : 5);
-      continue;
-    }
-    for (int c = 0; c < fi.channels; ++c) {
-      switch (fi.type) {
-        case ChannelType::kFloat32: std::memcpy(&dst[c], src, 4); src += 4; break;
-        case ChannelType::kFloat16: {
-          std::uint16_t h;
-          std::memcpy(&h, src, 2);
-          dst[c] = half_to_float(h);
-          src += 2;
-          break;
-        }
-        case ChannelType::kUnorm8: dst[c] = fixed::unorm8_texel_to_float(*src++); break;
-        // Alpha is linear (GL 4.6 8.24).
-        case ChannelType::kSrgb8:
-          dst[c] = c == 3 ? fixed::unorm8_texel_to_float(*src) : srgb8_texel_to_float(*src);
-          ++src;
-          break;
-        case ChannelType::kUnorm16: {
-          std::uint16_t k;
-          std::memcpy(&k, src, 2);
-          dst[c] = fixed::unorm_texel_to_float(k, 16);
-          src += 2;
-          break;
-        }
-        case ChannelType::kSnorm8: dst[c] = snorm_texel_to_float(std::int8_t(*src++), 8); break;
-        case ChannelType::kSnorm16: {
-          std::int16_t k;
-          std::memcpy(&k, src, 2);
-          dst[c] = snorm_texel_to_float(k, 16);
-          src += 2;
-          break;
-        }
-        case ChannelType::kUfloat11_11_10: case ChannelType::kRgb9E5: case ChannelType::kUint10_10_10_2: break;
-        case ChannelType::kSint8: case ChannelType::kSint16: case ChannelType::kSint32: case ChannelType::kUint8:
-        case ChannelType::kUint16: case ChannelType::kUint32: break;  // integer formats: above
-        case ChannelType::kUnorm24: {
-          std::uint32_t word;
-          std::memcpy(&word, src, 4);
-          dst[c] = fixed::unorm_texel_to_float(word >> 8, 24);
-          src += 4;
-          break;
-        }
-      }
-    }
-  }
+  for (std::size_t t = 0; t < texels; ++t) decode_texel(f, bytes.data() + t * size, out.data() + 4 * t);
   return out;
 }
 

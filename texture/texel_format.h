@@ -113,6 +113,12 @@ std::vector<std::uint8_t> encode_integer_texels(TexelFormat f, const std::int64_
 // sampler copies them and never computes with them.
 std::vector<float> decode_texels(TexelFormat f, const std::vector<std::uint8_t>& bytes);
 
+// One texel of the three above, written to or read from bytes_per_texel() bytes at dst / src
+// (4 floats or integers at rgba): imageStore's single texels, without a vector each.
+void encode_texel(TexelFormat f, const float* rgba, std::uint8_t* dst);
+void encode_integer_texel(TexelFormat f, const std::int64_t* rgba, std::uint8_t* dst);
+void decode_texel(TexelFormat f, const std::uint8_t* src, float* rgba);
+
 // An integer texel's channel as decode_texels holds it: its 32 bits in a float.
 inline float integer_bits(std::int64_t v) { return std::bit_cast<float>(std::uint32_t(v)); }
 

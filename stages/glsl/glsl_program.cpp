@@ -579,6 +579,7 @@ bool GlslProgram::bind_storage_buffer(std::uint32_t binding, std::span<std::byte
 }
 
 void GlslProgram::write_back_storage() {
+  if (!writes_memory()) return;  // read-only blocks: nothing changed to compare or write
   for (StorageMemory& s : storage_)
     for (std::uint32_t e = 0; e < s.elements; ++e) {
       if (s.ranges[e].empty()) continue;

@@ -118,7 +118,8 @@ class GlslProgram final : public DrawProgram {
   // blocks' memory is the program's from here on; write_back_storage() puts what the shaders
   // wrote into range, which must outlive the draws.
   bool bind_storage_buffer(std::uint32_t binding, std::span<std::byte> range);
-  // After a draw: every storage block's changed values back into its bound range's bytes.
+  // After a draw: every storage block's changed values back into its bound range's bytes
+  // (nothing to do when no stage writes memory).
   void write_back_storage();
   // A storage block no range was bound to, if any: a draw refuses it (GL leaves its reads undefined).
   std::optional<UniformBlock> unbound_storage_block() const;

@@ -7,6 +7,7 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -32,10 +33,21 @@ struct Written {
 };
 
 template <class T>
-std::vector<T> as(const std::vector<std::byte>& bytes) {
+std::vector<T> as(std::span<const std::byte> bytes) {
   std::vector<T> out(bytes.size() / sizeof(T));
   std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
   return out;
+}
+
+// Renders on 1 thread, then on 2 and 8 threads with 1, 7 and 64 batch lanes, and hands each of
+// those results to expect_same(first, other, which).
+template <class Render, class ExpectSame>
+void for_every_thread_count_and_batch(Render&& render, ExpectSame&& expect_same) {
+  const auto one = render(1, std::vector<std::string>{});
+  for (const int threads : {2, 8})
+    for (const std::string lanes : {"1", "7", "64"})
+      expect_same(one, render(threads, std::vector<std::string>{"shaders.batch_lanes=" + lanes}),
+                  std::to_string(threads) + " threads, " + lanes + " lanes");
 }
 
 Written render(int threads, const std::vector<std::string>& sets = {}) {
@@ -113,15 +125,12 @@ TEST(StorageBuffers, InspectPixelRefusesToReplaySideEffects) {
 }
 
 TEST(StorageBuffers, SameBytesForEveryThreadCountAndBatchSize) {
-  const Written one = render(1);
-  for (const int threads : {2, 8})
-    for (const std::string lanes : {"1", "7", "64"}) {
-      const Written other = render(threads, {"shaders.batch_lanes=" + lanes});
-      EXPECT_EQ(one.counters, other.counters) << threads << " threads, " << lanes << " lanes";
-      EXPECT_EQ(one.pixels, other.pixels) << threads << " threads, " << lanes << " lanes";
-      EXPECT_EQ(one.records, other.records) << threads << " threads, " << lanes << " lanes";
-      EXPECT_TRUE(one.colour == other.colour) << threads << " threads, " << lanes << " lanes";
-    }
+  for_every_thread_count_and_batch(render, [](const Written& one, const Written& other, const std::string& which) {
+    EXPECT_EQ(one.counters, other.counters) << which;
+    EXPECT_EQ(one.pixels, other.pixels) << which;
+    EXPECT_EQ(one.records, other.records) << which;
+    EXPECT_TRUE(one.colour == other.colour) << which;
+  });
 }
 
 }  // namespace
@@ -145,12 +154,8 @@ Images render_images(int threads, const std::vector<std::string>& sets = {}) {
   render_scene(scene, build_mesh(scene.mesh, warnings), Parallel(threads), fb, {}, nullptr, &memory);
   Images out;
   for (const auto& [name, bytes] : memory.images) {
-    if (name == "draw0.u_counts") out.counts = as<std::uint32_t>(std::vector<std::byte>(
-                                      reinterpret_cast<const std::byte*>(bytes.data()),
-                                      reinterpret_cast<const std::byte*>(bytes.data()) + bytes.size()));
-    if (name == "draw0.u_colour") out.colour = as<float>(std::vector<std::byte>(
-                                      reinterpret_cast<const std::byte*>(bytes.data()),
-                                      reinterpret_cast<const std::byte*>(bytes.data()) + bytes.size()));
+    if (name == "draw0.u_counts") out.counts = as<std::uint32_t>(std::as_bytes(std::span(bytes)));
+    if (name == "draw0.u_colour") out.colour = as<float>(std::as_bytes(std::span(bytes)));
   }
   return out;
 }
@@ -192,13 +197,10 @@ TEST(Images, StoresAndAtomicsChangeTheTexelsGlSays) {
 }
 
 TEST(Images, SameBytesForEveryThreadCountAndBatchSize) {
-  const Images one = render_images(1);
-  for (const int threads : {2, 8})
-    for (const std::string lanes : {"1", "7", "64"}) {
-      const Images other = render_images(threads, {"shaders.batch_lanes=" + lanes});
-      EXPECT_EQ(one.counts, other.counts) << threads << " threads, " << lanes << " lanes";
-      EXPECT_EQ(one.colour, other.colour) << threads << " threads, " << lanes << " lanes";
-    }
+  for_every_thread_count_and_batch(render_images, [](const Images& one, const Images& other, const std::string& which) {
+    EXPECT_EQ(one.counts, other.counts) << which;
+    EXPECT_EQ(one.colour, other.colour) << which;
+  });
 }
 
 TEST(Images, AFormatOtherThanTheImagesIsRefusedByName) {
