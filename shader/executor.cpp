@@ -396,8 +396,10 @@ void Runner::texture(const XIns& x) {
   // plus the bias (GLSL 4.60 8.9: no implicit derivatives outside fragment shaders). A cube map
   // with a mip filter or a bias, or queried, takes each lane's own (fine) derivatives instead, as
   // llvmpipe.
-  auto lod_input = [&](int l) {
-    texture::LodInput in;
+  // Filled in place: a struct built on the stack and copied into the array stalled on
+  // store-to-load forwarding (its bool fields written as bytes, read back in 16-byte moves).
+  auto lod_input = [&](int l, texture::LodInput& in) {
+    in = texture::LodInput{};
     in.cube_dir[0] = s[l], in.cube_dir[1] = t[l], in.cube_dir[2] = r[l];
     if (op.lod != kNone) {
       in.lod = frow(op.lod, 0, l);
@@ -429,7 +431,6 @@ void Runner::texture(const XIns& x) {
     } else {
       in.lod = op.bias != kNone ? 0.0f + frow(op.bias, 0, l) : 0.0f;
     }
-    return in;
   };
   // llvmpipe samples a vector of invocations at once, and when its filters differ for
   // minification and magnification, one invocation filtered linearly changes how the others are
@@ -441,15 +442,17 @@ void Runner::texture(const XIns& x) {
     return p.fragment ? std::uint32_t(l / 4) : std::uint32_t(l);
   };
   texture::LodInput lods[L];
-  for (int l = 0; l < n; ++l) lods[l] = lod_input(l);
+  for (int l = 0; l < n; ++l) lod_input(l, lods[l]);
   texture::SampleContext context[L];
   if (op.kind == Kind::Sample) {
     bool linear_lane[L] = {};
+    bool any_linear = false;
     for (int l = 0; l < n; ++l) {
       linear_lane[l] = texture::linear_in_vector(tex(l), lods[l], inv.seamless_cube_);
+      any_linear |= linear_lane[l];
       context[l].seamless_cube = inv.seamless_cube_;
     }
-    for (int l = 0; l < n; ++l)  // a vector's lanes are adjacent: at most 8
+    for (int l = 0; any_linear && l < n; ++l)  // a vector's lanes are adjacent: at most 8
       for (int k = std::max(0, l - 7); k < std::min(n, l + 8) && !context[l].vector_linear; ++k)
         context[l].vector_linear = linear_lane[k] && vector_of(k) == vector_of(l);
     // A seamless cube map's corners: one lane's changes how its whole vector is filtered.
