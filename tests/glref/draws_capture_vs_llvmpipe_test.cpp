@@ -67,7 +67,9 @@ TEST_P(DrawsCaptureVsLlvmpipe, CapturedAndVerified) {
   EXPECT_EQ(j["coverage"]["mismatched"], 0);
   EXPECT_EQ(j["color"]["within_1_255"], j["color"]["pixels"]);
   EXPECT_EQ(j["silhouette"]["examined"], s.silhouette) << j["silhouette"].dump();
-  if (s.silhouette) EXPECT_EQ(j["silhouette"]["beyond_limit"], 0);
+  if (s.silhouette) {
+    EXPECT_EQ(j["silhouette"]["beyond_limit"], 0);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, DrawsCaptureVsLlvmpipe, ::testing::ValuesIn(kScenes),

@@ -647,7 +647,9 @@ TEST(SamplingSweepVsLlvmpipe, EveryLookupMatchesBitForBit) {
   }
   std::printf("[ figures  ] sampling sweep (%s): %zu cases, %zu lookups, %zu identical (%zu cases bit-exact)\n",
               full ? "full" : "suite", cases.size(), lookups, identical, cases_exact);
-  if (!std::getenv("TESSREF_SAMPLING_SWEEP_MATCH")) EXPECT_GE(lookups, 20000u);
+  if (!std::getenv("TESSREF_SAMPLING_SWEEP_MATCH")) {
+    EXPECT_GE(lookups, 20000u);
+  }
 }
 
 }  // namespace

@@ -268,7 +268,9 @@ TEST(DrawsScene, StorageBlockWritesLandInTheBoundRange) {
   ASSERT_EQ(one.size(), 72u);
   const float block[8] = {1.0f, 0.05f, 0.0f, 0.0f, 0.5f, -0.75f, 0.25f, 7.0f};  // as uploaded
   for (std::size_t i = 0; i < one.size(); ++i)
-    if (i != 68) EXPECT_EQ(one[i], i < 64 ? 9.0f : block[i - 64]) << i;
+    if (i != 68) {
+      EXPECT_EQ(one[i], i < 64 ? 9.0f : block[i - 64]) << i;
+    }
   EXPECT_NE(one[68], 0.5f);  // the last evaluation's height
   EXPECT_TRUE(std::isfinite(one[68]));
   EXPECT_EQ(one, lift_after(2));

@@ -107,7 +107,9 @@ TEST(StorageBuffers, FragmentsAndEvaluationsWriteInOneOrder) {
   // patch's domain points are its level's grid.
   for (std::uint32_t i = 0; i < 86; ++i) {
     EXPECT_EQ(w.records[4 * i + 3], float(i));
-    if (i > 0) EXPECT_LE(w.records[4 * (i - 1) + 2], w.records[4 * i + 2]);
+    if (i > 0) {
+      EXPECT_LE(w.records[4 * (i - 1) + 2], w.records[4 * i + 2]);
+    }
   }
   EXPECT_EQ(w.records[4 * 86 + 3], 0.0f);  // past the last evaluation: as uploaded
 }

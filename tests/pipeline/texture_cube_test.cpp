@@ -129,7 +129,9 @@ TEST(CubeSeamless, FootprintTexelsAreTheDirectionsNeighbours) {
               << "face " << face << " s " << s << " t " << t << " texel " << k << ": face " << f[k] << " (" << i[k] << ", "
               << j[k] << ")";
         }
-        if (corner) EXPECT_FLOAT_EQ(f[missing], others / 3.0f) << "face " << face << " s " << s << " t " << t;
+        if (corner) {
+          EXPECT_FLOAT_EQ(f[missing], others / 3.0f) << "face " << face << " s " << s << " t " << t;
+        }
       }
   EXPECT_EQ(lookups, 6 * 33 * 33);
   // Corners: s and t each among the 2 quarter-texel steps below half a texel (0, 1/4) or the 3 from
