@@ -40,15 +40,10 @@ inline float specular_pow(float x, float s) {
   const double m = m_float;
   const double z = (m - 1.0) / (m + 1.0);
   const double z2 = z * z;
-  double p = 1.0 / 17.0;
-  p = p * z2 + 1.0 / 15.0;
-  p = p * z2 + 1.0 / 13.0;
-  p = p * z2 + 1.0 / 11.0;
-  p = p * z2 + 1.0 / 9.0;
-  p = p * z2 + 1.0 / 7.0;
-  p = p * z2 + 1.0 / 5.0;
-  p = p * z2 + 1.0 / 3.0;
-  p = p * z2 + 1.0;
+  // atanh(z) / z = sum of z^2k / (2k + 1), k = 0 .. 8, by Horner's rule from the highest term.
+  constexpr double kAtanh[] = {1.0 / 15, 1.0 / 13, 1.0 / 11, 1.0 / 9, 1.0 / 7, 1.0 / 5, 1.0 / 3, 1.0};
+  double p = 1.0 / 17;
+  for (const double c : kAtanh) p = p * z2 + c;
   constexpr double kTwoOverLn2 = 2.8853900817779268;  // 2 / ln 2
   const double log2x = double(e) + (kTwoOverLn2 * z) * p;
 
@@ -60,19 +55,11 @@ inline float specular_pow(float x, float s) {
   const double n = shifted - kShifter;
   constexpr double kLn2 = 0.69314718055994529;
   const double t = (y - n) * kLn2;
-  double q = 1.0 / 479001600.0;  // 1 / 12!
-  q = q * t + 1.0 / 39916800.0;
-  q = q * t + 1.0 / 3628800.0;
-  q = q * t + 1.0 / 362880.0;
-  q = q * t + 1.0 / 40320.0;
-  q = q * t + 1.0 / 5040.0;
-  q = q * t + 1.0 / 720.0;
-  q = q * t + 1.0 / 120.0;
-  q = q * t + 1.0 / 24.0;
-  q = q * t + 1.0 / 6.0;
-  q = q * t + 0.5;
-  q = q * t + 1.0;
-  q = q * t + 1.0;
+  // e^t = sum of t^k / k!, k = 0 .. 12, by Horner's rule from the highest term.
+  constexpr double kExp[] = {1.0 / 39916800, 1.0 / 3628800, 1.0 / 362880, 1.0 / 40320, 1.0 / 5040, 1.0 / 720,
+                             1.0 / 120,      1.0 / 24,      1.0 / 6,      0.5,          1.0,        1.0};
+  double q = 1.0 / 479001600;  // 1 / 12!
+  for (const double c : kExp) q = q * t + c;
   // 2^n from the shifted value's low bits, 2^51 + n: (n + 1023) in the exponent field.
   std::uint64_t scale_bits;
   std::memcpy(&scale_bits, &shifted, sizeof scale_bits);
