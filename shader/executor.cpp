@@ -1035,7 +1035,7 @@ std::uint32_t successor(const Terminator& t, const std::uint32_t* arena, int lan
 
 void Invocations::run() {
   const DecodedProgram& p = *exe_.program_;
-  Runner r{*this, p, arena_.data(), lanes_, {}, false, {}, {}, {}};
+  Runner r{.inv = *this, .p = p, .A = arena_.data(), .n = lanes_};  // the rest value-initialized
   r.trace = current_nan_trace();  // once per batch
   if (r.trace && (r.trace->lane >= lanes_ || r.trace->found)) r.trace = nullptr;
   r.source = current_source_trace();

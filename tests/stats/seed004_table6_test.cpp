@@ -44,10 +44,11 @@ TEST(Seed004Table6, SphereAndTorusRows) {
 TEST(Seed004Table6, TwentyOnePointsOnEveryEdge) {
   const std::vector<SchemeRow> rows = seed004_table6(Parallel(0));
   for (const SchemeRow& r : rows) {
-    if (r.mesh == "Sphere") EXPECT_EQ(r.value.count, 480u * 21u);
-    if (r.mesh == "Torus") EXPECT_EQ(r.value.count, 300u * 21u);
-    if (r.mesh == "RoundedCube") EXPECT_EQ(r.value.count, 84u * 21u);
-    if (r.mesh == "Vase") EXPECT_EQ(r.value.count, 680u * 21u);  // 20 open-top edges skipped
+    // The edges each mesh's 21 samples are taken on (the Vase: 20 open-top edges skipped).
+    const unsigned edges = r.mesh == "Sphere" ? 480u : r.mesh == "Torus" ? 300u : r.mesh == "RoundedCube" ? 84u
+                         : r.mesh == "Vase" ? 680u : 0u;
+    ASSERT_NE(edges, 0u) << "an unexpected mesh: " << r.mesh;
+    EXPECT_EQ(r.value.count, edges * 21u) << r.mesh;
   }
 }
 

@@ -141,7 +141,9 @@ TEST_P(TpgRules, OuterEdgesFollowTheSpec) {
       if (!fresh) {
         // Same segment count, same spacing: the same points (levels may differ in their fraction
         // only for equal spacing, where the count is all that matters).
-        if (spacing == TessSpacing::Equal) ASSERT_EQ(it->second, t) << "edge " << e;
+        if (spacing == TessSpacing::Equal) {
+          ASSERT_EQ(it->second, t) << "edge " << e;
+        }
       }
     }
     ++checked;
