@@ -54,6 +54,9 @@ std::string lower_extension(const std::filesystem::path& path) {
   return ext;
 }
 
+// 8-bit PNG files are io/png_writer.h's, written without the module.
+bool written_with_libpng(const std::filesystem::path& path) { return lower_extension(path) == ".png"; }
+
 // The image I/O module (see image_io_module.h), loaded on first use. Where it is looked for:
 //   1. $TESSREF_IMAGE_IO_MODULE, when set (then nowhere else);
 //   2. <executable's folder>/TESSREF_IMAGE_IO_EXE_RELATIVE: the installed layout (bin/ and
@@ -198,7 +201,7 @@ struct ProbeAnswer {
 };
 ProbeAnswer ask_writer(const std::filesystem::path& path, ImageKind kind) {
   ProbeAnswer a;
-  if (lower_extension(path) == ".png")  // write_png_rgb8's files: known without loading the module
+  if (written_with_libpng(path))  // known without loading the module
     return kind == ImageKind::Color ? a : ProbeAnswer{{}, "it stores 8 or 16-bit integers, not floats"};
   int stored_float = 0;
   const int channels = kind == ImageKind::Depth ? 1 : 3;
@@ -298,7 +301,7 @@ void write_float_channels(const std::filesystem::path& path, int width, int heig
 }
 
 void write_rgb8_image(const Rgb8Image& image, const std::filesystem::path& path) {
-  if (lower_extension(path) == ".png") return write_png_rgb8(path, image.width, image.height, image.pixels.data());
+  if (written_with_libpng(path)) return write_png_rgb8(path, image.width, image.height, image.pixels.data());
   write_image(path, image.width, image.height, 3, TESSREF_IMAGE_IO_UINT8, image.pixels.data());
   // Writers that keep floats (EXR, TIFF, HDR) report failed writes themselves; the 8-bit ones
   // (BMP, TGA, JPEG under a file-size limit or on a full disk, JPEG 2000 below 32 pixels)

@@ -1,6 +1,7 @@
 #include "io/png_writer.h"
 
 #include <png.h>
+#include <zlib.h>
 
 #include <cerrno>
 #include <csetjmp>
@@ -64,7 +65,7 @@ bool encode(EncodeState* state, int width, int height, const std::uint8_t* pixel
   }
   png_set_write_fn(png, state, on_write, on_flush);
   png_set_compression_level(png, 6);
-  png_set_compression_strategy(png, 0);  // Z_DEFAULT_STRATEGY
+  png_set_compression_strategy(png, Z_DEFAULT_STRATEGY);
   png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_set_oFFs(png, info, 0, 0, PNG_OFFSET_PIXEL);

@@ -260,7 +260,7 @@ RasterStats draw_batch(const Batch& batch, const RasterState& state, const Fragm
         rect.y1 = std::min(rect.y1, state.scissor.y + state.scissor.height - 1);
         if (rect.x0 > rect.x1 || rect.y0 > rect.y1) return;
       }
-      if (fb.clear_pending()) fb.clear_tile(tx, ty);  // the whole tile, whatever the scissor
+      fb.clear_tile(tx, ty);  // a deferred clear: the whole tile, whatever the scissor
       raster::FragmentSink sink(fs, fb, num_varyings, state, &batch.flat_varyings);
       for (std::size_t c = 0; c < num_chunks; ++c) {
         const Chunk<Setup>& chunk = chunks[c];

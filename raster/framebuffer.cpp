@@ -47,19 +47,23 @@ void Framebuffer::reset(int w, int h, glm::vec4 clear_color, const Parallel& par
   if (!with_aux) aux.clear();               // capacity kept
   else if (aux.size() != n) aux.resize(n);  // cleared below
   if (defer_clear && n > 0) {
-    pending_tiles_.assign(std::size_t(tiles_x()) * ((h + kFramebufferTileSize - 1) / kFramebufferTileSize), 1);
+    pending_tiles_.assign(std::size_t(tiles_x()) * std::size_t(tiles_y()), 1);
     pending_color_ = clear_color;
     return;
   }
   constexpr std::size_t kPixelsPerTask = 1 << 16;
   parallel.for_each((n + kPixelsPerTask - 1) / kPixelsPerTask, [&](std::size_t t) {
-    const std::size_t a = t * kPixelsPerTask, b = std::min(n, a + kPixelsPerTask);
-    std::fill(color.begin() + a, color.begin() + b, clear_color);
-    std::fill(depth.begin() + a, depth.begin() + b, 1.0f);
-    if (!aux.empty()) std::fill(aux.begin() + a, aux.begin() + b, glm::vec4(0.0f));
-    for (auto& m : more)
-      if (!m.empty()) std::fill(m.begin() + a, m.begin() + b, glm::vec4(0.0f));
+    const std::size_t a = t * kPixelsPerTask;
+    clear_pixels(a, std::min(n, a + kPixelsPerTask), clear_color);
   });
+}
+
+void Framebuffer::clear_pixels(std::size_t a, std::size_t b, glm::vec4 clear_color) {
+  std::fill(color.begin() + a, color.begin() + b, clear_color);
+  std::fill(depth.begin() + a, depth.begin() + b, 1.0f);
+  if (!aux.empty()) std::fill(aux.begin() + a, aux.begin() + b, glm::vec4(0.0f));
+  for (auto& m : more)
+    if (!m.empty()) std::fill(m.begin() + a, m.begin() + b, glm::vec4(0.0f));
 }
 
 void Framebuffer::clear_tile(int tile_x, int tile_y) {
@@ -68,14 +72,7 @@ void Framebuffer::clear_tile(int tile_x, int tile_y) {
   pending_tiles_[tile] = 0;  // one byte per tile: tiles scanned on different threads never share one
   const int x0 = tile_x * kFramebufferTileSize, x1 = std::min(width, x0 + kFramebufferTileSize);
   const int y0 = tile_y * kFramebufferTileSize, y1 = std::min(height, y0 + kFramebufferTileSize);
-  for (int y = y0; y < y1; ++y) {
-    const std::size_t a = index(x0, y), b = index(x1 - 1, y) + 1;
-    std::fill(color.begin() + a, color.begin() + b, pending_color_);
-    std::fill(depth.begin() + a, depth.begin() + b, 1.0f);
-    if (!aux.empty()) std::fill(aux.begin() + a, aux.begin() + b, glm::vec4(0.0f));
-    for (auto& m : more)
-      if (!m.empty()) std::fill(m.begin() + a, m.begin() + b, glm::vec4(0.0f));
-  }
+  for (int y = y0; y < y1; ++y) clear_pixels(index(x0, y), index(x1 - 1, y) + 1, pending_color_);
 }
 
 void Framebuffer::finish_clear(const Parallel& parallel) {

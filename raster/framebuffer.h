@@ -46,7 +46,8 @@ struct Framebuffer {
   // nothing else may read or write the framebuffer in between.
   void reset(int w, int h, glm::vec4 clear_color, const Parallel& parallel, bool with_aux = true,
              bool defer_clear = false);
-  // Deferred clear: one tile (its pixels, every target), and the pending ones that are left.
+  // Deferred clear: one tile (its pixels, every target; nothing unless it is pending), and the
+  // pending ones that are left.
   bool clear_pending() const { return !pending_tiles_.empty(); }
   void clear_tile(int tile_x, int tile_y);
   void finish_clear(const Parallel& parallel);
@@ -59,8 +60,11 @@ struct Framebuffer {
   int draw_buffers() const;  // 1 + the highest draw buffer present
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * width + x; }
   int tiles_x() const { return (width + kFramebufferTileSize - 1) / kFramebufferTileSize; }
+  int tiles_y() const { return (height + kFramebufferTileSize - 1) / kFramebufferTileSize; }
 
  private:
+  // Pixels a .. b - 1 (indices) of every target to their clear values.
+  void clear_pixels(std::size_t a, std::size_t b, glm::vec4 clear_color);
   std::vector<std::uint8_t> pending_tiles_;  // per tile, row by row: 1 while its clear is pending
   glm::vec4 pending_color_{0.0f};
 };
